@@ -1,0 +1,65 @@
+# Forced mass-spring-damper: a reproducible report. `make` lists the targets.
+.DEFAULT_GOAL := help
+SHELL := /bin/bash
+
+PYTHON ?= $(shell command -v python3.11 || command -v python3)
+VENV := .venv
+PY := $(VENV)/bin/python
+STAMP := $(VENV)/.installed
+BUILD := build
+CHROMIUM ?= /usr/bin/chromium
+
+.PHONY: help setup report test test-fast bench lint format notebooks lab browser clean
+
+help: ## list the targets
+	@awk 'BEGIN {FS = ":.*## "} /^[a-zA-Z_-]+:.*## / {printf "  make %-11s %s\n", $$1, $$2}' $(MAKEFILE_LIST)
+
+$(STAMP): environment.txt pyproject.toml
+	@$(PYTHON) -c 'import sys; assert sys.version_info[:2] == (3, 11), f"Python 3.11 needed, found {sys.version.split()[0]}"'
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -r environment.txt
+	$(PY) -m pip install --quiet --no-deps --no-build-isolation -e .
+	$(PY) -m ipykernel install --sys-prefix --name vibration --display-name "Python 3 (vibration)" >/dev/null
+	touch $(STAMP)
+
+setup: $(STAMP) ## create .venv from environment.txt (again only when it changes)
+
+browser: ## install Debian's Chromium for the browser tests if it is missing
+	@test -x $(CHROMIUM) || { echo "installing chromium with apt-get"; \
+	  SUDO=$$([ "$$(id -u)" = 0 ] || echo sudo); \
+	  $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; }
+
+report: $(STAMP) ## run every chapter with papermill and render build/report/index.html
+	$(PY) -m vibration.report --out $(BUILD)
+
+test: $(STAMP) browser ## lint, unit, property, doctests, strict nbval and browser tests
+	$(PY) -m ruff check src tests notebooks
+	@mkdir -p $(BUILD); rc=0; \
+	$(PY) -m pytest --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks/ || rc=$$?; \
+	echo $$rc > $(BUILD)/pytest.rc; \
+	if [ $$rc -eq 5 ]; then echo "error: pytest collected no tests (exit code 5)" >&2; fi; \
+	exit $$rc
+
+test-fast: $(STAMP) ## unit, property and doctests only (no notebooks, no browser)
+	$(PY) -m pytest -m "not browser"
+
+bench: $(STAMP) ## print speed ratios measured side by side in one run
+	$(PY) -m vibration.bench
+
+lint: $(STAMP) ## ruff check and format check, notebooks included
+	$(PY) -m ruff check src tests notebooks
+	$(PY) -m ruff format --check src tests notebooks
+
+format: $(STAMP) ## apply ruff formatting and safe fixes
+	$(PY) -m ruff check --fix src tests notebooks
+	$(PY) -m ruff format src tests notebooks
+
+notebooks: $(STAMP) ## re-execute the notebooks in place (after an intended change of outputs)
+	$(PY) -m vibration.report --in-place
+
+lab: $(STAMP) ## open JupyterLab on the notebooks
+	$(VENV)/bin/jupyter lab notebooks/
+
+clean: ## remove build output and the virtual environment
+	rm -rf $(BUILD) $(VENV) .pytest_cache .ruff_cache .hypothesis
