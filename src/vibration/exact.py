@@ -21,9 +21,11 @@ resonance comes out of the same formula. The kernels are written with
 ``cos, sin`` (underdamped), ``t exp`` (critical) or ``exp, expm1``
 (overdamped), each continuous through ``zeta = 1``.
 
-Cost per sample: seven transcendental evaluations in every regime
-(``expm1``, ``cos``/``sin`` of ``omega t``, ``sin``/``cos`` of half the
-detuning phase, and ``exp``/``cos``/``sin`` or ``exp``/``expm1`` for the kernel).
+Cost per sample: five transcendental evaluations (``exp``, ``cos``/``sin`` of
+``wd t`` and of ``omega t``) for an underdamped oscillator away from undamped
+resonance (``|i omega - s1| t >= 1e-2``), six near it (``expm1`` and the
+half-angle ``sin``/``cos`` replace ``cos``/``sin(omega t)``), four to five with
+real roots.
 """
 
 from __future__ import annotations
@@ -129,22 +131,25 @@ def _times(t) -> np.ndarray:
 
 
 def _kernels(osc: Oscillator, t: np.ndarray):
-    """Return ``(g', g, s1, s2)`` in a form stable in every regime.
+    """Return ``(kc, g, s1, s2, cb, sb, env)`` in a form stable in every regime.
 
     ``g(t) = E[s1, s2](t)`` is the unit impulse response times m (s) and
-    ``g'(t)`` its derivative; ``s1`` is the root to pair with ``i omega``.
+    ``kc = g'(t) + sigma g(t)`` (``exp(-sigma t) cos(wd t)`` when underdamped). For oscillating roots ``cb, sb = cos, sin(wd t)``
+    and ``env = exp(-sigma t)`` are returned for reuse (else ``None``).
     """
     sigma = osc.decay_rate
     wn2 = osc.k / osc.m
     q = wn2 - sigma * sigma
+    cb = sb = env = None
     if q > 0.0:  # oscillating roots -sigma +/- i wd
         wd = math.sqrt(q)
         env = np.exp(-sigma * t)
-        kc, ks = env * np.cos(wd * t), env * np.sin(wd * t) / wd
+        cb, sb = np.cos(wd * t), np.sin(wd * t)
+        kc, ks = env * cb, env * sb / wd
         s1, s2 = complex(-sigma, wd), complex(-sigma, -wd)
     elif q == 0.0:  # double root -sigma
-        env = np.exp(-sigma * t)
-        kc, ks = env, t * env
+        kc = np.exp(-sigma * t)
+        ks = t * kc
         s1 = s2 = complex(-sigma, 0.0)
     else:  # two real roots, s_hi - s_lo = 2 mu
         mu = math.sqrt(-q)
@@ -153,28 +158,55 @@ def _kernels(osc: Oscillator, t: np.ndarray):
         else:
             s_hi, s_lo = -sigma + mu, -wn2 / (-sigma + mu)
         e_hi = np.exp(s_hi * t)
-        em = np.expm1(-2.0 * mu * t)
-        kc, ks = 0.5 * e_hi * (2.0 + em), -e_hi * em / (2.0 * mu)
+        e2m = np.expm1(-2.0 * mu * t)
+        kc, ks = 0.5 * e_hi * (2.0 + e2m), -e_hi * e2m / (2.0 * mu)
         s1, s2 = complex(s_hi, 0.0), complex(s_lo, 0.0)
-    g = ks
-    dg = kc - sigma * ks
-    return dg, g, s1, s2
+    return kc, ks, s1, s2, cb, sb, env
 
 
-def _forced(omega: float, g: np.ndarray, s1: complex, s2: complex, t: np.ndarray) -> np.ndarray:
-    """``E[i omega, s1, s2](t)`` for the forced response from rest (complex, s^2)."""
-    alpha = -s1.real  # decay rate of the paired root, 1/s
-    b = (omega - s1.imag) * t  # detuning phase, rad
+def _forced(omega: float, g, s1: complex, s2: complex, t, cb, sb, env, sx: float, sv: float):
+    """Forced response from rest: ``sx Im E[i omega, s1, s2](t)`` (m) and ``sv Re E`` (m/s).
+
+    ``sx = F0/m`` and ``sv = F0 omega / m`` are folded into the constants.
+
+    ``E[i omega, s1] = exp(i omega t) (1 - exp(-z)) / d`` with ``d = i omega - s1``,
+    ``z = d t``; ``1 - exp(-z) = A + iB`` is formed from ``expm1`` and half-angle
+    sines, accurate relative to ``|z|`` however small, so dividing by a tiny
+    ``d`` loses nothing; at ``d = 0`` exactly the limit ``t exp(i omega t)`` is used.
+    Everything is real arithmetic with the complex constants folded in. For
+    oscillating roots (``cb`` given, ``s1 = -sigma + i wd``) ``cb``, ``sb``, ``env``
+    from :func:`_kernels` are reused; away from the singular case the cost is
+    five transcendental evaluations per sample (``exp``, ``cos``/``sin`` of
+    ``wd t`` and of ``omega t``), near it six (``expm1``, ``cos``/``sin`` of ``wd t``
+    and of ``b/2``, ``exp``).
+    """
+    alpha, beta = -s1.real, s1.imag  # decay rate (1/s) and frequency (rad/s) of the paired root
+    d = complex(alpha, omega - beta)
+    lam = 1.0 / (1j * omega - s2)
+    lx, lv = sx * lam, sv * lam
+    if cb is not None and abs(d) * float(np.max(np.abs(t), initial=0.0)) >= 1e-2:
+        # Far from the singular case, exp(i omega t) - exp(s1 t) loses at most
+        # eps / (|d| t) relative, below 1e-13: take it directly.
+        mx, mv = lx / d, lv / d
+        wt = omega * t
+        qre, qim = np.cos(wt) - env * cb, np.sin(wt) - env * sb
+        return qre * mx.imag + qim * mx.real - g * lx.imag, qre * mv.real - qim * mv.imag - g * lv.real
+    b = (omega - beta) * t  # detuning phase, rad
+    sh, ch = np.sin(0.5 * b), np.cos(0.5 * b)
+    cos_b, sin_b = 1.0 - 2.0 * sh * sh, 2.0 * sh * ch
+    if cb is not None:  # omega t = wd t + b
+        cw, sw = cb * cos_b - sb * sin_b, sb * cos_b + cb * sin_b  # cos, sin(omega t)
+    else:  # real roots: beta = 0, so b = omega t
+        cw, sw = cos_b, sin_b
     em = np.expm1(-alpha * t)
-    sh = np.sin(0.5 * b)
-    ch = np.cos(0.5 * b)
-    # 1 - exp(-z) with z = alpha t + i b, written without cancellation
-    one_minus = (-em * (1.0 - 2.0 * sh * sh) + 2.0 * sh * sh) + 1j * ((1.0 + em) * 2.0 * sh * ch)
-    z = (alpha + 1j * (omega - s1.imag)) * t
-    small = np.abs(z) < 1e-8
-    h = np.where(small, 1.0 - 0.5 * z, one_minus / np.where(small, 1.0, z))
-    e1 = (np.cos(omega * t) + 1j * np.sin(omega * t)) * t * h  # E[i omega, s1]
-    return (e1 - g) / (1j * omega - s2)
+    if d == 0.0:
+        pa, pb, mx, mv = t, 0.0, lx, lv
+    else:
+        pa = 2.0 * sh * sh * (1.0 + em) - em
+        pb = (1.0 + em) * sin_b
+        mx, mv = lx / d, lv / d
+    qre, qim = cw * pa - sw * pb, cw * pb + sw * pa  # exp(i omega t) (A + iB)
+    return qre * mx.imag + qim * mx.real - g * lx.imag, qre * mv.real - qim * mv.imag - g * lv.real
 
 
 def exact_response(
@@ -217,17 +249,19 @@ def exact_response(
     v0 = check_real("v0", v0, unit="m/s")
     tt = _times(t)
     flat = np.atleast_1d(tt)
-    dg, g, s1, s2 = _kernels(osc, flat)
+    kc, g, s1, s2, cb, sb, env = _kernels(osc, flat)
     sigma, wn2 = osc.decay_rate, osc.k / osc.m
-    # free part: x = x0 g' + (v0 + 2 sigma x0) g,  v = v0 g' - wn^2 x0 g
-    x = x0 * dg + (v0 + 2.0 * sigma * x0) * g
-    v = v0 * dg - wn2 * x0 * g
-    if force.F0 != 0.0 and force.omega != 0.0:
+    forced = force.F0 != 0.0 and force.omega != 0.0
+    if forced:
         if abs(1j * force.omega - s2) < abs(1j * force.omega - s1):
             s1, s2 = s2, s1  # pair i omega with the nearer root (real roots)
-        e2 = _forced(force.omega, g, s1, s2, flat)
         scale = force.F0 / osc.m
-        x = x + scale * e2.imag
-        v = v + scale * force.omega * e2.real
+        x, v = _forced(force.omega, g, s1, s2, flat, cb, sb, env, scale, scale * force.omega)
+    if x0 != 0.0 or v0 != 0.0 or not forced:
+        # free part: x = x0 g' + (v0 + 2 sigma x0) g,  v = v0 g' - wn^2 x0 g,  g' = kc - sigma g
+        dg = kc - sigma * g
+        xf = x0 * dg + (v0 + 2.0 * sigma * x0) * g
+        vf = v0 * dg - wn2 * x0 * g
+        x, v = (x + xf, v + vf) if forced else (xf, vf)
     shape = tt.shape
     return Response(t=tt, x=x.reshape(shape), v=v.reshape(shape), method="exact")

@@ -3,10 +3,10 @@ logarithmic decrement, settling time, energy balance and the design map."""
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
-import numba
 import numpy as np
 from scipy.integrate import cumulative_simpson
 from scipy.optimize import brentq
@@ -248,21 +248,27 @@ def energy_balance(osc: Oscillator, force: SineForce, resp: Response) -> EnergyB
     return EnergyBalance(work, dissipated, energy - energy[0])
 
 
-@numba.njit(parallel=True, cache=True, fastmath=False)
-def _peak_kernel(sw, cw, dg, g, p, q, a, b):  # pragma: no cover - compiled
-    nc, nw, nt = p.shape[0], p.shape[1], sw.shape[1]
-    out = np.empty((nc, nw))
-    for i in numba.prange(nc):
-        for j in range(nw):
-            pij, qij, aij, bij = p[i, j], q[i, j], a[i, j], b[i, j]
-            best = 0.0
-            for n in range(nt):
-                val = pij * sw[j, n] + qij * cw[j, n] + aij * dg[i, n] + bij * g[i, n]
-                val = abs(val)
-                if val > best:
-                    best = val
-            out[i, j] = best
-    return out
+@functools.cache
+def _peak_kernel():
+    """Compile (once per process, cached on disk) the fused peak loop; numba is imported lazily."""
+    import numba
+
+    @numba.njit(parallel=True, cache=True)
+    def kernel(sw, cw, dg, g, p, q, a, b):  # pragma: no cover - compiled
+        nc, nw, nt = p.shape[0], p.shape[1], sw.shape[1]
+        out = np.empty((nc, nw))
+        for i in numba.prange(nc):
+            for j in range(nw):
+                pij, qij, aij, bij = p[i, j], q[i, j], a[i, j], b[i, j]
+                best = 0.0
+                for n in range(nt):
+                    val = abs(pij * sw[j, n] + qij * cw[j, n] + aij * dg[i, n] + bij * g[i, n])
+                    if val > best:
+                        best = val
+                out[i, j] = best
+        return out
+
+    return kernel
 
 
 def peak_displacement_map(
@@ -323,7 +329,8 @@ def peak_displacement_map(
     dg = np.empty((c.size, n_points))
     g = np.empty((c.size, n_points))
     for i, ci in enumerate(c):
-        dg[i], g[i], _, _ = _kernels(Oscillator(m, float(ci), k), t)
+        kc, g[i], *_ = _kernels(Oscillator(m, float(ci), k), t)
+        dg[i] = kc - (ci / (2.0 * m)) * g[i]
     den = (k - m * w * w)[None, :] + 1j * np.multiply.outer(c, w)
     near = np.abs(den) <= 1e-6 * m * np.sqrt(k / m) / t_end
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -332,7 +339,7 @@ def peak_displacement_map(
     sigma = c / (2.0 * m)
     a = -q
     b = -w[None, :] * p - 2.0 * sigma[:, None] * q
-    out = _peak_kernel(sw, cw, dg, g, p, q, a, b)
+    out = _peak_kernel()(sw, cw, dg, g, p, q, a, b)
     for i, j in zip(*np.nonzero(near)):
         r = exact_response(Oscillator(m, float(c[i]), k), SineForce(F0, float(w[j])), t)
         out[i, j] = np.max(np.abs(r.x))
