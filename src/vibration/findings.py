@@ -110,11 +110,22 @@ def fmt(value, digits: int = 4) -> str:
     return str(value)
 
 
-def format_table(rows: list[dict[str, object]], digits: int = 4) -> str:
-    """Rows of dicts as an aligned fixed-precision text table (header from the first row)."""
+def format_table(rows: list[dict[str, object]], digits: int = 4, columns=None) -> str:
+    """Rows of dicts as an aligned fixed-precision text table.
+
+    ``columns`` selects and orders the columns (default: the first row's keys).
+
+    Examples
+    --------
+    >>> print(format_table([{"c_Ns_m": 0.5, "regime": "underdamped"}, {"c_Ns_m": 15.0, "regime": "overdamped"}]))
+    c_Ns_m  regime
+    ------  -----------
+    0.5     underdamped
+    15      overdamped
+    """
     if not rows:
         return "(no rows)"
-    cols = list(rows[0])
+    cols = list(columns or rows[0])
     cells = [[fmt(r[c], digits) for c in cols] for r in rows]
     widths = [max(len(c), *(len(row[i]) for row in cells)) for i, c in enumerate(cols)]
     lines = ["  ".join(c.ljust(w) for c, w in zip(cols, widths))]
@@ -129,13 +140,14 @@ def transpose(rows: list[dict[str, object]], key: str) -> list[dict[str, object]
     return [{"quantity": f, **{str(r[key]): r[f] for r in rows}} for f in fields]
 
 
-def show_table(name: str, rows: list[dict[str, object]], digits: int = 4) -> None:
+def show_table(name: str, rows: list[dict[str, object]], digits: int = 4, columns=None) -> None:
     """Print ``rows`` as a fixed-precision table; also write ``name.csv`` when
     ``$VIBRATION_TABLES_DIR`` is set (the report runner sets it).
 
+    ``columns`` limits the printed columns; the CSV always has all of them.
     CSV cells use 10 significant figures, so two runs write identical bytes.
     """
-    print(format_table(rows, digits))
+    print(format_table(rows, digits, columns))
     folder = os.environ.get(TABLES_ENV)
     if folder and rows:
         path = Path(folder) / f"{name}.csv"

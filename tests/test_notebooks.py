@@ -1,0 +1,89 @@
+"""The chapters follow the report's skeleton, and their defaults are the paper's (from data/)."""
+
+from __future__ import annotations
+
+import ast
+import json
+from pathlib import Path
+
+import pytest
+
+from vibration import paper_defaults
+
+NOTEBOOKS = sorted((Path(__file__).resolve().parents[1] / "notebooks").glob("*.ipynb"))
+TYPES = {"float": float, "int": int, "str": str, "bool": bool}
+
+
+def _nb(path: Path) -> dict:
+    return json.loads(path.read_text(encoding="utf-8"))
+
+
+def _src(cell) -> str:
+    return "".join(cell["source"]) if isinstance(cell["source"], list) else cell["source"]
+
+
+def _tags(cell) -> list[str]:
+    return cell.get("metadata", {}).get("tags", [])
+
+
+def test_there_are_chapters():
+    assert len(NOTEBOOKS) >= 5, [p.name for p in NOTEBOOKS]
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_exactly_one_literal_parameters_cell_with_types_and_units(path):
+    cells = [c for c in _nb(path)["cells"] if "parameters" in _tags(c)]
+    assert len(cells) == 1
+    src = _src(cells[0])
+    tree = ast.parse(src)
+    lines = src.splitlines()
+    for node in tree.body:
+        assert isinstance(node, ast.AnnAssign), f"{path.name}: not an annotated assignment: {ast.unparse(node)}"
+        assert isinstance(node.value, ast.Constant), f"{path.name}: {ast.unparse(node)} is not a literal"
+        assert isinstance(node.annotation, ast.Name) and node.annotation.id in TYPES
+        assert isinstance(node.value.value, TYPES[node.annotation.id]), ast.unparse(node)
+        line = lines[node.lineno - 1]
+        assert "#" in line and "," in line.split("#", 1)[1], f"{path.name}: no 'meaning, unit' comment: {line}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_parameter_defaults_are_the_papers(path):
+    cell = next(c for c in _nb(path)["cells"] if "parameters" in _tags(c))
+    declared = {
+        n.target.id: n.value.value for n in ast.parse(_src(cell)).body if isinstance(n, ast.AnnAssign)
+    }
+    defaults = paper_defaults()
+    shared = set(declared) & set(defaults)
+    assert shared, f"{path.name} declares none of the paper's parameters"
+    for name in shared:
+        assert declared[name] == defaults[name], f"{path.name}: {name} = {declared[name]} != {defaults[name]}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_skeleton_and_no_physics_in_notebooks(path):
+    nb = _nb(path)
+    cells = nb["cells"]
+    assert nb["metadata"]["kernelspec"]["name"] == "vibration"
+    assert cells[0]["cell_type"] == "markdown" and _src(cells[0]).startswith("# ")
+    assert "Overview" in _src(cells[0]) or "Overview" in _src(cells[1])
+    assert any(c["cell_type"] == "markdown" and "Summary" in _src(c) for c in cells)
+    assert "__version__" in _src(cells[-1]), "the last cell prints the library versions"
+    code = [c for c in cells if c["cell_type"] == "code"]
+    for c in code:
+        tree = ast.parse(_src(c))
+        defs = [n for n in ast.walk(tree) if isinstance(n, ast.FunctionDef | ast.ClassDef | ast.Lambda)]
+        assert not defs, f"{path.name}: define functions in src/vibration, not in notebooks"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_only_live_widget_cells_skip_nbval_and_outputs_are_committed(path):
+    code = [c for c in _nb(path)["cells"] if c["cell_type"] == "code"]
+    for c in code:
+        if "nbval-ignore-output" in _tags(c):
+            assert "explorer(" in _src(c), f"{path.name}: only widget cells may skip nbval: {_src(c)[:80]}"
+    assert all(c.get("execution_count") for c in code), f"{path.name}: re-execute it (make notebooks)"
+    printed = [c for c in code if "show_table(" in _src(c) or "print(" in _src(c)]
+    assert printed and all(c["outputs"] for c in printed), f"{path.name}: tables without outputs"
+    for c in code:
+        for out in c["outputs"]:
+            assert out["output_type"] != "error", f"{path.name}: committed with an error"

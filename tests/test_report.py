@@ -1,0 +1,122 @@
+"""The report runner: parameter checks before any kernel, chapter selection, output tree."""
+
+from __future__ import annotations
+
+import csv
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+import vibration
+from vibration import report
+from vibration.model import ParameterError
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def chapters():
+    return report.discover()
+
+
+@pytest.fixture
+def no_kernel(monkeypatch):
+    import papermill
+
+    def boom(*args, **kwargs):
+        raise AssertionError("a kernel was started")
+
+    monkeypatch.setattr(papermill, "execute_notebook", boom)
+
+
+def test_selects_chapters_by_stem_number_and_name(chapters):
+    assert [c.name for c in report.select(chapters, ["01"])] == ["01_reproduction"]
+    assert [c.name for c in report.select(chapters, ["2"])] == ["02_claims_audit"]
+    assert [c.name for c in report.select(chapters, ["reproduction", "04_frequency_response"])] == [
+        "01_reproduction",
+        "04_frequency_response",
+    ]
+    with pytest.raises(ParameterError, match="chapter 'nope' does not exist"):
+        report.select(chapters, ["nope"])
+
+
+def test_physical_parameters_are_declared_by_every_chapter_that_uses_them(chapters):
+    for ch in chapters:
+        for name in ("m", "k", "F0", "t_end"):
+            assert name in ch.params, f"{ch.name} does not declare {name}"
+
+
+@pytest.mark.parametrize(
+    ("name", "value", "pattern"),
+    [
+        ("mass", "1", r"parameter 'mass' \(value '1'\) is not declared"),
+        ("F0", "abc", r"F0 = 'abc' is not a number"),
+        ("F0", "nan", r"F0 = 'nan' is not finite"),
+        ("m", "0", r"m = 0.0 kg is out of range: allowed m > 0 kg"),
+        ("k", "-20", r"k = -20.0 N/m is out of range"),
+        ("c_low", "-0.1", r"c_low = -0.1 N s/m is out of range"),
+        ("n_points", "2.5", r"n_points = '2.5' is not an integer"),
+        ("n_points", "1", r"n_points = 1 is out of range: allowed integer 2 <= n_points <= 200001"),
+        ("t_end", "1e9", r"t_end = 1000000000.0 s is out of range"),
+        ("c_min", "30", r"c_max = 20.0 N s/m must exceed c_min = 30.0 N s/m"),
+    ],
+)
+def test_bad_parameters_are_refused_before_any_kernel(chapters, no_kernel, name, value, pattern, capsys):
+    with pytest.raises(ParameterError, match=pattern):
+        report.check_parameters(chapters, [(name, value)])
+    assert report.main(["-p", name, value, "--out", "unused"]) == 2
+    err = capsys.readouterr().err
+    assert name in err and "error:" in err
+
+
+def test_good_parameters_are_typed(chapters):
+    got = report.check_parameters(chapters, [("F0", "10"), ("n_points", "2001")])
+    assert got == {"F0": 10.0, "n_points": 2001}
+    assert isinstance(got["n_points"], int)
+
+
+def _read_csv(path: Path) -> list[dict[str, str]]:
+    with path.open(newline="", encoding="utf-8") as fh:
+        return list(csv.DictReader(fh))
+
+
+@pytest.mark.slow
+def test_rerun_with_another_force_matches_exact_values_and_is_byte_identical(tmp_path):
+    out = tmp_path / "out"
+    assert report.main(["02", "-p", "F0", "10", "--out", str(out)]) == 0
+    rows = {r["claim_id"]: r for r in _read_csv(out / "tables" / "claims.csv")}
+    sc = vibration.load_scenarios()
+    ref = sc["reference"]
+    doubled = vibration.steady_state(ref.oscillator, vibration.SineForce(10.0, ref.force.omega)).amplitude
+    assert float(rows["C07"]["exact_value"]) == pytest.approx(doubled, rel=1e-9)
+    assert float(rows["C07"]["exact_value"]) == pytest.approx(
+        2 * vibration.steady_state(ref.oscillator, ref.force).amplitude, rel=1e-9
+    )
+    assert rows["C07"]["verdict"] == "not reproduced"  # 0.9 m is not "about 0.5 m"
+    assert (out / "report" / "index.html").is_file()
+    assert (out / "report" / "02_claims_audit.html").is_file()
+    first = (out / "tables" / "claims.csv").read_bytes()
+    assert report.main(["02", "-p", "F0", "10", "--out", str(out)]) == 0
+    assert (out / "tables" / "claims.csv").read_bytes() == first
+    assert not list(out.glob(".report-*")), "temporary folders left behind"
+
+
+@pytest.mark.slow
+def test_failed_chapter_leaves_previous_tree_untouched(tmp_path, monkeypatch):
+    root = tmp_path / "proj"
+    (root / "notebooks").mkdir(parents=True)
+    nb = json.loads((ROOT / "notebooks" / "02_claims_audit.ipynb").read_text(encoding="utf-8"))
+    bad = {"cell_type": "code", "execution_count": None, "metadata": {}, "outputs": [],
+           "source": "raise RuntimeError('chapter broke on purpose')"}
+    nb["cells"].insert(3, bad)
+    (root / "notebooks" / "02_claims_audit.ipynb").write_text(json.dumps(nb), encoding="utf-8")
+    out = tmp_path / "out"
+    (out / "report").mkdir(parents=True)
+    (out / "report" / "index.html").write_text("previous", encoding="utf-8")
+    monkeypatch.setenv("VIBRATION_ROOT", str(root))
+    assert report.main(["--out", str(out)]) == 1
+    assert (out / "report" / "index.html").read_text(encoding="utf-8") == "previous"
+    assert not list(out.glob(".report-*"))
+    shutil.rmtree(root)
