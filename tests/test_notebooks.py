@@ -38,12 +38,16 @@ def test_exactly_one_literal_parameters_cell_with_types_and_units(path):
     tree = ast.parse(src)
     lines = src.splitlines()
     for node in tree.body:
-        assert isinstance(node, ast.AnnAssign), f"{path.name}: not an annotated assignment: {ast.unparse(node)}"
+        assert isinstance(node, ast.AnnAssign), (
+            f"{path.name}: not an annotated assignment: {ast.unparse(node)}"
+        )
         assert isinstance(node.value, ast.Constant), f"{path.name}: {ast.unparse(node)} is not a literal"
         assert isinstance(node.annotation, ast.Name) and node.annotation.id in TYPES
         assert isinstance(node.value.value, TYPES[node.annotation.id]), ast.unparse(node)
         line = lines[node.lineno - 1]
-        assert "#" in line and "," in line.split("#", 1)[1], f"{path.name}: no 'meaning, unit' comment: {line}"
+        assert "#" in line and "," in line.split("#", 1)[1], (
+            f"{path.name}: no 'meaning, unit' comment: {line}"
+        )
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)

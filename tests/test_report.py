@@ -108,8 +108,13 @@ def test_failed_chapter_leaves_previous_tree_untouched(tmp_path, monkeypatch):
     root = tmp_path / "proj"
     (root / "notebooks").mkdir(parents=True)
     nb = json.loads((ROOT / "notebooks" / "02_claims_audit.ipynb").read_text(encoding="utf-8"))
-    bad = {"cell_type": "code", "execution_count": None, "metadata": {}, "outputs": [],
-           "source": "raise RuntimeError('chapter broke on purpose')"}
+    bad = {
+        "cell_type": "code",
+        "execution_count": None,
+        "metadata": {},
+        "outputs": [],
+        "source": "raise RuntimeError('chapter broke on purpose')",
+    }
     nb["cells"].insert(3, bad)
     (root / "notebooks" / "02_claims_audit.ipynb").write_text(json.dumps(nb), encoding="utf-8")
     out = tmp_path / "out"

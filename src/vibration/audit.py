@@ -153,9 +153,13 @@ def _evaluate(q: str, sid: str, runs: dict[str, _Run]):
     if q == "rk45_pair":
         name = rk45_pair()
         nodes = ", ".join(str(c) for c in scipy_rk45_nodes())
-        return "", name, (
-            f"SciPy's RK45 has nodes c = ({nodes}), the Dormand-Prince pair "
-            "(Fehlberg's are 0, 1/4, 3/8, 12/13, 1, 1/2), and advances with its 5th-order solution."
+        return (
+            "",
+            name,
+            (
+                f"SciPy's RK45 has nodes c = ({nodes}), the Dormand-Prince pair "
+                "(Fehlberg's are 0, 1/4, 3/8, 12/13, 1, 1/2), and advances with its 5th-order solution."
+            ),
         )
     run = runs[sid]
     osc, force, t_end = run.sc.oscillator, run.sc.force, run.sc.t_end
@@ -164,68 +168,107 @@ def _evaluate(q: str, sid: str, runs: dict[str, _Run]):
         return "", wn, f"omega_n = sqrt(k/m) = sqrt({osc.k:g}/{osc.m:g}) = {wn:.4f} rad/s."
     if q == "frequency_ratio":
         r = force.omega / wn
-        return "", r, (
-            f"omega/omega_n = {force.omega:g}/{wn:.4f} = {r:.5f}, a detuning of {abs(1 - r) * 100:.3f} %, "
-            f"small against the relative half-power width 2 zeta = {2 * zeta:.3f}."
+        return (
+            "",
+            r,
+            (
+                f"omega/omega_n = {force.omega:g}/{wn:.4f} = {r:.5f}, a detuning of {abs(1 - r) * 100:.3f} %, "
+                f"small against the relative half-power width 2 zeta = {2 * zeta:.3f}."
+            ),
         )
     if q == "regime":
         return "", osc.regime, f"zeta = c/(2 sqrt(k m)) = {osc.c:g}/{osc.critical_damping:.4f} = {zeta:.4f}."
     if q == "steady_amplitude_x":
-        return run.late(run.paper.x), ss.amplitude, (
-            f"x_ss = F0/sqrt((k - m omega^2)^2 + (c omega)^2) = {ss.amplitude:.4g} m, i.e. "
-            f"{ss.magnification:.3g} times the static deflection F0/k = {ss.static_deflection:.4g} m."
+        return (
+            run.late(run.paper.x),
+            ss.amplitude,
+            (
+                f"x_ss = F0/sqrt((k - m omega^2)^2 + (c omega)^2) = {ss.amplitude:.4g} m, i.e. "
+                f"{ss.magnification:.3g} times the static deflection F0/k = {ss.static_deflection:.4g} m."
+            ),
         )
     if q == "steady_amplitude_v":
-        return run.late(run.paper.v), ss.velocity_amplitude, (
-            f"v_ss = omega x_ss = {force.omega:g} x {ss.amplitude:.4g} = {ss.velocity_amplitude:.4g} m/s."
+        return (
+            run.late(run.paper.v),
+            ss.velocity_amplitude,
+            (f"v_ss = omega x_ss = {force.omega:g} x {ss.amplitude:.4g} = {ss.velocity_amplitude:.4g} m/s."),
         )
     if q == "peak_x":
         pk_p, pk_e = float(np.max(np.abs(run.paper.x))), float(np.max(np.abs(run.exact.x)))
-        return pk_p, pk_e, (
-            f"Over [0, {t_end:g}] s the peak is {pk_e:.4g} m exact and {pk_p:.4g} m with the paper's RK45; "
-            f"the steady amplitude is {ss.amplitude:.4g} m (magnification {ss.magnification:.3g}, zeta = {zeta:.3g})."
+        return (
+            pk_p,
+            pk_e,
+            (
+                f"Over [0, {t_end:g}] s the peak is {pk_e:.4g} m exact and {pk_p:.4g} m with the paper's RK45; "
+                f"the steady amplitude is {ss.amplitude:.4g} m "
+                f"(magnification {ss.magnification:.3g}, zeta = {zeta:.3g})."
+            ),
         )
     if q == "peak_v":
         pk_p, pk_e = float(np.max(np.abs(run.paper.v))), float(np.max(np.abs(run.exact.v)))
-        return pk_p, pk_e, (
-            f"Over [0, {t_end:g}] s the peak velocity is {pk_e:.4g} m/s exact and {pk_p:.4g} m/s with RK45; "
-            f"near resonance it is bounded by F0/c = {force.F0 / osc.c if osc.c > 0 else math.inf:.4g} m/s."
+        return (
+            pk_p,
+            pk_e,
+            (
+                f"Over [0, {t_end:g}] s the peak velocity is {pk_e:.4g} m/s exact and {pk_p:.4g} m/s with RK45; "
+                f"near resonance it is bounded by F0/c = {force.F0 / osc.c if osc.c > 0 else math.inf:.4g} m/s."
+            ),
         )
     if q == "amplitude_ratio_resonance_reference":
         ref = runs["reference"]
         r_e = ss.amplitude / ref.ss.amplitude
         r_p = run.late(run.paper.x) / ref.late(ref.paper.x)
-        return r_p, r_e, (
-            f"The steady amplitudes are {ss.amplitude:.4g} m and {ref.ss.amplitude:.4g} m, a ratio of {r_e:.3g} "
-            f"set by the magnifications {ss.magnification:.3g} and {ref.ss.magnification:.3g} (zeta = {zeta:.3g})."
+        return (
+            r_p,
+            r_e,
+            (
+                f"The steady amplitudes are {ss.amplitude:.4g} m and {ref.ss.amplitude:.4g} m, a ratio of {r_e:.3g} "
+                f"set by the magnifications {ss.magnification:.3g} and {ref.ss.magnification:.3g} (zeta = {zeta:.3g})."
+            ),
         )
     if q == "amplitude_ratio_high_nominal":
         nom = runs["damping_nominal"]
         r_e = ss.amplitude / nom.ss.amplitude
         r_p = run.late(run.paper.x) / nom.late(nom.paper.x)
-        return r_p, r_e, (
-            f"x_ss falls from {nom.ss.amplitude:.4g} m to {ss.amplitude:.4g} m (ratio {r_e:.3g}), yet stays "
-            f"{ss.magnification:.2g} times the static deflection F0/k = {ss.static_deflection:.4g} m."
+        return (
+            r_p,
+            r_e,
+            (
+                f"x_ss falls from {nom.ss.amplitude:.4g} m to {ss.amplitude:.4g} m (ratio {r_e:.3g}), yet stays "
+                f"{ss.magnification:.2g} times the static deflection F0/k = {ss.static_deflection:.4g} m."
+            ),
         )
     if q == "stability":
         late = _growing(run.paper.t[run.paper.t >= 0.8 * t_end], run.paper.x[run.paper.t >= 0.8 * t_end])
-        paper = "amplitude still growing at t_end" if late == "yes" else "amplitude steady at t_end"
+        paper = "growing at t_end" if late == "yes" else "steady at t_end"
         sigma = osc.decay_rate
-        return paper, _stability(osc.c), (
-            f"c = {osc.c:g} N s/m puts both roots at Re s = {-sigma:.4g} 1/s, so the response is bounded by "
-            f"x_ss = {ss.amplitude:.4g} m; growth in the window is the transient settling "
-            f"(2 % settling time {run.settle:.3g} s)."
+        return (
+            paper,
+            _stability(osc.c),
+            (
+                f"c = {osc.c:g} N s/m puts both roots at Re s = {-sigma:.4g} 1/s, so the response is bounded by "
+                f"x_ss = {ss.amplitude:.4g} m; growth in the window is the transient settling "
+                f"(2 % settling time {run.settle:.3g} s)."
+            ),
         )
     if q == "growing_throughout":
-        return _growing(run.paper.t, run.paper.x), _growing(run.exact.t, run.exact.x), (
-            f"The envelope rises as x_ss (1 - exp(-t/tau)) with tau = {osc.time_constant:.3g} s toward "
-            f"x_ss = {ss.amplitude:.4g} m, reached (2 %) only after {run.settle:.3g} s."
+        return (
+            _growing(run.paper.t, run.paper.x),
+            _growing(run.exact.t, run.exact.x),
+            (
+                f"The envelope rises as x_ss (1 - exp(-t/tau)) with tau = {osc.time_constant:.3g} s toward "
+                f"x_ss = {ss.amplitude:.4g} m, reached (2 %) only after {run.settle:.3g} s."
+            ),
         )
     if q == "steady_in_window":
         inside = run.settle <= t_end
-        return "", "yes" if inside else "no", (
-            f"The 2 % settling time is {run.settle:.3g} s ({run.settle / osc.time_constant:.2g} time constants), "
-            f"{'inside' if inside else 'beyond'} the {t_end:g} s window."
+        return (
+            "",
+            "yes" if inside else "no",
+            (
+                f"The 2 % settling time is {run.settle:.3g} s ({run.settle / osc.time_constant:.2g} time constants), "
+                f"{'inside' if inside else 'beyond'} the {t_end:g} s window."
+            ),
         )
     raise ValueError(f"quantity = {q!r} is not known to the audit")
 

@@ -55,7 +55,9 @@ def bench_exact(quick: bool) -> None:
     t_exact = median_time(lambda: exact_response(osc, force, t), 50 * k)
     t_rk = median_time(lambda: simulate(osc, force, 50.0, 5001), 7 * k)
     t_rk9 = median_time(lambda: simulate(osc, force, 50.0, 5001, rtol=1e-9, atol=1e-12), 3 * k)
-    t_dop = median_time(lambda: simulate(osc, force, 50.0, 5001, method="DOP853", rtol=1e-9, atol=1e-12), 3 * k)
+    t_dop = median_time(
+        lambda: simulate(osc, force, 50.0, 5001, method="DOP853", rtol=1e-9, atol=1e-12), 3 * k
+    )
     _table(
         "exact_response on 5001 points (5 transcendental evaluations per sample) vs solve_ivp",
         [
@@ -134,8 +136,9 @@ def bench_report() -> None:
 
         def empties():
             for i in range(len(chapters)):
-                papermill.execute_notebook(str(empty), str(Path(tmp) / f"out{i}.ipynb"), kernel_name=kernel,
-                                           progress_bar=False)
+                papermill.execute_notebook(
+                    str(empty), str(Path(tmp) / f"out{i}.ipynb"), kernel_name=kernel, progress_bar=False
+                )
 
         t_empty = median_time(empties, 1)
         start = time.perf_counter()

@@ -11,8 +11,11 @@ import numpy as np
 from scipy.integrate import cumulative_simpson
 from scipy.optimize import brentq
 
-from .exact import Response, _kernels, exact_response, steady_state
+from .exact import NEAR, Response, _kernels, exact_response, steady_state
 from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
+
+#: Largest number of samples in one precomputed table of the design map (2 tables of 8 bytes each).
+MAP_CELLS_MAX = 50_000_000
 
 
 def _omegas(omegas, name: str = "omegas") -> np.ndarray:
@@ -61,7 +64,8 @@ def phase_lag(osc: Oscillator, omegas) -> np.ndarray:
     array([0.    , 1.5708, 3.1416])
     """
     r = _omegas(omegas) / osc.natural_frequency
-    return np.arctan2(2.0 * osc.damping_ratio * r, (1.0 - r) * (1.0 + r))
+    im, re = 2.0 * osc.damping_ratio * r, (1.0 - r) * (1.0 + r)
+    return np.where((im == 0.0) & (re == 0.0), 0.5 * np.pi, np.arctan2(im, re))
 
 
 @dataclass(frozen=True)
@@ -195,7 +199,7 @@ def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float
     level = tol * ss.amplitude
     if osc.regime == "underdamped":
         r = math.hypot(x0, (v0 + sigma * x0) / osc.damped_natural_frequency)
-        return max(0.0, math.log(r / level) / sigma)
+        return max(0.0, math.log(r / level) / sigma) if r > 0.0 else 0.0
     tau = osc.time_constant
     bound = abs(x0) + abs(v0 + sigma * x0) * tau + abs(x0) * sigma * tau
     t_hi = tau * (max(0.0, math.log(max(bound, level) / level)) + 3.0)
@@ -285,9 +289,11 @@ def peak_displacement_map(
     ``x = Re(H) sin(omega t) + Im(H) cos(omega t) + transient``, with
     ``H = F0 / (k - m omega^2 + i c omega)``; ``sin``/``cos`` depend only on
     omega and the transient kernels only on c, so each is computed once and a
-    compiled loop combines them (4 multiply-adds per sample). Cells within
-    ``1e-6 / t_end`` of undamped resonance, where that split would cancel,
-    fall back to :func:`exact_response`.
+    compiled loop combines them (4 multiply-adds per sample). Cells whose
+    forcing lies within ``NEAR / t_end`` of a characteristic root (undamped
+    resonance with almost no damping), where that split would cancel, fall back
+    to :func:`exact_response`. ``len(omegas) * n_points`` and
+    ``len(dampings) * n_points`` are capped at ``MAP_CELLS_MAX``.
 
     Parameters
     ----------
@@ -322,7 +328,15 @@ def peak_displacement_map(
     w = _omegas(omegas)
     c = np.asarray(dampings, dtype=float)
     if c.ndim != 1 or c.size == 0 or not np.all(np.isfinite(c)):
-        raise ParameterError(f"dampings = {dampings!r}: allowed a non-empty 1-D array of finite values in N s/m")
+        raise ParameterError(
+            f"dampings = {dampings!r}: allowed a non-empty 1-D array of finite values in N s/m"
+        )
+    for name, size in (("omegas", w.size), ("dampings", c.size)):
+        if size * n_points > MAP_CELLS_MAX:
+            raise ParameterError(
+                f"len({name}) * n_points = {size * n_points} is out of range: allowed <= {MAP_CELLS_MAX} "
+                f"samples per table (memory)"
+            )
     t = np.linspace(0.0, t_end, n_points)
     wt = np.multiply.outer(w, t)
     sw, cw = np.sin(wt), np.cos(wt)
@@ -331,8 +345,12 @@ def peak_displacement_map(
     for i, ci in enumerate(c):
         kc, g[i], *_ = _kernels(Oscillator(m, float(ci), k), t)
         dg[i] = kc - (ci / (2.0 * m)) * g[i]
+    # distance from i omega to the nearest characteristic root, 1/s
+    sig = (c / (2.0 * m))[:, None]
+    root = np.emath.sqrt(sig * sig - k / m)
+    dist = np.minimum(np.abs(1j * w[None, :] + sig - root), np.abs(1j * w[None, :] + sig + root))
+    near = dist * t_end < NEAR
     den = (k - m * w * w)[None, :] + 1j * np.multiply.outer(c, w)
-    near = np.abs(den) <= 1e-6 * m * np.sqrt(k / m) / t_end
     with np.errstate(divide="ignore", invalid="ignore"):
         h = np.where(near, 0.0, F0 / np.where(near, 1.0, den))
     p, q = h.real, h.imag
@@ -340,7 +358,7 @@ def peak_displacement_map(
     a = -q
     b = -w[None, :] * p - 2.0 * sigma[:, None] * q
     out = _peak_kernel()(sw, cw, dg, g, p, q, a, b)
-    for i, j in zip(*np.nonzero(near)):
+    for i, j in zip(*np.nonzero(near), strict=True):
         r = exact_response(Oscillator(m, float(c[i]), k), SineForce(F0, float(w[j])), t)
         out[i, j] = np.max(np.abs(r.x))
     return out

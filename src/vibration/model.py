@@ -66,7 +66,7 @@ def check_real(
     allowed = _describe(name, low, high, low_open, unit)
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ParameterError(f"{name} = {value!r} is not a real number: allowed {allowed}")
-    v = float(value)
+    v = float(value) + 0.0  # + 0.0 turns -0.0 into 0.0
     ok = math.isfinite(v)
     if ok and low is not None:
         ok = v > low if low_open else v >= low

@@ -97,9 +97,7 @@ def simulate(
 
     grid = np.linspace(0.0, t_end, n_points) if t_eval else None
     extra = {"jac": jac} if method in ("Radau", "BDF", "LSODA") else {}
-    sol = solve_ivp(
-        rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra
-    )
+    sol = solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
     if sol.status != 0:
         raise RuntimeError(f"solve_ivp ({method}) failed at t = {sol.t[-1]:g} s: {sol.message}")
     return Response(

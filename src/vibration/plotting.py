@@ -31,7 +31,7 @@ def response_figure(runs: list[tuple[str, Response, Response]], title: str):
     """
     fig, axes = plt.subplots(3, 1, figsize=(10, 9), sharex=True, layout="constrained")
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for (label, paper, exact), col in zip(runs, colors):
+    for (label, paper, exact), col in zip(runs, colors, strict=False):
         axes[0].plot(paper.t, paper.x, color=col, lw=1.0, label=f"{label}: RK45 (paper's method)")
         axes[0].plot(exact.t, exact.x, color="k", lw=0.6, ls="--")
         axes[1].plot(paper.t, paper.v, color=col, lw=1.0, label=label)

@@ -140,8 +140,9 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
     for name, text in pairs:
         if name not in declared:
             allowed = ", ".join(sorted(declared))
-            raise ParameterError(f"parameter {name!r} (value {text!r}) is not declared by any chapter run: "
-                                 f"allowed {allowed}")
+            raise ParameterError(
+                f"parameter {name!r} (value {text!r}) is not declared by any chapter run: allowed {allowed}"
+            )
         value = _convert(name, text, declared[name])
         if name in PARAMETER_RULES:
             low, low_open, high, unit = PARAMETER_RULES[name]
@@ -169,7 +170,7 @@ def _summary(nb) -> str:
     """First sentence after "Overview." in the chapter's markdown, for the index page."""
     for cell in nb.cells:
         if cell.cell_type == "markdown" and "Overview." in cell.source:
-            text = cell.source.split("Overview.", 1)[1].replace("**", "").strip()
+            text = cell.source.split("Overview.", 1)[1].replace("**", "").replace("`", "").strip()
             return re.split(r"(?<=[.!?])\s", " ".join(text.split()), maxsplit=1)[0]
     return ""
 
@@ -198,14 +199,24 @@ def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
     params = {k: v for k, v in values.items() if k in ch.params}
     executed = work / "notebooks" / ch.path.name
     papermill.execute_notebook(
-        str(ch.path), str(executed), parameters=params, kernel_name=kernel,
-        cwd=str(ch.path.parent), progress_bar=False, log_output=False,
+        str(ch.path),
+        str(executed),
+        parameters=params,
+        kernel_name=kernel,
+        cwd=str(ch.path.parent),
+        progress_bar=False,
+        log_output=False,
     )
     nb = nbformat.read(executed, as_version=4)
     title = _title(nb, ch.name)
     render_notebook_html(nb, work / "report" / f"{ch.name}.html", title=title)
-    return {"title": title, "href": f"{ch.name}.html", "summary": _summary(nb),
-            "elapsed_s": time.perf_counter() - start, "name": ch.name}
+    return {
+        "title": title,
+        "href": f"{ch.name}.html",
+        "summary": _summary(nb),
+        "elapsed_s": time.perf_counter() - start,
+        "name": ch.name,
+    }
 
 
 def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=print) -> list[dict]:
@@ -243,7 +254,9 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
             if target.exists():
                 target.rename(work / f"old-{sub}")
             (work / sub).rename(target)
-        log(f"report: {len(ordered)} chapters in {time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}")
+        log(
+            f"report: {len(ordered)} chapters in {time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}"
+        )
         return ordered
     finally:
         os.environ.pop(TABLES_ENV, None)
@@ -271,8 +284,13 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
     for ch in chapters:
         start = time.perf_counter()
         nb = nbformat.read(ch.path, as_version=4)
-        NotebookClient(nb, kernel_name=kernel, timeout=900, record_timing=False,
-                       resources={"metadata": {"path": str(ch.path.parent)}}).execute()
+        NotebookClient(
+            nb,
+            kernel_name=kernel,
+            timeout=900,
+            record_timing=False,
+            resources={"metadata": {"path": str(ch.path.parent)}},
+        ).execute()
         nb.metadata.pop("widgets", None)
         for cell in nb.cells:
             cell.metadata.pop("execution", None)
@@ -283,12 +301,21 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m vibration.report", description=__doc__.split("\n\n")[0])
     parser.add_argument("chapters", nargs="*", help="chapters to run (default: all)")
-    parser.add_argument("-p", "--parameter", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
-                        help="set a parameter in every chapter that declares it")
+    parser.add_argument(
+        "-p",
+        "--parameter",
+        nargs=2,
+        action="append",
+        default=[],
+        metavar=("NAME", "VALUE"),
+        help="set a parameter in every chapter that declares it",
+    )
     parser.add_argument("--out", default="build", help="output folder (default: build)")
     parser.add_argument("--jobs", type=int, default=2, help="chapters run at once (default: 2)")
     parser.add_argument("--list", action="store_true", help="list chapters and their parameters")
-    parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
+    parser.add_argument(
+        "--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)"
+    )
     args = parser.parse_args(argv)
     try:
         chapters = select(discover(), args.chapters)
@@ -300,7 +327,9 @@ def main(argv: list[str] | None = None) -> int:
             return 0
         if args.in_place:
             if args.parameter:
-                raise ParameterError("--in-place re-executes the references with their defaults: -p is not allowed")
+                raise ParameterError(
+                    "--in-place re-executes the references with their defaults: -p is not allowed"
+                )
             execute_in_place(chapters)
             return 0
         values = check_parameters(chapters, [tuple(p) for p in args.parameter])

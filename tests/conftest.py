@@ -1,0 +1,74 @@
+"""Shared test helpers and the hypothesis profiles.
+
+Profiles (choose with ``HYPOTHESIS_PROFILE=<name>``):
+
+* ``vibration`` (default): no deadline (the first call of a compiled or
+  cached path can be slow), a modest number of examples so the suite stays fast;
+* ``thorough``: ten times the examples, for an occasional deeper search.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import numbers
+import os
+import re
+
+import pytest
+from hypothesis import HealthCheck, settings
+
+import vibration
+
+settings.register_profile(
+    "vibration",
+    deadline=None,
+    max_examples=40,
+    suppress_health_check=[HealthCheck.too_slow],
+    print_blob=True,
+)
+settings.register_profile(
+    "thorough",
+    deadline=None,
+    max_examples=400,
+    suppress_health_check=[HealthCheck.too_slow],
+    print_blob=True,
+)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "vibration"))
+
+
+_NO_VALUE = object()
+
+
+def _value_text(value) -> str:
+    """How a bad value must appear in the message (numbers as Python prints them)."""
+    if isinstance(value, bool | str):
+        return repr(value)
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return repr(float(value))
+    return repr(value)
+
+
+@contextlib.contextmanager
+def _raises_parameter_error(name: str, bad=_NO_VALUE, *allowed: str):
+    """Expect :class:`vibration.ParameterError` (also a ``ValueError``) whose
+    message names ``name``, shows the bad value ``bad`` and states the allowed
+    range: the word "allowed" and every fragment in ``allowed``."""
+    with pytest.raises(vibration.ParameterError) as info:
+        yield info
+    err = info.value
+    assert isinstance(err, ValueError)
+    msg = str(err)
+    assert re.search(rf"(?<![A-Za-z0-9_]){re.escape(name)}(?![A-Za-z0-9_])", msg), (name, msg)
+    if bad is not _NO_VALUE:
+        assert _value_text(bad) in msg, (_value_text(bad), msg)
+    assert "allowed" in msg, msg
+    for fragment in allowed:
+        assert fragment in msg, (fragment, msg)
+
+
+@pytest.fixture
+def raises_parameter_error():
+    """``with raises_parameter_error("m", 0.0, "> 0"): Oscillator(0.0, 0.5, 20.0)``."""
+    return _raises_parameter_error
