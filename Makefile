@@ -36,7 +36,7 @@ report: $(STAMP) ## run every chapter with papermill and render build/report/ind
 test: $(STAMP) browser ## lint, unit, property, doctests, strict nbval and browser tests
 	$(PY) -m ruff check src tests notebooks
 	@mkdir -p $(BUILD); rc=0; \
-	$(PY) -m pytest --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg notebooks/ || rc=$$?; \
+	$(PY) -m pytest --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg tests src notebooks || rc=$$?; \
 	echo $$rc > $(BUILD)/pytest.rc; \
 	if [ $$rc -eq 5 ]; then echo "error: pytest collected no tests (exit code 5)" >&2; fi; \
 	exit $$rc

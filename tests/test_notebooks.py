@@ -38,24 +38,18 @@ def test_exactly_one_literal_parameters_cell_with_types_and_units(path):
     tree = ast.parse(src)
     lines = src.splitlines()
     for node in tree.body:
-        assert isinstance(node, ast.AnnAssign), (
-            f"{path.name}: not an annotated assignment: {ast.unparse(node)}"
-        )
+        assert isinstance(node, ast.AnnAssign), f"{path.name}: not an annotated assignment: {ast.unparse(node)}"
         assert isinstance(node.value, ast.Constant), f"{path.name}: {ast.unparse(node)} is not a literal"
         assert isinstance(node.annotation, ast.Name) and node.annotation.id in TYPES
         assert isinstance(node.value.value, TYPES[node.annotation.id]), ast.unparse(node)
         line = lines[node.lineno - 1]
-        assert "#" in line and "," in line.split("#", 1)[1], (
-            f"{path.name}: no 'meaning, unit' comment: {line}"
-        )
+        assert "#" in line and "," in line.split("#", 1)[1], f"{path.name}: no 'meaning, unit' comment: {line}"
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_parameter_defaults_are_the_papers(path):
     cell = next(c for c in _nb(path)["cells"] if "parameters" in _tags(c))
-    declared = {
-        n.target.id: n.value.value for n in ast.parse(_src(cell)).body if isinstance(n, ast.AnnAssign)
-    }
+    declared = {n.target.id: n.value.value for n in ast.parse(_src(cell)).body if isinstance(n, ast.AnnAssign)}
     defaults = paper_defaults()
     shared = set(declared) & set(defaults)
     assert shared, f"{path.name} declares none of the paper's parameters"
@@ -91,3 +85,16 @@ def test_only_live_widget_cells_skip_nbval_and_outputs_are_committed(path):
     for c in code:
         for out in c["outputs"]:
             assert out["output_type"] != "error", f"{path.name}: committed with an error"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_papermill_reads_every_parameter_with_its_help(path):
+    import papermill
+
+    inspected = papermill.inspect_notebook(str(path))
+    cell = next(c for c in _nb(path)["cells"] if "parameters" in _tags(c))
+    names = [n.target.id for n in ast.parse(_src(cell)).body]
+    assert list(inspected) == names
+    for name, info in inspected.items():
+        assert info["help"], f"{path.name}: papermill could not read the comment of {name}"
+        assert info["inferred_type_name"] in TYPES, f"{path.name}: {name} has no type papermill understands"

@@ -72,9 +72,7 @@ def executed(tmp_path_factory) -> Path:
 
     folder = tmp_path_factory.mktemp("nb")
     nb = new_notebook(cells=[new_markdown_cell(MARKDOWN), new_code_cell(CODE)])
-    NotebookClient(
-        nb, kernel_name="vibration", timeout=120, resources={"metadata": {"path": str(folder)}}
-    ).execute()
+    NotebookClient(nb, kernel_name="vibration", timeout=120, resources={"metadata": {"path": str(folder)}}).execute()
     path = folder / "chapter.ipynb"
     nbformat.write(nb, path)
     return path
@@ -82,9 +80,7 @@ def executed(tmp_path_factory) -> Path:
 
 @pytest.fixture(scope="module")
 def rendered(executed) -> tuple[Path, str]:
-    out = render_notebook_html(
-        executed, executed.parent / "html" / "chapter.html", extra_html=slider_panel_html()
-    )
+    out = render_notebook_html(executed, executed.parent / "html" / "chapter.html", extra_html=slider_panel_html())
     return out, out.read_text(encoding="utf-8")
 
 

@@ -110,6 +110,7 @@ def test_failed_chapter_leaves_previous_tree_untouched(tmp_path, monkeypatch):
     nb = json.loads((ROOT / "notebooks" / "02_claims_audit.ipynb").read_text(encoding="utf-8"))
     bad = {
         "cell_type": "code",
+        "id": "broken-on-purpose",
         "execution_count": None,
         "metadata": {},
         "outputs": [],

@@ -140,9 +140,7 @@ def _panel_state(page, index: int = 0) -> dict:
 
 @pytest.mark.browser
 def test_sliders_work_offline(browser, tmp_path):
-    page, outside, errors = open_offline(
-        browser, _page(tmp_path, slider_panel_html(), slider_panel_html(c=15.0))
-    )
+    page, outside, errors = open_offline(browser, _page(tmp_path, slider_panel_html(), slider_panel_html(c=15.0)))
     try:
         before, other_before = _panel_state(page, 0), _panel_state(page, 1)
         assert "4.47 rad/s (0.7114 Hz)" in before["omega"]

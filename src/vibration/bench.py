@@ -55,9 +55,7 @@ def bench_exact(quick: bool) -> None:
     t_exact = median_time(lambda: exact_response(osc, force, t), 50 * k)
     t_rk = median_time(lambda: simulate(osc, force, 50.0, 5001), 7 * k)
     t_rk9 = median_time(lambda: simulate(osc, force, 50.0, 5001, rtol=1e-9, atol=1e-12), 3 * k)
-    t_dop = median_time(
-        lambda: simulate(osc, force, 50.0, 5001, method="DOP853", rtol=1e-9, atol=1e-12), 3 * k
-    )
+    t_dop = median_time(lambda: simulate(osc, force, 50.0, 5001, method="DOP853", rtol=1e-9, atol=1e-12), 3 * k)
     _table(
         "exact_response on 5001 points (5 transcendental evaluations per sample) vs solve_ivp",
         [

@@ -328,9 +328,7 @@ def peak_displacement_map(
     w = _omegas(omegas)
     c = np.asarray(dampings, dtype=float)
     if c.ndim != 1 or c.size == 0 or not np.all(np.isfinite(c)):
-        raise ParameterError(
-            f"dampings = {dampings!r}: allowed a non-empty 1-D array of finite values in N s/m"
-        )
+        raise ParameterError(f"dampings = {dampings!r}: allowed a non-empty 1-D array of finite values in N s/m")
     for name, size in (("omegas", w.size), ("dampings", c.size)):
         if size * n_points > MAP_CELLS_MAX:
             raise ParameterError(

@@ -328,9 +328,7 @@ def render_notebook_html(
 # -------------------------------------------------------------------------- index
 
 
-def write_index_html(
-    out_path, chapters: list[dict], *, title: str = "Forced mass-spring-damper: report"
-) -> Path:
+def write_index_html(out_path, chapters: list[dict], *, title: str = "Forced mass-spring-damper: report") -> Path:
     """Write an index page that links the rendered chapters (same CSS, no external URL).
 
     Parameters

@@ -254,9 +254,7 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
             if target.exists():
                 target.rename(work / f"old-{sub}")
             (work / sub).rename(target)
-        log(
-            f"report: {len(ordered)} chapters in {time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}"
-        )
+        log(f"report: {len(ordered)} chapters in {time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}")
         return ordered
     finally:
         os.environ.pop(TABLES_ENV, None)
@@ -313,9 +311,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", default="build", help="output folder (default: build)")
     parser.add_argument("--jobs", type=int, default=2, help="chapters run at once (default: 2)")
     parser.add_argument("--list", action="store_true", help="list chapters and their parameters")
-    parser.add_argument(
-        "--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)"
-    )
+    parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
     args = parser.parse_args(argv)
     try:
         chapters = select(discover(), args.chapters)
@@ -327,9 +323,7 @@ def main(argv: list[str] | None = None) -> int:
             return 0
         if args.in_place:
             if args.parameter:
-                raise ParameterError(
-                    "--in-place re-executes the references with their defaults: -p is not allowed"
-                )
+                raise ParameterError("--in-place re-executes the references with their defaults: -p is not allowed")
             execute_in_place(chapters)
             return 0
         values = check_parameters(chapters, [tuple(p) for p in args.parameter])

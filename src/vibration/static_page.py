@@ -139,8 +139,7 @@ def slider_panel_html(
         ("peak |x| in the window", "vib-r-peak", "2 % settling time", "vib-r-settle"),
     ]
     rows = "\n".join(
-        f'<tr><th scope="row">{a}</th><td class="{ca}"></td>'
-        f'<th scope="row">{b}</th><td class="{cb}"></td></tr>'
+        f'<tr><th scope="row">{a}</th><td class="{ca}"></td><th scope="row">{b}</th><td class="{cb}"></td></tr>'
         for a, ca, b, cb in readout
     )
     return f"""<div class="vib-panel" id="{e(pid)}" data-params="{e(json.dumps(params))}">
