@@ -223,6 +223,7 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
     """Execute and render ``chapters`` into ``out`` (replaced only on success)."""
     from .render import write_index_html
 
+    out = out.resolve()  # kernels run in notebooks/: every path they get must be absolute
     out.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".report-", dir=out))
     try:
@@ -327,7 +328,7 @@ def main(argv: list[str] | None = None) -> int:
             execute_in_place(chapters)
             return 0
         values = check_parameters(chapters, [tuple(p) for p in args.parameter])
-        run(chapters, values, Path(args.out), jobs=args.jobs)
+        run(chapters, values, Path(args.out).resolve(), jobs=args.jobs)
     except ParameterError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
