@@ -72,3 +72,59 @@ def _raises_parameter_error(name: str, bad=_NO_VALUE, *allowed: str):
 def raises_parameter_error():
     """``with raises_parameter_error("m", 0.0, "> 0"): Oscillator(0.0, 0.5, 20.0)``."""
     return _raises_parameter_error
+
+
+# ----------------------------------------------------------------------------- browser tests
+
+#: Debian's Chromium, installed by `make browser` (never `playwright install`).
+CHROMIUM = "/usr/bin/chromium"
+#: Flags for a closed network: without the background-networking ones Chromium keeps calling home.
+CHROMIUM_ARGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+]
+SCREENSHOTS = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "screenshots")
+
+
+@pytest.fixture(scope="session")
+def browser():
+    """One headless Chromium for the whole session (one playwright instance per process)."""
+    if not os.path.exists(CHROMIUM):
+        pytest.fail(f"{CHROMIUM} is missing: run `make browser` (make test does)")
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as pw:
+        b = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+        try:
+            yield b
+        finally:
+            b.close()
+
+
+def open_offline(browser, path, viewport=(1120, 900)):
+    """Open the file ``path`` with every request that is not ``file:``/``data:`` aborted.
+
+    Returns ``(page, outside_requests, console_errors)``; the lists fill as the page runs.
+    """
+    page = browser.new_page(viewport={"width": viewport[0], "height": viewport[1]})
+    outside: list[str] = []
+    errors: list[str] = []
+
+    def route(r):
+        url = r.request.url
+        if url.startswith(("file:", "data:")):
+            r.continue_()
+        else:
+            outside.append(url)
+            r.abort()
+
+    page.route("**/*", route)
+    page.on("console", lambda msg: errors.append(msg.text) if msg.type == "error" else None)
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    page.goto(path.as_uri())
+    page.wait_for_load_state("load")
+    return page, outside, errors

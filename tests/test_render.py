@@ -8,6 +8,7 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from conftest import open_offline
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook, new_output
 
 from vibration.render import (
@@ -19,16 +20,6 @@ from vibration.render import (
     write_index_html,
 )
 from vibration.static_page import slider_panel_html
-
-CHROMIUM = "/usr/bin/chromium"
-CHROMIUM_ARGS = [
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-]
 
 MARKDOWN = r"""# Forced response
 
@@ -231,42 +222,20 @@ def test_external_urls_finds_what_would_load():
 
 
 @pytest.mark.browser
-def test_rendered_page_works_offline(rendered):
-    if not Path(CHROMIUM).exists():
-        pytest.skip(f"{CHROMIUM} is missing: run `make browser`")
-    from playwright.sync_api import sync_playwright
-
+def test_rendered_page_works_offline(rendered, browser):
     path, _ = rendered
-    outside: list[str] = []
-    errors: list[str] = []
-
-    def route(r):
-        url = r.request.url
-        if url.startswith(("file:", "data:")):
-            r.continue_()
-        else:
-            outside.append(url)
-            r.abort()
-
-    with sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
-        try:
-            page = browser.new_page(viewport={"width": 1120, "height": 900})
-            page.route("**/*", route)
-            page.on("console", lambda msg: errors.append(msg.text) if msg.type == "error" else None)
-            page.on("pageerror", lambda exc: errors.append(str(exc)))
-            page.goto(path.as_uri())
-            page.wait_for_load_state("load")
-            sizes = page.evaluate(
-                """() => ({
-                    math: [...document.querySelectorAll('math')].map(m => m.getBoundingClientRect().height),
-                    img: [...document.querySelectorAll('img')].map(i => i.naturalWidth),
-                    panel: document.querySelector('div.vib-panel polyline.vib-x').getAttribute('points')
-                        .length,
-                })"""
-            )
-        finally:
-            browser.close()
+    page, outside, errors = open_offline(browser, path)
+    try:
+        sizes = page.evaluate(
+            """() => ({
+                math: [...document.querySelectorAll('math')].map(m => m.getBoundingClientRect().height),
+                img: [...document.querySelectorAll('img')].map(i => i.naturalWidth),
+                panel: document.querySelector('div.vib-panel polyline.vib-x').getAttribute('points')
+                    .length,
+            })"""
+        )
+    finally:
+        page.close()
     assert outside == []
     assert errors == []
     assert sizes["math"] and min(sizes["math"]) > 0  # MathML laid out by the browser

@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
-from test_static_page import CHROMIUM, CHROMIUM_ARGS, SCREENSHOTS, _panel_state, open_offline
+from conftest import open_offline
+from test_static_page import SCREENSHOTS, _panel_state
 
 from vibration import report
 
@@ -15,18 +14,6 @@ def built(tmp_path_factory):
     out = tmp_path_factory.mktemp("report")
     assert report.main(["01", "05", "--out", str(out)]) == 0
     return out / "report"
-
-
-@pytest.fixture(scope="module")
-def browser():
-    if not Path(CHROMIUM).exists():
-        pytest.skip(f"{CHROMIUM} is missing: run `make browser`")
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as pw:
-        b = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
-        yield b
-        b.close()
 
 
 def _move(page, index: int, selector: str, value: str) -> None:

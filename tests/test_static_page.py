@@ -11,20 +11,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import open_offline
 
 from vibration import Oscillator, ParameterError, SineForce, exact_response, settling_time, steady_state
 from vibration.render import external_urls
 from vibration.static_page import C_MIN, slider_panel_html
 
-CHROMIUM = "/usr/bin/chromium"
-CHROMIUM_ARGS = [
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-]
 SCREENSHOTS = Path(__file__).resolve().parents[1] / "build" / "screenshots"
 
 #: Tolerances of the JavaScript against vibration.exact: x samples relative to max|x|, amplitude and
@@ -86,40 +78,6 @@ def test_bad_parameters_are_named(kwargs, name):
 
 
 # ---------------------------------------------------------------------------- browser
-
-
-@pytest.fixture(scope="module")
-def browser():
-    if not Path(CHROMIUM).exists():
-        pytest.skip(f"{CHROMIUM} is missing: run `make browser`")
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as pw:
-        b = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
-        yield b
-        b.close()
-
-
-def open_offline(browser, path: Path):
-    """Open ``path`` from disk; return (page, outside requests, console errors)."""
-    page = browser.new_page(viewport={"width": 1120, "height": 900})
-    outside: list[str] = []
-    errors: list[str] = []
-
-    def route(r):
-        url = r.request.url
-        if url.startswith(("file:", "data:")):
-            r.continue_()
-        else:
-            outside.append(url)
-            r.abort()
-
-    page.route("**/*", route)
-    page.on("console", lambda msg: errors.append(msg.text) if msg.type == "error" else None)
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
-    page.goto(path.as_uri())
-    page.wait_for_load_state("load")
-    return page, outside, errors
 
 
 def _panel_state(page, index: int = 0) -> dict:
