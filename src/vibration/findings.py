@@ -110,6 +110,20 @@ def fmt(value, digits: int = 4) -> str:
     return str(value)
 
 
+def at_least(value: float, floor: float):
+    """``value``, or the text ``"< floor"`` when it is below ``floor``.
+
+    For table cells at rounding level, whose last digits depend on the CPU's
+    floating-point paths: strict nbval then compares the bound, not the noise.
+
+    Examples
+    --------
+    >>> at_least(3.2e-3, 1e-12), at_least(4.4e-16, 1e-12)
+    (0.0032, '< 1e-12')
+    """
+    return value if value >= floor else f"< {floor:g}"
+
+
 def format_table(rows: list[dict[str, object]], digits: int = 4, columns=None) -> str:
     """Rows of dicts as an aligned fixed-precision text table.
 
