@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -121,7 +122,7 @@ def bench_report() -> None:
     import nbformat
     import papermill
 
-    from .report import discover, kernel_name, run
+    from .report import discover, kernel_name
 
     chapters = discover()
     kernel = kernel_name()
@@ -138,15 +139,30 @@ def bench_report() -> None:
                     str(empty), str(Path(tmp) / f"out{i}.ipynb"), kernel_name=kernel, progress_bar=False
                 )
 
+        def empties_cli():
+            exe = Path(sys.executable).parent / "papermill"
+            for i in range(len(chapters)):
+                out = str(Path(tmp) / f"cli{i}.ipynb")
+                subprocess.run(
+                    [str(exe), str(empty), out, "-k", kernel, "--no-progress-bar"], check=True, capture_output=True
+                )
+
         t_empty = median_time(empties, 1)
+        t_cli = median_time(empties_cli, 1)
         start = time.perf_counter()
-        run(chapters, {}, Path(tmp) / "report", log=lambda *_: None)
+        subprocess.run(
+            [sys.executable, "-m", "vibration.report", "--out", str(Path(tmp) / "report")],
+            check=True,
+            capture_output=True,
+        )
         t_report = time.perf_counter() - start
     _table(
         f"report: {len(chapters)} chapters, run + render, vs papermill on {len(chapters)} empty notebooks",
         [
-            ("papermill, empty notebooks", t_empty, None, ""),
-            ("python -m vibration.report (2 jobs)", t_report, t_report / t_empty, "<= 2x"),
+            ("papermill API in one process, empty notebooks", t_empty, None, ""),
+            ("papermill command, once per empty notebook", t_cli, None, ""),
+            ("python -m vibration.report (2 jobs), vs the API", t_report, t_report / t_empty, "<= 2x"),
+            ("python -m vibration.report (2 jobs), vs the command", t_report, t_report / t_cli, "<= 2x"),
         ],
     )
 
