@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import inspect
 import math
-import time
 import tracemalloc
 
 import numpy as np
@@ -208,14 +207,11 @@ def test_simulate_refuses_bad_arguments(raises_parameter_error, name, bad, allow
 def test_huge_n_points_is_refused_before_allocating(n_points):
     tracemalloc.start()
     try:
-        start = time.perf_counter()
         with pytest.raises(ParameterError, match="n_points"):
             simulate(OSC, FORCE, 50.0, n_points)
-        elapsed = time.perf_counter() - start
         _, peak = tracemalloc.get_traced_memory()
     finally:
         tracemalloc.stop()
-    assert elapsed < 1.0
     assert peak < 1_000_000  # bytes; N_POINTS_MAX + 1 samples alone would be 16 MB
 
 
