@@ -55,8 +55,11 @@ def scenarios_from(
     }
 
 
-def scenario_findings(sc: Scenario, n_points: int = DEFAULT_N_POINTS) -> dict[str, object]:
+def scenario_findings(sc: Scenario, n_points: int = DEFAULT_N_POINTS, paper=None) -> dict[str, object]:
     """The findings row of one scenario: exact quantities and the paper's method side by side.
+
+    ``paper`` is the scenario's :func:`simulate` result if the caller already has
+    it (for the figures, say); otherwise it is computed here.
 
     Returns a dict with ``scenario``, ``omega_n`` (rad/s), ``zeta``, ``regime``,
     ``x_ss`` (m), ``v_ss`` (m/s), ``peak_x_rk45``, ``peak_x_exact`` (m),
@@ -64,7 +67,8 @@ def scenario_findings(sc: Scenario, n_points: int = DEFAULT_N_POINTS) -> dict[st
     ``tau`` (s), ``t_settle`` (s) and ``steady_in_window`` (bool).
     """
     osc, force = sc.oscillator, sc.force
-    paper = simulate(osc, force, sc.t_end, n_points, sc.x0, sc.v0)
+    if paper is None:
+        paper = simulate(osc, force, sc.t_end, n_points, sc.x0, sc.v0)
     exact = exact_response(osc, force, paper.t, sc.x0, sc.v0)
     ss = steady_state(osc, force)
     ts = settling_time(osc, force)
