@@ -167,11 +167,23 @@ def _default(chapters: list[Chapter], name: str):
 
 
 def _summary(nb) -> str:
-    """First sentence after "Overview." in the chapter's markdown, for the index page."""
+    """First sentence after "Overview." without LaTeX in it, for the index page.
+
+    Examples
+    --------
+    >>> import nbformat
+    >>> nb = nbformat.v4.new_notebook()
+    >>> nb.cells = [nbformat.v4.new_markdown_cell("**Overview.** It solves $x$. It maps `c`. Done.")]
+    >>> _summary(nb)
+    'It maps c.'
+    """
     for cell in nb.cells:
         if cell.cell_type == "markdown" and "Overview." in cell.source:
             text = cell.source.split("Overview.", 1)[1].replace("**", "").replace("`", "").strip()
-            return re.split(r"(?<=[.!?])\s", " ".join(text.split()), maxsplit=1)[0]
+            text = re.sub(r"\$\$.*?\$\$", "$", " ".join(text.split()))
+            sentences = re.split(r"(?<=[.!?])\s", text)
+            plain = [x for x in sentences if "$" not in x]
+            return plain[0] if plain else sentences[0]
     return ""
 
 
