@@ -8,6 +8,7 @@ import math
 import numpy as np
 import pytest
 
+import vibration
 from vibration import REGIMES, Oscillator, ParameterError, SineForce, exact_response
 
 SQRT20 = math.sqrt(20.0)
@@ -209,3 +210,24 @@ def test_message_gives_the_unit():
         Oscillator(0.0, 0.5, 20.0)
     with pytest.raises(ParameterError, match=r"omega = -3\.0 rad/s .*allowed omega >= 0 rad/s"):
         SineForce(5.0, -3.0)
+
+
+def test_wrong_record_types_are_named():
+    from vibration import exact_response, simulate, steady_state
+
+    osc, force = vibration.Oscillator(1.0, 0.5, 20.0), vibration.SineForce(5.0, 3.0)
+    with pytest.raises(vibration.ParameterError, match="osc = .* is not an Oscillator"):
+        exact_response((1, 2, 3), force, [0.0, 1.0])
+    with pytest.raises(vibration.ParameterError, match="force = .* is not a SineForce"):
+        simulate(osc, 5.0, 1.0)
+    with pytest.raises(vibration.ParameterError, match="osc = .* is not an Oscillator"):
+        steady_state(None, force)
+    with pytest.raises(vibration.ParameterError, match="t = .* is not an array of numbers"):
+        exact_response(osc, force, ["a"])
+
+
+@pytest.mark.parametrize("scale", [1e-200, 1e200])
+def test_derived_quantities_survive_extreme_scales(scale):
+    osc = vibration.Oscillator(scale, 3.0 * scale, scale)
+    assert osc.damping_ratio == pytest.approx(1.5, rel=1e-14)
+    assert osc.regime == "overdamped"

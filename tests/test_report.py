@@ -54,7 +54,10 @@ def test_physical_parameters_are_declared_by_every_chapter_that_uses_them(chapte
         ("mass", "1", r"parameter 'mass' \(value '1'\) is not declared"),
         ("F0", "abc", r"F0 = 'abc' is not a number"),
         ("F0", "nan", r"F0 = 'nan' is not finite"),
-        ("m", "0", r"m = 0.0 kg is out of range: allowed m > 0 kg"),
+        ("m", "0", r"m = 0.0 kg is out of range: allowed m >= 0.001 kg, m <= 1000 kg"),
+        ("m", "1e-300", r"m = 1e-300 kg is out of range"),
+        ("k", "1e300", r"k = 1e\+300 N/m is out of range"),
+        ("k", "1e6", r"t_end = 50.0 s holds \d+ periods .* allowed at most 1000"),
         ("k", "-20", r"k = -20.0 N/m is out of range"),
         ("c_low", "-0.1", r"c_low = -0.1 N s/m is out of range"),
         ("n_points", "2.5", r"n_points = '2.5' is not an integer"),
@@ -69,6 +72,14 @@ def test_bad_parameters_are_refused_before_any_kernel(chapters, no_kernel, name,
     assert report.main(["-p", name, value, "--out", "unused"]) == 2
     err = capsys.readouterr().err
     assert name in err and "error:" in err
+
+
+def test_combinations_the_papers_solver_could_not_finish_are_refused(chapters, no_kernel):
+    with pytest.raises(ParameterError, match=r"\(c/m\) t_end = 5e\+07 is out of range: allowed at most 1e\+06"):
+        report.check_parameters(chapters, [("c_high", "1e4"), ("m", "0.01")])
+    with pytest.raises(ParameterError, match=r"holds 1592 periods"):
+        report.check_parameters(chapters, [("omega_ref", "200")])
+    assert report.check_parameters(chapters, [("c_high", "1e4")]) == {"c_high": 1e4}
 
 
 def test_good_parameters_are_typed(chapters):

@@ -69,7 +69,7 @@ def test_two_fragments_have_distinct_ids():
 
 @pytest.mark.parametrize(
     ("kwargs", "name"),
-    [({"c": 0.001}, "c"), ({"c": 100.0}, "c"), ({"m": 0.0}, "m"), ({"omega": -1.0}, "omega"),
+    [({"c": 0.0}, "c"), ({"c": -1.0}, "c"), ({"m": 0.0}, "m"), ({"omega": -1.0}, "omega"),
      ({"n_points": 1}, "n_points"), ({"panel_id": "x</script>"}, "panel_id")],
 )  # fmt: skip
 def test_bad_parameters_are_named(kwargs, name):
@@ -190,3 +190,14 @@ def test_js_numbers_match_python(browser, tmp_path):
         assert outside == [] and errors == []
     finally:
         page.close()
+
+
+def test_panel_range_widens_to_include_the_starting_damping():
+    import html
+    import json
+    import re
+
+    for c, lo, hi in ((0.005, 0.005, 20.0), (100.0, 0.01, 100.0), (0.5, 0.01, 20.0)):
+        frag = slider_panel_html(c=c)
+        cfg = json.loads(html.unescape(re.search(r'data-params="([^"]*)"', frag).group(1)))
+        assert cfg["c_min"] == pytest.approx(lo) and cfg["c_max"] == pytest.approx(hi)

@@ -168,12 +168,13 @@ def _evaluate(q: str, sid: str, runs: dict[str, _Run]):
         return "", wn, f"omega_n = sqrt(k/m) = sqrt({osc.k:g}/{osc.m:g}) = {wn:.4f} rad/s."
     if q == "frequency_ratio":
         r = force.omega / wn
+        inside = abs(1 - r) < zeta
         return (
             "",
             r,
             (
                 f"omega/omega_n = {force.omega:g}/{wn:.4f} = {r:.5f}, a detuning of {abs(1 - r) * 100:.3f} %, "
-                f"small against the relative half-power width 2 zeta = {2 * zeta:.3f}."
+                f"{'inside' if inside else 'outside'} the half-power band (half-width zeta = {zeta:.3g})."
             ),
         )
     if q == "regime":
@@ -242,24 +243,33 @@ def _evaluate(q: str, sid: str, runs: dict[str, _Run]):
         late = _growing(run.paper.t[run.paper.t >= 0.8 * t_end], run.paper.x[run.paper.t >= 0.8 * t_end])
         paper = "growing at t_end" if late == "yes" else "steady at t_end"
         sigma = osc.decay_rate
-        return (
-            paper,
-            _stability(osc.c),
-            (
-                f"c = {osc.c:g} N s/m puts both roots at Re s = {-sigma:.4g} 1/s, so the response is bounded by "
-                f"x_ss = {ss.amplitude:.4g} m; growth in the window is the transient settling "
-                f"(2 % settling time {run.settle:.3g} s)."
-            ),
-        )
+        if osc.c <= 0:
+            why = f"c = {osc.c:g} N s/m leaves a root at Re s = {-sigma:.4g} 1/s >= 0: the response is not bounded."
+        else:
+            settle = (
+                f"the window ends before the transient has settled (2 % settling time {run.settle:.3g} s)"
+                if run.settle > t_end
+                else f"it settles within {run.settle:.3g} s"
+            )
+            why = (
+                f"c = {osc.c:g} N s/m puts both roots in the left half-plane (slowest decay rate "
+                f"{1 / osc.time_constant:.4g} 1/s), so the response is bounded by "
+                f"x_ss = {ss.amplitude:.4g} m plus a decaying transient; {settle}."
+            )
+        return paper, _stability(osc.c), why
     if q == "growing_throughout":
-        return (
-            _growing(run.paper.t, run.paper.x),
-            _growing(run.exact.t, run.exact.x),
-            (
+        grows = _growing(run.exact.t, run.exact.x)
+        if grows == "yes":
+            why = (
                 f"The envelope rises as x_ss (1 - exp(-t/tau)) with tau = {osc.time_constant:.3g} s toward "
                 f"x_ss = {ss.amplitude:.4g} m, reached (2 %) only after {run.settle:.3g} s."
-            ),
-        )
+            )
+        else:
+            why = (
+                f"The cycle peaks do not rise throughout: the transient (tau = {osc.time_constant:.3g} s) beats "
+                f"against the forcing or has died out, around x_ss = {ss.amplitude:.4g} m."
+            )
+        return _growing(run.paper.t, run.paper.x), grows, why
     if q == "steady_in_window":
         inside = run.settle <= t_end
         return (

@@ -40,7 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .model import Oscillator, ParameterError, SineForce, check_real
+from .model import Oscillator, ParameterError, SineForce, check_real, check_records
 
 
 @dataclass(frozen=True)
@@ -108,6 +108,7 @@ def steady_state(osc: Oscillator, force: SineForce) -> SteadyState:
     >>> round(ss.magnification, 4)
     1.8015
     """
+    check_records(osc, force)
     r = force.omega / osc.natural_frequency  # frequency ratio
     two_zeta_r = 2.0 * osc.damping_ratio * r
     one_minus = (1.0 - r) * (1.0 + r)
@@ -126,7 +127,10 @@ def steady_state(osc: Oscillator, force: SineForce) -> SteadyState:
 
 
 def _times(t) -> np.ndarray:
-    arr = np.asarray(t, dtype=float)
+    try:
+        arr = np.asarray(t, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"t = {t!r} is not an array of numbers: allowed finite times in s") from None
     if arr.ndim > 1:
         raise ParameterError(f"t has shape {arr.shape}: allowed a scalar or a 1-D array of times in s")
     if not np.all(np.isfinite(arr)):
@@ -244,6 +248,7 @@ def exact_response(osc: Oscillator, force: SineForce, t, x0: float = 0.0, v0: fl
     >>> bool(abs(r.x[1] + np.pi / 4) < 1e-15)
     True
     """
+    check_records(osc, force)
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
     tt = _times(t)

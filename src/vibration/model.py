@@ -94,6 +94,14 @@ def check_int(name: str, value, *, low: int, high: int) -> int:
     return v
 
 
+def check_records(osc, force) -> None:
+    """Raise :class:`ParameterError` unless ``osc`` is an :class:`Oscillator` and ``force`` a :class:`SineForce`."""
+    if not isinstance(osc, Oscillator):
+        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
+    if not isinstance(force, SineForce):
+        raise ParameterError(f"force = {force!r} is not a SineForce: allowed SineForce(F0, omega)")
+
+
 def _u(unit: str) -> str:
     return f" {unit}" if unit else ""
 
@@ -145,7 +153,7 @@ class Oscillator:
     @property
     def critical_damping(self) -> float:
         """Critical damping coefficient ``2 sqrt(k m)``, N s/m."""
-        return 2.0 * math.sqrt(self.k * self.m)
+        return 2.0 * math.sqrt(self.k) * math.sqrt(self.m)  # no overflow of k m at extreme scales
 
     @property
     def damping_ratio(self) -> float:
@@ -193,7 +201,7 @@ class Oscillator:
             return math.nan
         if self.c == 0.0:
             return math.inf
-        return math.sqrt(self.k * self.m) / self.c
+        return math.sqrt(self.k) * math.sqrt(self.m) / self.c
 
     @property
     def half_power_bandwidth(self) -> float:

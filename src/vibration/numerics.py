@@ -8,7 +8,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from .exact import Response
-from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
+from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real, check_records
 
 #: Integrators of solve_ivp accepted by :func:`simulate`.
 METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
@@ -76,6 +76,7 @@ def simulate(
     >>> r.t.shape, r.method, r.status
     ((5001,), 'RK45', 0)
     """
+    check_records(osc, force)
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
     x0 = check_real("x0", x0, unit="m")

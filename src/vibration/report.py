@@ -22,6 +22,7 @@ import math
 import os
 import re
 import shutil
+import signal
 import sys
 import tempfile
 import time
@@ -37,22 +38,26 @@ KERNEL = "vibration"
 #: Allowed ranges of the chapters' parameters: name -> (low, low_open, high, unit).
 #: A notebook may declare other names; those are only type-checked here.
 PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
-    "m": (0.0, True, None, "kg"),
-    "k": (0.0, True, None, "N/m"),
-    "F0": (0.0, True, None, "N"),
-    "t_end": (0.0, True, 1e4, "s"),
-    "omega_ref": (0.0, True, None, "rad/s"),
-    "omega_res": (0.0, True, None, "rad/s"),
-    "c_low": (0.0, True, None, "N s/m"),
-    "c_nominal": (0.0, True, None, "N s/m"),
-    "c_high": (0.0, True, None, "N s/m"),
+    "m": (1e-3, False, 1e3, "kg"),
+    "k": (1e-3, False, 1e6, "N/m"),
+    "F0": (0.0, True, 1e4, "N"),
+    "t_end": (0.0, True, 1e3, "s"),
+    "omega_ref": (0.0, True, 1e3, "rad/s"),
+    "omega_res": (0.0, True, 1e3, "rad/s"),
+    "c_low": (1e-3, False, 1e4, "N s/m"),
+    "c_nominal": (1e-3, False, 1e4, "N s/m"),
+    "c_high": (1e-3, False, 1e4, "N s/m"),
     "n_points": (2, False, 200_001, ""),
     "n_omega": (2, False, 2000, ""),
     "n_damping": (2, False, 2000, ""),
-    "omega_max": (0.0, True, None, "rad/s"),
-    "c_min": (0.0, True, None, "N s/m"),
-    "c_max": (0.0, True, None, "N s/m"),
+    "omega_max": (0.0, True, 1e3, "rad/s"),
+    "c_min": (1e-3, False, 1e4, "N s/m"),
+    "c_max": (1e-3, False, 1e4, "N s/m"),
 }
+#: Most forcing or natural periods the window may hold (the paper's holds 36).
+MAX_PERIODS = 1000
+#: Largest (c / m) t_end, the stiffness the paper's explicit RK45 is asked to cross (the paper's: 750).
+MAX_STIFFNESS = 1e6
 assert PARAMETER_RULES["n_points"][2] <= N_POINTS_MAX
 
 
@@ -151,12 +156,35 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
             else:
                 check_real(name, value, low=low, low_open=low_open, high=high, unit=unit)
         values[name] = value
-    if "c_min" in values or "c_max" in values:
-        c_min = values.get("c_min", _default(chapters, "c_min"))
-        c_max = values.get("c_max", _default(chapters, "c_max"))
-        if c_min is not None and c_max is not None and not c_max > c_min:
-            raise ParameterError(f"c_max = {c_max!r} N s/m must exceed c_min = {c_min!r} N s/m")
+    _check_together(chapters, values)
     return values
+
+
+def _check_together(chapters: list[Chapter], values: dict) -> None:
+    """Limits that involve several parameters, on the values a run would use."""
+
+    def get(name):
+        return values.get(name, _default(chapters, name))
+
+    c_min, c_max = get("c_min"), get("c_max")
+    if c_min is not None and c_max is not None and not c_max > c_min:
+        raise ParameterError(f"c_max = {c_max!r} N s/m must exceed c_min = {c_min!r} N s/m")
+    m, k, t_end = get("m"), get("k"), get("t_end")
+    if None in (m, k, t_end):
+        return
+    fastest = max([math.sqrt(k / m)] + [w for w in map(get, ("omega_ref", "omega_res", "omega_max")) if w])
+    periods = fastest * t_end / (2 * math.pi)
+    if periods > MAX_PERIODS:
+        raise ParameterError(
+            f"t_end = {t_end!r} s holds {periods:.0f} periods of the fastest frequency ({fastest:.4g} rad/s, "
+            f"from m = {m!r} kg, k = {k!r} N/m and the forcing): allowed at most {MAX_PERIODS}"
+        )
+    c = max([x for x in map(get, ("c_low", "c_nominal", "c_high")) if x] or [0.0])  # the ones RK45 meets
+    if c / m * t_end > MAX_STIFFNESS:
+        raise ParameterError(
+            f"c = {c!r} N s/m with m = {m!r} kg over t_end = {t_end!r} s: (c/m) t_end = {c / m * t_end:.3g} "
+            f"is out of range: allowed at most {MAX_STIFFNESS:g} (the paper's explicit RK45 would crawl)"
+        )
 
 
 def _default(chapters: list[Chapter], name: str):
@@ -275,11 +303,11 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
 
 
 def _short(exc: Exception) -> str:
-    text = str(exc)
-    lines = [ln for ln in text.splitlines() if ln.strip()]
-    for ln in lines:
-        if "Error" in ln and ":" in ln:
-            return ln.strip()
+    """``Name: message`` of the error a chapter raised (papermill keeps both)."""
+    name, value = getattr(exc, "ename", None), getattr(exc, "evalue", None)
+    if name:
+        return f"{name}: {value}"
+    lines = [ln for ln in str(exc).splitlines() if ln.strip()]
     return lines[-1].strip() if lines else type(exc).__name__
 
 
@@ -326,6 +354,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--list", action="store_true", help="list chapters and their parameters")
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
     args = parser.parse_args(argv)
+    previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         chapters = select(discover(), args.chapters)
         if args.list:
@@ -350,7 +379,14 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("interrupted: the previous output was left as it was", file=sys.stderr)
         return 130
+    finally:
+        signal.signal(signal.SIGTERM, previous)
     return 0
+
+
+def _terminate(signum, frame):
+    """SIGTERM ends the run like Ctrl-C, so the temporary folder is removed."""
+    raise KeyboardInterrupt
 
 
 if __name__ == "__main__":

@@ -79,8 +79,10 @@ def slider_panel_html(
     F0 : float
         Force amplitude, N (>= 0).
     c : float
-        Initial damping, N s/m; the logarithmic slider spans ``C_MIN = 0.01``
-        to ``max(20, 2 c_crit)`` N s/m and ``c`` must lie in that range.
+        Initial damping, N s/m (> 0); the logarithmic slider spans
+        ``min(C_MIN, c)`` to ``max(C_MAX, 2 c_crit, c)`` N s/m, so 0.01 and 20 N s/m
+        are always reachable. The JavaScript closed form has no near-resonance
+        branch: below about 1e-6 N s/m at exact undamped resonance it loses accuracy.
     omega : float
         Initial forcing frequency, rad/s (> 0); the slider spans 0.01 rad/s to
         ``max(3 omega_n, 1.5 omega)`` in steps of 0.01 rad/s.
@@ -108,9 +110,10 @@ def slider_panel_html(
     m = check_real("m", m, low=0.0, low_open=True, unit="kg")
     k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
     F0 = check_real("F0", F0, low=0.0, unit="N")
-    c_crit = 2.0 * math.sqrt(k * m)
-    c_max = max(C_MAX, 2.0 * c_crit)
-    c = check_real("c", c, low=C_MIN, high=c_max, unit="N s/m")
+    c_crit = 2.0 * math.sqrt(k) * math.sqrt(m)
+    c = check_real("c", c, low=0.0, low_open=True, unit="N s/m")
+    c_min = min(C_MIN, c)  # the slider always reaches C_MIN and the starting value
+    c_max = max(C_MAX, 2.0 * c_crit, c)
     omega = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     n_points = check_int("n_points", n_points, low=2, high=100_001)
@@ -124,13 +127,13 @@ def slider_panel_html(
         "omega": omega,
         "t_end": t_end,
         "n_points": n_points,
-        "c_min": C_MIN,
+        "c_min": c_min,
         "c_max": c_max,
     }
     if panel_id is not None and not re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", panel_id):
         raise ParameterError(f"panel_id = {panel_id!r}: allowed a letter followed by letters, digits, _ or -")
     pid = panel_id or _panel_id(params)
-    c_pos = round(C_STEPS * math.log(c / C_MIN) / math.log(c_max / C_MIN))
+    c_pos = round(C_STEPS * math.log(c / c_min) / math.log(c_max / c_min))
     e = html.escape
     readout = [
         ("natural frequency ω<sub>n</sub>", "vib-r-wn", "regime", "vib-r-regime"),
