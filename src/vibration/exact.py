@@ -140,17 +140,17 @@ def _times(t) -> np.ndarray:
 
 
 def _kernels(osc: Oscillator, t: np.ndarray):
-    """Return ``(kc, g, s1, s2, cb, sb, env)`` in a form stable in every regime.
+    """Return ``(kc, g, s1, s2, cb, sb)`` in a form stable in every regime.
 
     ``g(t) = E[s1, s2](t)`` is the unit impulse response times m (s) and
     ``kc = g'(t) + sigma g(t)`` (``exp(-sigma t) cos(wd t)`` when underdamped).
-    For oscillating roots ``cb, sb = cos, sin(wd t)`` and ``env = exp(-sigma t)``
-    are returned for reuse (else ``None``).
+    For oscillating roots ``cb, sb = cos, sin(wd t)`` are returned for reuse by
+    :func:`_forced_near` (else ``None``).
     """
     sigma = osc.decay_rate
     wn2 = osc.k / osc.m
     q = wn2 - sigma * sigma
-    cb = sb = env = None
+    cb = sb = None
     if q > 0.0:  # oscillating roots -sigma +/- i wd
         wd = math.sqrt(q)
         env = np.exp(-sigma * t)
@@ -171,7 +171,7 @@ def _kernels(osc: Oscillator, t: np.ndarray):
         e2m = np.expm1(-2.0 * mu * t)
         kc, ks = 0.5 * e_hi * (2.0 + e2m), -e_hi * e2m / (2.0 * mu)
         s1, s2 = complex(s_hi, 0.0), complex(s_lo, 0.0)
-    return kc, ks, s1, s2, cb, sb, env
+    return kc, ks, s1, s2, cb, sb
 
 
 #: Below this value of ``|i omega - s1| max|t|`` the forced response is formed by
@@ -253,7 +253,7 @@ def exact_response(osc: Oscillator, force: SineForce, t, x0: float = 0.0, v0: fl
     v0 = check_real("v0", v0, unit="m/s")
     tt = _times(t)
     flat = np.atleast_1d(tt)
-    kc, g, s1, s2, cb, sb, env = _kernels(osc, flat)
+    kc, g, s1, s2, cb, sb = _kernels(osc, flat)
     sigma, wn2, w = osc.decay_rate, osc.k / osc.m, force.omega
     x = v = 0.0
     if force.F0 != 0.0 and w != 0.0:

@@ -258,7 +258,7 @@ def _peak_kernel():
     import numba
 
     @numba.njit(parallel=True, cache=True)
-    def kernel(sw, cw, dg, g, p, q, a, b):  # pragma: no cover - compiled
+    def kernel(sw, cw, kc, g, p, q, a, b):  # pragma: no cover - compiled
         nc, nw, nt = p.shape[0], p.shape[1], sw.shape[1]
         out = np.empty((nc, nw))
         for i in numba.prange(nc):
@@ -266,7 +266,7 @@ def _peak_kernel():
                 pij, qij, aij, bij = p[i, j], q[i, j], a[i, j], b[i, j]
                 best = 0.0
                 for n in range(nt):
-                    val = abs(pij * sw[j, n] + qij * cw[j, n] + aij * dg[i, n] + bij * g[i, n])
+                    val = abs(pij * sw[j, n] + qij * cw[j, n] + aij * kc[i, n] + bij * g[i, n])
                     if val > best:
                         best = val
                 out[i, j] = best
@@ -338,24 +338,24 @@ def peak_displacement_map(
     t = np.linspace(0.0, t_end, n_points)
     wt = np.multiply.outer(w, t)
     sw, cw = np.sin(wt), np.cos(wt)
-    dg = np.empty((c.size, n_points))
+    kc = np.empty((c.size, n_points))
     g = np.empty((c.size, n_points))
     for i, ci in enumerate(c):
-        kc, g[i], *_ = _kernels(Oscillator(m, float(ci), k), t)
-        dg[i] = kc - (ci / (2.0 * m)) * g[i]
+        kc[i], g[i], *_ = _kernels(Oscillator(m, float(ci), k), t)
     # distance from i omega to the nearest characteristic root, 1/s
-    sig = (c / (2.0 * m))[:, None]
-    root = np.emath.sqrt(sig * sig - k / m)
-    dist = np.minimum(np.abs(1j * w[None, :] + sig - root), np.abs(1j * w[None, :] + sig + root))
+    sigma = (c / (2.0 * m))[:, None]
+    root = np.emath.sqrt(sigma * sigma - k / m)
+    dist = np.minimum(np.abs(1j * w[None, :] + sigma - root), np.abs(1j * w[None, :] + sigma + root))
     near = dist * t_end < NEAR
     den = (k - m * w * w)[None, :] + 1j * np.multiply.outer(c, w)
     with np.errstate(divide="ignore", invalid="ignore"):
         h = np.where(near, 0.0, F0 / np.where(near, 1.0, den))
     p, q = h.real, h.imag
-    sigma = c / (2.0 * m)
+    # transient = free response from x0 = -q, v0 = -omega p, as in exact_response:
+    # x0 kc + (v0 + sigma x0) g
     a = -q
-    b = -w[None, :] * p - 2.0 * sigma[:, None] * q
-    out = _peak_kernel()(sw, cw, dg, g, p, q, a, b)
+    b = -w[None, :] * p - sigma * q
+    out = _peak_kernel()(sw, cw, kc, g, p, q, a, b)
     for i, j in zip(*np.nonzero(near), strict=True):
         r = exact_response(Oscillator(m, float(c[i]), k), SineForce(F0, float(w[j])), t)
         out[i, j] = np.max(np.abs(r.x))

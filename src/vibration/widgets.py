@@ -152,26 +152,8 @@ class Explorer(widgets.VBox):
     (and tests) can drive it as a user would: setting
     ``omega_slider.value`` or ``m_text.value`` runs :meth:`update`.
 
-    Parameters
-    ----------
-    m : float
-        Mass, kg (> 0).
-    k : float
-        Stiffness, N/m (> 0).
-    F0 : float
-        Force amplitude, N (>= 0).
-    c : float
-        Viscous damping, N s/m; the log slider spans ``[0.01, 20]`` and is
-        widened to include ``c`` (> 0).
-    omega : float
-        Forcing frequency, rad/s (> 0).
-    t_end : float
-        Time window ``[0, t_end]``, s (> 0).
-    n_points : int
-        Samples in the window (2 to ``N_POINTS_MAX``).
-    show_rk45 : bool
-        Overlay :func:`~vibration.simulate` with SciPy's defaults (RK45,
-        ``rtol=1e-3``, ``atol=1e-6``), the paper's method.
+    The constructor takes the arguments of :func:`explorer` (documented there,
+    with units).
 
     Attributes
     ----------
