@@ -33,8 +33,9 @@ browser: ## install Debian's Chromium for the browser tests if it is missing
 report: $(STAMP) ## run every chapter with papermill and render build/report/index.html
 	$(PY) -m vibration.report --out $(BUILD)
 
-test: $(STAMP) browser ## lint, unit, property, doctests, strict nbval and browser tests
+test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval and browser tests
 	$(PY) -m ruff check src tests notebooks
+	$(VENV)/bin/lint-imports
 	@mkdir -p $(BUILD); rc=0; \
 	$(PY) -m pytest --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg tests src notebooks || rc=$$?; \
 	echo $$rc > $(BUILD)/pytest.rc; \
@@ -47,9 +48,10 @@ test-fast: $(STAMP) ## unit, property and doctests only (no notebooks, no browse
 bench: $(STAMP) ## print speed ratios measured side by side in one run
 	$(PY) -m vibration.bench
 
-lint: $(STAMP) ## ruff check and format check, notebooks included
+lint: $(STAMP) ## ruff check and format check (notebooks included), import-linter layers
 	$(PY) -m ruff check src tests notebooks
 	$(PY) -m ruff format --check src tests notebooks
+	$(VENV)/bin/lint-imports
 
 format: $(STAMP) ## apply ruff formatting and safe fixes
 	$(PY) -m ruff check --fix src tests notebooks

@@ -1,6 +1,6 @@
 """The closed form against independent methods, in every regime.
 
-Two references, neither sharing code or formulas with ``vibration.exact``:
+Two references, neither sharing code or formulas with ``vibration.physics.exact``:
 
 * ``expm_response``: the matrix exponential of the linear system augmented with
   the forcing oscillator, state ``[x, v, sin wt, cos wt]``;
@@ -12,7 +12,7 @@ Two references, neither sharing code or formulas with ``vibration.exact``:
 Errors are measured as ``max|err| / max|ref|`` over the window. Measured (this
 machine, SciPy 1.17): exact vs expm worst 5e-13 (undamped, 20 s, where expm's
 own error dominates), exact vs decimal worst 1.1e-14, in every case except
-these, which fail (bugs in ``vibration.exact``, reported to the lead):
+these, which fail (bugs in ``vibration.physics.exact``, reported to the lead):
 
 * forced, c < -c_crit (two positive real roots): 6.6e-2 at c = -2 sqrt(k m),
   5.6e-10 at c = -15 over 2 s, 2.5e-3 at c = -12 over 1 s;

@@ -1,4 +1,4 @@
-"""Offline HTML rendering of executed notebooks (vibration.render)."""
+"""Offline HTML rendering of executed notebooks (vibration.publishing.render)."""
 
 from __future__ import annotations
 
@@ -11,7 +11,8 @@ import pytest
 from conftest import open_offline
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook, new_output
 
-from vibration.render import (
+from vibration.presentation.static_page import slider_panel_html
+from vibration.publishing.render import (
     EXTRA_HTML_MARKER,
     external_urls,
     latex_to_mathml,
@@ -19,7 +20,6 @@ from vibration.render import (
     strip_widgets,
     write_index_html,
 )
-from vibration.static_page import slider_panel_html
 
 MARKDOWN = r"""# Forced response
 

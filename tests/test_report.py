@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 
 import vibration
-from vibration import report
-from vibration.model import ParameterError
+from vibration.physics.model import ParameterError
+from vibration.publishing import report
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -6,7 +6,7 @@ import pytest
 from conftest import open_offline
 from test_static_page import SCREENSHOTS, _panel_state
 
-from vibration import report
+from vibration.publishing import report
 
 
 @pytest.fixture(scope="module")

@@ -25,7 +25,7 @@ import pytest
 import scipy.integrate
 from scipy.integrate import solve_ivp
 
-import vibration.numerics
+import vibration.physics.numerics
 from vibration import N_POINTS_MAX, Oscillator, ParameterError, SineForce, exact_response, simulate
 
 ERR_FACTOR = 300.0
@@ -172,7 +172,7 @@ def test_failed_solver_result_raises_runtime_error(monkeypatch):
         sol.success = False
         return sol
 
-    monkeypatch.setattr(vibration.numerics, "solve_ivp", failing_solve_ivp)
+    monkeypatch.setattr(vibration.physics.numerics, "solve_ivp", failing_solve_ivp)
     with pytest.raises(RuntimeError, match=r"LSODA.*Required step size"):
         simulate(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), 1.0, 11, method="LSODA")
 

@@ -14,12 +14,12 @@ import pytest
 from conftest import open_offline
 
 from vibration import Oscillator, ParameterError, SineForce, exact_response, settling_time, steady_state
-from vibration.render import external_urls
-from vibration.static_page import C_MIN, slider_panel_html
+from vibration.presentation.static_page import C_MIN, slider_panel_html
+from vibration.publishing.render import external_urls
 
 SCREENSHOTS = Path(__file__).resolve().parents[1] / "build" / "screenshots"
 
-#: Tolerances of the JavaScript against vibration.exact: x samples relative to max|x|, amplitude and
+#: Tolerances of the JavaScript against vibration.physics.exact: x samples relative to max|x|, amplitude and
 #: peak relative, settling time relative.
 RTOL_X = 1e-9
 RTOL_SETTLING = 1e-6

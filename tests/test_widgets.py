@@ -13,7 +13,7 @@ from numpy.testing import assert_allclose
 from PIL import Image
 
 from vibration import Oscillator, ParameterError, SineForce, settling_time, simulate, steady_state
-from vibration.widgets import C_MAX, C_MIN, Explorer, benchmark_updates, explorer
+from vibration.presentation.widgets import C_MAX, C_MIN, Explorer, benchmark_updates, explorer
 
 
 @pytest.fixture

@@ -22,8 +22,12 @@ Examples
 2.237
 """
 
-from .exact import Response, SteadyState, exact_response, steady_state
-from .frequency import (
+# Part II: each chapter's physics module lists its public names in __all__.
+from .physics import control, duffing, learning, stability, tmd, twin  # noqa: E402
+from .physics.control import *  # noqa: F403
+from .physics.duffing import *  # noqa: F403
+from .physics.exact import Response, SteadyState, exact_response, steady_state
+from .physics.frequency import (
     EnergyBalance,
     HalfPower,
     energy_balance,
@@ -34,9 +38,13 @@ from .frequency import (
     phase_lag,
     settling_time,
 )
-from .model import N_POINTS_MAX, REGIMES, Oscillator, ParameterError, SineForce
-from .numerics import METHODS, simulate
-from .paper import Scenario, load_claims, load_scenarios, paper_defaults
+from .physics.learning import *  # noqa: F403
+from .physics.model import N_POINTS_MAX, REGIMES, Oscillator, ParameterError, SineForce
+from .physics.numerics import METHODS, simulate
+from .physics.paper import Scenario, load_claims, load_scenarios, paper_defaults
+from .physics.stability import *  # noqa: F403
+from .physics.tmd import *  # noqa: F403
+from .physics.twin import *  # noqa: F403
 
 __all__ = [
     "METHODS",
@@ -64,5 +72,8 @@ __all__ = [
     "simulate",
     "steady_state",
 ]
+for _chapter in (stability, control, tmd, duffing, twin, learning):
+    __all__ += _chapter.__all__
+del _chapter
 
 __version__ = "0.1.0"

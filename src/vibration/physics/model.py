@@ -61,7 +61,7 @@ def check_real(
     >>> check_real("m", 0.0, low=0.0, low_open=True, unit="kg")
     Traceback (most recent call last):
     ...
-    vibration.model.ParameterError: m = 0.0 kg is out of range: allowed m > 0 kg, finite
+    vibration.physics.model.ParameterError: m = 0.0 kg is out of range: allowed m > 0 kg, finite
     """
     allowed = _describe(name, low, high, low_open, unit)
     if isinstance(value, bool) or not isinstance(value, numbers.Real):

@@ -8,7 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.colors import LogNorm
 
-from .exact import Response
+from ..physics.exact import Response
 
 TWO_PI = 2.0 * math.pi
 

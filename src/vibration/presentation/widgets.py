@@ -52,10 +52,10 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from PIL import Image
 
-from .exact import exact_response, steady_state
-from .frequency import magnification, settling_time
-from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
-from .numerics import simulate
+from ..physics.exact import exact_response, steady_state
+from ..physics.frequency import magnification, settling_time
+from ..physics.model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
+from ..physics.numerics import simulate
 
 __all__ = ["Explorer", "benchmark_updates", "explorer"]
 

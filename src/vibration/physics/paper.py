@@ -16,7 +16,7 @@ def data_dir() -> Path:
     ``$VIBRATION_DATA`` if set, else the project's ``data/`` next to ``src/``.
     """
     env = os.environ.get("VIBRATION_DATA")
-    return Path(env) if env else Path(__file__).resolve().parents[2] / "data"
+    return Path(env) if env else Path(__file__).resolve().parents[3] / "data"
 
 
 @dataclass(frozen=True)

@@ -70,7 +70,7 @@ _TEMPLATE = r"""{%- extends 'index.html.j2' -%}
 
 
 def _css() -> str:
-    return files("vibration").joinpath("assets", "report.css").read_text(encoding="utf-8")
+    return files("vibration.presentation").joinpath("assets", "report.css").read_text(encoding="utf-8")
 
 
 # --------------------------------------------------------------------------- math
@@ -289,7 +289,7 @@ def render_notebook_html(
         Page title; default: the notebook's first ``# heading``, else the file stem.
     extra_html : str
         HTML placed at :data:`EXTRA_HTML_MARKER` if the page has one, else at
-        the end of the body (e.g. :func:`vibration.static_page.slider_panel_html`).
+        the end of the body (e.g. :func:`vibration.presentation.static_page.slider_panel_html`).
 
     Returns
     -------

@@ -9,11 +9,11 @@ from pathlib import Path
 
 import numpy as np
 
-from .exact import exact_response, steady_state
-from .frequency import settling_time
-from .model import Oscillator, SineForce, check_real
-from .numerics import DEFAULT_N_POINTS, simulate
-from .paper import Scenario
+from ..physics.exact import exact_response, steady_state
+from ..physics.frequency import settling_time
+from ..physics.model import Oscillator, SineForce, check_real
+from ..physics.numerics import DEFAULT_N_POINTS, simulate
+from ..physics.paper import Scenario
 
 #: Environment variable naming the folder where :func:`show_table` also writes CSV files.
 TABLES_ENV = "VIBRATION_TABLES_DIR"

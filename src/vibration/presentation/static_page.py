@@ -23,7 +23,7 @@ import math
 import re
 from importlib.resources import files
 
-from .model import ParameterError, check_int, check_real
+from ..physics.model import ParameterError, check_int, check_real
 
 #: Lowest damping the logarithmic slider reaches, N s/m (keeps undamped resonance out of reach).
 C_MIN = 0.01
@@ -41,8 +41,8 @@ _counter = itertools.count(1)
 
 
 def _asset(name: str) -> str:
-    """Text of ``vibration/assets/<name>``."""
-    return files("vibration").joinpath("assets", name).read_text(encoding="utf-8")
+    """Text of ``vibration/presentation/assets/<name>``."""
+    return files("vibration.presentation").joinpath("assets", name).read_text(encoding="utf-8")
 
 
 def _panel_id(params: dict) -> str:

@@ -8,7 +8,7 @@
  *   x_ss(t) = P sin(omega t) + Q cos(omega t),
  *   x_tr(t) = x0 g'(t) + (v0 + 2 sigma x0) g(t),  x0 = -Q,  v0 = -omega P,
  * where g is the impulse kernel exp(-sigma t) sin(wd t) / wd and its
- * critical / overdamped forms, written exactly as in vibration.exact._kernels
+ * critical / overdamped forms, written exactly as in vibration.physics.exact._kernels
  * (expm1 for the overdamped pair, so the kernels stay accurate near zeta = 1).
  *
  * window.vibrationSliders = {compute, settlingTime, steadyState, regime, mount, mountAll}

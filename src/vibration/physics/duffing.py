@@ -1,0 +1,3 @@
+"""The Duffing oscillator: harmonic balance, sweeps, jumps and chaos (Part II)."""
+
+__all__: list[str] = []

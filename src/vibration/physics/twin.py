@@ -1,0 +1,3 @@
+"""A digital twin: measurements, identification, tracking and change detection (Part II)."""
+
+__all__: list[str] = []

@@ -1,0 +1,198 @@
+"""Benchmarks, reported as ratios of medians measured side by side in one run.
+
+``python -m vibration.bench [--quick] [--skip-report]`` (``make bench``). Nothing here asserts
+a time: the tables are for reading. Targets (from the issues):
+
+* ``exact_response`` on 5001 points: >= 50x faster than RK45 at SciPy's defaults and
+  >= 1000x faster than RK45 at rtol 1e-9;
+* ``peak_displacement_map`` 200 x 200 x 5001: >= 1000x faster than the per-cell
+  ``solve_ivp`` loop a user would write;
+* slider update with 5001 samples: <= 30 ms median, against rebuilding the figure;
+* ``make report``: <= 2x the time papermill needs for as many empty notebooks.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..physics.exact import exact_response
+from ..physics.frequency import peak_displacement_map
+from ..physics.model import Oscillator, SineForce
+from ..physics.numerics import simulate
+
+
+def median_time(fn, repeats: int) -> float:
+    """Median wall time of ``fn()`` over ``repeats`` calls (one warm-up call first), s."""
+    fn()
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times)
+
+
+def table(title: str, rows: list[tuple[str, float, float | None, str]]) -> None:
+    print(f"\n{title}")
+    print(f"  {'case':58s} {'median':>12s} {'ratio':>10s}  target")
+    for name, t, ratio, target in rows:
+        r = f"{ratio:10.1f}x" if ratio is not None else " " * 11
+        print(f"  {name:58s} {t * 1e3:9.3f} ms {r}  {target}")
+
+
+def bench_exact(quick: bool) -> None:
+    """Closed form against the paper's integrator on the resonance scenario."""
+    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)
+    t = np.linspace(0.0, 50.0, 5001)
+    k = 1 if quick else 3
+    t_exact = median_time(lambda: exact_response(osc, force, t), 50 * k)
+    t_rk = median_time(lambda: simulate(osc, force, 50.0, 5001), 7 * k)
+    t_rk9 = median_time(lambda: simulate(osc, force, 50.0, 5001, rtol=1e-9, atol=1e-12), 3 * k)
+    t_dop = median_time(lambda: simulate(osc, force, 50.0, 5001, method="DOP853", rtol=1e-9, atol=1e-12), 3 * k)
+    table(
+        "exact_response on 5001 points (5 transcendental evaluations per sample) vs solve_ivp",
+        [
+            ("exact_response", t_exact, None, ""),
+            ("RK45, SciPy defaults (the paper's method)", t_rk, t_rk / t_exact, ">= 50x"),
+            ("RK45, rtol 1e-9, atol 1e-12", t_rk9, t_rk9 / t_exact, ">= 1000x"),
+            ("DOP853, rtol 1e-9, atol 1e-12", t_dop, t_dop / t_exact, ""),
+        ],
+    )
+
+
+def bench_map(quick: bool) -> None:
+    """Design map against the per-cell loops, the loops timed on a random sample of cells."""
+    m, k, F0 = 1.0, 20.0, 5.0
+    omegas = np.linspace(0.05, 10.0, 200)
+    dampings = np.geomspace(0.01, 20.0, 200)
+    t_map = median_time(lambda: peak_displacement_map(m, k, F0, omegas, dampings), 3 if quick else 5)
+    rng = np.random.default_rng(0)
+    cells = [(dampings[i], omegas[j]) for i, j in rng.integers(0, 200, size=(20 if quick else 60, 2))]
+    t = np.linspace(0.0, 50.0, 5001)
+
+    def loop_ivp():
+        for c, w in cells:
+            np.max(np.abs(simulate(Oscillator(m, c, k), SineForce(F0, w), 50.0, 5001).x))
+
+    def loop_exact():
+        for c, w in cells:
+            np.max(np.abs(exact_response(Oscillator(m, c, k), SineForce(F0, w), t).x))
+
+    scale = omegas.size * dampings.size / len(cells)
+    t_ivp = median_time(loop_ivp, 1 if quick else 3) * scale
+    t_naive = median_time(loop_exact, 3) * scale
+    table(
+        f"peak_displacement_map 200 x 200 x 5001 (loops timed on {len(cells)} random cells, scaled x{scale:.0f})",
+        [
+            ("peak_displacement_map", t_map, None, ""),
+            ("per-cell solve_ivp loop (RK45 defaults)", t_ivp, t_ivp / t_map, ">= 1000x"),
+            ("per-cell exact_response loop (naive closed form)", t_naive, t_naive / t_map, "(short of it)"),
+        ],
+    )
+
+
+def bench_widgets() -> None:
+    """Slider update of the live explorer against rebuilding its figure."""
+    try:
+        from ..presentation.widgets import benchmark_updates
+    except ImportError as exc:  # pragma: no cover - widgets are part of the project
+        print(f"\nslider update: skipped ({exc})")
+        return
+    res = benchmark_updates()
+    upd, rebuild = res["update_median_s"], res["rebuild_median_s"]
+    table(
+        "slider update with 5001 samples (kernel side, Agg draw included)",
+        [
+            ("update the artists' data", upd, None, "<= 30 ms"),
+            ("rebuild the figure each time", rebuild, rebuild / upd, ""),
+        ],
+    )
+
+
+def bench_report() -> None:
+    """The whole report against papermill on as many empty notebooks (same kernel, sequential)."""
+    import nbformat
+    import papermill
+
+    from .report import discover, kernel_name
+
+    chapters = discover()
+    kernel = kernel_name()
+    with tempfile.TemporaryDirectory() as tmp:
+        empty = Path(tmp) / "empty.ipynb"
+        nb = nbformat.v4.new_notebook()
+        nb.cells = [nbformat.v4.new_code_cell("x = 1")]
+        nb.metadata["kernelspec"] = {"name": kernel, "display_name": kernel, "language": "python"}
+        nbformat.write(nb, empty)
+
+        def empties():
+            for i in range(len(chapters)):
+                papermill.execute_notebook(
+                    str(empty), str(Path(tmp) / f"out{i}.ipynb"), kernel_name=kernel, progress_bar=False
+                )
+
+        def empties_cli():
+            exe = Path(sys.executable).parent / "papermill"
+            for i in range(len(chapters)):
+                out = str(Path(tmp) / f"cli{i}.ipynb")
+                subprocess.run(
+                    [str(exe), str(empty), out, "-k", kernel, "--no-progress-bar"], check=True, capture_output=True
+                )
+
+        t_empty = median_time(empties, 1)
+        t_cli = median_time(empties_cli, 1)
+        start = time.perf_counter()
+        subprocess.run(
+            [sys.executable, "-m", "vibration.report", "--out", str(Path(tmp) / "report")],
+            check=True,
+            capture_output=True,
+        )
+        t_report = time.perf_counter() - start
+    table(
+        f"report: {len(chapters)} chapters, run + render, vs papermill on {len(chapters)} empty notebooks",
+        [
+            ("papermill API in one process, empty notebooks", t_empty, None, ""),
+            ("papermill command, once per empty notebook", t_cli, None, ""),
+            ("python -m vibration.report (2 jobs), vs the API", t_report, t_report / t_empty, "<= 2x"),
+            ("python -m vibration.report (2 jobs), vs the command", t_report, t_report / t_cli, "<= 2x"),
+        ],
+    )
+
+
+def bench_chapters(quick: bool) -> None:
+    """Every ``vibration.publishing.benches.bench_*`` module's ``run(quick)``, in name order."""
+    import importlib
+    import pkgutil
+
+    from . import benches
+
+    for info in sorted(pkgutil.iter_modules(benches.__path__), key=lambda i: i.name):
+        if info.name.startswith("bench_"):
+            importlib.import_module(f"{benches.__name__}.{info.name}").run(quick)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m vibration.bench")
+    parser.add_argument("--quick", action="store_true", help="fewer repeats")
+    parser.add_argument("--skip-report", action="store_true", help="do not time the whole report")
+    args = parser.parse_args(argv)
+    print("vibration benchmarks: medians of repeated runs, ratios measured side by side in this run")
+    bench_exact(args.quick)
+    bench_map(args.quick)
+    bench_widgets()
+    bench_chapters(args.quick)
+    if not args.skip_report:
+        bench_report()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,393 @@
+"""Run the report's chapters with papermill and render them to HTML.
+
+Usage::
+
+    python -m vibration.report [CHAPTER ...] [-p NAME VALUE ...] [--out DIR]
+    python -m vibration.report --list
+    python -m vibration.report --in-place      # re-execute notebooks/ (nbval references)
+
+Chapters are the notebooks in ``notebooks/`` (``01_reproduction`` may be given
+as ``01``, ``1`` or ``reproduction``). ``-p NAME VALUE`` applies to every
+selected chapter that declares NAME; unknown names, values of the wrong type
+and values out of range are refused before any kernel starts. Output goes to
+``DIR/report`` (HTML, ``index.html``), ``DIR/tables`` (CSV) and
+``DIR/notebooks`` (executed copies); it is built in a temporary folder and
+moved into place only when every chapter succeeded.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import re
+import shutil
+import signal
+import sys
+import tempfile
+import time
+from concurrent.futures import ThreadPoolExecutor, as_completed
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..physics.model import N_POINTS_MAX, ParameterError, check_int, check_real
+from ..presentation.findings import TABLES_ENV
+
+KERNEL = "vibration"
+
+#: Allowed ranges of the chapters' parameters: name -> (low, low_open, high, unit).
+#: A notebook may declare other names; those are only type-checked here.
+PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
+    "m": (1e-3, False, 1e3, "kg"),
+    "k": (1e-3, False, 1e6, "N/m"),
+    "F0": (0.0, True, 1e4, "N"),
+    "t_end": (0.0, True, 1e3, "s"),
+    "omega_ref": (0.0, True, 1e3, "rad/s"),
+    "omega_res": (0.0, True, 1e3, "rad/s"),
+    "c_low": (1e-3, False, 1e4, "N s/m"),
+    "c_nominal": (1e-3, False, 1e4, "N s/m"),
+    "c_high": (1e-3, False, 1e4, "N s/m"),
+    "n_points": (2, False, 200_001, ""),
+    "n_omega": (2, False, 2000, ""),
+    "n_damping": (2, False, 2000, ""),
+    "omega_max": (0.0, True, 1e3, "rad/s"),
+    "c_min": (1e-3, False, 1e4, "N s/m"),
+    "c_max": (1e-3, False, 1e4, "N s/m"),
+}
+#: Most forcing or natural periods the window may hold (the paper's holds 36).
+MAX_PERIODS = 1000
+#: Largest (c / m) t_end, the stiffness the paper's explicit RK45 is asked to cross (the paper's: 750).
+MAX_STIFFNESS = 1e6
+assert PARAMETER_RULES["n_points"][2] <= N_POINTS_MAX
+
+
+def project_root() -> Path:
+    """The project folder (holding ``notebooks/``): ``$VIBRATION_ROOT`` or the source checkout."""
+    env = os.environ.get("VIBRATION_ROOT")
+    return Path(env) if env else Path(__file__).resolve().parents[3]
+
+
+@dataclass(frozen=True)
+class Chapter:
+    """One notebook of the report."""
+
+    path: Path  # source notebook
+    params: dict  # papermill's inspection: name -> {inferred_type_name, default, help}
+
+    @property
+    def name(self) -> str:
+        """File stem, e.g. ``01_reproduction``."""
+        return self.path.stem
+
+    def matches(self, key: str) -> bool:
+        """Whether ``key`` names this chapter (stem, number or stem without number)."""
+        num, _, rest = self.name.partition("_")
+        return key in (self.name, rest) or (key.isdigit() and num.isdigit() and int(key) == int(num))
+
+
+def discover(root: Path | None = None) -> list[Chapter]:
+    """All chapters in ``notebooks/``, sorted by file name."""
+    import papermill
+
+    folder = (root or project_root()) / "notebooks"
+    paths = sorted(p for p in folder.glob("*.ipynb") if not p.name.startswith("."))
+    return [Chapter(p, papermill.inspect_notebook(str(p))) for p in paths]
+
+
+def select(chapters: list[Chapter], keys: list[str]) -> list[Chapter]:
+    """The chapters named by ``keys`` (all when empty), in report order."""
+    if not keys:
+        return chapters
+    chosen = []
+    for key in keys:
+        hits = [c for c in chapters if c.matches(key)]
+        if not hits:
+            names = ", ".join(c.name for c in chapters)
+            raise ParameterError(f"chapter {key!r} does not exist: allowed {names}")
+        chosen += [c for c in hits if c not in chosen]
+    return [c for c in chapters if c in chosen]
+
+
+def _convert(name: str, text: str, type_name: str):
+    """Parse ``text`` as the declared type of parameter ``name``."""
+    if type_name == "int":
+        try:
+            return int(text)
+        except ValueError:
+            raise ParameterError(f"{name} = {text!r} is not an integer: allowed an integer") from None
+    if type_name == "float":
+        try:
+            value = float(text)
+        except ValueError:
+            raise ParameterError(f"{name} = {text!r} is not a number: allowed a real number") from None
+        if not math.isfinite(value):
+            raise ParameterError(f"{name} = {text!r} is not finite: allowed a finite real number")
+        return value
+    if type_name == "bool":
+        low = text.lower()
+        if low not in ("true", "false", "1", "0"):
+            raise ParameterError(f"{name} = {text!r} is not a boolean: allowed true or false")
+        return low in ("true", "1")
+    return text
+
+
+def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> dict[str, object]:
+    """Validate ``-p NAME VALUE`` pairs against the chapters' declarations and the rules.
+
+    Returns the typed values. Raises :class:`ParameterError` naming the
+    parameter, its value and what is allowed.
+    """
+    declared: dict[str, str] = {}
+    for ch in chapters:
+        for name, info in ch.params.items():
+            declared.setdefault(name, info.get("inferred_type_name") or "str")
+    values: dict[str, object] = {}
+    for name, text in pairs:
+        if name not in declared:
+            allowed = ", ".join(sorted(declared))
+            raise ParameterError(
+                f"parameter {name!r} (value {text!r}) is not declared by any chapter run: allowed {allowed}"
+            )
+        value = _convert(name, text, declared[name])
+        if name in PARAMETER_RULES:
+            low, low_open, high, unit = PARAMETER_RULES[name]
+            if declared[name] == "int":
+                check_int(name, value, low=int(low), high=int(high))
+            else:
+                check_real(name, value, low=low, low_open=low_open, high=high, unit=unit)
+        values[name] = value
+    _check_together(chapters, values)
+    return values
+
+
+def _check_together(chapters: list[Chapter], values: dict) -> None:
+    """Limits that involve several parameters, on the values a run would use."""
+
+    def get(name):
+        return values.get(name, _default(chapters, name))
+
+    c_min, c_max = get("c_min"), get("c_max")
+    if c_min is not None and c_max is not None and not c_max > c_min:
+        raise ParameterError(f"c_max = {c_max!r} N s/m must exceed c_min = {c_min!r} N s/m")
+    m, k, t_end = get("m"), get("k"), get("t_end")
+    if None in (m, k, t_end):
+        return
+    fastest = max([math.sqrt(k / m)] + [w for w in map(get, ("omega_ref", "omega_res", "omega_max")) if w])
+    periods = fastest * t_end / (2 * math.pi)
+    if periods > MAX_PERIODS:
+        raise ParameterError(
+            f"t_end = {t_end!r} s holds {periods:.0f} periods of the fastest frequency ({fastest:.4g} rad/s, "
+            f"from m = {m!r} kg, k = {k!r} N/m and the forcing): allowed at most {MAX_PERIODS}"
+        )
+    c = max([x for x in map(get, ("c_low", "c_nominal", "c_high")) if x] or [0.0])  # the ones RK45 meets
+    if c / m * t_end > MAX_STIFFNESS:
+        raise ParameterError(
+            f"c = {c!r} N s/m with m = {m!r} kg over t_end = {t_end!r} s: (c/m) t_end = {c / m * t_end:.3g} "
+            f"is out of range: allowed at most {MAX_STIFFNESS:g} (the paper's explicit RK45 would crawl)"
+        )
+
+
+def _default(chapters: list[Chapter], name: str):
+    for ch in chapters:
+        if name in ch.params:
+            return float(ch.params[name]["default"])
+    return None
+
+
+def _summary(nb) -> str:
+    """First sentence after "Overview." without LaTeX in it, for the index page.
+
+    Examples
+    --------
+    >>> import nbformat
+    >>> nb = nbformat.v4.new_notebook()
+    >>> nb.cells = [nbformat.v4.new_markdown_cell("**Overview.** It solves $x$. It maps `c`. Done.")]
+    >>> _summary(nb)
+    'It maps c.'
+    """
+    for cell in nb.cells:
+        if cell.cell_type == "markdown" and "Overview." in cell.source:
+            text = cell.source.split("Overview.", 1)[1].replace("**", "").replace("`", "").strip()
+            text = re.sub(r"\$\$.*?\$\$", "$", " ".join(text.split()))
+            sentences = re.split(r"(?<=[.!?])\s", text)
+            plain = [x for x in sentences if "$" not in x]
+            return plain[0] if plain else sentences[0]
+    return ""
+
+
+def _title(nb, fallback: str) -> str:
+    for cell in nb.cells:
+        if cell.cell_type == "markdown" and cell.source.lstrip().startswith("# "):
+            return cell.source.lstrip()[2:].splitlines()[0].strip()
+    return fallback
+
+
+def kernel_name() -> str:
+    """The project's kernel if installed (``make setup`` installs it), else ``python3``."""
+    from jupyter_client.kernelspec import KernelSpecManager
+
+    return KERNEL if KERNEL in KernelSpecManager().find_kernel_specs() else "python3"
+
+
+def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
+    import nbformat
+    import papermill
+
+    from .render import render_notebook_html
+
+    start = time.perf_counter()
+    params = {k: v for k, v in values.items() if k in ch.params}
+    executed = work / "notebooks" / ch.path.name
+    papermill.execute_notebook(
+        str(ch.path),
+        str(executed),
+        parameters=params,
+        kernel_name=kernel,
+        cwd=str(ch.path.parent),
+        progress_bar=False,
+        log_output=False,
+    )
+    nb = nbformat.read(executed, as_version=4)
+    title = _title(nb, ch.name)
+    render_notebook_html(nb, work / "report" / f"{ch.name}.html", title=title)
+    return {
+        "title": title,
+        "href": f"{ch.name}.html",
+        "summary": _summary(nb),
+        "elapsed_s": time.perf_counter() - start,
+        "name": ch.name,
+    }
+
+
+def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=print) -> list[dict]:
+    """Execute and render ``chapters`` into ``out`` (replaced only on success)."""
+    from .render import write_index_html
+
+    out = out.resolve()  # kernels run in notebooks/: every path they get must be absolute
+    out.mkdir(parents=True, exist_ok=True)
+    work = Path(tempfile.mkdtemp(prefix=".report-", dir=out))
+    try:
+        for sub in ("notebooks", "report", "tables"):
+            (work / sub).mkdir()
+        os.environ[TABLES_ENV] = str(work / "tables")
+        kernel = kernel_name()
+        total = len(chapters)
+        t0 = time.perf_counter()
+        results = {}
+        with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+            futures = {pool.submit(_run_chapter, ch, values, work, kernel): ch for ch in chapters}
+            for ch in chapters:
+                log(f"[start] {ch.name}")
+            for fut in as_completed(futures):
+                ch = futures[fut]
+                try:
+                    results[ch.name] = fut.result()
+                except Exception as exc:  # a chapter failed: report it, keep the old tree
+                    for other in futures:
+                        other.cancel()
+                    raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
+                done = len(results)
+                log(f"[{done}/{total}] {ch.name} done in {results[ch.name]['elapsed_s']:.1f} s")
+        ordered = [results[ch.name] for ch in chapters]
+        write_index_html(work / "report" / "index.html", ordered)
+        for sub in ("notebooks", "report", "tables"):
+            target = out / sub
+            if target.exists():
+                target.rename(work / f"old-{sub}")
+            (work / sub).rename(target)
+        log(f"report: {len(ordered)} chapters in {time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}")
+        return ordered
+    finally:
+        os.environ.pop(TABLES_ENV, None)
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def _short(exc: Exception) -> str:
+    """``Name: message`` of the error a chapter raised (papermill keeps both)."""
+    name, value = getattr(exc, "ename", None), getattr(exc, "evalue", None)
+    if name:
+        return f"{name}: {value}"
+    lines = [ln for ln in str(exc).splitlines() if ln.strip()]
+    return lines[-1].strip() if lines else type(exc).__name__
+
+
+def execute_in_place(chapters: list[Chapter], log=print) -> None:
+    """Re-execute the source notebooks and store their outputs (the nbval references).
+
+    Uses nbclient directly, so no papermill timestamps enter the committed files.
+    """
+    import nbformat
+    from nbclient import NotebookClient
+
+    kernel = kernel_name()
+    for ch in chapters:
+        start = time.perf_counter()
+        nb = nbformat.read(ch.path, as_version=4)
+        NotebookClient(
+            nb,
+            kernel_name=kernel,
+            timeout=900,
+            record_timing=False,
+            resources={"metadata": {"path": str(ch.path.parent)}},
+        ).execute()
+        nb.metadata.pop("widgets", None)
+        for cell in nb.cells:
+            cell.metadata.pop("execution", None)
+        nbformat.write(nb, ch.path)
+        log(f"{ch.name} re-executed in {time.perf_counter() - start:.1f} s")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m vibration.report", description=__doc__.split("\n\n")[0])
+    parser.add_argument("chapters", nargs="*", help="chapters to run (default: all)")
+    parser.add_argument(
+        "-p",
+        "--parameter",
+        nargs=2,
+        action="append",
+        default=[],
+        metavar=("NAME", "VALUE"),
+        help="set a parameter in every chapter that declares it",
+    )
+    parser.add_argument("--out", default="build", help="output folder (default: build)")
+    parser.add_argument("--jobs", type=int, default=2, help="chapters run at once (default: 2)")
+    parser.add_argument("--list", action="store_true", help="list chapters and their parameters")
+    parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
+    args = parser.parse_args(argv)
+    previous = signal.signal(signal.SIGTERM, _terminate)
+    try:
+        chapters = select(discover(), args.chapters)
+        if args.list:
+            for ch in chapters:
+                print(ch.name)
+                for name, info in ch.params.items():
+                    print(f"  {name}: {info['inferred_type_name']} = {info['default']}  # {info['help']}")
+            return 0
+        if args.in_place:
+            if args.parameter:
+                raise ParameterError("--in-place re-executes the references with their defaults: -p is not allowed")
+            execute_in_place(chapters)
+            return 0
+        values = check_parameters(chapters, [tuple(p) for p in args.parameter])
+        run(chapters, values, Path(args.out).resolve(), jobs=args.jobs)
+    except ParameterError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except RuntimeError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("interrupted: the previous output was left as it was", file=sys.stderr)
+        return 130
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+    return 0
+
+
+def _terminate(signum, frame):
+    """SIGTERM ends the run like Ctrl-C, so the temporary folder is removed."""
+    raise KeyboardInterrupt
+
+
+if __name__ == "__main__":
+    sys.exit(main())
