@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..physics.model import N_POINTS_MAX, ParameterError, check_int, check_real
-from ..presentation.findings import TABLES_ENV
+from ..presentation.tables import TABLES_ENV
 
 KERNEL = "vibration"
 

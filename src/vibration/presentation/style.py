@@ -1,0 +1,146 @@
+"""One figure style for the whole report, and a check that legends leave the data free.
+
+Every figure function calls :func:`figure` (or applies :data:`RC` itself) so sizes, fonts,
+grid and colours agree between chapters; labels use mathtext symbols (``r"$\\omega$ (rad/s)"``).
+:func:`legend_overlap` measures how much of a legend's box covers plotted data, so tests
+can check that legends sit outside the data or in a free corner instead of hoping so.
+
+Examples
+--------
+>>> import numpy as np
+>>> fig, ax = figure()
+>>> t = np.linspace(0, 10, 200)
+>>> _ = ax.plot(t, np.sin(t), label="sine")
+>>> _ = place_legend(ax)
+>>> legend_overlap(ax) == 0.0
+True
+"""
+
+from __future__ import annotations
+
+import matplotlib as mpl
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.transforms import Bbox
+
+#: Width of the text column of the book at 1280 px, inches at the figure dpi.
+WIDTH_IN = 7.2
+DPI = 110
+
+#: The report's rcParams (applied inside :func:`figure` with ``rc_context``-free global update).
+RC = {
+    "figure.dpi": DPI,
+    "savefig.dpi": DPI,
+    "figure.figsize": (WIDTH_IN, 3.6),
+    "figure.constrained_layout.use": True,
+    "font.size": 9.5,
+    "axes.titlesize": 10,
+    "axes.labelsize": 9.5,
+    "legend.fontsize": 8.5,
+    "xtick.labelsize": 8.5,
+    "ytick.labelsize": 8.5,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "legend.framealpha": 0.9,
+    "lines.linewidth": 1.4,
+    "axes.prop_cycle": mpl.cycler(
+        color=["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf", "#7f7f7f"]
+    ),
+    "mathtext.fontset": "dejavusans",
+}
+
+
+def use() -> None:
+    """Apply the report style to matplotlib's global settings."""
+    mpl.rcParams.update(RC)
+
+
+def figure(nrows: int = 1, ncols: int = 1, height: float = 3.6, **kwargs):
+    """A figure in the report style, the width of the text column: ``(fig, axes)``."""
+    import matplotlib.pyplot as plt
+
+    use()
+    fig, axes = plt.subplots(nrows, ncols, figsize=(WIDTH_IN, height), **kwargs)
+    return fig, axes
+
+
+def place_legend(ax, outside: bool = False, **kwargs):
+    """A legend in the corner that covers the least data, or to the right outside the axes.
+
+    Tries the four corners and the four edge midpoints, keeps the first with no overlap
+    (else the least), so the choice is measured, not hoped.
+    """
+    if outside:
+        return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, **kwargs)
+    best, best_loc = None, "best"
+    for loc in (
+        "upper right",
+        "upper left",
+        "lower right",
+        "lower left",
+        "upper center",
+        "lower center",
+        "center right",
+        "center left",
+    ):
+        leg = ax.legend(loc=loc, **kwargs)
+        frac = legend_overlap(ax)
+        if best is None or frac < best:
+            best, best_loc = frac, loc
+        if frac == 0.0:
+            return leg
+    return ax.legend(loc=best_loc, **kwargs)
+
+
+def _data_points_display(ax) -> np.ndarray:
+    pts = []
+    for line in ax.get_lines():
+        xy = np.column_stack(line.get_data(orig=False)).astype(float)
+        if xy.size:
+            pts.append(line.get_transform().transform(xy))
+    for coll in ax.collections:
+        offs = coll.get_offsets()
+        if len(offs):
+            pts.append(coll.get_offset_transform().transform(np.asarray(offs, float)))
+    return np.concatenate(pts) if pts else np.empty((0, 2))
+
+
+def legend_overlap(ax) -> float:
+    """Fraction of the plotted points (lines densified, markers) that fall inside the legend box.
+
+    0.0 means the legend covers no data. Lines are densified to 2000 points per segment
+    sequence so a legend sitting on a line between samples is still seen.
+    """
+    leg = ax.get_legend()
+    if leg is None:
+        return 0.0
+    fig: Figure = ax.figure
+    fig.canvas.draw()
+    box: Bbox = leg.get_window_extent()
+    pts = []
+    for line in ax.get_lines():
+        x, y = (np.asarray(a, float) for a in line.get_data(orig=False))
+        if x.size < 2:
+            if x.size:
+                pts.append(line.get_transform().transform(np.column_stack([x, y])))
+            continue
+        s = np.linspace(0, x.size - 1, max(2000, x.size))
+        xs, ys = np.interp(s, np.arange(x.size), x), np.interp(s, np.arange(y.size), y)
+        xy = line.get_transform().transform(np.column_stack([xs, ys]))
+        ax_box = ax.get_window_extent()
+        inside_axes = (
+            (xy[:, 0] >= ax_box.x0) & (xy[:, 0] <= ax_box.x1) & (xy[:, 1] >= ax_box.y0) & (xy[:, 1] <= ax_box.y1)
+        )
+        pts.append(xy[inside_axes & np.isfinite(xy).all(axis=1)])
+    other = _data_points_display(ax)
+    if other.size:
+        pts.append(other)
+    if not pts:
+        return 0.0
+    allp = np.concatenate(pts)
+    if not allp.size:
+        return 0.0
+    inside = (allp[:, 0] >= box.x0) & (allp[:, 0] <= box.x1) & (allp[:, 1] >= box.y0) & (allp[:, 1] <= box.y1)
+    return float(inside.mean())

@@ -1,0 +1,215 @@
+"""Tables for people and for nbval: one object, three representations.
+
+A :class:`Table` is a list of row dicts, the columns to show (header with symbol and
+unit, significant digits) and a caption. It renders as
+
+* ``text/markdown``: a MyST ``list-table`` with caption and label, so the book numbers it
+  per chapter and ``{numref}`` can refer to it;
+* ``text/html``: the same table for JupyterLab;
+* ``text/plain``: a fixed-precision aligned text table, the surface strict nbval compares.
+
+A cell that does not exist is :class:`Missing` (with the reason, shown once as a footnote)
+and reads "—", never ``nan``. Headers are plain text with an optional ``_`` subscript
+(``x_ss (m)`` renders x with subscript ss). When ``$VIBRATION_TABLES_DIR`` is set (the
+report runner sets it), showing a table also writes ``<name>.csv`` there.
+
+Examples
+--------
+>>> t = Table(
+...     [{"c": 0.5, "xss": 2.2370381}, {"c": 15.0, "xss": Missing("no peak when ζ ≥ 1/√2")}],
+...     [Column("c", "c (N s/m)", 3), Column("xss", "x_ss (m)", 4)],
+...     caption="Steady amplitudes.",
+...     name="tab-demo",
+... )
+>>> print(repr(t))
+Table tab-demo: Steady amplitudes.
+c (N s/m)  x_ss (m)
+---------  --------
+0.5        2.237
+15         —a
+a: no peak when ζ ≥ 1/√2
+"""
+
+from __future__ import annotations
+
+import csv
+import html
+import math
+import os
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+TABLES_ENV = "VIBRATION_TABLES_DIR"
+DASH = "—"
+_MARKS = "abcdefghijklmnopqrstuvwxyz"
+
+
+@dataclass(frozen=True)
+class Missing:
+    """A quantity that does not exist in this case, and why (shown as a footnote)."""
+
+    reason: str
+
+
+@dataclass(frozen=True)
+class Column:
+    """One column: the row key, the header (symbol and unit), significant digits."""
+
+    key: str  # key in each row dict
+    header: str  # e.g. "ω (rad/s)"; a "_" starts a subscript up to the next space or "("
+    digits: int = 4  # significant figures of floats
+
+
+def fmt(value, digits: int = 4) -> str:
+    """Fixed-precision text of a cell: floats to ``digits`` significant figures.
+
+    Examples
+    --------
+    >>> fmt(2.23703819), fmt(0.000123456), fmt(True), fmt(None), fmt(float("nan")), fmt("overdamped")
+    ('2.237', '0.0001235', 'yes', '—', '—', 'overdamped')
+    """
+    if value is None or isinstance(value, Missing):
+        return DASH
+    if isinstance(value, bool | np.bool_):
+        return "yes" if value else "no"
+    if isinstance(value, int | np.integer):
+        return str(int(value))
+    if isinstance(value, float | np.floating):
+        v = float(value)
+        if math.isnan(v):
+            return DASH
+        if math.isinf(v):
+            return "∞" if v > 0 else "−∞"
+        text = f"{v:.{digits}g}"
+        if "e" in text:
+            mant, exp = text.split("e")
+            text = f"{mant}e{int(exp)}"
+        return text
+    return str(value)
+
+
+_SUB = re.compile(r"_([^\s(]+)")
+
+
+def _header_html(text: str) -> str:
+    return _SUB.sub(lambda m: f"<sub>{m.group(1)}</sub>", html.escape(text))
+
+
+def _header_myst(text: str) -> str:
+    return _SUB.sub(lambda m: "{sub}`" + m.group(1) + "`", _escape_md(text))
+
+
+def _escape_md(text: str) -> str:
+    return re.sub(r"([\\`*_\[\]|<>#])", r"\\\1", text)
+
+
+@dataclass
+class Table:
+    """Rows with headers, units and a caption; see the module docstring."""
+
+    rows: Sequence[dict]
+    columns: Sequence[Column]
+    caption: str
+    name: str  # label for {numref}, e.g. "tab-claims"; also the CSV file name
+    notes: Sequence[str] = ()  # footnotes below the table (besides the Missing reasons)
+    csv: bool = True  # write <name>.csv when $VIBRATION_TABLES_DIR is set
+    _marks: dict = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if not self.rows:
+            raise ValueError(f"table {self.name!r} has no rows")
+        keys = {c.key for c in self.columns}
+        for i, row in enumerate(self.rows):
+            absent = keys - set(row)
+            if absent:
+                raise ValueError(f"table {self.name!r}: row {i} lacks column(s) {sorted(absent)}")
+        reasons: dict[str, str] = {}
+        for row in self.rows:
+            for c in self.columns:
+                v = row[c.key]
+                if isinstance(v, Missing) and v.reason not in reasons:
+                    reasons[v.reason] = _MARKS[len(reasons) % len(_MARKS)]
+        self._marks = reasons
+
+    # -- cells ---------------------------------------------------------------
+    def cells(self) -> list[list[str]]:
+        """Text of every cell (footnote marks appended to missing values)."""
+        out = []
+        for row in self.rows:
+            line = []
+            for c in self.columns:
+                v = row[c.key]
+                text = fmt(v, c.digits)
+                if isinstance(v, Missing):
+                    text += self._marks[v.reason]
+                line.append(text)
+            out.append(line)
+        return out
+
+    def footnotes(self) -> list[str]:
+        """The Missing reasons (``a: ...``) then the notes."""
+        return [f"{mark}: {reason}" for reason, mark in self._marks.items()] + list(self.notes)
+
+    # -- representations -----------------------------------------------------
+    def __repr__(self) -> str:
+        heads = [c.header for c in self.columns]
+        cells = self.cells()
+        widths = [max(len(h), *(len(r[i]) for r in cells)) for i, h in enumerate(heads)]
+        lines = [f"Table {self.name}: {self.caption}"]
+        lines.append("  ".join(h.ljust(w) for h, w in zip(heads, widths, strict=True)).rstrip())
+        lines.append("  ".join("-" * w for w in widths))
+        lines += ["  ".join(v.ljust(w) for v, w in zip(r, widths, strict=True)).rstrip() for r in cells]
+        lines += self.footnotes()
+        return "\n".join(lines)
+
+    def _repr_html_(self) -> str:
+        head = "".join(f"<th>{_header_html(c.header)}</th>" for c in self.columns)
+        body = "".join("<tr>" + "".join(f"<td>{html.escape(v)}</td>" for v in r) + "</tr>" for r in self.cells())
+        notes = "".join(f"<p class='vib-table-note'>{html.escape(n)}</p>" for n in self.footnotes())
+        return (
+            f"<div class='vib-table' id='{html.escape(self.name)}'><table>"
+            f"<caption>{html.escape(self.caption)}</caption>"
+            f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>{notes}</div>"
+        )
+
+    def _repr_markdown_(self) -> str:
+        lines = [f"```{{list-table}} {_escape_md(self.caption)}", ":header-rows: 1", f":name: {self.name}"]
+        lines.append(":class: vib-table")
+        lines.append("")
+        lines.append("* - " + "\n  - ".join(_header_myst(c.header) for c in self.columns))
+        for r in self.cells():
+            lines.append("* - " + "\n  - ".join(_escape_md(v) for v in r))
+        lines.append("```")
+        if self.footnotes():
+            lines.append("")
+            lines.append("<div class='vib-table-notes'>" + "<br>".join(map(html.escape, self.footnotes())) + "</div>")
+        return "\n".join(lines)
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        self.write_csv()
+        return {"text/plain": repr(self), "text/html": self._repr_html_(), "text/markdown": self._repr_markdown_()}
+
+    # -- files ---------------------------------------------------------------
+    def write_csv(self, folder: str | os.PathLike | None = None) -> Path | None:
+        """Write every column (full precision, 10 significant figures) to ``<name>.csv``."""
+        folder = folder or os.environ.get(TABLES_ENV)
+        if not (folder and self.csv):
+            return None
+        path = Path(folder) / f"{self.name}.csv"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with path.open("w", newline="", encoding="utf-8") as fh:
+            writer = csv.writer(fh, lineterminator="\n")
+            writer.writerow([c.header for c in self.columns])
+            for row in self.rows:
+                writer.writerow(["" if isinstance(row[c.key], Missing) else fmt(row[c.key], 10) for c in self.columns])
+        return path
+
+
+def table(rows: Iterable[dict], columns: Sequence[Column | tuple], caption: str, name: str, notes=()) -> Table:
+    """Shorthand: columns may be ``(key, header, digits)`` tuples."""
+    cols = [c if isinstance(c, Column) else Column(*c) for c in columns]
+    return Table(list(rows), cols, caption, name, tuple(notes))
