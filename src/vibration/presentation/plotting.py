@@ -1,14 +1,19 @@
-"""Figures of the report. Every function returns a matplotlib Figure; axes carry units."""
+"""Figures of Part I. Every function returns a matplotlib Figure in the report style
+(:func:`vibration.presentation.style.figure`), with mathtext symbols and units on the axes
+and legends placed where they cover no data (outside the axes or in a measured free corner).
+"""
 
 from __future__ import annotations
 
 import math
 
-import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.colors import LogNorm
+from matplotlib.lines import Line2D
+from matplotlib.ticker import LogLocator
 
 from ..physics.exact import Response
+from .style import figure, place_legend
 
 TWO_PI = 2.0 * math.pi
 
@@ -16,38 +21,64 @@ TWO_PI = 2.0 * math.pi
 def _hz_axis(ax) -> None:
     """Add a top axis in Hz to an axis whose x is angular frequency in rad/s."""
     sec = ax.secondary_xaxis("top", functions=(lambda w: w / TWO_PI, lambda f: f * TWO_PI))
-    sec.set_xlabel("forcing frequency f (Hz)")
+    sec.set_xlabel(r"forcing frequency $f$ (Hz)")
 
 
-def response_figure(runs: list[tuple[str, Response, Response]], title: str):
-    """Position, velocity and the paper's error against the exact solution.
+def _legend_above(ax, handles=None, ncol: int = 3):
+    """A legend in a row above the axes (outside the data)."""
+    kw = {"handles": handles} if handles is not None else {}
+    return ax.legend(
+        loc="lower left", bbox_to_anchor=(0.0, 1.02, 1.0, 0.1), ncol=ncol, borderaxespad=0.0, frameon=False, **kw
+    )
+
+
+def response_figure(runs: list[tuple[str, Response, Response]], title: str = ""):
+    """Displacement, velocity and the paper's error against the exact solution.
 
     Parameters
     ----------
     runs : list of (label, paper_response, exact_response)
         Responses on the same times (s; m; m/s).
     title : str
-        Figure title.
+        Figure title (mathtext allowed).
     """
-    fig, axes = plt.subplots(3, 1, figsize=(10, 9), sharex=True, layout="constrained")
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig, axes = figure(3, 1, height=6.6, sharex=True)
+    colors = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"]
+    handles = []
     for (label, paper, exact), col in zip(runs, colors, strict=False):
-        axes[0].plot(paper.t, paper.x, color=col, lw=1.0, label=f"{label}: RK45 (paper's method)")
+        axes[0].plot(paper.t, paper.x, color=col, lw=1.0)
         axes[0].plot(exact.t, exact.x, color="k", lw=0.6, ls="--")
-        axes[1].plot(paper.t, paper.v, color=col, lw=1.0, label=label)
+        axes[1].plot(paper.t, paper.v, color=col, lw=1.0)
         axes[1].plot(exact.t, exact.v, color="k", lw=0.6, ls="--")
         err = np.abs(paper.x - exact.x)
-        axes[2].semilogy(paper.t, np.where(err > 0, err, np.nan), color=col, lw=0.8, label=label)
-    axes[0].plot([], [], color="k", lw=0.6, ls="--", label="exact closed form")
-    axes[0].set_ylabel("displacement x (m)")
-    axes[1].set_ylabel("velocity v (m/s)")
-    axes[2].set_ylabel("|x_RK45 - x_exact| (m)")
-    axes[2].set_xlabel("time t (s)")
-    axes[0].legend(loc="upper left", fontsize=8, ncol=2)
-    for ax in axes:
-        ax.grid(alpha=0.3)
-    fig.suptitle(title)
+        axes[2].semilogy(paper.t, np.where(err > 0, err, np.nan), color=col, lw=0.8)
+        handles.append(Line2D([], [], color=col, lw=1.2, label=f"{label}: RK45 (paper's method)"))
+    handles.append(Line2D([], [], color="k", lw=0.6, ls="--", label="exact closed form"))
+    axes[0].set_ylabel(r"displacement $x$ (m)")
+    axes[1].set_ylabel(r"velocity $v$ (m/s)")
+    axes[2].set_ylabel(r"$|x_\mathrm{RK45} - x|$ (m)")
+    axes[2].set_xlabel(r"time $t$ (s)")
+    _legend_above(axes[0], handles, ncol=2)
+    if title:
+        fig.suptitle(title)
     return fig
+
+
+def resonance_figure(rep):
+    """The paper's Figure 1 redrawn: the resonance case by RK45 and exactly (a :class:`Reproduction`)."""
+    sc = rep.scenarios["resonance"]
+    return response_figure(
+        [(f"$c$ = {sc.oscillator.c:g} N s/m", rep.paper["resonance"], rep.exact["resonance"])],
+        rf"Resonance case: $\omega$ = {sc.force.omega:g} rad/s, $c$ = {sc.oscillator.c:g} N s/m",
+    )
+
+
+def damping_figure(rep):
+    """The paper's Figure 2 redrawn: three dampings at the resonant frequency (a :class:`Reproduction`)."""
+    ids = ("damping_low", "damping_nominal", "damping_high")
+    runs = [(f"$c$ = {rep.scenarios[s].oscillator.c:g} N s/m", rep.paper[s], rep.exact[s]) for s in ids]
+    w = rep.scenarios["damping_low"].force.omega
+    return response_figure(runs, rf"Three dampings at $\omega$ = {w:g} rad/s")
 
 
 def frequency_response_figure(curves, omegas, marks=(), omega_n: float | None = None):
@@ -64,56 +95,52 @@ def frequency_response_figure(curves, omegas, marks=(), omega_n: float | None = 
     omega_n : float, optional
         Natural frequency to draw as a vertical line, rad/s.
     """
-    fig, (ax_m, ax_p) = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True, layout="constrained")
+    fig, (ax_m, ax_p) = figure(2, 1, height=6.2, sharex=True)
     for label, mag, ph in curves:
         ax_m.loglog(omegas, mag, label=label)
         ax_p.semilogx(omegas, np.degrees(ph), label=label)
     for label, w, mag, ph in marks:
-        ax_m.plot(w, mag, "o", ms=6, mfc="none", mew=1.5)
+        ax_m.plot(w, mag, "o", ms=6, mfc="none", mew=1.5, color="k")
         ax_m.annotate(label, (w, mag), textcoords="offset points", xytext=(6, 4), fontsize=8)
-        ax_p.plot(w, math.degrees(ph), "o", ms=6, mfc="none", mew=1.5)
+        ax_p.plot(w, math.degrees(ph), "o", ms=6, mfc="none", mew=1.5, color="k")
     if omega_n is not None:
         for ax in (ax_m, ax_p):
             ax.axvline(omega_n, color="0.5", lw=0.8, ls=":")
-    ax_m.set_ylabel("magnification |x| / (F0/k) (-)")
-    ax_p.set_ylabel("phase lag of x behind F (deg)")
-    ax_p.set_xlabel("forcing frequency omega (rad/s)")
+    ax_m.set_ylabel(r"magnification $|X|\,/\,(F_0/k)$")
+    ax_p.set_ylabel(r"phase lag $\varphi$ (deg)")
+    ax_p.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
     ax_p.set_yticks([0, 45, 90, 135, 180])
     _hz_axis(ax_m)
-    ax_m.legend(fontsize=8)
-    for ax in (ax_m, ax_p):
-        ax.grid(alpha=0.3, which="both")
+    place_legend(ax_p)
     return fig
 
 
 def decomposition_figure(t, total, steady, transient, title: str):
     """A response split into its steady-state and transient parts (s; m)."""
-    fig, ax = plt.subplots(figsize=(10, 4), layout="constrained")
-    ax.plot(t, total, lw=1.2, label="total x(t)")
-    ax.plot(t, steady, lw=0.8, ls="--", label="steady state")
-    ax.plot(t, transient, lw=0.8, label="transient")
-    ax.set_xlabel("time t (s)")
-    ax.set_ylabel("displacement x (m)")
+    fig, ax = figure(1, 1, height=3.4)
+    ax.plot(t, total, lw=1.2, label=r"total $x(t)$")
+    ax.plot(t, steady, lw=0.8, ls="--", label=r"steady state $x_\mathrm{ss}(t)$")
+    ax.plot(t, transient, lw=0.8, label=r"transient $x(t) - x_\mathrm{ss}(t)$")
+    ax.set_xlabel(r"time $t$ (s)")
+    ax.set_ylabel(r"displacement $x$ (m)")
     ax.set_title(title)
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3)
+    _legend_above(ax, ncol=3)
+    ax.set_title(title, pad=22)
     return fig
 
 
 def energy_figure(t, balance, title: str):
     """Work of the force, dissipation, stored energy (J) and the residual (J)."""
-    fig, (ax, ax_r) = plt.subplots(2, 1, figsize=(10, 6), sharex=True, layout="constrained")
-    ax.plot(t, balance.work, label="work done by the force")
-    ax.plot(t, balance.dissipated, label="dissipated by the damper")
-    ax.plot(t, balance.stored, label="stored (kinetic + potential)")
+    fig, (ax, ax_r) = figure(2, 1, height=5.0, sharex=True, gridspec_kw={"height_ratios": (2.2, 1.0)})
+    ax.plot(t, balance.work, label=r"work of the force $W$")
+    ax.plot(t, balance.dissipated, label=r"dissipated by the damper $D$")
+    ax.plot(t, balance.stored, label=r"stored $\Delta E$ (kinetic + potential)")
     ax.set_ylabel("energy (J)")
     ax.set_title(title)
-    ax.legend(fontsize=8)
+    place_legend(ax)
     ax_r.plot(t, balance.residual, color="C3", lw=0.8)
-    ax_r.set_ylabel("residual W - D - E (J)")
-    ax_r.set_xlabel("time t (s)")
-    for a in (ax, ax_r):
-        a.grid(alpha=0.3)
+    ax_r.set_ylabel(r"$W - D - \Delta E$ (J)")
+    ax_r.set_xlabel(r"time $t$ (s)")
     return fig
 
 
@@ -122,33 +149,48 @@ def work_precision_figure(rows):
 
     ``rows``: dicts with ``method``, ``nfev``, ``time_s``, ``max_err_x_m``.
     """
-    fig, (ax_n, ax_t) = plt.subplots(1, 2, figsize=(11, 4.5), layout="constrained")
+    fig, (ax_n, ax_t) = figure(1, 2, height=3.4, sharey=True)
     for method in dict.fromkeys(r["method"] for r in rows):
         sel = [r for r in rows if r["method"] == method]
         err = [r["max_err_x_m"] for r in sel]
-        ax_n.loglog([r["nfev"] for r in sel], err, "o-", label=method)
-        ax_t.loglog([r["time_s"] for r in sel], err, "o-", label=method)
-    ax_n.set_xlabel("right-hand-side evaluations (-)")
-    ax_t.set_xlabel("wall time (s)")
+        ax_n.loglog([r["nfev"] for r in sel], err, "o-", ms=4, label=method)
+        ax_t.loglog([r["time_s"] for r in sel], err, "o-", ms=4, label=method)
+    ax_n.set_xlabel("right-hand-side evaluations")
+    ax_t.set_xlabel(r"wall time (s)")
+    ax_n.set_ylabel(r"max $|x - x_\mathrm{exact}|$ (m)")
     for ax in (ax_n, ax_t):
-        ax.set_ylabel("max |x - x_exact| (m)")
-        ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=8)
+        ax.xaxis.set_major_locator(LogLocator(base=10.0, numticks=5))
+        ax.grid(True, which="major", alpha=0.3)
+    place_legend(ax_n)
+    return fig
+
+
+def own_steps_figure(t, x_exact, own: Response, t_from: float):
+    """The last periods: exact displacement on the output grid and RK45's own steps (s; m)."""
+    fig, ax = figure(1, 1, height=3.0)
+    sel = t >= t_from
+    ax.plot(t[sel], x_exact[sel], "k-", lw=0.8, label="exact, on the output grid")
+    s2 = own.t >= t_from
+    ax.plot(own.t[s2], own.x[s2], "o-", ms=3.5, lw=1.0, label="RK45 at SciPy's defaults, its own steps only")
+    ax.set_xlabel(r"time $t$ (s)")
+    ax.set_ylabel(r"displacement $x$ (m)")
+    _legend_above(ax, ncol=2)
     return fig
 
 
 def design_map_figure(omegas, dampings, peaks, marks=(), omega_n: float | None = None):
     """Heat map of the window's peak |x| (m) over forcing frequency (rad/s) and damping (N s/m)."""
-    fig, ax = plt.subplots(figsize=(10, 6), layout="constrained")
+    fig, ax = figure(1, 1, height=4.6)
     mesh = ax.pcolormesh(omegas, dampings, peaks, norm=LogNorm(), shading="nearest", cmap="viridis")
-    fig.colorbar(mesh, ax=ax, label="peak |x| over the window (m)")
+    fig.colorbar(mesh, ax=ax, label=r"peak $|x|$ in the window (m)")
     ax.set_yscale("log")
+    ax.grid(False)
     for label, w, c in marks:
         ax.plot(w, c, "o", mfc="none", mec="w", ms=9, mew=1.5)
         ax.annotate(label, (w, c), textcoords="offset points", xytext=(8, 4), color="w", fontsize=8)
     if omega_n is not None:
         ax.axvline(omega_n, color="w", lw=0.6, ls=":")
-    ax.set_xlabel("forcing frequency omega (rad/s)")
-    ax.set_ylabel("damping coefficient c (N s/m)")
+    ax.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
+    ax.set_ylabel(r"damping coefficient $c$ (N s/m)")
     _hz_axis(ax)
     return fig
