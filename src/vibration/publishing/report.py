@@ -1,4 +1,4 @@
-"""Run the report's chapters with papermill and render them to HTML.
+"""Run the report's chapters with papermill and build them into a book (HTML and PDF).
 
 Usage::
 
@@ -20,7 +20,6 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import re
 import shutil
 import signal
 import sys
@@ -194,34 +193,6 @@ def _default(chapters: list[Chapter], name: str):
     return None
 
 
-def _summary(nb) -> str:
-    """First sentence after "Overview." without LaTeX in it, for the index page.
-
-    Examples
-    --------
-    >>> import nbformat
-    >>> nb = nbformat.v4.new_notebook()
-    >>> nb.cells = [nbformat.v4.new_markdown_cell("**Overview.** It solves $x$. It maps `c`. Done.")]
-    >>> _summary(nb)
-    'It maps c.'
-    """
-    for cell in nb.cells:
-        if cell.cell_type == "markdown" and "Overview." in cell.source:
-            text = cell.source.split("Overview.", 1)[1].replace("**", "").replace("`", "").strip()
-            text = re.sub(r"\$\$.*?\$\$", "$", " ".join(text.split()))
-            sentences = re.split(r"(?<=[.!?])\s", text)
-            plain = [x for x in sentences if "$" not in x]
-            return plain[0] if plain else sentences[0]
-    return ""
-
-
-def _title(nb, fallback: str) -> str:
-    for cell in nb.cells:
-        if cell.cell_type == "markdown" and cell.source.lstrip().startswith("# "):
-            return cell.source.lstrip()[2:].splitlines()[0].strip()
-    return fallback
-
-
 def kernel_name() -> str:
     """The project's kernel if installed (``make setup`` installs it), else ``python3``."""
     from jupyter_client.kernelspec import KernelSpecManager
@@ -229,11 +200,31 @@ def kernel_name() -> str:
     return KERNEL if KERNEL in KernelSpecManager().find_kernel_specs() else "python3"
 
 
-def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
-    import nbformat
-    import papermill
+class _QuietKernels:
+    """Kernel managers on the IPC transport (no "running over TCP" warning), sockets in one folder."""
 
-    from .render import render_notebook_html
+    def __init__(self, folder: Path) -> None:
+        from jupyter_client.manager import AsyncKernelManager
+        from traitlets import default
+
+        prefix = str(folder / "kernel")
+
+        class IPCKernelManager(AsyncKernelManager):
+            @default("transport")
+            def _default_transport(self):
+                return "ipc"
+
+            @default("ip")
+            def _default_ip(self):
+                import uuid
+
+                return f"{prefix}-{uuid.uuid4().hex[:8]}"  # one socket family per kernel: no port race
+
+        self.cls = IPCKernelManager
+
+
+def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str, kernels: _QuietKernels) -> dict:
+    import papermill
 
     start = time.perf_counter()
     params = {k: v for k, v in values.items() if k in ch.params}
@@ -246,36 +237,68 @@ def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
         cwd=str(ch.path.parent),
         progress_bar=False,
         log_output=False,
+        kernel_manager_class=kernels.cls,
     )
-    nb = nbformat.read(executed, as_version=4)
-    title = _title(nb, ch.name)
-    render_notebook_html(nb, work / "report" / f"{ch.name}.html", title=title)
-    return {
-        "title": title,
-        "href": f"{ch.name}.html",
-        "summary": _summary(nb),
-        "elapsed_s": time.perf_counter() - start,
-        "name": ch.name,
-    }
+    return {"name": ch.name, "executed": executed, "elapsed_s": time.perf_counter() - start}
 
 
-def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=print) -> list[dict]:
-    """Execute and render ``chapters`` into ``out`` (replaced only on success)."""
-    from .render import write_index_html
+def chapter_parameters(ch: Chapter, values: dict) -> list:
+    """The chapter's declared parameters with the values this run used (for the book)."""
+    import ast
+
+    from ..physics.paper import paper_defaults
+    from .book import Parameter, split_help
+
+    paper = paper_defaults()
+    out = []
+    for name, info in ch.params.items():
+        try:
+            default = ast.literal_eval(info.get("default", ""))
+        except (ValueError, SyntaxError):
+            default = info.get("default")
+        meaning, unit = split_help(info.get("help", ""))
+        is_paper = name in paper and not _differs_num(default, paper[name])
+        out.append(Parameter(name, values.get(name, default), default, meaning, unit, is_paper))
+    return out
+
+
+def _differs_num(a, b) -> bool:
+    try:
+        return float(a) != float(b)
+    except (TypeError, ValueError):
+        return True
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}" if n == 1 else f"{n} {word}s"
+
+
+def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=print, pdf: bool = True) -> list[dict]:
+    """Execute ``chapters`` with papermill and build the book into ``out`` (replaced only on success)."""
+    import logging
+
+    import nbformat
+
+    from .book import ChapterPage
+    from .book import build as build_book
 
     out = out.resolve()  # kernels run in notebooks/: every path they get must be absolute
     out.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".report-", dir=out))
+    sockets = Path(tempfile.mkdtemp(prefix="vib-kernels-"))
+    for name in ("papermill", "traitlets", "nbclient", "sphinx"):
+        logging.getLogger(name).setLevel(logging.ERROR)
     try:
         for sub in ("notebooks", "report", "tables"):
             (work / sub).mkdir()
         os.environ[TABLES_ENV] = str(work / "tables")
         kernel = kernel_name()
+        kernels = _QuietKernels(sockets)
         total = len(chapters)
         t0 = time.perf_counter()
         results = {}
         with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
-            futures = {pool.submit(_run_chapter, ch, values, work, kernel): ch for ch in chapters}
+            futures = {pool.submit(_run_chapter, ch, values, work, kernel, kernels): ch for ch in chapters}
             for ch in chapters:
                 log(f"[start] {ch.name}")
             for fut in as_completed(futures):
@@ -288,17 +311,55 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
                     raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
                 done = len(results)
                 log(f"[{done}/{total}] {ch.name} done in {results[ch.name]['elapsed_s']:.1f} s")
-        ordered = [results[ch.name] for ch in chapters]
-        write_index_html(work / "report" / "index.html", ordered)
+        t_run = time.perf_counter() - t0
+        pages = [
+            ChapterPage(
+                ch.name,
+                nbformat.read(results[ch.name]["executed"], as_version=4),
+                chapter_parameters(ch, values),
+                results[ch.name]["elapsed_s"],
+            )
+            for ch in chapters
+        ]
+        t1 = time.perf_counter()
+        info = build_book(pages, work / "report", work / "book", pdf=pdf, log=log)
+        shutil.rmtree(work / "book", ignore_errors=True)
+        pdf_text = f", PDF {_plural(info['pdf_pages'], 'page')}" if "pdf_pages" in info else ""
+        log(f"book: built in {time.perf_counter() - t1:.1f} s{pdf_text}")
         for sub in ("notebooks", "report", "tables"):
             target = out / sub
             if target.exists():
                 target.rename(work / f"old-{sub}")
             (work / sub).rename(target)
-        log(f"report: {len(ordered)} chapters in {time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}")
-        return ordered
+        log(
+            f"report: {_plural(len(pages), 'chapter')} executed in {t_run:.1f} s, "
+            f"{time.perf_counter() - t0:.1f} s in all -> {out / 'report' / 'index.html'}"
+        )
+        return [{"name": p.name, "title": p.title, "elapsed_s": p.elapsed_s} for p in pages]
     finally:
         os.environ.pop(TABLES_ENV, None)
+        shutil.rmtree(work, ignore_errors=True)
+        shutil.rmtree(sockets, ignore_errors=True)
+
+
+def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True, log=print) -> dict:
+    """Build the book from the committed notebooks as they are (their stored outputs), no kernel.
+
+    For checking the publishing stack quickly (tests, previews); ``make report`` executes.
+    """
+    import nbformat
+
+    from .book import ChapterPage
+    from .book import build as build_book
+
+    out = Path(out).resolve()
+    work = Path(tempfile.mkdtemp(prefix=".book-", dir=out.parent))
+    try:
+        pages = [
+            ChapterPage(ch.name, nbformat.read(ch.path, as_version=4), chapter_parameters(ch, {})) for ch in chapters
+        ]
+        return build_book(pages, out, work, pdf=pdf, log=log)
+    finally:
         shutil.rmtree(work, ignore_errors=True)
 
 
@@ -351,6 +412,7 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--out", default="build", help="output folder (default: build)")
     parser.add_argument("--jobs", type=int, default=2, help="chapters run at once (default: 2)")
+    parser.add_argument("--no-pdf", action="store_true", help="skip the PDF (faster previews)")
     parser.add_argument("--list", action="store_true", help="list chapters and their parameters")
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
     args = parser.parse_args(argv)
@@ -369,7 +431,7 @@ def main(argv: list[str] | None = None) -> int:
             execute_in_place(chapters)
             return 0
         values = check_parameters(chapters, [tuple(p) for p in args.parameter])
-        run(chapters, values, Path(args.out).resolve(), jobs=args.jobs)
+        run(chapters, values, Path(args.out).resolve(), jobs=args.jobs, pdf=not args.no_pdf)
     except ParameterError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -1,0 +1,449 @@
+"""The report as a book: Sphinx + myst-nb + sphinx-book-theme over the executed notebooks.
+
+Execution stays with papermill (``nb_execution_mode = "off"``); this module only prepares
+copies of the executed notebooks and builds them:
+
+* the front page is chapter ``00`` (its executed notebook becomes ``index``) followed by
+  the parts and chapters, one plain sentence each;
+* the ``parameters`` cell (and papermill's injected cell) become a table of name, value,
+  unit and meaning; every other code cell is folded behind a toggle (``hide-input``)
+  unless tagged ``show-input``;
+* a run whose parameters differ from the defaults gets a banner on every page listing each
+  changed parameter with the paper's (or the chapter's default) value beside it;
+* live widget views give way to the HTML the same output carries (the kernel-free
+  panels); no widget manager or require.js is loaded;
+* equations are MathML (:mod:`vibration.publishing.sphinx_ext`), search is Sphinx's own;
+* one PDF of the whole book, printed by Chromium from Sphinx's single-page build.
+"""
+
+from __future__ import annotations
+
+import copy
+import html
+import io
+import re
+import shutil
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import nbformat
+
+BOOK_TITLE = "Resonance and damping, reproduced and audited"
+#: (caption, first chapter number, last chapter number) of the sidebar's parts.
+PARTS = (
+    ("Part I: the paper, reproduced and audited", 1, 5),
+    ("Part II: beyond the paper", 6, 99),
+)
+FRONT = 0  # chapter number of the front page
+CHROMIUM = "/usr/bin/chromium"
+CHROMIUM_ARGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+]
+WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One declared notebook parameter and the value a run used."""
+
+    name: str
+    value: object
+    default: object
+    meaning: str
+    unit: str  # "" when dimensionless or a count
+    paper: bool  # the default is the paper's value
+
+    @property
+    def changed(self) -> bool:
+        return _differs(self.value, self.default)
+
+
+@dataclass
+class ChapterPage:
+    """An executed chapter, ready for the book."""
+
+    name: str  # e.g. "06_stability"
+    notebook: nbformat.NotebookNode
+    parameters: list[Parameter] = field(default_factory=list)
+    elapsed_s: float | None = None
+
+    @property
+    def number(self) -> int | None:
+        m = re.match(r"^(\d+)_", self.name)
+        return int(m.group(1)) if m else None
+
+    @property
+    def title(self) -> str:
+        for cell in self.notebook.cells:
+            if cell.cell_type == "markdown" and cell.source.lstrip().startswith("# "):
+                return cell.source.lstrip()[2:].splitlines()[0].strip()
+        return self.name
+
+    @property
+    def summary(self) -> str:
+        return summary(self.notebook)
+
+
+def _differs(a, b) -> bool:
+    try:
+        return float(a) != float(b)
+    except (TypeError, ValueError):
+        return str(a) != str(b)
+
+
+def split_help(text: str) -> tuple[str, str]:
+    """``"mass, kg"`` -> ``("mass", "kg")``; a trailing unit ``1`` (dimensionless) reads ``""``.
+
+    Examples
+    --------
+    >>> split_help("mass, kg"), split_help("output samples on [0, t_end], 1"), split_help("a flag")
+    (('mass', 'kg'), ('output samples on [0, t_end]', ''), ('a flag', ''))
+    """
+    text = (text or "").strip()
+    if "," in text:
+        meaning, unit = text.rsplit(",", 1)
+        unit = unit.strip()
+        if unit and len(unit) <= 16 and not unit.endswith("."):
+            return meaning.strip(), "" if unit in ("1", "-", "count") else unit
+    return text, ""
+
+
+def summary(nb) -> str:
+    """First sentence after "Overview." without LaTeX or code in it (the chapter's one-liner).
+
+    Examples
+    --------
+    >>> nb = nbformat.v4.new_notebook()
+    >>> nb.cells = [nbformat.v4.new_markdown_cell("**Overview.** It solves $x$. It maps `c`. Done.")]
+    >>> summary(nb)
+    'It maps c.'
+    """
+    for cell in nb.cells:
+        if cell.cell_type == "markdown" and "Overview." in cell.source:
+            text = cell.source.split("Overview.", 1)[1].replace("**", "").replace("`", "").strip()
+            text = re.sub(r"\$\$.*?\$\$", "$", " ".join(text.split()))
+            text = re.sub(r"\{[a-z]+\}", "", text)
+            sentences = re.split(r"(?<=[.!?])\s", text)
+            plain = [x for x in sentences if "$" not in x]
+            return plain[0] if plain else sentences[0]
+    return ""
+
+
+# ----------------------------------------------------------------- notebook edits
+
+
+def _value_text(value) -> str:
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
+def _unit_text(value, unit: str) -> str:
+    return f"{_value_text(value)} {unit}".strip()
+
+
+def banner_html(params: list[Parameter]) -> str:
+    """The changed-parameters banner (empty when nothing changed)."""
+    changed = [p for p in params if p.changed]
+    if not changed:
+        return ""
+    items = "".join(
+        f"<li><code>{html.escape(p.name)}</code> ({html.escape(p.meaning)}) = "
+        f"<strong>{html.escape(_unit_text(p.value, p.unit))}</strong>; "
+        f"{'the paper' if p.paper else 'default'}: {html.escape(_unit_text(p.default, p.unit))}</li>"
+        for p in changed
+    )
+    return (
+        '<div class="vib-banner" role="note"><p><strong>Not the paper\'s parameters.</strong> '
+        "This page was computed with these values changed:</p>"
+        f"<ul>{items}</ul></div>"
+    )
+
+
+def parameters_table(params: list[Parameter]) -> str:
+    """HTML table of the chapter's parameters: name, value, unit, meaning (changed ones marked)."""
+    changed_attr = ' class="vib-changed"'
+    rows = "".join(
+        f"<tr{changed_attr if p.changed else ''}><td><code>{html.escape(p.name)}</code></td>"
+        f"<td>{html.escape(_value_text(p.value))}</td>"
+        f"<td>{html.escape(p.unit)}</td><td>{html.escape(p.meaning)}</td></tr>"
+        for p in params
+    )
+    return (
+        '<div class="vib-parameters"><table><caption>Parameters of this run (change them with <code>-p NAME '
+        "VALUE</code>)</caption><thead><tr><th>name</th><th>value</th><th>unit</th><th>meaning</th></tr></thead>"
+        f"<tbody>{rows}</tbody></table></div>"
+    )
+
+
+def _raw_html_cell(text: str):
+    cell = nbformat.v4.new_markdown_cell(text)
+    return cell
+
+
+def _tags(cell) -> list[str]:
+    return list(cell.get("metadata", {}).get("tags", []))
+
+
+def prepare(page: ChapterPage) -> nbformat.NotebookNode:
+    """A copy of the executed notebook as the book shows it (see the module docstring)."""
+    nb = copy.deepcopy(page.notebook)
+    nb.metadata.pop("widgets", None)
+    nb.metadata.pop("papermill", None)
+    cells = []
+    params_done = False
+    for cell in nb.cells:
+        cell.metadata.pop("papermill", None)
+        cell.metadata.pop("execution", None)
+        tags = _tags(cell)
+        if cell.cell_type == "code" and ("parameters" in tags or "injected-parameters" in tags):
+            if not params_done and page.parameters:
+                cells.append(_raw_html_cell(parameters_table(page.parameters)))
+                params_done = True
+            continue
+        if cell.cell_type == "code":
+            _drop_widget_views(cell)
+            if "show-input" not in tags and not {"hide-input", "remove-input", "remove-cell"} & set(tags):
+                cell.metadata.setdefault("tags", []).append("hide-input")
+        cells.append(cell)
+    banner = banner_html(page.parameters)
+    if banner:
+        at = 1 if cells and cells[0].cell_type == "markdown" and cells[0].source.lstrip().startswith("# ") else 0
+        if at == 1:  # keep the title first, banner right under it
+            title, _, rest = cells[0].source.lstrip().partition("\n")
+            cells[0] = nbformat.v4.new_markdown_cell(title)
+            if rest.strip():
+                cells.insert(1, nbformat.v4.new_markdown_cell(rest))
+        cells.insert(at, _raw_html_cell(banner))
+    if page.elapsed_s is not None:
+        cells.append(
+            _raw_html_cell(
+                f'<p class="vib-footer">This chapter was executed by papermill in {page.elapsed_s:.1f} s.</p>'
+            )
+        )
+    nb.cells = cells
+    return nb
+
+
+def _drop_widget_views(cell) -> None:
+    """Outputs carrying a live widget view keep only their HTML (the kernel-free panel) or text."""
+    for out in cell.get("outputs", []):
+        data = out.get("data")
+        if data and WIDGET_VIEW in data:
+            data.pop(WIDGET_VIEW)
+            if "text/html" in data:
+                data.pop("image/png", None)
+                data.pop("text/plain", None)
+
+
+# ------------------------------------------------------------------------- Sphinx
+
+CONF = """# Generated by vibration.publishing.book: the book's Sphinx configuration.
+project = {title!r}
+author = ""
+copyright = ""
+extensions = ["myst_nb", "vibration.publishing.sphinx_ext"]
+root_doc = "index"
+exclude_patterns = ["_build"]
+html_theme = "sphinx_book_theme"
+html_title = {title!r}
+html_static_path = ["_static"]
+html_css_files = ["vibration-book.css"]
+html_show_sourcelink = False
+html_show_sphinx = False
+html_copy_source = False
+html_last_updated_fmt = None
+html_math_renderer = "mathml"
+html_search_language = "en"
+html_show_search_summary = False
+html_theme_options = {{
+    "show_toc_level": 2,
+    "use_download_button": False,
+    "use_fullscreen_button": False,
+    "use_repository_button": False,
+    "home_page_in_toc": True,
+    "show_navbar_depth": 1,
+    "navigation_with_keys": False,
+    "extra_footer": {footer!r},
+}}
+html_context = {{"default_mode": "light"}}
+numfig = True
+numfig_format = {{"figure": "Figure %s", "table": "Table %s", "code-block": "Listing %s", "section": "Section %s"}}
+nb_execution_mode = "off"
+nb_render_markdown_format = "myst"
+nb_merge_streams = True
+nb_mime_priority_overrides = [
+    ("*", "application/vnd.jupyter.widget-view+json", None),
+    ("html", "text/markdown", 5),
+    ("singlehtml", "text/markdown", 5),
+]
+nb_number_source_lines = False
+nb_scroll_outputs = False
+myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence", "html_image"]
+myst_heading_anchors = 3
+myst_dmath_double_inline = True
+suppress_warnings = ["mystnb.unknown_mime_type", "myst.header", "toc.not_included", "misc.highlighting_failure"]
+"""
+
+
+def _toctree(pages: list[ChapterPage]) -> str:
+    blocks = []
+    for caption, lo, hi in PARTS:
+        members = [p for p in pages if p.number is not None and lo <= p.number <= hi]
+        if not members:
+            continue
+        entries = "\n".join(p.name for p in members)
+        blocks.append(f"```{{toctree}}\n:caption: {caption}\n:maxdepth: 1\n:hidden:\n\n{entries}\n```")
+    return "\n\n".join(blocks)
+
+
+def contents_markdown(pages: list[ChapterPage]) -> str:
+    """The front page's list of parts and chapters, one plain sentence each."""
+    lines = ["## Contents", ""]
+    for caption, lo, hi in PARTS:
+        members = [p for p in pages if p.number is not None and lo <= p.number <= hi]
+        if not members:
+            continue
+        lines += [f"**{caption}**", ""]
+        for p in members:
+            lines.append(f"- [{p.title}]({p.name}.ipynb): {p.summary}")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def _css() -> str:
+    from importlib.resources import files
+
+    return files("vibration.publishing").joinpath("book.css").read_text(encoding="utf-8")
+
+
+def write_source(pages: list[ChapterPage], src: Path) -> None:
+    """Write the Sphinx source tree: conf.py, prepared notebooks, the front page, CSS."""
+    src.mkdir(parents=True, exist_ok=True)
+    (src / "_static").mkdir(exist_ok=True)
+    (src / "_static" / "vibration-book.css").write_text(_css(), encoding="utf-8")
+    footer = (
+        "Built by papermill and Sphinx from the notebooks in notebooks/; "
+        "every number on these pages was computed by this run."
+    )
+    (src / "conf.py").write_text(CONF.format(title=BOOK_TITLE, footer=footer), encoding="utf-8")
+    front = [p for p in pages if p.number == FRONT]
+    chapters = [p for p in pages if p.number != FRONT]
+    if front:
+        nb = prepare(front[0])
+    else:
+        nb = nbformat.v4.new_notebook()
+        nb.cells = [nbformat.v4.new_markdown_cell(f"# {BOOK_TITLE}")]
+        banner = banner_html([q for p in chapters for q in p.parameters])
+        if banner:
+            nb.cells.append(nbformat.v4.new_markdown_cell(banner))
+    nb.cells.append(nbformat.v4.new_markdown_cell(contents_markdown(chapters)))
+    nb.cells.append(nbformat.v4.new_markdown_cell(_toctree(chapters)))
+    nbformat.write(nb, src / "index.ipynb")
+    for p in chapters:
+        nbformat.write(prepare(p), src / f"{p.name}.ipynb")
+
+
+def sphinx_build(src: Path, out: Path, builder: str, log=print) -> None:
+    """Run Sphinx in this process (warnings go to the build log, errors raise)."""
+    from sphinx.application import Sphinx
+    from sphinx.util.docutils import docutils_namespace
+
+    status, warnings = io.StringIO(), io.StringIO()
+    with docutils_namespace():
+        app = Sphinx(
+            str(src),
+            str(src),
+            str(out),
+            str(src / "_build" / f"doctrees-{builder}"),
+            builder,
+            status=status,
+            warning=warnings,
+            freshenv=True,
+            parallel=1,
+        )
+        app.build(force_all=True)
+    (src / f"sphinx-{builder}.log").write_text(status.getvalue() + warnings.getvalue(), encoding="utf-8")
+    if app.statuscode:
+        raise RuntimeError(f"Sphinx ({builder}) failed: {warnings.getvalue().strip()[-2000:]}")
+
+
+def print_pdf(html_path: Path, pdf_path: Path, title: str = BOOK_TITLE) -> int:
+    """Chromium's print of ``html_path`` to ``pdf_path`` (A4, page numbers); returns the page count."""
+    from playwright.sync_api import sync_playwright
+    from pypdf import PdfReader
+
+    if not Path(CHROMIUM).exists():
+        raise RuntimeError(f"{CHROMIUM} is missing: the PDF needs Debian's chromium (make browser installs it)")
+    with sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+        try:
+            page = browser.new_page()
+            page.route("**/*", lambda r: r.continue_() if r.request.url.startswith(("file:", "data:")) else r.abort())
+            page.goto(html_path.resolve().as_uri())
+            page.wait_for_load_state("load")
+            page.emulate_media(media="print")
+            page.pdf(
+                path=str(pdf_path),
+                format="A4",
+                print_background=True,
+                display_header_footer=True,
+                header_template=(
+                    f'<div style="font-size:7px;width:100%;text-align:center;color:#666">{html.escape(title)}</div>'
+                ),
+                footer_template='<div style="font-size:8px;width:100%;text-align:center;color:#444">'
+                '<span class="pageNumber"></span> / <span class="totalPages"></span></div>',
+                margin={"top": "16mm", "bottom": "16mm", "left": "14mm", "right": "14mm"},
+            )
+        finally:
+            browser.close()
+    return len(PdfReader(str(pdf_path)).pages)
+
+
+def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, log=print) -> dict:
+    """Build the HTML book into ``out`` (``out/index.html``) and ``out/report.pdf``.
+
+    ``work`` holds the Sphinx sources and the single-page build used for the PDF.
+    Returns timings and the PDF's page count.
+    """
+    t0 = time.perf_counter()
+    src = work / "book-src"
+    write_source(pages, src)
+    sphinx_build(src, out, "html", log)
+    _check_offline(out)
+    info = {"html_s": time.perf_counter() - t0}
+    if pdf:
+        t1 = time.perf_counter()
+        single = work / "book-single"
+        sphinx_build(src, single, "singlehtml", log)
+        info["pdf_pages"] = print_pdf(single / "index.html", out / "report.pdf")
+        info["pdf_s"] = time.perf_counter() - t1
+    shutil.rmtree(out / ".doctrees", ignore_errors=True)
+    (out / ".buildinfo").unlink(missing_ok=True)
+    return info
+
+
+def _check_offline(out: Path) -> None:
+    """Refuse a build whose pages would load anything from outside the build folder."""
+    from .mathml import external_urls
+
+    bad = {}
+    for page in out.glob("*.html"):
+        text = page.read_text(encoding="utf-8")
+        loads = [u for u in external_urls(_loading_tags(text))]
+        if loads:
+            bad[page.name] = loads[:3]
+    if bad:
+        raise RuntimeError(f"pages would load from the network: {bad}")
+
+
+_LOADING = re.compile(r"<(script|link|img|iframe|source|video|audio)\b[^>]*>", re.I)
+
+
+def _loading_tags(text: str) -> str:
+    """Only the tags that load something (links to other sites are fine to show)."""
+    return "".join(m.group(0) for m in _LOADING.finditer(text) if 'rel="canonical"' not in m.group(0))

@@ -1,0 +1,73 @@
+"""Sphinx extension for the book: MathML equations and figure numbers per chapter.
+
+* ``html_math_renderer = "mathml"``: every math node is converted to MathML at build time
+  with latex2mathml (:func:`vibration.publishing.mathml.latex_to_mathml`), so pages need no
+  MathJax and no network; Chromium and Firefox render MathML natively.
+* Figures and tables are numbered ``<chapter>.<n>`` where the chapter number is the
+  leading number of the document name (``06_stability`` -> 6), without Sphinx's section
+  numbering (which would renumber the chapters of Part II from 1).
+"""
+
+from __future__ import annotations
+
+import re
+
+from docutils import nodes
+
+from .mathml import latex_to_mathml
+
+
+def _visit_math(self, node) -> None:
+    self.body.append(latex_to_mathml(node.astext(), display=False))
+    raise nodes.SkipNode
+
+
+def _visit_displaymath(self, node) -> None:
+    if node.get("nowrap"):
+        tex = node.astext()
+    else:
+        tex = node.astext()
+    label = node.get("label")
+    number = node.get("number")
+    self.body.append('<div class="math-wrapper docutils container">')
+    if label and number is not None:
+        self.body.append(f'<span class="eqno">({number})</span>')
+    self.body.append(latex_to_mathml(tex, display=True))
+    self.body.append("</div>")
+    raise nodes.SkipNode
+
+
+_CHAPTER = re.compile(r"^(\d+)_")
+
+
+def chapter_number(docname: str) -> int | None:
+    """Leading number of a chapter's document name.
+
+    Examples
+    --------
+    >>> chapter_number("06_stability"), chapter_number("index")
+    (6, None)
+    """
+    m = _CHAPTER.match(docname.rsplit("/", 1)[-1])
+    return int(m.group(1)) if m else None
+
+
+def _prefix_numbers(app, env):
+    """After Sphinx assigned per-document figure numbers, prefix each with its chapter."""
+    for docname, kinds in env.toc_fignumbers.items():
+        chap = chapter_number(docname)
+        if chap is None:
+            continue
+        for ids in kinds.values():
+            for ident, number in list(ids.items()):
+                if len(number) == 1:
+                    ids[ident] = (chap, number[0])
+    return []
+
+
+def setup(app):
+    app.add_html_math_renderer(
+        "mathml", inline_renderers=(_visit_math, None), block_renderers=(_visit_displaymath, None)
+    )
+    app.connect("env-get-updated", _prefix_numbers, priority=900)
+    return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}

@@ -1,0 +1,282 @@
+"""The book: Sphinx + myst-nb + sphinx-book-theme over the notebooks, opened offline in Chromium.
+
+The site is built once per session from the committed notebooks (their stored outputs, no
+kernel), which exercises the whole publishing stack in seconds; the runner's own end-to-end
+path (papermill, then the book) is checked with a small run carrying ``-p c_low 0.05``.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from conftest import SCREENSHOTS, open_offline
+
+from vibration.publishing import report
+from vibration.publishing.book import PARTS, split_help, summary
+
+ROOT = Path(__file__).resolve().parents[1]
+NOTEBOOKS = sorted(p for p in (ROOT / "notebooks").glob("*.ipynb"))
+CHAPTERS = [p.stem for p in NOTEBOOKS if not p.stem.startswith("00_")]
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("book") / "report"
+    report.book_from_sources(report.discover(ROOT), out, pdf=True, log=lambda *a: None)
+    return out
+
+
+def _pages(site: Path) -> list[Path]:
+    return sorted(site.glob("*.html"))
+
+
+# ------------------------------------------------------------------ static checks
+
+
+def test_every_chapter_and_the_front_page_are_built(site):
+    assert (site / "index.html").is_file()
+    for name in CHAPTERS:
+        assert (site / f"{name}.html").is_file(), name
+    assert (site / "search.html").is_file() and (site / "searchindex.js").is_file()
+
+
+def test_no_page_loads_from_the_network(site):
+    from vibration.publishing.mathml import external_urls
+
+    for page in _pages(site):
+        text = page.read_text(encoding="utf-8")
+        loading = "".join(re.findall(r"<(?:script|link|img|iframe)\b[^>]*>", text))
+        assert external_urls(loading) == [], page.name
+        assert "require.js" not in text and "mathjax" not in text.lower(), page.name
+        assert "html-manager" not in text and "unpkg" not in text, page.name
+
+
+def test_chapter_titles_carry_no_timing(site):
+    for page in _pages(site):
+        title = re.search(r"<title>(.*?)</title>", page.read_text(encoding="utf-8"), re.S).group(1)
+        assert not re.search(r"\d+(\.\d+)? s\b", title), title
+
+
+def test_parameters_cell_is_a_table_of_name_value_unit_meaning(site):
+    text = (site / "01_reproduction.html").read_text(encoding="utf-8")
+    block = re.search(r'<div class="vib-parameters">(.*?)</div>', text, re.S).group(1)
+    assert "<th>name</th><th>value</th><th>unit</th><th>meaning</th>" in block
+    assert "<code>c_low</code></td><td>0.1</td><td>N s/m</td>" in block
+    assert "c_low: float" not in text  # the cell's source is not shown
+
+
+def test_no_banner_with_the_papers_parameters(site):
+    for page in _pages(site):
+        assert "vib-banner" not in page.read_text(encoding="utf-8"), page.name
+
+
+def test_every_display_equation_of_the_sources_is_mathml(site):
+    for nb_path in NOTEBOOKS:
+        nb = json.loads(nb_path.read_text(encoding="utf-8"))
+        source = "\n".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "markdown")
+        n_display = len(re.findall(r"\$\$(.+?)\$\$", source, re.S))
+        name = "index" if nb_path.stem.startswith("00_") else nb_path.stem
+        html_text = (site / f"{name}.html").read_text(encoding="utf-8")
+        assert html_text.count('<math display="block"') >= n_display, nb_path.name
+        assert "vib-tex-fallback" not in html_text, nb_path.name
+
+
+def test_figures_are_numbered_per_chapter_with_captions(site):
+    numbered = 0
+    for name in CHAPTERS:
+        text = (site / f"{name}.html").read_text(encoding="utf-8")
+        chap = int(name.split("_")[0])
+        for number in re.findall(r'<span class="caption-number">Figure (\d+)\.(\d+) </span>', text):
+            assert int(number[0]) == chap, (name, number)
+            numbered += 1
+    assert numbered >= 1
+
+
+def test_split_help_and_summary_helpers():
+    assert split_help("spring stiffness, N/m") == ("spring stiffness", "N/m")
+    assert split_help("output samples, 1") == ("output samples", "")
+    import nbformat
+
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_markdown_cell("# T\n\n**Overview.** First plain. Then $x$.")]
+    assert summary(nb) == "First plain."
+
+
+def test_pdf_has_a_page_or_more_per_chapter(site):
+    from pypdf import PdfReader
+
+    reader = PdfReader(str(site / "report.pdf"))
+    assert len(reader.pages) >= len(CHAPTERS) + 1
+    texts = [" ".join((page.extract_text() or "").split()) for page in reader.pages]
+    starts = []
+    for nb_path in NOTEBOOKS:
+        nb = json.loads(nb_path.read_text(encoding="utf-8"))
+        title = "".join(nb["cells"][0]["source"]).splitlines()[0].lstrip("# ").strip()
+        head = " ".join(title.split()[:4])
+        pages = [i for i, t in enumerate(texts) if head in t]
+        assert pages, f"{title!r} is not in the PDF"
+        starts.append(pages[0])
+    assert len(set(starts)) == len(starts), "two chapters start on the same page"
+    assert "1 /" in texts[0] or texts[0].strip().endswith(f"1 / {len(texts)}") or "1 / " in texts[0]
+
+
+# ---------------------------------------------------------------- browser checks
+
+
+@pytest.mark.browser
+def test_every_page_loads_offline_without_errors(browser, site):
+    for path in _pages(site):
+        page, outside, errors = open_offline(browser, path, viewport=(1280, 900))
+        page.wait_for_timeout(100)
+        assert outside == [], (path.name, outside)
+        assert errors == [], (path.name, errors)
+        page.close()
+
+
+@pytest.mark.browser
+def test_every_chapter_is_reachable_from_the_sidebar_of_every_page(browser, site):
+    for path in [p for p in _pages(site) if p.name not in ("search.html", "genindex.html")]:
+        page, _, _ = open_offline(browser, path, viewport=(1280, 900))
+        hrefs = page.eval_on_selector_all(".bd-sidebar-primary a", "els => els.map(e => e.getAttribute('href'))")
+        targets = {h.split("#")[0] for h in hrefs if h}
+        for name in CHAPTERS:
+            assert f"{name}.html" in targets or (path.stem == name and "#" in targets), (path.name, name)
+        captions = page.inner_text(".bd-sidebar-primary")
+        for caption, lo, _ in PARTS:
+            if any(int(n.split("_")[0]) >= lo for n in CHAPTERS):
+                assert caption in captions, (path.name, caption)
+        page.close()
+
+
+@pytest.mark.browser
+def test_previous_and_next_links(browser, site):
+    page, _, _ = open_offline(browser, site / f"{CHAPTERS[1]}.html")
+    prev = page.get_attribute("a.left-prev", "href")
+    nxt = page.get_attribute("a.right-next", "href")
+    assert prev.startswith(CHAPTERS[0]) and nxt.startswith(CHAPTERS[2])
+    page.close()
+
+
+@pytest.mark.browser
+def test_search_finds_dormand(browser, site):
+    page, outside, errors = open_offline(browser, site / "search.html")
+    page.goto((site / "search.html").as_uri() + "?q=Dormand")
+    page.wait_for_selector("#search-results ul li a", timeout=20_000)
+    links = page.eval_on_selector_all("#search-results ul li a", "els => els.map(e => e.getAttribute('href'))")
+    assert any("03_solver_accuracy" in h for h in links), links
+    assert errors == [] and outside == []
+    page.close()
+
+
+@pytest.mark.browser
+def test_code_cells_are_folded_and_open_on_click(browser, site):
+    page, _, _ = open_offline(browser, site / "01_reproduction.html", viewport=(1280, 900))
+    folded = page.locator("details.hide.above-input")
+    assert folded.count() >= 3
+    first = folded.first
+    assert first.get_attribute("open") is None
+    code = first.locator("pre")
+    assert not code.is_visible()
+    first.locator("summary").click()
+    page.wait_for_timeout(100)
+    assert first.get_attribute("open") is not None
+    assert code.is_visible()
+    Path(SCREENSHOTS).mkdir(parents=True, exist_ok=True)
+    first.scroll_into_view_if_needed()
+    page.screenshot(path=str(Path(SCREENSHOTS) / "book-folded-cell-open.png"))
+    page.close()
+
+
+@pytest.mark.browser
+def test_equations_render_as_mathml_with_size(browser, site):
+    page, _, _ = open_offline(browser, site / "01_reproduction.html")
+    boxes = page.eval_on_selector_all('math[display="block"]', "els => els.map(e => e.getBoundingClientRect().height)")
+    assert boxes and min(boxes) > 5
+    page.close()
+
+
+@pytest.mark.browser
+def test_front_page_reports_computed_headline(browser, site):
+    page, _, errors = open_offline(browser, site / "index.html", viewport=(1280, 900))
+    text = page.inner_text("article")
+    assert "The Effect of Resonance and Damping on Dynamic System Stability" in text
+    assert "2.237 m" in text  # the exact resonance amplitude, computed by the front page
+    for name in CHAPTERS:
+        assert page.locator(f"article a[href^='{name}']").count() >= 1, name
+    Path(SCREENSHOTS).mkdir(parents=True, exist_ok=True)
+    page.screenshot(path=str(Path(SCREENSHOTS) / "book-front.png"), full_page=True)
+    assert errors == []
+    page.close()
+
+
+# ------------------------------------------------------------------- end to end
+
+
+@pytest.mark.browser
+@pytest.mark.slow
+def test_runner_banner_with_changed_parameter(browser, tmp_path):
+    proc = subprocess.run(
+        [sys.executable, "-m", "vibration.report", "00", "01", "-p", "c_low", "0.05", "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=600,
+        cwd=ROOT,
+    )
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    log = proc.stdout + proc.stderr
+    assert "Kernel is running over TCP" not in log and "[IPKernelApp]" not in log, log[-1500:]
+    assert "2 chapters" in log and "book: built in" in log
+    for name in ("index.html", "01_reproduction.html"):
+        page, outside, errors = open_offline(browser, tmp_path / "report" / name, viewport=(1280, 900))
+        banner = page.locator(".vib-banner")
+        assert banner.count() == 1, name
+        text = banner.inner_text()
+        assert "c_low" in text and "0.05 N s/m" in text and "0.1 N s/m" in text, text
+        assert outside == [] and errors == []
+        if name == "01_reproduction.html":
+            page.screenshot(path=str(Path(SCREENSHOTS) / "book-banner.png"))
+        page.close()
+    assert (tmp_path / "report" / "report.pdf").is_file()
+
+
+def test_runner_says_one_chapter(tmp_path):
+    proc = subprocess.run(
+        [sys.executable, "-m", "vibration.report", "00", "--out", str(tmp_path), "--no-pdf"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=ROOT,
+    )
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert "1 chapter " in proc.stdout and "1 chapters" not in proc.stdout, proc.stdout
+
+
+# ---------------------------------------------------------------------- layers
+
+
+def test_lint_imports_passes():
+    proc = subprocess.run([str(Path(sys.executable).parent / "lint-imports")], capture_output=True, text=True, cwd=ROOT)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def test_lint_imports_fails_on_a_forbidden_import(tmp_path):
+    shutil.copytree(ROOT / "src", tmp_path / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    shutil.copy(ROOT / "pyproject.toml", tmp_path / "pyproject.toml")
+    model = tmp_path / "src" / "vibration" / "physics" / "model.py"
+    model.write_text(model.read_text(encoding="utf-8") + "\nfrom ..presentation import tables  # noqa\n")
+    env = {"PYTHONPATH": str(tmp_path / "src"), "PATH": str(Path(sys.executable).parent)}
+    proc = subprocess.run(
+        [str(Path(sys.executable).parent / "lint-imports"), "--no-cache"],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        env=env,
+    )
+    assert proc.returncode != 0, proc.stdout
+    assert "BROKEN" in proc.stdout and "vibration.physics.model" in proc.stdout, proc.stdout
