@@ -30,7 +30,7 @@ browser: ## install Debian's Chromium for the browser tests if it is missing
 	  SUDO=$$([ "$$(id -u)" = 0 ] || echo sudo); \
 	  $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; }
 
-report: $(STAMP) ## run every chapter with papermill and render build/report/index.html
+report: $(STAMP) browser ## run every chapter with papermill, build the book: build/report/index.html and report.pdf
 	$(PY) -m vibration.report --out $(BUILD)
 
 test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval and browser tests

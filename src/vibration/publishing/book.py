@@ -303,7 +303,7 @@ def _toctree(pages: list[ChapterPage]) -> str:
 
 def contents_markdown(pages: list[ChapterPage]) -> str:
     """The front page's list of parts and chapters, one plain sentence each."""
-    lines = ["## Contents", ""]
+    lines = ["## Chapters", ""]
     for caption, lo, hi in PARTS:
         members = [p for p in pages if p.number is not None and lo <= p.number <= hi]
         if not members:
