@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -80,7 +81,7 @@ def test_only_live_widget_cells_skip_nbval_and_outputs_are_committed(path):
         if "nbval-ignore-output" in _tags(c):
             assert "explorer(" in _src(c), f"{path.name}: only widget cells may skip nbval: {_src(c)[:80]}"
     assert all(c.get("execution_count") for c in code), f"{path.name}: re-execute it (make notebooks)"
-    printed = [c for c in code if "show_table(" in _src(c) or "print(" in _src(c)]
+    printed = [c for c in code if "show_table(" in _src(c) or "print(" in _src(c) or "_table(" in _src(c)]
     assert printed and all(c["outputs"] for c in printed), f"{path.name}: tables without outputs"
     for c in code:
         for out in c["outputs"]:
@@ -98,3 +99,36 @@ def test_papermill_reads_every_parameter_with_its_help(path):
     for name, info in inspected.items():
         assert info["help"], f"{path.name}: papermill could not read the comment of {name}"
         assert info["inferred_type_name"] in TYPES, f"{path.name}: {name} has no type papermill understands"
+
+
+PART_ONE = [p for p in NOTEBOOKS if p.name[:2] in ("01", "02", "03", "04", "05")]
+#: A number followed by a unit: a result, which must come from a presentation function, not from prose.
+NUMBER_WITH_UNIT = re.compile(r"(?<![\w.])[-+]?\d+(\.\d+)?\s*(N s/m|N·s/m|rad/s|m/s|kg|N/m|Hz)\b")
+
+
+@pytest.mark.parametrize("path", PART_ONE, ids=lambda p: p.stem)
+def test_part_one_prose_states_no_results_outside_quotes(path):
+    """Numbers with units in Part I's Markdown cells appear only inside quotations of the paper."""
+    for cell in _nb(path)["cells"]:
+        if cell["cell_type"] != "markdown":
+            continue
+        for line in _src(cell).splitlines():
+            if line.lstrip().startswith(">"):
+                continue
+            assert not NUMBER_WITH_UNIT.search(line), f"{path.name}: a result written by hand: {line!r}"
+
+
+@pytest.mark.parametrize("path", PART_ONE, ids=lambda p: p.stem)
+def test_part_one_figures_have_captions_and_tables_are_tables(path):
+    """Every figure cell carries a caption and a name; every table is a Table object (tab- label)."""
+    for cell in _nb(path)["cells"]:
+        if cell["cell_type"] != "code":
+            continue
+        src = _src(cell)
+        if re.search(r"^fig = ", src, re.M):
+            fig = cell["metadata"].get("mystnb", {}).get("figure", {})
+            assert fig.get("caption") and fig.get("name", "").startswith("fig-"), (path.name, src[:60])
+        assert "show_table(" not in src and "print(format_table" not in src, (path.name, src[:60])
+        for out in cell.get("outputs", []):
+            plain = "".join(out.get("data", {}).get("text/plain", ""))
+            assert "nan" not in re.findall(r"\bnan\b", plain), (path.name, plain[:80])

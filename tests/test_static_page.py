@@ -86,6 +86,7 @@ def _panel_state(page, index: int = 0) -> dict:
             const p = document.querySelectorAll('div.vib-panel')[i];
             return {
                 points: p.querySelector('svg.vib-time polyline.vib-x').getAttribute('points'),
+                vel: p.querySelector('svg.vib-vel polyline.vib-x').getAttribute('points'),
                 frf: p.querySelector('svg.vib-freq circle.vib-op').getAttribute('cx'),
                 readout: p.querySelector('table.vib-readout').innerText,
                 omega: p.querySelector('output.vib-omega-out').textContent,
@@ -101,6 +102,7 @@ def test_sliders_work_offline(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, slider_panel_html(), slider_panel_html(c=15.0)))
     try:
         before, other_before = _panel_state(page, 0), _panel_state(page, 1)
+        assert before["vel"] and "velocity amplitude" in before["readout"] and "9.9996 m/s" in before["readout"]
         assert "4.47 rad/s (0.7114 Hz)" in before["omega"]
         assert "0.5 N s/m" in before["c"] and "0.0559" in before["c"]
         assert "underdamped" in before["readout"] and "2.2371 m" in before["readout"]
@@ -153,10 +155,14 @@ def test_sliders_work_offline(browser, tmp_path):
 def _python_reference(m, k, F0, c, omega, t_end=50.0, n_points=2001):
     osc, force = Oscillator(m, c, k), SineForce(F0, omega)
     t = np.linspace(0.0, t_end, n_points)
-    x = exact_response(osc, force, t).x
+    r = exact_response(osc, force, t)
+    x = r.x
     return {
         "t": t,
         "x": x,
+        "v": r.v,
+        "peak_v": float(np.max(np.abs(r.v))),
+        "velocity_amplitude": steady_state(osc, force).velocity_amplitude,
         "peak": float(np.max(np.abs(x))),
         "amplitude": steady_state(osc, force).amplitude,
         "settling": settling_time(osc, force),
@@ -180,6 +186,10 @@ def test_js_numbers_match_python(browser, tmp_path):
             scale = np.max(np.abs(py["x"]))
             err_x = np.max(np.abs(np.asarray(js["x"]) - py["x"])) / scale
             assert err_x <= RTOL_X, f"{label}: max |x_js - x_py| / max|x| = {err_x:.2e}"
+            err_v = np.max(np.abs(np.asarray(js["v"]) - py["v"])) / np.max(np.abs(py["v"]))
+            assert err_v <= RTOL_X, f"{label}: max |v_js - v_py| / max|v| = {err_v:.2e}"
+            assert js["peak_v"] == pytest.approx(py["peak_v"], rel=RTOL_X), label
+            assert js["velocity_amplitude"] == pytest.approx(py["velocity_amplitude"], rel=RTOL_X), label
             assert js["amplitude"] == pytest.approx(py["amplitude"], rel=RTOL_X), label
             assert js["peak"] == pytest.approx(py["peak"], rel=RTOL_X), label
             assert js["settling"] == pytest.approx(py["settling"], rel=RTOL_SETTLING), label

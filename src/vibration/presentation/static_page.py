@@ -63,8 +63,8 @@ def slider_panel_html(
 ) -> str:
     """Self-contained HTML fragment with forcing-frequency and damping sliders.
 
-    The panel shows the response from rest ``x(t)`` on ``linspace(0, t_end,
-    n_points)`` as an SVG polyline, a frequency-response plot (magnification
+    The panel shows the response from rest, displacement ``x(t)`` and velocity
+    ``v(t)`` on ``linspace(0, t_end, n_points)``, as SVG polylines, a frequency-response plot (magnification
     against omega, log scale) with the operating point marked, and a readout
     (natural frequency, damping ratio, regime, steady-state amplitude, peak
     ``|x|`` in the window, 2 % settling time and whether it falls inside the
@@ -140,6 +140,7 @@ def slider_panel_html(
         ("damping ratio ζ", "vib-r-zeta", "frequency ratio ω/ω<sub>n</sub>", "vib-r-ratio"),
         ("steady-state amplitude", "vib-r-amp", "magnification X/(F<sub>0</sub>/k)", "vib-r-mag"),
         ("peak |x| in the window", "vib-r-peak", "2 % settling time", "vib-r-settle"),
+        ("velocity amplitude ω|X|", "vib-r-vamp", "peak |v| in the window", "vib-r-peakv"),
     ]
     rows = "\n".join(
         f'<tr><th scope="row">{a}</th><td class="{ca}"></td><th scope="row">{b}</th><td class="{cb}"></td></tr>'
@@ -151,7 +152,8 @@ def slider_panel_html(
 <h3 class="vib-title">Explore without a kernel: m = {m:g} kg, k = {k:g} N/m, F<sub>0</sub> = {F0:g} N, \
 window 0 to {t_end:g} s</h3>
 <p class="vib-sub">Response from rest, <i>m x'' + c x' + k x = F<sub>0</sub> sin(ωt)</i>, computed in \
-your browser from the closed form (steady state plus transient). The damping slider is logarithmic.</p>
+your browser from the closed form (steady state plus transient). Here only ω, c and reset are controls; \
+m, k, F<sub>0</sub>, the window and the RK45 overlay need JupyterLab. The damping slider is logarithmic.</p>
 <noscript>This panel needs JavaScript to draw its plots.</noscript>
 <div class="vib-controls">
 <label for="{e(pid)}-omega">forcing frequency ω</label>
@@ -168,7 +170,10 @@ aria-describedby="{e(pid)}-c-out">
 <figure class="vib-fig-time">
 <svg class="vib-time" viewBox="0 0 640 270" role="img" \
 aria-label="displacement x in m against time t in s"></svg>
-<figcaption>Displacement from rest; dashed: ± steady-state amplitude; dotted: 2 % settling time.</figcaption>
+<svg class="vib-vel" viewBox="0 0 640 270" role="img" \
+aria-label="velocity v in m/s against time t in s"></svg>
+<figcaption>Displacement x(t) and velocity v(t) from rest; dashed: ± steady-state amplitudes; \
+dotted: 2 % settling time.</figcaption>
 </figure>
 <figure class="vib-fig-freq">
 <svg class="vib-freq" viewBox="0 0 340 270" role="img" \

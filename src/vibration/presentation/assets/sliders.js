@@ -160,7 +160,8 @@
    * Response from rest on linspace(0, t_end, n_points).
    *
    * params: {m (kg), c (N s/m), k (N/m), F0 (N), omega (rad/s), t_end (s), n_points}.
-   * Returns {t (s), x (m), peak (m), amplitude (m), phase (rad), magnification,
+   * Returns {t (s), x (m), v (m/s), peak (m), peak_v (m/s), amplitude (m), velocity_amplitude (m/s),
+ * phase (rad), magnification,
    * settling (s), settled (bool), regime, wn (rad/s), zeta, sigma (1/s), wd (rad/s),
    * x_tr0 (m), v_tr0 (m/s)}.
    */
@@ -180,18 +181,27 @@
     var step = p.t_end / (n - 1);
     var t = new Array(n);
     var x = new Array(n);
+    var v = new Array(n);
     var x0 = -ss.Q;
     var v0 = -p.omega * ss.P;
-    var peak = 0;
+    var wn2 = p.k / p.m;
+    var peak = 0, peakV = 0;
     for (var i = 0; i < n; i++) {
       var ti = i === n - 1 ? p.t_end : i * step;
       var wt = p.omega * ti;
+      var sw = Math.sin(wt), cw = Math.cos(wt);
       var kr = kernel(p.m, p.c, p.k, ti);
-      var xi = ss.P * Math.sin(wt) + ss.Q * Math.cos(wt) + x0 * kr[0] + (v0 + 2 * sigma * x0) * kr[1];
+      var xi = ss.P * sw + ss.Q * cw + x0 * kr[0] + (v0 + 2 * sigma * x0) * kr[1];
+      // free velocity v0 g' - wn^2 x0 g; steady velocity omega (P cos - Q sin)
+      var vi = p.omega * (ss.P * cw - ss.Q * sw) + v0 * kr[0] - wn2 * x0 * kr[1];
       t[i] = ti;
       x[i] = xi;
+      v[i] = vi;
       if (Math.abs(xi) > peak) {
         peak = Math.abs(xi);
+      }
+      if (Math.abs(vi) > peakV) {
+        peakV = Math.abs(vi);
       }
     }
     var settling = settlingTime(p, ss);
@@ -199,8 +209,11 @@
     return {
       t: t,
       x: x,
+      v: v,
       peak: peak,
+      peak_v: peakV,
       amplitude: ss.amplitude,
+      velocity_amplitude: p.omega * ss.amplitude,
       phase: ss.phase,
       magnification: ss.magnification,
       static_deflection: ss.static_deflection,
@@ -291,14 +304,16 @@
     return w;
   }
 
-  function drawTime(svg, p, r) {
+  function drawTime(svg, p, r, which) {
     var TW = fitWidth(svg, TW0, TH);
-    var ymax = Math.max(r.peak, r.amplitude, 1e-300) * 1.08;
+    var vel = which === "v";
+    var ys = vel ? r.v : r.x, amp = vel ? r.velocity_amplitude : r.amplitude;
+    var ymax = Math.max(vel ? r.peak_v : r.peak, isFinite(amp) ? amp : 0, 1e-300) * 1.08;
     var sx = function (v) { return PAD.l + (v / p.t_end) * (TW - PAD.l - PAD.r); };
     var sy = function (v) { return PAD.t + ((ymax - v) / (2 * ymax)) * (TH - PAD.t - PAD.b); };
     var s = [frame(TW, TH, ticks(0, p.t_end, Math.max(3, Math.round(TW / 80))), ticks(-ymax, ymax, 6), sx, sy,
-      "time t, s", "displacement x, m")];
-    var yA = [sy(r.amplitude).toFixed(2), sy(-r.amplitude).toFixed(2)];
+      "time t, s", vel ? "velocity v, m/s" : "displacement x, m")];
+    var yA = isFinite(amp) && p.c > 0 ? [sy(amp).toFixed(2), sy(-amp).toFixed(2)] : [];
     yA.forEach(function (Y) {
       s.push('<line class="vib-envelope" x1="' + PAD.l + '" x2="' + (TW - PAD.r) + '" y1="' + Y +
         '" y2="' + Y + '"></line>');
@@ -312,7 +327,7 @@
     }
     var pts = new Array(r.t.length);
     for (var i = 0; i < r.t.length; i++) {
-      pts[i] = sx(r.t[i]).toFixed(2) + "," + sy(r.x[i]).toFixed(2);
+      pts[i] = sx(r.t[i]).toFixed(2) + "," + sy(ys[i]).toFixed(2);
     }
     s.push('<polyline class="vib-x" points="' + pts.join(" ") + '"></polyline>');
     svg.innerHTML = s.join("");
@@ -389,6 +404,7 @@
     var cIn = panel.querySelector("input.vib-logc");
     var reset = panel.querySelector("button.vib-reset");
     var svgT = panel.querySelector("svg.vib-time");
+    var svgV = panel.querySelector("svg.vib-vel");
     var svgF = panel.querySelector("svg.vib-freq");
     var cMin = cfg.c_min, cMax = cfg.c_max, nPos = +cIn.max;
     var posToC = function (pos) {
@@ -412,6 +428,8 @@
       setText(panel, "vib-r-amp", fmt(r.amplitude, 5) + " m");
       setText(panel, "vib-r-mag", fmt(r.magnification, 4));
       setText(panel, "vib-r-peak", fmt(r.peak, 5) + " m");
+      setText(panel, "vib-r-vamp", fmt(r.velocity_amplitude, 5) + " m/s");
+      setText(panel, "vib-r-peakv", fmt(r.peak_v, 5) + " m/s");
       setText(panel, "vib-r-settle", fmt(r.settling, 4) + " s");
       setText(panel, "vib-r-settled", r.settled
         ? "yes, after " + fmt(r.settling, 4) + " s of " + fmt(state.t_end, 4) + " s"
@@ -422,7 +440,10 @@
     }
 
     function draw() {
-      drawTime(svgT, state, panel.vibLast);
+      drawTime(svgT, state, panel.vibLast, "x");
+      if (svgV) {
+        drawTime(svgV, state, panel.vibLast, "v");
+      }
       drawFreq(svgF, state, panel.vibLast, +wIn.max);
     }
 

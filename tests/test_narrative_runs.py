@@ -1,0 +1,173 @@
+"""Part I chapters run with other parameters say what their own tables say.
+
+Each chapter is executed with papermill (in parallel, into a temporary folder) with changed
+parameters; the sentences are read from the executed notebook's Markdown outputs and the
+tables from the fixed-precision text of its Table outputs, and every statement of a regime,
+of settling, of which case is largest, of a verdict and of the half-power band is checked
+against the run's own table row.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+NOTEBOOKS = ROOT / "notebooks"
+REGIMES = ("underdamped", "overdamped", "critically damped", "undamped", "unstable")
+
+#: (chapter, parameters) of each run.
+RUNS = {
+    "01-c_high-5": ("01_reproduction", {"c_high": 5.0}),
+    "01-c_low-0.05": ("01_reproduction", {"c_low": 0.05}),
+    "01-omega_res-3.5": ("01_reproduction", {"omega_res": 3.5}),
+    "01-undamped-negative": ("01_reproduction", {"c_low": 0.0, "c_nominal": -0.1}),
+    "02-c_low-0.05": ("02_claims_audit", {"c_low": 0.05}),
+    "02-c_high-5-c_low-0": ("02_claims_audit", {"c_high": 5.0, "c_low": 0.0}),
+}
+
+
+def parse_tables(nb: dict) -> dict[str, list[dict[str, str]]]:
+    """Every Table output of an executed notebook, by name: rows of {header: cell text}."""
+    tables = {}
+    for cell in nb["cells"]:
+        for out in cell.get("outputs", []):
+            text = "".join(out.get("data", {}).get("text/plain", ""))
+            if not text.startswith("Table tab-"):
+                continue
+            lines = text.splitlines()
+            name = lines[0].split()[1].rstrip(":")
+            header, dashes = lines[1], lines[2]
+            spans = [(m.start(), m.end()) for m in re.finditer(r"-+", dashes)]
+            cols = [header[a : b + (1 if i == len(spans) - 1 else 0)].strip() for i, (a, b) in enumerate(spans)]
+            rows = []
+            for line in lines[3:]:
+                if not line.startswith(tuple("CDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789")):
+                    break
+                if re.match(r"^[a-z]: ", line) or ": " in line[:40] and len(line) > len(dashes) + 5:
+                    break
+                cells = [
+                    line[a : (spans[i + 1][0] if i + 1 < len(spans) else None)].strip()
+                    for i, (a, _) in enumerate(spans)
+                ]
+                rows.append(dict(zip(cols, cells, strict=True)))
+            tables[name] = rows
+    return tables
+
+
+def markdown_outputs(nb: dict) -> list[str]:
+    """The Markdown displayed by the code cells (the generated sentences)."""
+    texts = []
+    for cell in nb["cells"]:
+        for out in cell.get("outputs", []):
+            md = out.get("data", {}).get("text/markdown")
+            if md and out.get("output_type") == "display_data":
+                texts.append("".join(md))
+    return texts
+
+
+@pytest.fixture(scope="module")
+def executed(tmp_path_factory):
+    """Execute every run of :data:`RUNS` once (3 kernels at a time); return {run: notebook dict}."""
+    import papermill
+
+    folder = tmp_path_factory.mktemp("narrative_runs")
+
+    def run(key):
+        chapter, params = RUNS[key]
+        out = folder / f"{key}.ipynb"
+        papermill.execute_notebook(
+            str(NOTEBOOKS / f"{chapter}.ipynb"),
+            str(out),
+            parameters=params,
+            kernel_name="vibration",
+            progress_bar=False,
+            cwd=str(NOTEBOOKS),
+        )
+        return key, json.loads(out.read_text(encoding="utf-8"))
+
+    with ThreadPoolExecutor(max_workers=3) as pool:
+        return dict(pool.map(run, RUNS))
+
+
+def _bullets(texts: list[str]) -> list[str]:
+    return [line[2:] for t in texts for line in t.splitlines() if line.startswith("- **")]
+
+
+def _regimes_in(text: str) -> set[str]:
+    found = set()
+    for word in REGIMES:
+        if re.search(rf"(?<![a-z]){word}(?![a-z])", text):
+            found.add(word)
+    return found
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", [k for k in RUNS if k.startswith("01")])
+def test_reproduction_sentences_follow_the_tables(executed, key):
+    nb = executed[key]
+    tables = parse_tables(nb)
+    findings = {row["case"]: row for row in tables["tab-reproduction-findings"]}
+    texts = markdown_outputs(nb)
+    checked = 0
+    for bullet in _bullets(texts):
+        case = re.match(r"\*\*([^*]+)\*\*", bullet).group(1)
+        if case not in findings:
+            continue
+        row = findings[case]
+        before_settle = bullet.split("; it ")[0]
+        assert _regimes_in(before_settle) == {row["regime"]}, (key, bullet, row)
+        if row["settles by t_end"] == "yes":
+            assert "settles after" in bullet and "has not settled" not in bullet, (key, bullet)
+        else:
+            assert "has not settled" in bullet and "settles after" not in bullet, (key, bullet)
+        checked += 1
+    assert checked >= 8, f"{key}: only {checked} case sentences found"
+    damping = {c: float(findings[c]["peak |x| (m)"]) for c in ("low damping", "nominal damping", "high damping")}
+    largest = max(damping, key=damping.get)
+    said = [m.group(1) for t in texts for m in re.finditer(r"The largest response is the \*\*([^*]+)\*\*", t)]
+    assert said and all(s == largest for s in said), (key, said, damping)
+    changed = RUNS[key][1]
+    intro = texts[0]
+    assert "This run changes the paper's parameters" in intro
+    from vibration.presentation.narrative import PARAMETER_TEXT
+
+    for name, value in changed.items():
+        assert f"{PARAMETER_TEXT[name][0]} = {value:g} " in intro, (name, intro)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", [k for k in RUNS if k.startswith("02")])
+def test_audit_sentences_follow_the_table_and_say_when_the_case_changed(executed, key):
+    nb = executed[key]
+    tables = parse_tables(nb)
+    claims = {row["claim"]: row for row in tables["tab-claims-audit"]}
+    details = next(t for t in markdown_outputs(nb) if t.startswith("**C01**"))
+    for cid, row in claims.items():
+        m = re.search(rf"\*\*{cid}\*\* \(([^)]*(?:\([^)]*\))?[^)]*)\): \*([a-z ]+)\*\.", details)
+        assert m, (key, cid)
+        assert m.group(2) == row["verdict"], (key, cid, m.group(2), row["verdict"])
+    from vibration.physics.audit import changed_text
+    from vibration.physics.paper import load_claims, load_scenarios
+
+    paper = load_scenarios()
+    params = RUNS[key][1]
+    for cl in load_claims():
+        sid = cl["scenario_id"]
+        uses_changed = sid and (
+            ("c_low" in params and sid == "damping_low") or ("c_high" in params and sid == "damping_high")
+        )
+        if uses_changed:
+            assert claims[cl["claim_id"]]["case run"] == "changed", (key, cl["claim_id"])
+            assert f"**{cl['claim_id']}**" in details
+    assert changed_text(paper["damping_low"], paper["damping_low"]) == ""
+    # the audit's regimes are the run's own: with c_high = 5 N s/m the "overdamped" claim is contradicted
+    if params.get("c_high") == 5.0:
+        assert claims["C05"]["exact"] == "underdamped" and claims["C05"]["verdict"] == "physics contradicts"
+    if params.get("c_low") == 0.0:
+        assert claims["C03"]["exact"] == "undamped"
+        assert claims["C14"]["exact"] == "marginal"  # c = 0 forced off omega_n: bounded beats
