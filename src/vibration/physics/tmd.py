@@ -184,6 +184,11 @@ def _stationary(mu: float, f: float, za: float, zp: float):
     roots = np.roots(stat[::-1])
     keep = (roots.real > 0.0) & (np.abs(roots.imag) <= 1e-6 * np.abs(roots))
     s = np.sort(roots.real[keep])
+    pv, dstat = np.polynomial.polynomial.polyval, np.polynomial.polynomial.polyder(stat)
+    for _ in range(2):  # Newton polish of the companion-matrix roots (sharp peaks need it)
+        d = pv(s, dstat)
+        step = np.divide(pv(s, stat), d, out=np.zeros_like(s), where=d != 0.0)
+        s = np.where(np.abs(step) < 1e-3 * s, s - step, s)
     return num, den, s
 
 
@@ -191,20 +196,24 @@ def _peak(mu: float, f: float, za: float, zp: float) -> tuple[float, float]:
     """(max over r >= 0 of |H|, the r where it is reached), validated inputs."""
     if za == 0.0 and zp == 0.0:
         return math.inf, math.nan
-    num, den, s = _stationary(mu, f, za, zp)
-    s = np.concatenate([[0.0], s])
-    pv = np.polynomial.polynomial.polyval
-    g = pv(s, num) / pv(s, den)  # every candidate is a real r: a value of |H|², never above the supremum
+    s = np.concatenate([[0.0], _stationary(mu, f, za, zp)[2]])
+    g = _h2(mu, f, za, zp, np.sqrt(s))  # every candidate is a real r: a value of |H|², never above the supremum
     i = int(np.argmax(g))
     return math.sqrt(float(g[i])), math.sqrt(s[i])
 
 
+def _h2(mu, f, za, zp, r):
+    """|H(r)|² in the factored form (no cancellation of expanded polynomials near a sharp peak)."""
+    num = f * f - r * r + 2j * za * f * r
+    den = (1.0 - r * r + 2j * zp * r) * num - mu * r * r * (f * f + 2j * za * f * r)
+    return (num.real**2 + num.imag**2) / (den.real**2 + den.imag**2)
+
+
 def _outer_peaks(mu: float, f: float, za: float, zp: float) -> tuple[float, float]:
     """|H|² at the lowest-frequency and at the highest-frequency local maximum (equal when there is one)."""
-    num, den, s = _stationary(mu, f, za, zp)
-    pv = np.polynomial.polynomial.polyval
-    g = pv(s, num) / pv(s, den)
-    gp = pv(s * (1 + 1e-7), num) / pv(s * (1 + 1e-7), den)
+    s = _stationary(mu, f, za, zp)[2]
+    g = _h2(mu, f, za, zp, np.sqrt(s))
+    gp = _h2(mu, f, za, zp, np.sqrt(s * (1 + 1e-7)))
     maxima = g[(g >= gp)] if s.size else np.array([1.0])
     if maxima.size == 0:
         maxima = np.array([max(g.max(initial=1.0), 1.0)])
@@ -528,7 +537,7 @@ def h2_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
         return math.log(h2_norm(mu, ff, math.exp(lz), zp))
 
     res = minimize(
-        cost, [f, math.log(za)], method="Nelder-Mead", options={"xatol": 1e-11, "fatol": 1e-15, "maxiter": 4000}
+        cost, [f, math.log(za)], method="Nelder-Mead", options={"xatol": 1e-9, "fatol": 1e-14, "maxiter": 2000}
     )
     return _record("H2 numerical", mu, float(res.x[0]), math.exp(float(res.x[1])), zp)
 
@@ -755,7 +764,8 @@ class MDOF:
         try:
             p = np.array(load, dtype=float).reshape(-1)
         except (TypeError, ValueError):
-            raise ParameterError(f"load = {load!r} is not a vector of numbers: allowed {self.n} finite forces, N") from None
+            msg = f"load = {load!r} is not a vector of numbers: allowed {self.n} finite forces, N"
+            raise ParameterError(msg) from None
         if p.shape != (self.n,) or not np.all(np.isfinite(p)):
             raise ParameterError(f"load = {np.asarray(load).tolist()!r}: allowed {self.n} finite force amplitudes, N")
         return p
@@ -873,7 +883,8 @@ class MDOF:
         try:
             a = np.array(value, dtype=float).reshape(-1)
         except (TypeError, ValueError):
-            raise ParameterError(f"{name} = {value!r} is not a vector of numbers: allowed {self.n} finite values") from None
+            msg = f"{name} = {value!r} is not a vector of numbers: allowed {self.n} finite values"
+            raise ParameterError(msg) from None
         if a.shape != (self.n,) or not np.all(np.isfinite(a)):
             raise ParameterError(f"{name} = {np.asarray(value).tolist()!r}: allowed {self.n} finite values")
         return a
