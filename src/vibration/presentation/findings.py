@@ -192,7 +192,7 @@ def findings_table(rep: Reproduction) -> Table:
     --------
     >>> rep = reproduce(scenarios_from(1.0, 20.0, 5.0, 50.0, 3.0, 4.47, 0.1, 0.5, 15.0), n_points=1001)
     >>> print(repr(findings_table(rep)).splitlines()[1])
-    case             c (N s/m)  ω (rad/s)  ζ        regime       x_ss (m)  peak |x| (m)  t_s (s)  settles by t_end
+    case             c (N s/m)  ω (rad/s)  ζ       regime       x_ss (m)  peak |x| (m)  t_s (s)  settles by t_end
     """
     rows = [
         {

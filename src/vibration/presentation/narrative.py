@@ -18,7 +18,7 @@ Examples
 >>> from vibration.presentation.findings import reproduce, scenarios_from
 >>> rep = reproduce(scenarios_from(1.0, 20.0, 5.0, 50.0, 3.0, 4.47, 0.1, 0.5, 5.0), n_points=1001)
 >>> print(largest_sentence(rep))
-The largest response is the **low damping** case: peak |x| = 10.26 m in the window.
+The largest response is the **low damping** case: peak |x| = 10.25 m in the window.
 """
 
 from __future__ import annotations
@@ -149,7 +149,7 @@ def case_sentence(rep: Reproduction, sid: str) -> str:
     >>> rep = reproduce(scenarios_from(1.0, 20.0, 5.0, 50.0, 3.0, 4.47, 0.1, 0.5, 15.0), n_points=1001)
     >>> print(case_sentence(rep, "damping_high"))
     **high damping** (c = 15 N s/m, ω = 4.47 rad/s): overdamped (ζ = 1.68 > 1: the free motion does not \
-oscillate); peak |x| = 0.1048 m in the window, steady amplitude x_ss = 0.07457 m; it settles after 2.72 s, \
+oscillate); peak |x| = 0.1045 m in the window, steady amplitude x_ss = 0.07457 m; it settles after 2.72 s, \
 inside the 50 s window.
     """
     sc, f = rep.scenarios[sid], rep.by_id[sid]
@@ -243,3 +243,65 @@ def versions_line() -> str:
         f"python {platform.python_version()}, numpy {numpy.__version__}, scipy {scipy.__version__}, "
         f"matplotlib {matplotlib.__version__}, vibration {__version__}"
     )
+
+
+def explorer_start(c: float) -> tuple[float, str]:
+    """The damping the sliders start at (N s/m) and a sentence saying why, for a chapter's ``c``.
+
+    The damping sliders are logarithmic, so they cannot hold c <= 0; such a run starts them at
+    their lowest damping and says so.
+
+    Examples
+    --------
+    >>> explorer_start(0.5)[0], explorer_start(-0.1)[0]
+    (0.5, 0.01)
+    """
+    from .widgets import C_MIN
+
+    if c > 0:
+        return c, f"The sliders start at this run's damping, c = {g(c)} N s/m."
+    what = "undamped" if c == 0 else "negative damping"
+    return C_MIN, (
+        f"This run's damping is c = {g(c)} N s/m ({what}); the damping sliders are logarithmic and cannot "
+        f"hold it, so they start at their lowest value, c = {g(C_MIN)} N s/m. Chapter 1 shows the response "
+        f"at c = {g(c)} N s/m."
+    )
+
+
+def explore_controls_markdown() -> str:
+    """Which controls exist where: JupyterLab (all) and the rendered report (ω, c and reset)."""
+    from . import static_page, widgets
+
+    return (
+        "* **In JupyterLab** (a running kernel): the forcing frequency ω (rad/s, the Hz value beside it) and "
+        f"the damping c (N s/m, logarithmic, from {g(widgets.C_MIN)} to {g(widgets.C_MAX)} N s/m, through "
+        "critical damping) redraw the figure while the slider moves; boxes for m (kg), k (N/m), F0 (N) and "
+        "the window t_end (s) apply when Enter is pressed (a value out of range is reported in red and the "
+        "figure keeps the last valid state); a check box overlays the paper's RK45 solution and its largest "
+        "deviation from the exact displacement.\n"
+        "* **In the rendered report** (no kernel): the same closed form runs in the browser with exactly "
+        f"three controls, the forcing frequency ω (steps of {g(static_page.OMEGA_STEP)} rad/s), the damping c "
+        f"(logarithmic, at least {g(static_page.C_MIN)} to {g(static_page.C_MAX)} N s/m) and a reset button; "
+        "it draws x(t) and v(t) and the magnification curve like the JupyterLab figure, but m, k, F0, t_end "
+        "and the RK45 overlay are fixed at this run's values."
+    )
+
+
+def explore_summary(values: dict) -> str:
+    """Chapter 5's summary from the explorer's starting readout (``Explorer.values``)."""
+    v = values
+    settled = (
+        f"it settles after {g(v['settling'], 3)} s, inside the {g(v['t_end'])} s window"
+        if v["steady_reached"] == "yes"
+        else f"it has not settled by t = {g(v['t_end'])} s"
+    )
+    bullets = [
+        f"At the starting point ω/ω_n = {g(v['ratio'], 5)} and ζ = {g(v['zeta'], 3)}: the oscillator is "
+        f"{v['regime']}, its steady amplitude is {g(v['amplitude'])} m ({g(v['magnification'], 3)} times the "
+        f"static deflection) and {settled}.",
+        "Near ω_n the steady amplitude is F0/(c ω): halving c doubles it and doubles the settling time; a few "
+        "half-power bandwidths (c/m) away from ω_n the amplitude no longer depends on c.",
+        "For ζ ≥ 1/√2 the magnification curve has no peak left to avoid; above ζ = 1 the transient no longer "
+        "oscillates.",
+    ]
+    return "\n".join("- " + b for b in bullets)
