@@ -82,6 +82,7 @@ __all__ = [
     "TMDTuning",
     "add_absorber",
     "den_hartog",
+    "first_mode_absorber",
     "h2_norm",
     "h2_tuning",
     "hinf_tuning",
@@ -1024,3 +1025,64 @@ def tmd_system(m, c, k, tuning: TMDTuning) -> MDOF:
     c = check_real("c", c, low=0.0, unit="N s/m")
     k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
     return add_absorber(MDOF([[m]], [[c]], [[k]]), 0, *tuning.absorber(m, k))
+
+
+@dataclass(frozen=True)
+class ModeAbsorber:
+    """An absorber tuned to one mode of an MDOF structure through its equivalent single-degree-of-freedom system."""
+
+    tuning: TMDTuning  # tuning on the equivalent primary (mass ratio to the modal mass)
+    modal_mass: float  # generalised mass of the mode normalised to 1 at the carrying degree of freedom, kg
+    omega: float  # natural frequency of the mode, rad/s
+    zeta: float  # damping ratio of the mode, 1
+    m_a: float  # absorber mass, kg
+    k_a: float  # absorber stiffness, N/m
+    c_a: float  # absorber damping, N s/m
+
+
+def first_mode_absorber(model: MDOF, mu, dof: int = -1, rule: str = "H∞") -> ModeAbsorber:
+    """Absorber at ``dof`` tuned to the first mode (equivalent SDOF: modal mass, frequency, damping).
+
+    The first mode φ is scaled to 1 at ``dof``; the equivalent primary has mass
+    M1 = φᵀ M φ, stiffness ω1² M1 and the mode's damping ratio, and the absorber
+    mass is μ M1. The rule ("H∞": :func:`hinf_tuning` on the damped equivalent
+    primary, "Den Hartog", or "H2": :func:`h2_tuning`) gives f and ζ_a.
+
+    Parameters
+    ----------
+    model : MDOF
+        Classically damped structure.
+    mu : float
+        Absorber mass over the first modal mass, 1 (0 < mu <= 10).
+    dof : int
+        Degree of freedom carrying the absorber (default: the last, the roof).
+    rule : {"H∞", "Den Hartog", "H2"}
+
+    Returns
+    -------
+    ModeAbsorber
+
+    Examples
+    --------
+    >>> a = first_mode_absorber(MDOF([[1.0]], [[0.5]], [[20.0]]), 0.05)
+    >>> round(a.modal_mass, 3), round(a.zeta, 4), round(a.tuning.f, 4)
+    (1.0, 0.0559, 0.9331)
+    """
+    if not isinstance(model, MDOF):
+        raise ParameterError(f"model = {model!r} is not an MDOF: allowed MDOF(M, C, K)")
+    n = model.n
+    if isinstance(dof, bool) or not isinstance(dof, int | np.integer) or not -n <= dof < n:
+        raise ParameterError(f"dof = {dof!r} is out of range: allowed an integer -{n} <= dof < {n}")
+    rules = {"H∞": hinf_tuning, "Den Hartog": den_hartog, "H2": h2_tuning}
+    if rule not in rules:
+        raise ParameterError(f"rule = {rule!r} is not known: allowed 'H∞', 'Den Hartog', 'H2'")
+    phi = model.modes[:, 0]
+    if phi[dof] == 0.0:
+        raise ParameterError(f"dof = {dof}: the first mode does not move there, allowed a moving degree of freedom")
+    phi = phi / phi[dof]
+    m1 = float(phi @ model.M @ phi)
+    w1 = float(model.natural_frequencies[0])
+    z1 = float(model.modal_damping_ratios[0])
+    tuning = rules[rule](mu, zeta_p=min(z1, ZETA_P_OPT_MAX))
+    m_a, k_a, c_a = tuning.absorber(m1, w1 * w1 * m1)
+    return ModeAbsorber(tuning, m1, w1, z1, m_a, k_a, c_a)
