@@ -138,9 +138,10 @@ class OscillatorTask:
         s(self, "c_min", check_real("c_min", self.c_min, low=0.0, unit="N s/m"))
         s(self, "c_max", check_real("c_max", self.c_max, low=self.c_min, low_open=True, unit="N s/m"))
         if self.dt * math.sqrt(self.k / self.m) > 10.0 or self.dt * max(self.c, self.c_max) / self.m > 700.0:
+            wn_dt, c_dt = self.dt * math.sqrt(self.k / self.m), self.dt * max(self.c, self.c_max) / self.m
             raise ParameterError(
                 f"dt = {self.dt!r} s is out of range: allowed dt sqrt(k/m) <= 10 and dt c/m <= 700 "
-                f"(here {self.dt * math.sqrt(self.k / self.m):.3g} and {self.dt * max(self.c, self.c_max) / self.m:.3g})"
+                f"(here {wn_dt:.3g} and {c_dt:.3g})"
             )
         if self.F0 > 0.0:
             c_low = self.c if self.mode == "force" else self.c_min
@@ -297,7 +298,9 @@ def _kernel():
     import numba
 
     @numba.njit(parallel=True, cache=True)
-    def kernel(mode, a_d, b_d, d, sw, cw, m, k, dt, f0, om, qx, qv, r, u_max, c_min, c_max, gains, x0, rec, xs, vs, us):  # pragma: no cover - compiled
+    def kernel(
+        mode, a_d, b_d, d, sw, cw, m, k, dt, f0, om, qx, qv, r, u_max, c_min, c_max, gains, x0, rec, xs, vs, us
+    ):  # pragma: no cover - compiled
         n_pol, n_ep, n = gains.shape[0], x0.shape[0], d.shape[0]
         costs = np.empty((n_pol, n_ep))
         for job in numba.prange(n_pol * n_ep):
@@ -406,7 +409,11 @@ def sample_initial_states(task: OscillatorTask | None, n: int, seed: int | np.ra
     """
     task = _check_task(task)
     n = check_int("n", n, low=1, high=10_000_000)
-    rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(check_int("seed", seed, low=0, high=2**63 - 1))
+    rng = (
+        seed
+        if isinstance(seed, np.random.Generator)
+        else np.random.default_rng(check_int("seed", seed, low=0, high=2**63 - 1))
+    )
     return rng.uniform(-1.0, 1.0, size=(n, 2)) * np.array([task.x0_max, task.v0_max])
 
 
@@ -723,7 +730,6 @@ class LQRReference:
     infinite_horizon_cost: float  # trace(P E s0 s0'), s
     poles: np.ndarray  # closed-loop eigenvalues of A_d - B_d K, 1
     peak_force: float  # largest |u| over the box and the episode, N
-
 
 
 def lqr_reference(task: OscillatorTask | None = None) -> LQRReference:
