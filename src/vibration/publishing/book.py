@@ -24,6 +24,7 @@ import io
 import re
 import shutil
 import time
+import warnings as _py_warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -354,7 +355,10 @@ def sphinx_build(src: Path, out: Path, builder: str, log=print) -> None:
     from sphinx.util.docutils import docutils_namespace
 
     status, warnings = io.StringIO(), io.StringIO()
-    with docutils_namespace():
+    # The theme and myst-nb still use Sphinx APIs deprecated for Sphinx 10/11: their notices are not ours.
+    with docutils_namespace(), _py_warnings.catch_warnings():
+        _py_warnings.simplefilter("ignore", DeprecationWarning)
+        _py_warnings.simplefilter("ignore", PendingDeprecationWarning)
         app = Sphinx(
             str(src),
             str(src),
@@ -423,6 +427,7 @@ def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, log
         info["pdf_pages"] = print_pdf(single / "index.html", out / "report.pdf")
         info["pdf_s"] = time.perf_counter() - t1
     shutil.rmtree(out / ".doctrees", ignore_errors=True)
+    shutil.rmtree(out.parent / "jupyter_execute", ignore_errors=True)  # myst-nb's scratch folder
     (out / ".buildinfo").unlink(missing_ok=True)
     return info
 

@@ -353,6 +353,7 @@ def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True, log=
     from .book import build as build_book
 
     out = Path(out).resolve()
+    out.parent.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".book-", dir=out.parent))
     try:
         pages = [
