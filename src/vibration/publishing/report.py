@@ -43,9 +43,9 @@ PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
     "t_end": (0.0, True, 1e3, "s"),
     "omega_ref": (0.0, True, 1e3, "rad/s"),
     "omega_res": (0.0, True, 1e3, "rad/s"),
-    "c_low": (1e-3, False, 1e4, "N s/m"),
-    "c_nominal": (1e-3, False, 1e4, "N s/m"),
-    "c_high": (1e-3, False, 1e4, "N s/m"),
+    "c_low": (-1e4, False, 1e4, "N s/m"),
+    "c_nominal": (-1e4, False, 1e4, "N s/m"),
+    "c_high": (-1e4, False, 1e4, "N s/m"),
     "n_points": (2, False, 200_001, ""),
     "n_omega": (2, False, 2000, ""),
     "n_damping": (2, False, 2000, ""),
@@ -55,6 +55,8 @@ PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
 }
 #: Most forcing or natural periods the window may hold (the paper's holds 36).
 MAX_PERIODS = 1000
+#: Largest growth exponent (-c / 2m) t_end of negative damping (e^50 ~ 5e21 stays finite in every table).
+MAX_GROWTH = 50.0
 #: Largest (c / m) t_end, the stiffness the paper's explicit RK45 is asked to cross (the paper's: 750).
 MAX_STIFFNESS = 1e6
 assert PARAMETER_RULES["n_points"][2] <= N_POINTS_MAX
@@ -109,6 +111,7 @@ def select(chapters: list[Chapter], keys: list[str]) -> list[Chapter]:
 
 def _convert(name: str, text: str, type_name: str):
     """Parse ``text`` as the declared type of parameter ``name``."""
+    text = text.strip()
     if type_name == "int":
         try:
             return int(text)
@@ -178,7 +181,15 @@ def _check_together(chapters: list[Chapter], values: dict) -> None:
             f"t_end = {t_end!r} s holds {periods:.0f} periods of the fastest frequency ({fastest:.4g} rad/s, "
             f"from m = {m!r} kg, k = {k!r} N/m and the forcing): allowed at most {MAX_PERIODS}"
         )
-    c = max([x for x in map(get, ("c_low", "c_nominal", "c_high")) if x] or [0.0])  # the ones RK45 meets
+    dampings = [x for x in map(get, ("c_low", "c_nominal", "c_high")) if x is not None]
+    for name in ("c_low", "c_nominal", "c_high"):
+        c = get(name)
+        if c is not None and c < 0 and -c / (2 * m) * t_end > MAX_GROWTH:
+            raise ParameterError(
+                f"{name} = {c!r} N s/m with m = {m!r} kg over t_end = {t_end!r} s: the negative damping grows the "
+                f"response like exp({-c / (2 * m) * t_end:.3g}): allowed (-c/2m) t_end at most {MAX_GROWTH:g}"
+            )
+    c = max([abs(x) for x in dampings] or [0.0])  # the ones RK45 meets
     if c / m * t_end > MAX_STIFFNESS:
         raise ParameterError(
             f"c = {c!r} N s/m with m = {m!r} kg over t_end = {t_end!r} s: (c/m) t_end = {c / m * t_end:.3g} "
@@ -416,7 +427,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--no-pdf", action="store_true", help="skip the PDF (faster previews)")
     parser.add_argument("--list", action="store_true", help="list chapters and their parameters")
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_protect_negative_values(sys.argv[1:] if argv is None else list(argv)))
     previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         chapters = select(discover(), args.chapters)
@@ -445,6 +456,21 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         signal.signal(signal.SIGTERM, previous)
     return 0
+
+
+def _protect_negative_values(argv: list[str]) -> list[str]:
+    """``-p c_low -2e4``: argparse would read ``-2e4`` as an option; a leading space keeps it a value.
+
+    Examples
+    --------
+    >>> _protect_negative_values(["-p", "c_low", "-2e4", "01"])
+    ['-p', 'c_low', ' -2e4', '01']
+    """
+    out = list(argv)
+    for i in range(2, len(out)):
+        if out[i - 2] in ("-p", "--parameter") and out[i].startswith("-"):
+            out[i] = " " + out[i]
+    return out
 
 
 def _terminate(signum, frame):
