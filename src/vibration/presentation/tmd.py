@@ -558,7 +558,9 @@ def magnification_figure(ch: TMDChapter):
     none = 1.0 / np.sqrt((1 - r * r) ** 2 + (2 * ch.zeta_p * r) ** 2)
     ax.plot(r, none, color="0.4", lw=1.2, label="no TMD")
     for rule, t in ch.tunings[ch.mu].items():
-        ax.plot(r, tmd_magnification(ch.mu, t.f, t.zeta_a, r, ch.zeta_p), color=COLORS[rule], label=LABELS[rule])
+        dashed = {"ls": (0, (4, 2)), "zorder": 3} if rule == RULES[0] else {}  # Den Hartog nearly hides under H∞
+        h = tmd_magnification(ch.mu, t.f, t.zeta_a, r, ch.zeta_p)
+        ax.plot(r, h, color=COLORS[rule], label=LABELS[rule], **dashed)
     r_res = ch.omega_res / math.sqrt(ch.k / ch.m)
     ax.axvline(r_res, color="0.5", lw=0.8, ls=":", label=rf"paper's $\omega$ = {ch.omega_res:g} rad/s")
     ax.set_ylim(0, 1.05 * float(none.max()))
