@@ -408,8 +408,8 @@ def growth_sentence(st: StabilityStudy) -> str:
     amp = st.F0 / math.hypot(st.k - st.m * st.omega_res**2, b["osc"].c * st.omega_res)
     return (
         f"Over {st.t_growth:g} s the paper's low damping reaches at most {fmt(float(np.max(np.abs(b['x']))), 3)} m "
-        f"and its envelope closes in on the steady amplitude {fmt(amp, 3)} m (it beats slowly because "
-        f"ω = {st.omega_res:g} rad/s is {fmt(abs(st.omega_n - st.omega_res), 2)} rad/s from ω_n); exact undamped "
+        f"and its envelope closes in on the steady amplitude {fmt(amp, 3)} m (beating at ω_d − ω = "
+        f"{fmt(b['osc'].damped_natural_frequency - st.omega_res, 2)} rad/s while it does); exact undamped "
         f"resonance reaches {fmt(float(np.max(np.abs(lin['x']))), 3)} m, growing by F0/(2mω_n) = "
         f"{fmt(st.F0 / (2 * st.m * st.omega_n), 3)} m each second for ever; negative damping "
         f"c = {ex['osc'].c:g} N s/m reaches {fmt(float(np.max(np.abs(ex['x']))), 3)} m and multiplies by "

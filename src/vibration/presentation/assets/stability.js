@@ -277,11 +277,11 @@
     var W = 260, H = 260;
     var wn = r.wn;
     var pl = r.poles;
-    var lo = Math.min(-1.2 * wn, pl[1][0] * 1.1);
-    var R = Math.max(1.2 * wn, -lo);
-    var sx = function (v) { return PAD.l + ((v + R) / (R + 0.25 * R)) * (W - PAD.l - PAD.r); };
+    var R = Math.max(1.2 * wn, (-pl[1][0] * 1.1) / 1.75);
+    // equal scales on both axes (the plot area is about square): Re s from -1.75 R to 0.25 R, Im s from -R to R
+    var sx = function (v) { return PAD.l + ((v + 1.75 * R) / (2 * R)) * (W - PAD.l - PAD.r); };
     var sy = function (v) { return PAD.t + ((R - v) / (2 * R)) * (H - PAD.t - PAD.b); };
-    var s = [axes(W, H, niceTicks(-R, 0.25 * R, 4), niceTicks(-R, R, 4), sx, sy, "Re s (1/s)", "Im s (1/s)")];
+    var s = [axes(W, H, niceTicks(-1.75 * R, 0.25 * R, 4), niceTicks(-R, R, 4), sx, sy, "Re s (1/s)", "Im s (1/s)")];
     var circ = [];
     for (var i = 0; i <= 120; i++) {
       var a = (Math.PI * i) / 120 + Math.PI / 2;
