@@ -71,6 +71,9 @@ from .model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_re
 __all__ = [
     "ChangeDetection",
     "Discretization",
+    "EstimateGrid",
+    "FaultScenario",
+    "THRESHOLDS",
     "FrequencyEstimate",
     "FrequencyResponse",
     "Identification",
@@ -81,7 +84,12 @@ __all__ = [
     "CoverageExperiment",
     "DetectionExperiment",
     "detection_experiment",
+    "detection_study",
+    "discretisation_checks",
+    "fault_scenario",
+    "estimate_grid",
     "identification_experiment",
+    "identification_sweep",
     "discretize",
     "expm_batch",
     "example_measurements",
@@ -93,6 +101,7 @@ __all__ = [
     "random_force",
     "sampled_response",
     "save_measurements",
+    "simulated_test",
     "stiffness_profile",
     "synthetic_measurements",
     "track_stiffness",
@@ -1778,3 +1787,329 @@ def detection_experiment(
                 ok = idx < t.size
                 first[i, ok] = t[idx[ok]]
     return DetectionExperiment(thr, change_time, monitored, peaks, first, drift)
+
+
+def identification_sweep(
+    osc: Oscillator,
+    *,
+    noises=(0.01, 0.03, 0.1, 0.3),
+    durations=(15.0, 30.0, 60.0, 120.0),
+    noise: float = 0.05,
+    duration: float = 60.0,
+    runs: int = 40,
+    seed: int = 0,
+    **kwargs,
+) -> tuple[list[CoverageExperiment], list[CoverageExperiment]]:
+    """Error scaling: :func:`identification_experiment` over noise levels (at ``duration``) and record lengths
+    (at ``noise``).
+
+    Parameters
+    ----------
+    osc : Oscillator
+        The truth: m (kg), c (N s/m), k (N/m).
+    noises : sequence of float
+        Noise standard deviations relative to the rms response, 1.
+    durations : sequence of float
+        Record lengths, s.
+    noise, duration : float
+        The value held fixed in the other sweep (1, s).
+    runs, seed : int
+        Realisations per point and the first seed.
+    **kwargs
+        Passed to :func:`identification_experiment` (``dt``, ``sensor``, ``band``, ``rms``).
+
+    Examples
+    --------
+    >>> by_noise, by_length = identification_sweep(Oscillator(1.0, 0.5, 20.0), noises=(0.01, 0.1),
+    ...                                            durations=(20.0, 40.0), runs=5)
+    >>> float(by_noise[1].rel_rmse[2] / by_noise[0].rel_rmse[2]) > 5      # error grows with the noise
+    True
+    """
+    by_noise = [
+        identification_experiment(osc, duration=duration, noise=s, runs=runs, seed=seed, **kwargs) for s in noises
+    ]
+    by_length = [
+        identification_experiment(osc, duration=d, noise=noise, runs=runs, seed=seed, **kwargs) for d in durations
+    ]
+    return by_noise, by_length
+
+
+@dataclass(frozen=True)
+class EstimateGrid:
+    """One seeded identification per (noise, record length): what the slider panels show."""
+
+    truth: np.ndarray  # (3,) m (kg), c (N s/m), k (N/m)
+    noises: np.ndarray  # (I,) noise / rms response, 1
+    durations: np.ndarray  # (J,) record lengths, s
+    estimates: np.ndarray  # (I, J, 3)
+    ci95: np.ndarray  # (I, J, 3, 2)
+
+
+def estimate_grid(
+    osc: Oscillator,
+    noises=(0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5),
+    durations=(10.0, 20.0, 40.0, 80.0, 160.0),
+    *,
+    dt: float = 0.02,
+    seed: int = 0,
+    sensor: str = "x",
+    band: tuple[float, float] = (0.1, 2.0),
+    rms: float = 2.0,
+) -> EstimateGrid:
+    """Identify one record per (noise, record length); the records share the force and the noise draw.
+
+    The longest record is simulated once (force seed ``seed``, standard normal
+    noise draw seed ``seed + 1``); shorter records are its first samples and each
+    noise level scales the same draw, so moving one slider changes one thing.
+
+    Parameters
+    ----------
+    osc : Oscillator
+        The truth: m (kg), c (N s/m), k (N/m).
+    noises : sequence of float
+        Noise standard deviation / rms of the noise-free response, 1.
+    durations : sequence of float
+        Record lengths, s.
+    dt : float
+        Sampling step, s.
+    seed : int
+        Seed of the force; the noise draw uses ``seed + 1``.
+    sensor, band, rms
+        As :func:`identification_experiment`.
+
+    Examples
+    --------
+    >>> g = estimate_grid(Oscillator(1.0, 0.5, 20.0), noises=(0.01, 0.1), durations=(20.0, 40.0))
+    >>> g.estimates.shape, g.ci95.shape
+    ((2, 2, 3), (2, 2, 3, 2))
+    """
+    if not isinstance(osc, Oscillator):
+        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
+    noises = _signal("noises", noises)
+    durations = _signal("durations", durations)
+    if np.any(noises <= 0) or np.any(durations <= 0):
+        raise ParameterError("noises and durations must be positive: allowed positive numbers (1, s)")
+    dt = check_real("dt", dt, low=0.0, low_open=True, unit="s")
+    t = np.arange(int(round(float(np.max(durations)) / dt)) + 1) * dt
+    force = random_force(t, band=band, rms=rms, seed=seed)
+    clean = synthetic_measurements(osc, t, force, sensor=sensor).response
+    draw = np.random.default_rng(seed + 1).standard_normal(t.size)
+    est = np.empty((noises.size, durations.size, 3))
+    ci = np.empty((noises.size, durations.size, 3, 2))
+    for j, d in enumerate(durations):
+        n = int(round(d / dt)) + 1
+        rms_y = float(np.sqrt(np.mean(clean[:n] ** 2)))
+        for i, s in enumerate(noises):
+            fit = identify(t[:n], force[:n], **{sensor: clean[:n] + s * rms_y * draw[:n]}, search="local")
+            est[i, j] = (fit.m, fit.c, fit.k)
+            ci[i, j] = fit.ci95
+    return EstimateGrid(np.array([osc.m, osc.c, osc.k]), noises, durations, est, ci)
+
+
+# --------------------------------------------------------------------------- chapter scenarios
+
+#: CUSUM thresholds the chapter's trade-off curves run through, 1.
+THRESHOLDS = tuple(float(v) for v in np.geomspace(4.0, 400.0, 15))
+
+
+def simulated_test(
+    osc: Oscillator,
+    duration: float,
+    dt: float,
+    noise: float,
+    *,
+    seed: int = 0,
+    band: tuple[float, float] = (0.1, 2.0),
+    rms: float = 2.0,
+    sensor: str = "x",
+    stiffness=None,
+) -> Measurements:
+    """A broadband test record from rest with noise given relative to the rms noise-free response.
+
+    Parameters
+    ----------
+    osc : Oscillator
+        m (kg), c (N s/m), k (N/m).
+    duration, dt : float
+        Record length and sampling step, s.
+    noise : float
+        Noise standard deviation / rms of the noise-free response, 1 (>= 0).
+    seed : int
+        Force seed; the noise uses ``seed + 1``.
+    band, rms, sensor, stiffness
+        As :func:`random_force` and :func:`synthetic_measurements` (Hz, N, -, N/m).
+
+    Examples
+    --------
+    >>> rec = simulated_test(Oscillator(1.0, 0.5, 20.0), 10.0, 0.02, 0.1)
+    >>> len(rec), rec.sensor
+    (501, 'x')
+    """
+    duration = check_real("duration", duration, low=0.0, low_open=True, unit="s")
+    dt = check_real("dt", dt, low=0.0, low_open=True, high=duration / MIN_SAMPLES, unit="s")
+    noise = check_real("noise", noise, low=0.0, high=10.0)
+    t = np.arange(int(round(duration / dt)) + 1) * dt
+    force = random_force(t, band=band, rms=rms, seed=seed)
+    clean = synthetic_measurements(osc, t, force, sensor=sensor, stiffness=stiffness).response
+    y = clean + noise * float(np.sqrt(np.mean(clean**2))) * np.random.default_rng(seed + 1).standard_normal(t.size)
+    return Measurements(t, force, x=y) if sensor == "x" else Measurements(t, force, a=y)
+
+
+@dataclass(frozen=True)
+class FaultScenario:
+    """The monitored record's stiffness history: decline from ``decline_start``, drop at ``drop_time``."""
+
+    t: np.ndarray  # s
+    k: np.ndarray  # true stiffness, N/m
+    decline_start: float  # s
+    drop_time: float  # s
+
+
+def fault_scenario(k: float, t_monitor: float, dt: float, decline_rate: float, drop: float) -> FaultScenario:
+    """Healthy for the first 40 % of the window, then a slow decline, and a sudden drop at 70 %.
+
+    Parameters
+    ----------
+    k : float
+        Healthy stiffness, N/m.
+    t_monitor, dt : float
+        Window length and sampling step, s.
+    decline_rate : float
+        Fraction of k lost per second during the decline, 1/s.
+    drop : float
+        Fraction of k lost at the drop, 1.
+
+    Examples
+    --------
+    >>> sc = fault_scenario(20.0, 100.0, 0.5, 0.001, 0.1)
+    >>> sc.decline_start, sc.drop_time, round(float(sc.k[-1]), 3)
+    (40.0, 70.0, 16.92)
+    """
+    t_monitor = check_real("t_monitor", t_monitor, low=0.0, low_open=True, unit="s")
+    dt = check_real("dt", dt, low=0.0, low_open=True, high=t_monitor / MIN_SAMPLES, unit="s")
+    t = np.arange(int(round(t_monitor / dt)) + 1) * dt
+    start, when = 0.4 * t_monitor, 0.7 * t_monitor
+    return FaultScenario(t, stiffness_profile(t, k, start, decline_rate, drop_time=when, drop=drop), start, when)
+
+
+def detection_study(
+    osc: Oscillator,
+    reference,
+    t_monitor: float,
+    dt: float,
+    noise: float,
+    decline_rate: float,
+    drop: float,
+    *,
+    runs: int = 100,
+    seed: int = 0,
+    thresholds=THRESHOLDS,
+) -> dict[str, DetectionExperiment]:
+    """Two seeded detection experiments on ``t_monitor``-long records: a sudden drop alone and a slow decline alone.
+
+    Both faults start at 40 % of the window (after the 25 % calibration). The noise is
+    ``noise`` times the rms of the healthy noise-free response (1); the force is a fresh
+    band-limited random force (seed ``seed``).
+
+    Examples
+    --------
+    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> st = detection_study(osc, osc, 100.0, 0.02, 0.01, 0.001, 0.05, runs=3, thresholds=(40.0,))
+    >>> sorted(st), [float(e.detection_probability[0]) for e in st.values()]
+    (['slow decline', 'sudden drop'], [1.0, 1.0])
+    """
+    t = np.arange(int(round(t_monitor / dt)) + 1) * dt
+    start = 0.4 * t_monitor
+    force = random_force(t, seed=seed)
+    clean = synthetic_measurements(osc, t, force).x
+    sd = noise * float(np.sqrt(np.mean(clean**2)))
+    profiles = {
+        "sudden drop": stiffness_profile(t, osc.k, start, 0.0, drop_time=start, drop=drop),
+        "slow decline": stiffness_profile(t, osc.k, start, decline_rate),
+    }
+    return {
+        label: detection_experiment(
+            osc,
+            t,
+            force,
+            ks,
+            start,
+            noise=sd,
+            runs=runs,
+            seed=seed + 1 + 7919 * j,
+            thresholds=thresholds,
+            reference=reference,
+        )
+        for j, (label, ks) in enumerate(profiles.items())
+    }
+
+
+def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float, n: int) -> dict:
+    """Differences of :func:`sampled_response` from three independent references, with their bounds.
+
+    Returns ``{name: (difference, bound)}`` (both in m):
+
+    * the closed form :func:`vibration.exact_response` for ``F0 sin(omega t)`` on ``n``
+      samples: the FOH interpolation error, bounded by ``h^2 omega^2 F0 / 8`` times the
+      integral of ``|impulse response|`` (itself bounded by ``2 / (c omega_d)``, or
+      ``t_end / m`` for the undamped case),
+    * ``scipy.signal.cont2discrete(method="foh")`` with ``dlsim``: rounding level,
+    * ``solve_ivp`` (DOP853, rtol 1e-12) sample by sample with the force held linear:
+      integrator tolerance level (on the first 200 samples).
+
+    Examples
+    --------
+    >>> ch = discretisation_checks(Oscillator(1.0, 0.5, 20.0), 5.0, 4.47, 50.0, 5001)
+    >>> all(v < b for v, b in ch.values())
+    True
+    """
+    from scipy.integrate import solve_ivp
+
+    from .exact import exact_response
+    from .model import SineForce
+
+    t = np.linspace(0.0, t_end, n)
+    h = float(t[1] - t[0])
+    force = SineForce(F0, omega)
+    f = force(t)
+    ours = sampled_response(osc, t, f)
+    exact = exact_response(osc, force, t)
+    wd = osc.damped_natural_frequency
+    integral = 2.0 / (osc.c * wd) if osc.c > 0 and wd > 0 else t_end / osc.m * max(t_end, 1.0)
+    if osc.c > 0 and wd == 0.0:
+        integral = 1.0 / osc.k * 4.0
+    bound_sine = h * h * omega * omega * F0 / 8.0 * integral
+    a = np.array([[0.0, 1.0], [-osc.k / osc.m, -osc.c / osc.m]])
+    b = np.array([[0.0], [1.0 / osc.m]])
+    ad, bd, cd, dd, _ = signal.cont2discrete((a, b, np.eye(2), np.zeros((2, 1))), h, method="foh")
+    _, yd, _ = signal.dlsim((ad, bd, cd, dd, h), f, x0=-dd[:, 0] * f[0])
+    scale = max(float(np.max(np.abs(ours.x))), 1e-300)
+    m_ = min(200, n)
+    z = np.zeros(2)
+    ref = [0.0]
+    for i in range(m_ - 1):
+        slope = (f[i + 1] - f[i]) / h
+        sol = solve_ivp(
+            lambda s, y, i=i, slope=slope: [y[1], (f[i] + slope * s - osc.c * y[1] - osc.k * y[0]) / osc.m],
+            (0.0, h),
+            z,
+            method="DOP853",
+            rtol=1e-12,
+            atol=1e-14 * scale,
+        )
+        z = sol.y[:, -1]
+        ref.append(z[0])
+    return {
+        "sine: closed form (interpolation error of the force)": (
+            float(np.max(np.abs(ours.x - exact.x))),
+            bound_sine,
+        ),
+        "scipy cont2discrete FOH + dlsim (relative to max |x|)": (
+            float(np.max(np.abs(ours.x - yd[:, 0]))) / scale,
+            1e-10,
+        ),
+        "solve_ivp, force linear between samples (relative)": (
+            float(np.max(np.abs(ours.x[:m_] - np.array(ref)))) / scale,
+            1e-8,
+        ),
+    }
