@@ -52,6 +52,14 @@ PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
     "omega_max": (0.0, True, 1e3, "rad/s"),
     "c_min": (1e-3, False, 1e4, "N s/m"),
     "c_max": (1e-3, False, 1e4, "N s/m"),
+    # chapter 08, tuned mass dampers
+    "mu": (0.0, True, 1.0, ""),
+    "mistuning": (0.0, False, 0.5, ""),
+    "n_storeys": (1, False, 30, ""),
+    "storey_mass": (1e-3, False, 1e9, "kg"),
+    "storey_stiffness": (1e-3, False, 1e12, "N/m"),
+    "zeta_building": (0.0, False, 0.99, ""),
+    "mu_building": (0.0, True, 1.0, ""),
 }
 #: Most forcing or natural periods the window may hold (the paper's holds 36).
 MAX_PERIODS = 1000
