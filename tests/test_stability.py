@@ -190,7 +190,9 @@ def test_transmissibility_shapes_and_limits():
     far = stab.transmissibility(osc, 1e200)  # no overflow: T -> 2 zeta omega_n / omega
     assert far == pytest.approx(2.0 * osc.damping_ratio * osc.natural_frequency / 1e200, rel=1e-12)
     assert stab.transmissibility(Oscillator(1.0, 0.0, 4.0), 2.0) == math.inf
-    assert stab.transmissibility(Oscillator(1.0, 1e300, 1.0), 1e10) == 1.0  # 2 zeta r overflows: ratio 1
+    heavy = Oscillator(1.0, 1e150, 1.0)  # zeta = 5e149: T = 1 until r ~ 2 zeta, then 2 zeta / r
+    assert stab.transmissibility(heavy, 1e10) == 1.0
+    assert stab.transmissibility(heavy, 1e200) == pytest.approx(1e-50, rel=1e-12)
 
 
 def test_peak_transmissibility_and_magnification_against_a_fine_grid():

@@ -311,7 +311,7 @@ def transmissibility(osc: Oscillator, omegas):
         bz = 2.0 * osc.damping_ratio * inv  # (2 zeta r) / r^2
         high = np.hypot(inv * inv, bz) / np.hypot((inv - 1.0) * (inv + 1.0), bz)
         out = np.where(r > 1.0, high, low)
-        out = np.where(np.isinf(b), 1.0, out)
+        out = np.where(np.isinf(b) & (r <= 1.0), 1.0, out)  # zeta -> inf below omega_n: T -> 1
     return _out(out, w)
 
 
