@@ -100,7 +100,20 @@ def _header_html(text: str) -> str:
 
 
 def _header_myst(text: str) -> str:
-    return _SUB.sub(lambda m: "{sub}`" + m.group(1) + "`", _escape_md(text))
+    """Header text as MyST: ``_sub`` becomes the ``{sub}`` role, everything else escaped.
+
+    Examples
+    --------
+    >>> _header_myst("σ_x (m)")
+    'σ{sub}`x` (m)'
+    """
+    out, last = [], 0
+    for m in _SUB.finditer(text):
+        out.append(_escape_md(text[last : m.start()]))
+        out.append("{sub}`" + m.group(1) + "`")
+        last = m.end()
+    out.append(_escape_md(text[last:]))
+    return "".join(out)
 
 
 def _escape_md(text: str) -> str:

@@ -52,6 +52,13 @@ PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
     "omega_max": (0.0, True, 1e3, "rad/s"),
     "c_min": (1e-3, False, 1e4, "N s/m"),
     "c_max": (1e-3, False, 1e4, "N s/m"),
+    # chapter 06, stability and damping as a design choice
+    "c_unstable": (-1e4, False, 0.0, "N s/m"),
+    "t_growth": (0.0, True, 2000.0, "s"),
+    "isolation_ratio": (1.4142135623730951, True, 100.0, ""),
+    "S0": (0.0, True, 1e6, "N² s/rad"),
+    "n_paths": (2, False, 5000, ""),
+    "seed": (0, False, 2**31 - 1, ""),
     # chapter 08, tuned mass dampers
     "mu": (0.0, True, 1.0, ""),
     "mistuning": (0.0, False, 0.5, ""),
