@@ -156,6 +156,26 @@ def test_every_chapter_is_reachable_from_the_sidebar_of_every_page(browser, site
 
 
 @pytest.mark.browser
+def test_nothing_is_wider_than_the_text_column_at_1280_px(browser, site):
+    wide = {}
+    for path in [p for p in _pages(site) if p.name not in ("search.html", "genindex.html")]:
+        page, _, _ = open_offline(browser, path, viewport=(1280, 900))
+        found = page.evaluate(
+            """() => {
+                const col = document.querySelector('article.bd-article').getBoundingClientRect().right;
+                const sel = 'article table, article img, article svg, article .vib-panel, article figure';
+                return [...document.querySelectorAll(sel)]
+                    .filter(e => e.getBoundingClientRect().right > col + 2)
+                    .map(e => e.tagName + ' ' + (e.querySelector('caption') || e).textContent.slice(0, 60));
+            }"""
+        )
+        if found:
+            wide[path.name] = found
+        page.close()
+    assert wide == {}
+
+
+@pytest.mark.browser
 def test_previous_and_next_links(browser, site):
     page, _, _ = open_offline(browser, site / f"{CHAPTERS[1]}.html")
     prev = page.get_attribute("a.left-prev", "href")
