@@ -70,13 +70,32 @@ def lqr_table(task: OscillatorTask, ref: LQRReference) -> Table:
     )
 
 
+def _law(g) -> str:
+    """``u = -K_x x - K_v v`` with the signs written out."""
+    kx, kv = (float(z) for z in g)
+    first = f"{-kx:.4g}\\,x"
+    second = f"{'-' if kv >= 0 else '+'} {abs(kv):.4g}\\,v"
+    return f"u = {first} {second}"
+
+
 def lqr_sentence(task: OscillatorTask, ref: LQRReference) -> str:
-    """The optimum in words, with whether the force bound binds."""
-    rates = _decay_rates(task, ref)
+    """The optimum in words: the law, its closed-loop modes, its cost, whether the force bound binds."""
+    poles = np.log(ref.poles.astype(complex)) / task.dt
+    if np.any(np.abs(poles.imag) > 1e-9 * np.abs(poles).max()):
+        p = poles[np.argmax(poles.imag)]
+        modes = f"a damped oscillation decaying at {-p.real:.3g} 1/s with frequency {abs(p.imag):.3g} rad/s"
+    else:
+        rates = np.sort(-poles.real)
+        modes = f"two real modes decaying at {rates[0]:.3g} and {rates[1]:.3g} 1/s"
+    stiff = abs(ref.gains[0]) / task.k
+    kind = (
+        f"mostly damping (the displacement gain changes the spring stiffness by {100 * stiff:.2g} %)"
+        if stiff < 0.1
+        else f"damping and stiffness (the displacement gain changes the spring stiffness by {100 * stiff:.3g} %)"
+    )
     binds = "never reaches" if ref.peak_force <= task.u_max else "exceeds"
     return (
-        f"The optimal law is $u = -{ref.gains[0]:.4g}\\,x - {ref.gains[1]:.4g}\\,v$ (N): almost pure damping, "
-        f"which brings the closed loop to two real modes decaying at {rates[0]:.3g} and {rates[1]:.3g} 1/s. "
+        f"The optimal law is ${_law(ref.gains)}$ (N): {kind}, which gives the closed loop {modes}. "
         f"Its expected cost over an episode is $J^* = {ref.expected_cost:.4g}$ s, and its largest force over every "
         f"initial state, {ref.peak_force:.3g} N, {binds} the bound of {task.u_max:g} N, so the bound does "
         f"{'not ' if ref.peak_force <= task.u_max else ''}change the problem."
@@ -157,13 +176,13 @@ def learning_sentence(task: OscillatorTask, ref: LQRReference, results: list[Tra
         jp, jm = _moments(task, ref.gains + e)[0], _moments(task, ref.gains - e)[0]
         curv.append((jp - 2.0 * j0 + jm) / h**2)
     worst = max(results, key=lambda r: r.expected_cost)
-    err = np.abs(worst.gains - ref.gains) / np.abs(ref.gains)
+    err = np.abs(worst.gains - ref.gains)
     return (
         "; ".join(parts)
         + f". {verdict} The cost is {curv[1] / curv[0]:.3g} times more curved along $K_v$ than along $K_x$ at "
         f"the optimum, so the displacement gain is the loosely determined one: "
-        f"{METHOD_NAMES[worst.method]}'s gains differ from LQR's by {100 * err[0]:.2g} % in $K_x$ and "
-        f"{100 * err[1]:.2g} % in $K_v$, for {100 * (worst.expected_cost / j0 - 1):.2g} % more cost."
+        f"{METHOD_NAMES[worst.method]}'s gains differ from LQR's by {err[0]:.2g} N/m in $K_x$ and "
+        f"{err[1]:.2g} N s/m in $K_v$, for {100 * (worst.expected_cost / j0 - 1):.2g} % more cost."
     )
 
 

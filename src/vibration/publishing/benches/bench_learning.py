@@ -1,0 +1,26 @@
+"""Learning chapter: training time of each learner to its default budget (target: under a minute on 2 cores)."""
+
+from __future__ import annotations
+
+from ...physics.learning import OscillatorTask, lqr_reference, resonance_task, semi_active_task, train
+from ..bench import median_time, table
+
+
+def run(quick: bool) -> None:
+    """Time ``train`` (ARS and CMA-ES, default budgets) on the default, resonance and semi-active tasks."""
+    repeats = 1 if quick else 3
+    base = OscillatorTask()
+    ref = lqr_reference(base)
+    train(base, seed=0, iterations=1)  # compile the kernels and import cma outside the timings
+    train(base, seed=0, method="cma", iterations=1)
+    rows = []
+    t_ars = median_time(lambda: train(base, seed=0, method="ars"), repeats)
+    t_cma = median_time(lambda: train(base, seed=0, method="cma"), repeats)
+    ratio_ars = train(base, seed=0, method="ars").expected_cost / ref.expected_cost
+    ratio_cma = train(base, seed=0, method="cma").expected_cost / ref.expected_cost
+    rows.append((f"ARS, default task (J/J* = {ratio_ars:.5f})", t_ars, None, "< 60 s"))
+    rows.append((f"CMA-ES, default task (J/J* = {ratio_cma:.5f})", t_cma, t_ars / t_cma, "< 60 s"))
+    for name, task in (("resonance force", resonance_task()), ("semi-active damper", semi_active_task())):
+        t = median_time(lambda task=task: train(task, seed=0, method="ars"), repeats)
+        rows.append((f"ARS, {name}", t, t_ars / t, "< 60 s"))
+    table("learning: train() wall time to its default budget (ratio: ARS on the default task / this case)", rows)
