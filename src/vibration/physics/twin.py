@@ -1224,7 +1224,7 @@ def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, Freq
     level = h_pk / math.sqrt(2.0)
     left = np.nonzero(mag[:i] < level)[0]
     right = np.nonzero(mag[i:] < level)[0]
-    if left.size == 0 or right.size == 0 or (right[0] + (i - left[-1])) < 4:
+    if left.size == 0 or right.size == 0 or (right[0] + (i - left[-1]) - 1) < 5:
         hp = _nan_estimate("half-power", "half-power band not resolved by the frequency bins")
     else:
         j = left[-1]
@@ -1240,7 +1240,9 @@ def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, Freq
             wn = w_pk / math.sqrt(1.0 - 2.0 * zeta**2)
             k = 1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta**2) * h_pk)
             m = k / wn**2
-            hp = FrequencyEstimate("half-power", m, 2.0 * zeta * math.sqrt(k * m), k, wn, zeta)
+            hp = FrequencyEstimate(
+                "half-power", float(m), 2.0 * zeta * math.sqrt(k * m), float(k), float(wn), float(zeta)
+            )
     lo_i, hi_i = i, i
     while lo_i - 1 >= 0 and mag[lo_i - 1] >= 0.5 * h_pk:
         lo_i -= 1

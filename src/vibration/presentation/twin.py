@@ -59,8 +59,8 @@ NAMES = ("m", "c", "k")
 UNITS = ("kg", "N s/m", "N/m")
 
 
-def _val(v):
-    return Missing("no resolved resonance peak") if v is None or (isinstance(v, float) and math.isnan(v)) else v
+def _val(v, reason: str = "not available"):
+    return Missing(reason or "not available") if v is None or (isinstance(v, float) and math.isnan(v)) else v
 
 
 # ----------------------------------------------------------------------------- identification
@@ -98,8 +98,17 @@ def identification_figure(meas: Measurements, fit: Identification, frf: Frequenc
     return fig
 
 
-def identification_table(fit: Identification, truth: Oscillator, hp: FrequencyEstimate, cf: FrequencyEstimate) -> Table:
-    """Truth, least-squares estimate with standard error and 95 % interval, and the two FRF estimates."""
+def identification_table(
+    fit: Identification,
+    truth: Oscillator,
+    hp: FrequencyEstimate,
+    cf: FrequencyEstimate,
+    frf_record: float | None = None,
+) -> Table:
+    """Truth, least-squares estimate with standard error and 95 % interval, and the two FRF estimates.
+
+    ``frf_record`` (s): length of the record the FRF estimates come from, when it is not the fit's.
+    """
     tv = (truth.m, truth.c, truth.k)
     est = (fit.m, fit.c, fit.k)
     rows = []
@@ -113,8 +122,8 @@ def identification_table(fit: Identification, truth: Oscillator, hp: FrequencyEs
                 "lo": float(fit.ci95[i, 0]),
                 "hi": float(fit.ci95[i, 1]),
                 "in": bool(fit.ci95[i, 0] <= tv[i] <= fit.ci95[i, 1]),
-                "hp": _val((hp.m, hp.c, hp.k)[i]),
-                "cf": _val((cf.m, cf.c, cf.k)[i]),
+                "hp": _val((hp.m, hp.c, hp.k)[i], hp.reason),
+                "cf": _val((cf.m, cf.c, cf.k)[i], cf.reason),
             }
         )
     return Table(
@@ -133,6 +142,14 @@ def identification_table(fit: Identification, truth: Oscillator, hp: FrequencyEs
         caption="Identified parameters: output-error least squares on the exact discrete model, and the "
         "frequency-domain estimates from the measured FRF.",
         name="tab-twin-identified",
+        notes=(
+            (
+                f"Half-power and circle fit from a separate {frf_record:g} s record (Welch estimate): on the fit's "
+                f"{(fit.n - 1) * fit.dt:g} s the frequency bins are too coarse for the resonance peak.",
+            )
+            if frf_record
+            else ()
+        ),
     )
 
 
@@ -233,6 +250,8 @@ def scaling_figure(by_noise: list[CoverageExperiment], by_length: list[CoverageE
             ax.loglog(xs, [100 * e.rel_stderr[i] for e in exps], "-", color=color, lw=1.0, label=f"${name}$ std. error")
         ax.set_xlabel(xlabel)
         ax.set_ylabel("relative error (%)")
+        _plain_log_ticks(ax, "x")
+        _plain_log_ticks(ax, "y")
     ax1.set_title(f"$T$ = {by_noise[0].duration:g} s", loc="left")
     ax2.set_title(f"noise = {by_length[0].noise:g} of rms", loc="left")
     place_legend(ax2, outside=True)
@@ -270,27 +289,31 @@ def tracking_figure(track: StiffnessTrack, k_true, detection: ChangeDetection):
 
 
 def tradeoff_figure(experiments: dict[str, DetectionExperiment]):
-    """Mean detection delay against false alarm probability as the CUSUM threshold varies."""
-    fig, ax = figure(1, 1, height=3.4)
+    """As the CUSUM threshold varies: false alarm probability per record (left), mean detection delay (right)."""
+    fig, (ax1, ax2) = figure(1, 2, height=3.3)
     for i, (label, ex) in enumerate(experiments.items()):
-        fa, delay = ex.false_alarm_probability, ex.mean_delay
-        ok = np.isfinite(delay)
-        ax.plot(np.maximum(fa[ok], 1e-3), delay[ok], "o-", color=f"C{i}", ms=3.5, lw=1.1, label=label)
-        j = int(np.argmin(np.abs(ex.thresholds - ex.thresholds[ok][len(ex.thresholds[ok]) // 2])))
-        if ok[j]:
-            ax.annotate(
-                f"h = {ex.thresholds[j]:.3g}",
-                (max(fa[j], 1e-3), delay[j]),
-                textcoords="offset points",
-                xytext=(6, 4),
-                fontsize=8,
-                color=f"C{i}",
-            )
-    ax.set_xscale("log")
-    ax.set_xlabel("false alarm probability per record (0 plotted at 1e-3)")
-    ax.set_ylabel("mean detection delay (s)")
-    place_legend(ax)
+        ax1.plot(ex.thresholds, ex.false_alarm_probability, "o-", color=f"C{i}", ms=3.5, lw=1.1, label=label)
+        ok = np.isfinite(ex.mean_delay)
+        ax2.plot(ex.thresholds[ok], ex.mean_delay[ok], "o-", color=f"C{i}", ms=3.5, lw=1.1, label=label)
+    for ax in (ax1, ax2):
+        ax.set_xscale("log")
+        ax.set_xlabel("threshold $h$ (1)")
+        _plain_log_ticks(ax, "x")
+    ax1.set_ylabel("false alarm probability per record")
+    ax2.set_ylabel("mean detection delay (s)")
+    ax2.set_ylim(bottom=0)
+    place_legend(ax1)
+    place_legend(ax2)
     return fig
+
+
+def _plain_log_ticks(ax, which: str) -> None:
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    axis = ax.xaxis if which == "x" else ax.yaxis
+    axis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+    axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    axis.set_minor_formatter(NullFormatter())
 
 
 def detection_table(experiments: dict[str, DetectionExperiment], threshold: float) -> Table:

@@ -11,7 +11,6 @@
   if (window.vibrationTwin) {
     return;
   }
-  var SVGNS = "http://www.w3.org/2000/svg";
 
   /** Estimates and 95 % intervals at noise index i, length index j: arrays of 3 (m, c, k). */
   function cell(grid, i, j) {
@@ -39,11 +38,12 @@
     return s;
   }
 
+  /** SVG markup of one element (attribute values are numbers or fixed class names; text is escaped). */
   function el(name, attrs, text) {
-    var e = document.createElementNS(SVGNS, name);
-    Object.keys(attrs).forEach(function (k) { e.setAttribute(k, attrs[k]); });
-    if (text !== undefined) { e.textContent = text; }
-    return e;
+    var a = Object.keys(attrs).map(function (k) { return " " + k + '="' + attrs[k] + '"'; }).join("");
+    if (text === undefined) { return "<" + name + a + "/>"; }
+    var t = String(text).replace(/&/g, "&amp;").replace(/</g, "&lt;");
+    return "<" + name + a + ">" + t + "</" + name + ">";
   }
 
   function niceStep(span) {
@@ -54,7 +54,7 @@
   }
 
   function draw(svg, grid, rel) {
-    while (svg.firstChild) { svg.removeChild(svg.firstChild); }
+    var out = [];
     var W = 640, H = 200, left = 70, right = 20, top = 14, bottom = 40;
     var lim = 0;
     for (var p = 0; p < 3; p++) {
@@ -66,21 +66,22 @@
     var x = function (v) { return left + (v + lim) / (2 * lim) * (W - left - right); };
     var rowH = (H - top - bottom) / 3;
     for (var tk = -lim; tk <= lim + 1e-9 * lim; tk += step) {
-      svg.appendChild(el("line", { x1: x(tk), x2: x(tk), y1: top, y2: H - bottom, class: "twin-grid" }));
-      svg.appendChild(el("text", { x: x(tk), y: H - bottom + 15, "text-anchor": "middle", class: "twin-tick" },
+      out.push(el("line", { x1: x(tk), x2: x(tk), y1: top, y2: H - bottom, class: "twin-grid" }));
+      out.push(el("text", { x: x(tk), y: H - bottom + 15, "text-anchor": "middle", class: "twin-tick" },
         fmt(Math.abs(tk) < 1e-12 * lim ? 0 : tk, 3)));
     }
-    svg.appendChild(el("text", { x: (left + W - right) / 2, y: H - 6, "text-anchor": "middle", class: "twin-axis" },
+    out.push(el("text", { x: (left + W - right) / 2, y: H - 6, "text-anchor": "middle", class: "twin-axis" },
       "relative error (%)"));
-    svg.appendChild(el("line", { x1: x(0), x2: x(0), y1: top, y2: H - bottom, class: "twin-truth" }));
+    out.push(el("line", { x1: x(0), x2: x(0), y1: top, y2: H - bottom, class: "twin-truth" }));
     for (p = 0; p < 3; p++) {
       var yc = top + (p + 0.5) * rowH;
-      svg.appendChild(el("text", { x: left - 10, y: yc + 4, "text-anchor": "end", class: "twin-name" }, grid.names[p]));
-      svg.appendChild(el("line", { x1: x(rel.lo[p]), x2: x(rel.hi[p]), y1: yc, y2: yc, class: "twin-bar" }));
-      svg.appendChild(el("line", { x1: x(rel.lo[p]), x2: x(rel.lo[p]), y1: yc - 6, y2: yc + 6, class: "twin-bar" }));
-      svg.appendChild(el("line", { x1: x(rel.hi[p]), x2: x(rel.hi[p]), y1: yc - 6, y2: yc + 6, class: "twin-bar" }));
-      svg.appendChild(el("circle", { cx: x(rel.est[p]), cy: yc, r: 4.5, class: "twin-dot" }));
+      out.push(el("text", { x: left - 10, y: yc + 4, "text-anchor": "end", class: "twin-name" }, grid.names[p]));
+      out.push(el("line", { x1: x(rel.lo[p]), x2: x(rel.hi[p]), y1: yc, y2: yc, class: "twin-bar" }));
+      out.push(el("line", { x1: x(rel.lo[p]), x2: x(rel.lo[p]), y1: yc - 6, y2: yc + 6, class: "twin-bar" }));
+      out.push(el("line", { x1: x(rel.hi[p]), x2: x(rel.hi[p]), y1: yc - 6, y2: yc + 6, class: "twin-bar" }));
+      out.push(el("circle", { cx: x(rel.est[p]), cy: yc, r: 4.5, class: "twin-dot" }));
     }
+    svg.innerHTML = out.join("");
   }
 
   function mount(root) {
