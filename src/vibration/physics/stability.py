@@ -66,6 +66,10 @@ __all__ = [
 
 #: Largest number of samples :func:`simulate_white_noise` and :func:`white_noise_monte_carlo` draw.
 SAMPLES_MAX = 50_000_000
+#: Recorded steps per path of :func:`white_noise_monte_carlo` by default.
+MC_SAMPLES = 2000
+#: Samples simulated at once by :func:`white_noise_monte_carlo` (memory of one chunk ~ 50 bytes each).
+MC_CHUNK = 1_000_000
 
 
 def _check_osc(osc) -> Oscillator:
@@ -205,7 +209,7 @@ def growth_envelope(osc: Oscillator, force: SineForce, t):
     * Exact undamped resonance (``c = 0``, ``omega = omega_n``): the response is
       ``F0/(2k) (sin omega_n t - omega_n t cos omega_n t)`` and its envelope
       ``F0/(2k) sqrt(1 + omega_n^2 t^2)``: linear growth at ``F0 / (2 m omega_n)`` m/s.
-    * Otherwise, for oscillating roots (``|zeta| < 1``, any sign of c): the response is
+    * For oscillating roots (``|zeta| < 1``, any sign of c): the response is
       the steady state ``Im(H exp(i omega t))`` plus the free transient
       ``Im(C exp((-sigma + i omega_d) t))``, ``sigma = c/(2m)``, so
       ``x = Im(Z(t) exp(i omega t))`` with ``Z = H + C exp((-sigma + i (omega_d - omega)) t)``
@@ -214,14 +218,19 @@ def growth_envelope(osc: Oscillator, force: SineForce, t):
       amplitude ``|H|`` when ``c > 0``, keeps beating when ``c = 0`` and grows
       exponentially at the rate ``-sigma`` when ``c < 0``.
 
-    Both are pointwise upper bounds of ``|x(t)|`` (the modulus of the complex response
-    whose imaginary part is x); x reaches them when the phase of ``Z exp(i omega t)``
-    passes ``pi/2``, about once per forcing period when ``Z`` varies slowly.
+    * For real roots (``|zeta| >= 1``, any sign of c): the response is the steady state
+      plus ``A exp(s1 t) + B exp(s2 t)`` (``(A + B t) exp(s t)`` at a double root), and
+      the bound returned is ``|H| + |A exp(s1 t) + B exp(s2 t)|``; with ``c <= -2 sqrt(k m)``
+      it grows like ``exp(s1 t)``, ``s1 > 0`` the larger pole, without oscillating.
+
+    All are pointwise upper bounds of ``|x(t)|`` (for oscillating roots the modulus of the
+    complex response whose imaginary part is x; x reaches it when the phase of
+    ``Z exp(i omega t)`` passes ``pi/2``, about once per forcing period when ``Z`` varies slowly).
 
     Parameters
     ----------
     osc : Oscillator
-        m (kg), c (N s/m, any sign, ``|zeta| < 1``), k (N/m).
+        m (kg), c (N s/m, any sign), k (N/m).
     force : SineForce
         F0 (N), omega (rad/s).
     t : array_like
@@ -252,15 +261,22 @@ def growth_envelope(osc: Oscillator, force: SineForce, t):
     if osc.c == 0.0 and w == wn:
         env = F0 / (2.0 * osc.k) * np.hypot(1.0, wn * tt)
         return _out(env, tt)
-    if not abs(osc.damping_ratio) < 1.0:
-        raise ParameterError(
-            f"c = {osc.c!r} N s/m gives |zeta| = {abs(osc.damping_ratio):.4g}: allowed |zeta| < 1 "
-            "(the envelope is defined for oscillating roots)"
-        )
     if F0 == 0.0 or w == 0.0:  # no force: the response from rest is 0
         return _out(np.zeros_like(tt), tt)
     h = F0 / complex(osc.m * (wn - w) * (wn + w), osc.c * w)  # steady state Im(h exp(i w t)), m
     x0, v0 = -h.imag, -w * h.real  # initial conditions left for the free transient, m, m/s
+    if not abs(osc.damping_ratio) < 1.0:  # real roots: |x| <= |H| + |free part|
+        # free = exp(s1 t) [x0 (1 + exp(-2 mu t)) / 2 + (v0 + sigma x0) (1 - exp(-2 mu t)) / (2 mu)],
+        # s1 = -sigma + mu the larger pole (from poles(): no cancellation), written with expm1 so it
+        # stays accurate at and near the double root (mu -> 0: the second term -> (v0 + sigma x0) t)
+        s1 = float(poles(osc)[0].real)
+        sigma = osc.decay_rate
+        mu = math.sqrt(max(sigma * sigma - wn * wn, 0.0))
+        em = np.expm1(-2.0 * mu * tt)
+        ratio = -em / (2.0 * mu) if mu > 0.0 else tt
+        with np.errstate(over="ignore", invalid="ignore"):
+            free = np.exp(s1 * tt) * (x0 * (1.0 + 0.5 * em) + (v0 + sigma * x0) * ratio)
+        return _out(abs(h) + np.abs(free), tt)
     sigma, wd = osc.decay_rate, osc.damped_natural_frequency
     big_c = complex((v0 + sigma * x0) / wd, x0)  # transient Im(C exp((-sigma + i wd) t)), m
     env = np.abs(h + big_c * np.exp(complex(-sigma, wd - w) * tt))
@@ -643,20 +659,31 @@ def white_noise_velocity_variance(osc: Oscillator, S0: float) -> float:
 def _transition(osc: Oscillator, S0: float, dt: float):
     """Exact one-step transition of the state (x, v) over dt: ``Phi`` and the noise covariance ``Q``.
 
-    Van Loan's method: ``expm([[-A, B q B^T], [0, A^T]] dt)`` gives
-    ``Phi = exp(A dt)`` and ``Q = integral_0^dt exp(A s) B q B^T exp(A^T s) ds``,
-    ``q = 2 pi S0`` (N^2 s). Independent of the closed-form variance.
+    Van Loan's method on a short step ``h = dt / 2^j`` (no longer than :func:`_default_dt`,
+    so ``expm`` of the block ``[[-A, B q B^T], [0, A^T]] h`` never meets a large growth
+    ``exp(|s| h)``): it gives ``Phi(h) = exp(A h)`` and
+    ``Q(h) = integral_0^h exp(A s) B q B^T exp(A^T s) ds``, ``q = 2 pi S0`` (N^2 s). Then
+    ``j`` exact doublings ``Q(2h) = Q(h) + Phi(h) Q(h) Phi(h)^T``, ``Phi(2h) = Phi(h)^2``
+    reach any dt, however stiff or lightly damped the oscillator. Independent of the
+    closed-form variance.
     """
     a = np.array([[0.0, 1.0], [-osc.k / osc.m, -osc.c / osc.m]])
     bqb = np.array([[0.0, 0.0], [0.0, 2.0 * math.pi * S0 / osc.m**2]])
+    j = max(0, math.ceil(math.log2(dt / _default_dt(osc)))) if osc.c > 0.0 else 0
+    h = math.ldexp(dt, -j)
     big = np.zeros((4, 4))
     big[:2, :2] = -a
     big[:2, 2:] = bqb
     big[2:, 2:] = a.T
-    e = expm(big * dt)
+    e = expm(big * h)
     phi = e[2:, 2:].T
     qd = phi @ e[:2, 2:]
-    return phi, 0.5 * (qd + qd.T)
+    qd = 0.5 * (qd + qd.T)
+    for _ in range(j):
+        qd = qd + phi @ qd @ phi.T
+        qd = 0.5 * (qd + qd.T)
+        phi = phi @ phi
+    return phi, qd
 
 
 def _default_dt(osc: Oscillator) -> float:
@@ -770,6 +797,12 @@ def white_noise_monte_carlo(
     comes from the spread of the per-path means (paths are independent, samples
     within a path are not).
 
+    The transition over each step is exact (:func:`simulate_white_noise`), so the step
+    only sets how many samples are averaged, not an error: by default a path records
+    :data:`MC_SAMPLES` steps over 100 decay time constants (``dt = tau / 20``, about the
+    samples that are not strongly correlated), so the cost is the same for every damping,
+    however light (``tau = 2m/c`` long) or heavy (a stiff fast mode).
+
     Parameters
     ----------
     osc : Oscillator
@@ -781,7 +814,7 @@ def white_noise_monte_carlo(
     duration : float, optional
         Recorded time per path after the burn-in, s; default 100 time constants.
     dt : float, optional
-        Sample spacing, s (see :func:`simulate_white_noise`).
+        Sample spacing, s (> 0); default ``duration / MC_SAMPLES``.
     seed : int
         Seed (>= 0).
 
@@ -802,8 +835,8 @@ def white_noise_monte_carlo(
     tau = osc.time_constant
     burn = 12.0 * tau
     duration = 100.0 * tau if duration is None else check_real("duration", duration, low=0.0, low_open=True, unit="s")
-    dt = _default_dt(osc) if dt is None else check_real("dt", dt, low=0.0, low_open=True, unit="s")
-    chunk = max(1, min(n_paths, SAMPLES_MAX // 10 // max(1, int((burn + duration) / dt) + 1)))
+    dt = duration / MC_SAMPLES if dt is None else check_real("dt", dt, low=0.0, low_open=True, unit="s")
+    chunk = max(1, min(n_paths, MC_CHUNK // max(1, int((burn + duration) / dt) + 1)))
     ss = np.random.SeedSequence(check_int("seed", seed, low=0, high=2**63 - 1))
     mx, mv = [], []
     done = 0
@@ -884,26 +917,39 @@ def damper_load(osc: Oscillator, F0: float, omegas) -> DamperLoad:
 
 @dataclass(frozen=True)
 class DesignMetrics:
-    """One damping on the three axes of the trade-off, plus its cost and random response."""
+    """One damping on the three axes of the trade-off, plus its random response.
+
+    A field is ``None`` where the quantity does not exist for this damping (see
+    :func:`design_metrics`).
+    """
 
     c: float  # damping coefficient, N s/m
     zeta: float  # damping ratio, 1
-    peak_magnification: float  # largest |X|/(F0/k) under force on the mass, 1
+    peak_magnification: float | None  # largest |X|/(F0/k) under force on the mass, 1; None if c <= 0
     isolation_ratio: float  # r = omega / omega_n where isolation is judged, 1
-    transmissibility: float  # |X/Y| under base motion at that r, 1
-    overshoot: float  # step overshoot, fraction
-    settling_time: float  # step 2 % settling time, s
-    rms_per_sqrt_S0: float  # sqrt(pi / (k c)), stationary rms displacement per sqrt(S0), m / sqrt(N^2 s/rad)
+    transmissibility: float | None  # steady |X/Y| under base motion at that r, 1; None if c < 0
+    overshoot: float | None  # step overshoot, fraction; 1 if c = 0, None if c < 0
+    settling_time: float | None  # step 2 % settling time, s; None if c <= 0
+    rms_per_sqrt_S0: float | None  # sqrt(pi / (k c)), m / sqrt(N^2 s/rad); None if c <= 0
     stability: str  # verdict of stability_class
 
 
 def design_metrics(osc: Oscillator, isolation_ratio: float = 3.0, band: float = 0.02) -> DesignMetrics:
     """The damping's place on the trade-off: resonant peak, isolation at ``r``, step settling.
 
+    Any sign of c. Where a quantity does not exist the field is ``None``:
+
+    * ``c = 0``: no finite resonant peak (a force at ``omega_n`` grows the response like
+      t), no settling (the step response ``1 - cos omega_n t`` oscillates for ever, its
+      overshoot is exactly 1) and no stationary random response (the variance grows
+      like t); the steady transmissibility ``1/|1 - r^2|`` exists away from ``r = 1``.
+    * ``c < 0``: no steady state at all (every free motion grows), so none of the
+      quantities exists.
+
     Parameters
     ----------
     osc : Oscillator
-        m (kg), c (N s/m, > 0), k (N/m).
+        m (kg), c (N s/m, any sign), k (N/m).
     isolation_ratio : float
         Frequency ratio ``omega / omega_n`` at which the transmissibility is taken (> 0).
     band : float
@@ -914,18 +960,36 @@ def design_metrics(osc: Oscillator, isolation_ratio: float = 3.0, band: float = 
     >>> d = design_metrics(Oscillator(1.0, 15.0, 20.0))
     >>> round(d.peak_magnification, 3), round(d.transmissibility, 4), round(d.settling_time, 3)
     (1.0, 0.7866, 2.723)
+    >>> d = design_metrics(Oscillator(1.0, 0.0, 20.0))
+    >>> d.peak_magnification, round(d.transmissibility, 12), d.overshoot, d.settling_time, d.stability
+    (None, 0.125, 1.0, None, 'marginally stable')
     """
     _check_osc(osc)
     isolation_ratio = check_real("isolation_ratio", isolation_ratio, low=0.0, low_open=True)
-    step = step_metrics(osc, band)
+    verdict = stability_class(osc).verdict
+    t_r = float(transmissibility(osc, isolation_ratio * osc.natural_frequency))
+    if osc.c > 0.0:
+        step = step_metrics(osc, band)
+        return DesignMetrics(
+            c=osc.c,
+            zeta=osc.damping_ratio,
+            peak_magnification=peak_magnification(osc)[1],
+            isolation_ratio=isolation_ratio,
+            transmissibility=t_r,
+            overshoot=step.overshoot,
+            settling_time=step.settling_time,
+            rms_per_sqrt_S0=math.sqrt(white_noise_variance(osc, 1.0)),
+            stability=verdict,
+        )
+    undamped = osc.c == 0.0
     return DesignMetrics(
         c=osc.c,
         zeta=osc.damping_ratio,
-        peak_magnification=peak_magnification(osc)[1],
+        peak_magnification=None,
         isolation_ratio=isolation_ratio,
-        transmissibility=float(transmissibility(osc, isolation_ratio * osc.natural_frequency)),
-        overshoot=step.overshoot,
-        settling_time=step.settling_time,
-        rms_per_sqrt_S0=math.sqrt(white_noise_variance(osc, 1.0)),
-        stability=stability_class(osc).verdict,
+        transmissibility=t_r if undamped and math.isfinite(t_r) else None,
+        overshoot=1.0 if undamped else None,
+        settling_time=None,
+        rms_per_sqrt_S0=None,
+        stability=verdict,
     )
