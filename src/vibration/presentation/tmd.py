@@ -48,6 +48,7 @@ __all__ = [
     "TMDExplorer",
     "building_frf_figure",
     "building_sentence",
+    "building_source",
     "building_table",
     "checks_table",
     "fixed_points_figure",
@@ -58,6 +59,7 @@ __all__ = [
     "robustness_figure",
     "robustness_sentence",
     "robustness_table",
+    "sliders_text",
     "summary_sentence",
     "summary_table",
     "time_response_figure",
@@ -163,7 +165,10 @@ def tmd_chapter(
     n_storeys : int
         Storeys of the shear building (1 to 30).
     storey_mass, storey_stiffness : float
-        Floor mass (kg) and storey stiffness (N/m) of the uniform building.
+        Floor mass (kg) and storey stiffness (N/m) of the uniform building. The chapter's
+        defaults are after the uniform five-storey shear frame of Chopra, Dynamics of
+        Structures (100 kips/g floors, 31.54 kips/in storeys, T1 = 2 s); 45 359.237 kg and
+        5.5235e6 N/m are SI conversions of those values.
     zeta_building : float
         Modal damping ratio of the building, 1.
     mu_building : float
@@ -429,10 +434,41 @@ def building_table(ch: TMDChapter) -> Table:
         ],
         caption=f"Modes of the {b.n}-storey shear building (classical modal damping).",
         name="tab-tmd-building",
-        notes=(
-            "Chopra's uniform five-storey frame (100 kips/g floors, 31.54 kips/in storeys) has periods "
-            "2.0, 0.685, 0.435, 0.338 and 0.297 s; other storey counts use the same floors and are illustrative.",
-        ),
+        notes=(building_source(ch),),
+    )
+
+
+#: Chopra's uniform frame in SI: 100 kips/g floors (kg) and 31.54 kips/in storeys (N/m), converted.
+CHOPRA_FLOOR_MASS = 100 * 4448.2216152605 / 9.80665
+CHOPRA_STOREY_STIFFNESS = 31.54 * 4448.2216152605 / 0.0254
+
+
+def _is_chopra(ch: TMDChapter) -> bool:
+    b = ch.building
+    k = float(b.K[-1, -1])
+    m = float(b.M[-1, -1])
+    uniform = np.allclose(np.diag(b.M), m, rtol=1e-12)
+    return (
+        b.n == 5
+        and uniform
+        and math.isclose(m, CHOPRA_FLOOR_MASS, rel_tol=1e-4)
+        and math.isclose(k, CHOPRA_STOREY_STIFFNESS, rel_tol=1e-4)
+    )
+
+
+def building_source(ch: TMDChapter) -> str:
+    """Where the building's values come from, and whether this run uses them."""
+    T1 = 2 * math.pi / float(ch.building.natural_frequencies[0])
+    if _is_chopra(ch):
+        return (
+            "After the uniform five-storey shear frame of Chopra, Dynamics of Structures (100 kips/g floors, "
+            "31.54 kips/in storeys, T1 = 2 s); the SI values 45 359.237 kg and 5.5235e6 N/m are conversions, "
+            f"and the first period computed from them is {T1:.4f} s. The higher periods are computed here."
+        )
+    return (
+        "Illustrative values: the run's storey count, floor mass or storey stiffness differ from the uniform "
+        "five-storey shear frame of Chopra, Dynamics of Structures (100 kips/g floors, 31.54 kips/in storeys, "
+        f"T1 = 2 s), which the chapter follows by default; here T1 = {T1:.4g} s."
     )
 
 
@@ -915,6 +951,28 @@ def _explorer_figure(v: dict):
     ax.set_ylabel(r"$|X_p|\,/\,(F_0/k_p)$ (1)")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
     return fig
+
+
+def sliders_text(ch: TMDChapter) -> str:
+    """Which controls exist in JupyterLab and in the rendered book, and where they start (Markdown)."""
+    mu = min(max(ch.mu, MU_RANGE[0]), MU_RANGE[1])
+    moved = "" if mu == ch.mu else f" (the chapter's μ = {ch.mu:g} is outside the slider's range)"
+    t = hinf_tuning(mu)
+    return (
+        "**In JupyterLab** (with a running kernel) the cell below shows live widgets: logarithmic sliders for the "
+        f"mass ratio μ ({MU_RANGE[0]:g} to {MU_RANGE[1]:g}) and the absorber damping ratio ζ_a "
+        f"({ZETA_A_RANGE[0]:g} to {ZETA_A_RANGE[1]:g}, on the absorber's own frequency), linear sliders for the "
+        f"tuning ratio f = ω_a/ω_p ({F_RANGE[0]:g} to {F_RANGE[1]:g}) and the primary damping ratio ζ_p "
+        f"({ZETA_P_RANGE[0]:g} to {ZETA_P_RANGE[1]:g}), three buttons that set f and ζ_a to Den Hartog's, the "
+        "H∞ and the H2 tuning of the current μ, a readout (peak, fixed points, each rule's f, ζ_a and peak) and "
+        "a plot computed by the package. **In the rendered book** there is no kernel: the same four sliders and "
+        "three buttons drive a panel that computes the magnification in closed form in your browser, draws it "
+        "against r = ω/ω_p with the H∞ curve of the same μ, the primary without absorber, the fixed points P "
+        "and Q and the peak, and reads out the peak, P and Q and the three rules' tunings with the peaks they "
+        f"give on an undamped and on the current primary. Both start at μ = {mu:g}{moved} with the H∞ tuning "
+        f"f = {t.f:.4f}, ζ_a = {t.zeta_a:.4f} on an undamped primary (ζ_p = 0), where P and Q are exact; set "
+        f"ζ_p to {ch.zeta_p:.4f} for the paper's primary, where they are only approximate."
+    )
 
 
 def tmd_explorer(mu=0.05, f=None, zeta_a=None, zeta_p=0.0) -> TMDExplorer:
