@@ -59,6 +59,14 @@ PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
     "S0": (0.0, True, 1e6, "N² s/rad"),
     "n_paths": (2, False, 5000, ""),
     "seed": (0, False, 2**31 - 1, ""),
+    # chapter 11, learning controller
+    "dt": (0.0, True, 1.0, "s"),
+    "n_steps": (1, False, 100_000, ""),
+    "r_weight": (0.0, True, 1e6, "1/N²"),
+    "u_max": (0.0, True, 1e6, "N"),
+    "c_semi_min": (0.0, False, 1e4, "N s/m"),
+    "c_semi_max": (0.0, True, 1e4, "N s/m"),
+    "n_eval": (2, False, 1_000_000, ""),
     # chapter 08, tuned mass dampers
     "mu": (0.0, True, 1.0, ""),
     "mistuning": (0.0, False, 0.5, ""),
