@@ -174,8 +174,9 @@ def bench_report() -> None:
             capture_output=True,
         )
         t_report = time.perf_counter() - start
+    n = len(chapters)
     table(
-        f"report: {len(chapters)} chapters, papermill + book (HTML and PDF), vs papermill on {len(chapters)} empty notebooks",
+        f"report: {n} chapters, papermill + book (HTML and PDF), vs papermill on {n} empty notebooks",
         [
             ("papermill API in one process, empty notebooks", t_empty, None, ""),
             ("papermill command, once per empty notebook", t_cli, None, ""),
