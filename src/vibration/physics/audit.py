@@ -55,6 +55,7 @@ __all__ = [
     "half_power_band",
     "half_unit",
     "readings",
+    "resonant_peak",
     "rk45_pair",
     "scipy_rk45_nodes",
     "verdict",
@@ -220,6 +221,30 @@ def half_power_band(osc: Oscillator) -> tuple[float | None, float | None]:
     mid, half = 1.0 - 2.0 * z * z, 2.0 * z * math.sqrt(1.0 - z * z)
     lo2 = mid - half
     return (wn * math.sqrt(lo2) if lo2 > 0.0 else None), wn * math.sqrt(mid + half)
+
+
+def resonant_peak(osc: Oscillator) -> tuple[float | None, float | None]:
+    """Frequency (rad/s) and height (dimensionless) of the magnification's peak.
+
+    The peak sits at ``r = sqrt(1 - 2 zeta^2)`` with height ``1 / (2 zeta sqrt(1 - zeta^2))``
+    for ``0 < zeta < 1/sqrt(2)``; at ``omega_n`` with infinite height when undamped. ``None``
+    for both when there is no peak (``zeta >= 1/sqrt(2)``: the curve falls from 1 at
+    omega = 0) or no steady state (c < 0).
+
+    Examples
+    --------
+    >>> w, mag = resonant_peak(Oscillator(1.0, 0.5, 20.0))
+    >>> round(w, 4), round(mag, 4)      # rad/s, 1
+    (4.4581, 8.9583)
+    >>> resonant_peak(Oscillator(1.0, 0.0, 20.0))[1], resonant_peak(Oscillator(1.0, 15.0, 20.0))
+    (inf, (None, None))
+    """
+    z, wn = osc.damping_ratio, osc.natural_frequency
+    if z == 0.0:
+        return wn, math.inf
+    if not 0.0 < z < 1.0 / math.sqrt(2.0):
+        return None, None
+    return wn * math.sqrt(1.0 - 2.0 * z * z), 1.0 / (2.0 * z * math.sqrt(1.0 - z * z))
 
 
 def scipy_rk45_nodes() -> tuple[Fraction, ...]:

@@ -304,4 +304,4 @@ def at_least(value: float, floor: float):
     >>> at_least(3.2e-3, 1e-12), at_least(4.4e-16, 1e-12)
     (0.0032, '< 1e-12')
     """
-    return value if value >= floor else f"< {floor:g}"
+    return value if value >= floor else f"< {fmt(floor)}"
