@@ -941,9 +941,9 @@ def _explorer_figure(v: dict):
         bare = 1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * zp * r)
     opt = v["rules"]["H∞"]
     ax.plot(r, np.minimum(bare, 2 * top), color="0.5", lw=1.0, label="without absorber")
+    ax.plot(r, tmd_magnification(mu, f, za, r, zp), color="#1f77b4", lw=1.8, label="with the sliders' absorber")
     ax.plot(r, tmd_magnification(mu, opt.f, opt.zeta_a, r, zp), color="#2ca02c", lw=1.2, ls="--",
             label=r"H$\infty$ tuning for this $\mu$")  # fmt: skip
-    ax.plot(r, tmd_magnification(mu, f, za, r, zp), color="#1f77b4", lw=1.8, label="with the sliders' absorber")
     ax.plot(rp, hp, "o", color="k", ms=5, label=r"fixed points P, Q ($\zeta_p = 0$)")
     ax.set_xlim(*R_RANGE)
     ax.set_ylim(0.0, top)

@@ -226,12 +226,12 @@
     out.push('<text class="vtm-label" transform="translate(13,' + ((y0 + y1) / 2) +
       ') rotate(-90)" text-anchor="middle">|X' + sub("p") + "| / (F" + sub("0") + "/k" + sub("p") + ")</text>");
     var g = ['<g clip-path="url(#' + clipId + ')">'];
-    var opt = hinf(s.mu);
+    var opt = hinf(s.mu); // drawn dashed over the sliders' curve, which it equals at an H\u221e start
     var rb = withPoints([1]);
     g.push(polyline("vtm-bare", rb, rb.map(function (r) { return bare(r, s.zeta_p); }), sx, sy, yTop));
-    g.push(polyline("vtm-opt", grid, grid.map(function (r) { return magnification(s.mu, opt.f, opt.zeta_a, r, s.zeta_p); }),
-      sx, sy, yTop));
     g.push(polyline("vtm-curve", rs, rs.map(function (r) { return magnification(s.mu, s.f, s.zeta_a, r, s.zeta_p); }),
+      sx, sy, yTop));
+    g.push(polyline("vtm-opt", grid, grid.map(function (r) { return magnification(s.mu, opt.f, opt.zeta_a, r, s.zeta_p); }),
       sx, sy, yTop));
     ["P", "Q"].forEach(function (name, j) {
       var X = sx(res.fixed.r[j]), Y = sy(res.fixed.h[j]);
