@@ -59,7 +59,19 @@ PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
     "S0": (0.0, True, 1e6, "N² s/rad"),
     "n_paths": (2, False, 5000, ""),
     "seed": (0, False, 2**31 - 1, ""),
-    # chapter 11, learning controller
+    # chapter 10, digital twin
+    "F_rms": (0.0, True, 1e4, "N"),
+    "f_max": (0.2, False, 1e3, "Hz"),
+    "t_record": (0.0, True, 1e4, "s"),
+    "noise": (0.0, True, 10.0, ""),
+    "runs": (10, False, 5000, ""),
+    "sweep_runs": (5, False, 1000, ""),
+    "t_monitor": (0.0, True, 1e4, "s"),
+    "decline_rate": (0.0, False, 1.0, "1/s"),
+    "drop": (0.0, False, 0.9, ""),
+    "detect_runs": (5, False, 2000, ""),
+    "threshold": (0.0, True, 1e6, ""),
+    # chapter 11, learning controller (dt also chapter 10's sampling step)
     "dt": (0.0, True, 1.0, "s"),
     "n_steps": (1, False, 100_000, ""),
     "r_weight": (0.0, True, 1e6, "1/N²"),
