@@ -59,6 +59,16 @@ PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
     "S0": (0.0, True, 1e6, "N² s/rad"),
     "n_paths": (2, False, 5000, ""),
     "seed": (0, False, 2**31 - 1, ""),
+    # chapter 09, Duffing oscillator
+    "k3_hard": (0.0, True, 1e3, "N/m³"),
+    "k3_soft": (-1e3, False, 0.0, "N/m³"),
+    "omega_sweep_min": (0.0, True, 1e3, "rad/s"),
+    "omega_sweep_max": (0.0, True, 1e3, "rad/s"),
+    "n_sweep": (10, False, 2000, ""),
+    "c_ueda": (0.0, True, 10.0, "N s/m"),
+    "F0_ueda": (0.0, True, 100.0, "N"),
+    "F0_ueda_periodic": (0.0, True, 100.0, "N"),
+    "n_lyapunov": (100, False, 100_000, ""),
     # chapter 10, digital twin
     "F_rms": (0.0, True, 1e4, "N"),
     "f_max": (0.2, False, 1e3, "Hz"),
