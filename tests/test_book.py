@@ -87,14 +87,17 @@ def test_every_display_equation_of_the_sources_is_mathml(site):
         assert "vib-tex-fallback" not in html_text, nb_path.name
 
 
-def test_figures_are_numbered_per_chapter_with_captions(site):
+def test_figures_and_tables_are_numbered_per_chapter_from_one(site):
     numbered = 0
     for name in CHAPTERS:
         text = (site / f"{name}.html").read_text(encoding="utf-8")
         chap = int(name.split("_")[0])
-        for number in re.findall(r'<span class="caption-number">Figure (\d+)\.(\d+) </span>', text):
-            assert int(number[0]) == chap, (name, number)
-            numbered += 1
+        for kind in ("Figure", "Table"):
+            found = re.findall(rf'<span class="caption-number">{kind} (\d+)\.(\d+) </span>', text)
+            assert all(int(c) == chap for c, _ in found), (name, kind, found)
+            numbers = sorted({int(n) for _, n in found})
+            assert numbers == list(range(1, len(numbers) + 1)), (name, kind, numbers)
+            numbered += len(numbers)
     assert numbered >= 1
 
 

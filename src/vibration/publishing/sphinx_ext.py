@@ -53,15 +53,17 @@ def chapter_number(docname: str) -> int | None:
 
 
 def _prefix_numbers(app, env):
-    """After Sphinx assigned per-document figure numbers, prefix each with its chapter."""
+    """Renumber figures and tables ``<chapter>.<n>``, n counting from 1 in each chapter.
+
+    Without section numbers Sphinx counts each kind through the whole book; here each
+    chapter's items keep their order and restart at 1 under the chapter's number.
+    """
     for docname, kinds in env.toc_fignumbers.items():
         chap = chapter_number(docname)
-        if chap is None:
-            continue
         for ids in kinds.values():
-            for ident, number in list(ids.items()):
-                if len(number) == 1:
-                    ids[ident] = (chap, number[0])
+            ordered = sorted(ids.items(), key=lambda item: item[1])
+            for i, (ident, _) in enumerate(ordered, start=1):
+                ids[ident] = (i,) if chap is None else (chap, i)
     return []
 
 
