@@ -28,6 +28,9 @@ RUNS = {
     "01-undamped-negative": ("01_reproduction", {"c_low": 0.0, "c_nominal": -0.1}),
     "02-c_low-0.05": ("02_claims_audit", {"c_low": 0.05}),
     "02-c_high-5-c_low-0": ("02_claims_audit", {"c_high": 5.0, "c_low": 0.0}),
+    "04-omega_res-3.5": ("04_frequency_response", {"omega_res": 3.5}),
+    "04-c_high-5-c_low-0.05": ("04_frequency_response", {"c_high": 5.0, "c_low": 0.05}),
+    "04-c_low-0-c_high-0.7": ("04_frequency_response", {"c_low": 0.0, "c_high": 7.0}),
 }
 
 
@@ -171,3 +174,41 @@ def test_audit_sentences_follow_the_table_and_say_when_the_case_changed(executed
     if params.get("c_low") == 0.0:
         assert claims["C03"]["exact"] == "undamped"
         assert claims["C14"]["exact"] == "marginal"  # c = 0 forced off omega_n: bounded beats
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", [k for k in RUNS if k.startswith("04")])
+def test_frequency_sentences_follow_the_band_table(executed, key):
+    """Regimes and "inside/outside the half-power band" as the chapter's own tables say."""
+    nb = executed[key]
+    tables = parse_tables(nb)
+    dampings = {row["case"]: row for row in tables["tab-frequency-dampings"]}
+    band_rows = tables["tab-frequency-band"]
+    in_band = next(h for h in band_rows[0] if h.endswith("in band"))
+    band = {row["case"]: row[in_band] for row in band_rows}
+    texts = markdown_outputs(nb)
+    bullets = [b for b in _bullets(texts) if "half-power band" in b and " (c = " in b]
+    assert len(bullets) == 3, (key, bullets)
+    for bullet in bullets:
+        case = re.match(r"\*\*([^*]+)\*\*", bullet).group(1)
+        assert _regimes_in(bullet.split("; ")[0]) == {dampings[case]["regime"]}, (key, bullet)
+        said_in = "**inside the half-power band**" in bullet
+        said_out = "**outside the half-power band**" in bullet
+        if band[case] == "yes":
+            assert said_in and not said_out, (key, bullet, band[case])
+        elif band[case] == "no":
+            assert said_out and not said_in, (key, bullet, band[case])
+        else:  # no band: a footnote mark
+            assert not (said_in or said_out) and "no half-power band" in bullet, (key, bullet, band[case])
+    summary = next(t for t in texts if "lies inside" in t or "lies outside" in t or "have no half-power" in t)
+    first = summary.splitlines()[0]
+    for case, value in band.items():
+        part = first.split(f"**{case}**")[0].rsplit(";", 1)[-1]
+        if value == "yes":
+            assert "inside" in part, (key, case, first)
+        elif value == "no":
+            assert "outside" in part, (key, case, first)
+    for name, value in RUNS[key][1].items():
+        from vibration.presentation.narrative import PARAMETER_TEXT
+
+        assert f"{PARAMETER_TEXT[name][0]} = {value:g} " in texts[0], (name, texts[0])

@@ -748,21 +748,24 @@ def design_text(study: FrequencyStudy, dm: DesignMap) -> str:
 
 def frequency_summary(study: FrequencyStudy, dm: DesignMap) -> str:
     """The bullets of chapter 4's summary."""
-    inside = [b["case"] for b in study.bands if b["inside"]]
-    outside = [b["case"] for b in study.bands if b["inside"] is False]
-    nob = [b["case"] for b in study.bands if b["inside"] is None]
+
+    def names(which):
+        cases = [f"**{b['case']}**" for b in study.bands if b["inside"] is which]
+        return " and ".join([", ".join(cases[:-1]), cases[-1]] if len(cases) > 1 else cases)
+
+    w = f"ω_res = {g(study.resonance.force.omega)} rad/s"
     band = []
-    if inside:
-        band.append(", ".join(f"**{c}**" for c in inside) + " put ω_res inside the half-power band")
-    if outside:
-        band.append(", ".join(f"**{c}**" for c in outside) + " put it outside the half-power band")
-    if nob:
-        band.append(", ".join(f"**{c}**" for c in nob) + " have no half-power band")
+    if names(True):
+        band.append(f"{w} lies inside the half-power band of the {names(True)} case(s)")
+    if names(False):
+        band.append(f"{w} lies outside the half-power band of the {names(False)} case(s)")
+    if names(None):
+        band.append(f"the {names(None)} case(s) have no half-power band")
     eb = {name: eb for name, eb in study.energy}
     paper = next(v for k, v in eb.items() if k != "exact")
     rel = float(np.max(np.abs(paper.residual)) / np.max(np.abs(paper.work)))
     bullets = [
-        "At ω_res = " + g(study.resonance.force.omega) + " rad/s, " + "; ".join(band) + ".",
+        "; ".join(band) + ".",
         control_text(study),
         estimates_text(study),
         f"The energy balance closes on the exact response to quadrature level; on the paper's RK45 output its "

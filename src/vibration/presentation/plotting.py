@@ -10,7 +10,7 @@ import math
 import numpy as np
 from matplotlib.colors import LogNorm
 from matplotlib.lines import Line2D
-from matplotlib.ticker import LogLocator
+from matplotlib.ticker import LogFormatterSciNotation, LogLocator
 
 from ..physics.exact import Response
 from .style import figure, place_legend
@@ -160,6 +160,9 @@ def work_precision_figure(rows):
     ax_n.set_ylabel(r"max $|x - x_\mathrm{exact}|$ (m)")
     for ax in (ax_n, ax_t):
         ax.xaxis.set_major_locator(LogLocator(base=10.0, numticks=5))
+        # label 2 and 5 times each power of ten only: every minor label collides with its neighbours
+        ax.xaxis.set_minor_locator(LogLocator(base=10.0, subs=(2.0, 5.0), numticks=12))
+        ax.xaxis.set_minor_formatter(LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(3, 3)))
         ax.grid(True, which="major", alpha=0.3)
     place_legend(ax_n)
     return fig

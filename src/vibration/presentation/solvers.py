@@ -16,8 +16,8 @@ Examples
 'Dormand-Prince 5(4)'
 >>> [r["method"] for r in st.runs][:2], st.runs[0]["rtol"], st.runs[0]["atol"]   # 1, m and m/s
 (['RK45', 'RK45'], 0.001, 1e-06)
->>> print(repr(steps_table(st)).splitlines()[1])
-rtol   atol (m, m/s)  steps  largest step (s)  steps per period  peak |x| of the steps (m)  peak |x| (m)
+>>> [c.header for c in steps_table(st).columns][-3:]
+['mean peak of the steps (m)', 'lowest peak of the steps (m)', 'peak |x| (m)']
 """
 
 from __future__ import annotations
@@ -140,6 +140,8 @@ def solver_study(
             own = r
         dt = np.diff(r.t)
         late = r.t >= (1 - LATE) * t_end
+        half = np.floor(r.t[late] / (0.5 * period))  # index of the half period of each late step
+        per_half = [float(np.max(np.abs(r.x[late][half == h]))) for h in np.unique(half)[1:-1]]
         steps.append(
             {
                 "rtol": rtol,
@@ -147,7 +149,8 @@ def solver_study(
                 "steps": int(dt.size),
                 "max_step_s": float(np.max(dt)),
                 "per_period": float(period / np.mean(dt)),
-                "late_peak_steps_m": float(np.max(np.abs(r.x[late]))),
+                "late_peak_steps_m": float(np.mean(per_half)) if per_half else math.nan,
+                "late_low_steps_m": float(np.min(per_half)) if per_half else math.nan,
                 "late_peak_m": late_exact,
             }
         )
@@ -224,6 +227,7 @@ def steps_table(study: SolverStudy) -> Table:
             "h": s["max_step_s"],
             "pp": s["per_period"],
             "ps": s["late_peak_steps_m"],
+            "pl": s["late_low_steps_m"],
             "pe": s["late_peak_m"],
         }
         for s in study.steps
@@ -237,12 +241,14 @@ def steps_table(study: SolverStudy) -> Table:
             Column("steps", "steps"),
             Column("h", "largest step (s)", 3),
             Column("pp", "steps per period", 3),
-            Column("ps", "peak |x| of the steps (m)", 4),
+            Column("ps", "mean peak of the steps (m)", 4),
+            Column("pl", "lowest peak of the steps (m)", 4),
             Column("pe", "peak |x| (m)", 4),
         ],
         caption=(
             f"RK45 without an output grid returns only its own steps. Peaks in the last part of the window "
-            f"(t ≥ {g(t0)} s): through the steps alone, and exactly."
+            f"(t ≥ {g(t0)} s): the largest |x| among the steps of each half forcing period (mean and lowest) "
+            "against the exact peak |x|."
         ),
         name="tab-solvers-steps",
     )
@@ -296,9 +302,10 @@ def steps_text(study: SolverStudy) -> str:
     low = 100 * (1 - s["late_peak_steps_m"] / s["late_peak_m"]) if s["late_peak_m"] > 0 else 0.0
     return (
         f"At the paper's tolerance RK45 takes {s['steps']} steps, {g(s['per_period'], 3)} per forcing period "
-        f"(the largest {g(s['max_step_s'], 3)} s). A line drawn through those steps alone reaches "
-        f"{g(s['late_peak_steps_m'])} m in the last part of the window against the exact {g(s['late_peak_m'])} m "
-        f"({g(low, 2)} % lower); on the output grid the same solver's error is the one of "
+        f"(the largest {g(s['max_step_s'], 3)} s). A line drawn through those steps alone reaches on average "
+        f"{g(s['late_peak_steps_m'])} m per half period in the last part of the window, and only "
+        f"{g(s['late_low_steps_m'])} m at worst, against the exact {g(s['late_peak_m'])} m ({g(low, 2)} % lower on "
+        "average); on the output grid the same solver's error is the one of "
         "{numref}`tab-solvers-ladder`. The output grid, not the solver, decides how faithfully peaks are drawn."
     )
 
@@ -330,7 +337,8 @@ def solver_summary(study: SolverStudy) -> str:
         f"({cost[cheapest]})"
         + (f"; the implicit Radau needs {cost['Radau']} for a stiffness this problem does not have." if radau else "."),
         f"Through its own steps alone RK45 at the paper's tolerance draws the late peaks "
-        f"{g(study.steps[0]['late_peak_steps_m'])} m instead of {g(study.steps[0]['late_peak_m'])} m: the output "
+        f"{g(study.steps[0]['late_peak_steps_m'])} m on average (down to {g(study.steps[0]['late_low_steps_m'])} m) "
+        f"instead of {g(study.steps[0]['late_peak_m'])} m: the output "
         "grid sets how faithfully peaks are drawn.",
         pair_text(study),
     ]
