@@ -5,21 +5,70 @@ from __future__ import annotations
 
 import functools
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.integrate import cumulative_simpson
 from scipy.optimize import brentq
 
-from .exact import NEAR, Response, _kernels, exact_response, steady_state
-from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
+from .exact import NEAR, Response, _grid_exp, _kernels, _roots, _uniform, exact_response, steady_state
+from .model import (
+    N_POINTS_MAX,
+    Oscillator,
+    ParameterError,
+    SineForce,
+    check_int,
+    check_real,
+    check_records,
+)
 
 #: Largest number of samples in one precomputed table of the design map (2 tables of 8 bytes each).
 MAP_CELLS_MAX = 50_000_000
 
 
+def _check_osc(osc) -> None:
+    if not isinstance(osc, Oscillator):
+        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
+
+
+def _array(values, name: str, unit: str) -> np.ndarray:
+    """``values`` as a float array, or :class:`ParameterError` naming ``name``."""
+    if values is None or isinstance(values, str | bytes):
+        raise ParameterError(f"{name} = {values!r} is not an array of numbers: allowed a 1-D array in {unit}")
+    try:
+        raw = np.asarray(values)
+        if raw.dtype.kind not in "iufO":
+            raise TypeError
+        if raw.dtype.kind == "O" and not all(isinstance(v, numbers.Real) and not isinstance(v, bool) for v in raw.flat):
+            raise TypeError
+        return np.asarray(raw, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise ParameterError(f"{name} = {values!r} is not an array of numbers: allowed a 1-D array in {unit}") from None
+
+
+def _increasing(values, name: str, unit: str, size: int | None = None, min_size: int = 1) -> np.ndarray:
+    """A finite, strictly increasing 1-D array (of ``size`` samples if given)."""
+    a = _array(values, name, unit)
+    if a.ndim != 1 or a.size < min_size:
+        raise ParameterError(f"{name} has shape {a.shape}: allowed a 1-D array of at least {min_size} values in {unit}")
+    if size is not None and a.size != size:
+        raise ParameterError(f"{name} has {a.size} values: allowed as many as the {size} samples it goes with")
+    if not np.all(np.isfinite(a)):
+        bad = float(a[~np.isfinite(a)][0])
+        raise ParameterError(f"{name} contains {bad!r}: allowed finite values in {unit}")
+    if a.size > 1 and not np.all(np.diff(a) > 0.0):
+        i = int(np.nonzero(np.diff(a) <= 0.0)[0][0])
+        raise ParameterError(
+            f"{name} is not strictly increasing ({name}[{i}] = {float(a[i])!r}, "
+            f"{name}[{i + 1}] = {float(a[i + 1])!r}): "
+            f"allowed a strictly increasing array in {unit}"
+        )
+    return a
+
+
 def _omegas(omegas, name: str = "omegas") -> np.ndarray:
-    w = np.asarray(omegas, dtype=float)
+    w = _array(omegas, name, "rad/s")
     if w.ndim != 1 or w.size == 0:
         raise ParameterError(f"{name} has shape {w.shape}: allowed a non-empty 1-D array in rad/s")
     if not np.all(np.isfinite(w)) or np.any(w < 0):
@@ -49,8 +98,9 @@ def magnification(osc: Oscillator, omegas) -> np.ndarray:
     >>> np.round(magnification(osc, [0.0, osc.natural_frequency]), 4)
     array([1.    , 8.9443])
     """
+    _check_osc(osc)
     r = _omegas(omegas) / osc.natural_frequency
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore"):
         return 1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * osc.damping_ratio * r)
 
 
@@ -63,8 +113,10 @@ def phase_lag(osc: Oscillator, omegas) -> np.ndarray:
     >>> np.round(phase_lag(osc, [0.0, osc.natural_frequency, 1e6]), 4)
     array([0.    , 1.5708, 3.1416])
     """
+    _check_osc(osc)
     r = _omegas(omegas) / osc.natural_frequency
-    im, re = 2.0 * osc.damping_ratio * r, (1.0 - r) * (1.0 + r)
+    with np.errstate(over="ignore", invalid="ignore"):
+        im, re = 2.0 * osc.damping_ratio * r, (1.0 - r) * (1.0 + r)
     return np.where((im == 0.0) & (re == 0.0), 0.5 * np.pi, np.arctan2(im, re))
 
 
@@ -103,9 +155,9 @@ def half_power_points(omegas, mags) -> HalfPower:
     Parameters
     ----------
     omegas : array_like
-        Increasing frequencies, rad/s.
+        Strictly increasing, finite frequencies, rad/s (at least 3).
     mags : array_like
-        Magnification at those frequencies, dimensionless.
+        Magnification at those frequencies (as many, finite, >= 0), dimensionless.
 
     Examples
     --------
@@ -115,8 +167,17 @@ def half_power_points(omegas, mags) -> HalfPower:
     >>> round(hp.bandwidth, 3), round(hp.damping_ratio, 4)   # rad/s, 1
     (0.502, 0.0559)
     """
-    w = _omegas(omegas)
-    g = np.asarray(mags, dtype=float)
+    w = _increasing(omegas, "omegas", "rad/s", min_size=3)
+    if w[0] < 0.0:
+        raise ParameterError(f"omegas contains {w[0]!r}: allowed finite values >= 0 rad/s")
+    g = _array(mags, "mags", "(dimensionless)")
+    if g.shape != w.shape:
+        raise ParameterError(
+            f"mags has shape {g.shape}: allowed the shape of omegas, {w.shape} (one magnification per frequency)"
+        )
+    if not np.all(np.isfinite(g) & (g >= 0.0)):
+        bad = float(g[~(np.isfinite(g) & (g >= 0.0))][0])
+        raise ParameterError(f"mags contains {bad!r}: allowed finite values >= 0")
     i = int(np.argmax(g))
     level = g[i] / math.sqrt(2.0)
     below_left = np.nonzero(g[:i] < level)[0]
@@ -142,9 +203,11 @@ def log_decrement(t, x) -> tuple[float, float]:
     Parameters
     ----------
     t : array_like
-        Uniform sample times, s.
+        Sample times, s: finite, strictly increasing, one per sample of ``x``
+        (any spacing; each peak is refined by the parabola through its three
+        samples at their own times).
     x : array_like
-        Displacement of a free decay, m.
+        Displacement of a free decay, m (finite, 1-D).
 
     Returns
     -------
@@ -160,15 +223,26 @@ def log_decrement(t, x) -> tuple[float, float]:
     >>> round(zeta, 5)
     0.0559
     """
-    t = np.asarray(t, dtype=float)
-    x = np.asarray(x, dtype=float)
+    x = _array(x, "x", "m")
+    if x.ndim != 1 or x.size < 3:
+        raise ParameterError(f"x has shape {x.shape}: allowed a 1-D array of at least 3 displacements in m")
+    if not np.all(np.isfinite(x)):
+        raise ParameterError(f"x contains {float(x[~np.isfinite(x)][0])!r}: allowed finite displacements in m")
+    t = _increasing(t, "t", "s", size=x.size)
     idx = np.nonzero((x[1:-1] > x[:-2]) & (x[1:-1] >= x[2:]) & (x[1:-1] > 0))[0] + 1
     if idx.size < 2:
         raise ParameterError("x has fewer than two positive peaks: allowed an oscillating free decay")
     ym, y0, yp = x[idx - 1], x[idx], x[idx + 1]
-    den = ym - 2 * y0 + yp
-    off = np.where(den != 0, 0.5 * (ym - yp) / np.where(den != 0, den, 1.0), 0.0)
-    peaks = y0 - 0.25 * (ym - yp) * off
+    hm, hp = t[idx] - t[idx - 1], t[idx + 1] - t[idx]  # spacings either side, s
+    if np.all(hm == hp):
+        den = ym - 2 * y0 + yp
+        off = np.where(den != 0, 0.5 * (ym - yp) / np.where(den != 0, den, 1.0), 0.0)
+        peaks = y0 - 0.25 * (ym - yp) * off
+    else:  # vertex of the parabola through (-hm, ym), (0, y0), (hp, yp)
+        dm, dp = (y0 - ym) / hm, (yp - y0) / hp  # slopes, m/s
+        curv = (dp - dm) / (hm + hp)  # half the second derivative, m/s^2
+        slope0 = dm + curv * hm  # slope at the sample, m/s
+        peaks = np.where(curv < 0, y0 - slope0 * slope0 / (4.0 * np.where(curv < 0, curv, -1.0)), y0)
     slope = np.polyfit(np.arange(peaks.size), np.log(peaks), 1)[0]
     delta = -float(slope)
     return delta, delta / math.sqrt(4 * math.pi**2 + delta**2)
@@ -187,6 +261,7 @@ def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float
     >>> round(settling_time(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)), 2)   # s
     14.06
     """
+    check_records(osc, force)
     tol = check_real("tol", tol, low=0.0, low_open=True)
     if osc.c <= 0.0:
         return math.inf
@@ -233,7 +308,8 @@ class EnergyBalance:
 def energy_balance(osc: Oscillator, force: SineForce, resp: Response) -> EnergyBalance:
     """Work of the force, damper dissipation and stored energy along ``resp``.
 
-    Integrals by cumulative Simpson's rule on the response's own (uniform) times.
+    Integrals by cumulative Simpson's rule on the response's own times, which
+    must be finite and strictly increasing (at least 3 samples).
 
     Examples
     --------
@@ -243,7 +319,14 @@ def energy_balance(osc: Oscillator, force: SineForce, resp: Response) -> EnergyB
     >>> bool(np.max(np.abs(eb.residual)) < 1e-9 * np.max(np.abs(eb.work)))
     True
     """
-    t, x, v = resp.t, resp.x, resp.v
+    check_records(osc, force)
+    if not isinstance(resp, Response):
+        raise ParameterError(f"resp = {resp!r} is not a Response: allowed the result of exact_response or simulate")
+    t = _increasing(resp.t, "resp.t", "s", min_size=3)
+    x, v = _array(resp.x, "resp.x", "m"), _array(resp.v, "resp.v", "m/s")
+    for name, arr in (("resp.x", x), ("resp.v", v)):
+        if arr.shape != t.shape or not np.all(np.isfinite(arr)):
+            raise ParameterError(f"{name} has shape {arr.shape}: allowed finite values, one per time of resp.t")
     power_in = force(t) * v
     power_out = osc.c * v * v
     work = cumulative_simpson(power_in, x=t, initial=0.0)
@@ -335,28 +418,59 @@ def peak_displacement_map(
                 f"len({name}) * n_points = {size * n_points} is out of range: allowed <= {MAP_CELLS_MAX} "
                 f"samples per table (memory)"
             )
+    if F0 == 0.0:
+        return np.zeros((c.size, w.size))
     t = np.linspace(0.0, t_end, n_points)
-    wt = np.multiply.outer(w, t)
-    sw, cw = np.sin(wt), np.cos(wt)
-    kc = np.empty((c.size, n_points))
-    g = np.empty((c.size, n_points))
-    for i, ci in enumerate(c):
-        kc[i], g[i], *_ = _kernels(Oscillator(m, float(ci), k), t)
+    step = _uniform(t)
+    with np.errstate(all="ignore"):
+        ew = _grid_exp(1j * w, t, step)  # exp(i omega t)
+        sw, cw = np.ascontiguousarray(ew.imag), np.ascontiguousarray(ew.real)
+        kc = np.empty((c.size, n_points))  # P of the free response x = x0 P + (v0 + a x0) g
+        g = np.empty((c.size, n_points))
+        coef = np.empty(c.size)  # a, 1/s
+        roots = [_roots(Oscillator(m, float(ci), k)) for ci in c]
+        osc_rows = [i for i, ro in enumerate(roots) if ro.kind == "osc"]
+        if osc_rows:  # underdamped: exp((-sigma + i wd) t) for all of them at once
+            s1 = np.array([complex(-roots[i].sigma, roots[i].wd) for i in osc_rows])
+            z = _grid_exp(s1, t, step)
+            kc[osc_rows] = z.real
+            g[osc_rows] = z.imag / s1.imag[:, None]
+        for i, ro in enumerate(roots):
+            coef[i] = ro.a
+            if ro.kind != "osc":
+                kc[i], _, g[i], _ = _kernels(Oscillator(m, float(c[i]), k), t)
+    blown = ~(np.isfinite(kc).all(axis=1) & np.isfinite(g).all(axis=1))
+    if blown.any():
+        i = int(np.nonzero(blown)[0][0])
+        raise ParameterError(
+            f"dampings contains {float(c[i])!r}: its free response overflows the float range within "
+            f"t_end = {t_end!r} s: allowed dampings whose response stays finite"
+        )
     # distance from i omega to the nearest characteristic root, 1/s
     sigma = (c / (2.0 * m))[:, None]
     root = np.emath.sqrt(sigma * sigma - k / m)
     dist = np.minimum(np.abs(1j * w[None, :] + sigma - root), np.abs(1j * w[None, :] + sigma + root))
     near = dist * t_end < NEAR
     den = (k - m * w * w)[None, :] + 1j * np.multiply.outer(c, w)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         h = np.where(near, 0.0, F0 / np.where(near, 1.0, den))
     p, q = h.real, h.imag
     # transient = free response from x0 = -q, v0 = -omega p, as in exact_response:
-    # x0 kc + (v0 + sigma x0) g
+    # x0 P + (v0 + a x0) g
     a = -q
-    b = -w[None, :] * p - sigma * q
+    b = -w[None, :] * p - coef[:, None] * q
     out = _peak_kernel()(sw, cw, kc, g, p, q, a, b)
     for i, j in zip(*np.nonzero(near), strict=True):
-        r = exact_response(Oscillator(m, float(c[i]), k), SineForce(F0, float(w[j])), t)
-        out[i, j] = np.max(np.abs(r.x))
+        try:
+            r = exact_response(Oscillator(m, float(c[i]), k), SineForce(F0, float(w[j])), t)
+        except ParameterError:
+            out[i, j] = math.inf
+        else:
+            out[i, j] = np.max(np.abs(r.x))
+    if not np.all(np.isfinite(out)):
+        i, j = (int(v[0]) for v in np.nonzero(~np.isfinite(out)))
+        raise ParameterError(
+            f"dampings contains {float(c[i])!r}: with omega = {float(w[j])!r} rad/s the displacement overflows "
+            f"the float range within t_end = {t_end!r} s: allowed dampings whose response stays finite"
+        )
     return out

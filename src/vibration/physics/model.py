@@ -20,6 +20,10 @@ N_POINTS_MAX = 2_000_000
 #: |zeta - 1| at or below which the oscillator counts as critically damped.
 CRITICAL_TOL = 1e-12
 
+#: Range of the rates sqrt(k/m) and |c|/m (1/s) an Oscillator may have: their squares
+#: and products with times stay finite, normal floats (1e150 squared is 1e300).
+RATE_MIN, RATE_MAX = 1e-150, 1e150
+
 REGIMES = ("undamped", "underdamped", "critically damped", "overdamped", "unstable")
 
 
@@ -144,6 +148,16 @@ class Oscillator:
         object.__setattr__(self, "m", check_real("m", self.m, low=0.0, low_open=True, unit="kg"))
         object.__setattr__(self, "c", check_real("c", self.c, unit="N s/m"))
         object.__setattr__(self, "k", check_real("k", self.k, low=0.0, low_open=True, unit="N/m"))
+        # the rates the solution is made of must be representable: omega_n^2 = k/m and |c|/m
+        wn2, cm = self.k / self.m, abs(self.c) / self.m
+        ok_k = RATE_MIN**2 <= wn2 <= RATE_MAX**2  # False for inf and for underflow to 0
+        if not (ok_k and cm <= RATE_MAX):
+            name, unit, rate, value = ("k", "N/m", "k/m", wn2) if not ok_k else ("c", "N s/m", "|c|/m", cm)
+            raise ParameterError(
+                f"{name} = {getattr(self, name)!r} {unit} with m = {self.m!r} kg gives {rate} = {value!r}: "
+                f"allowed {RATE_MIN**2:g} 1/s^2 <= k/m <= {RATE_MAX**2:g} 1/s^2 and |c|/m <= {RATE_MAX:g} 1/s "
+                "(omega_n and the decay rate must be finite, normal floats)"
+            )
 
     @property
     def natural_frequency(self) -> float:

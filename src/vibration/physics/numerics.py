@@ -17,6 +17,31 @@ METHODS = ("RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA")
 #: the paper does not state its t_eval).
 DEFAULT_N_POINTS = 5001
 
+#: Smallest relative tolerance solve_ivp honours (100 eps); it silently raises a smaller one.
+RTOL_MIN = 100 * float(np.finfo(float).eps)
+
+#: Most right-hand-side evaluations one :func:`simulate` call may spend (about ten
+#: seconds of work); a window that needs more is refused with :class:`ParameterError`.
+MAX_NFEV = 2_000_000
+
+#: Most periods of the fastest oscillation (forcing or natural) one window may hold.
+MAX_PERIODS = 100_000
+
+#: Largest ``|s_fast| t_end`` (the fast real root times the window) for the explicit
+#: methods, whose step is bounded by stability to about ``3 / |s_fast|``.
+MAX_STIFFNESS = 1_000_000
+
+#: The explicit integrators among :data:`METHODS`.
+EXPLICIT = ("RK45", "RK23", "DOP853")
+
+#: Largest growth exponent ``Re(s) t_end`` of an unstable free mode: beyond about
+#: 709 the response overflows the float range.
+MAX_GROWTH = 700.0
+
+
+class _OverBudget(Exception):
+    """Raised inside the right-hand side when :data:`MAX_NFEV` is exceeded."""
+
 
 def simulate(
     osc: Oscillator,
@@ -51,10 +76,12 @@ def simulate(
     method : str
         One of ``METHODS``.
     rtol, atol : float
-        Solver tolerances (relative; absolute in m and m/s); > 0.
+        Solver tolerances (relative, >= ``RTOL_MIN`` = 100 eps; absolute in m and
+        m/s, > 0).
     t_eval : bool
-        If False, return the solver's own steps instead of the uniform grid
-        (``n_points`` is then ignored).
+        If False, return the solver's own steps instead of the uniform grid;
+        ``n_points`` then caps their number (a run that needs more steps is
+        refused).
 
     Returns
     -------
@@ -65,7 +92,12 @@ def simulate(
     Raises
     ------
     ParameterError
-        On any out-of-range argument, before anything is allocated.
+        On any out-of-range argument, before anything is allocated; on a window
+        longer than ``MAX_PERIODS`` periods of the fastest oscillation or in
+        which an unstable mode grows beyond ``exp(MAX_GROWTH)`` (the response
+        would overflow); and, during the run, when the solver needs more than
+        ``MAX_NFEV`` right-hand-side evaluations or (``t_eval=False``) more
+        than ``n_points`` steps.
     RuntimeError
         When the solver fails.
 
@@ -83,14 +115,21 @@ def simulate(
     v0 = check_real("v0", v0, unit="m/s")
     if method not in METHODS:
         raise ParameterError(f"method = {method!r} is not supported: allowed one of {', '.join(METHODS)}")
-    rtol = check_real("rtol", rtol, low=0.0, low_open=True)
+    rtol = check_real("rtol", rtol, low=RTOL_MIN)  # solve_ivp would raise a smaller one silently
     atol = check_real("atol", atol, low=0.0, low_open=True)
+
+    _check_window(osc, force, t_end, method)
 
     m, c, k = osc.m, osc.c, osc.k
     F0, w = force.F0, force.omega
     sin = math.sin
+    nfev = 0
 
     def rhs(t, y):
+        nonlocal nfev
+        nfev += 1
+        if nfev > MAX_NFEV:
+            raise _OverBudget
         return np.array((y[1], (F0 * sin(w * t) - c * y[1] - k * y[0]) / m))
 
     def jac(t, y):
@@ -98,7 +137,20 @@ def simulate(
 
     grid = np.linspace(0.0, t_end, n_points) if t_eval else None
     extra = {"jac": jac} if method in ("Radau", "BDF", "LSODA") else {}
-    sol = solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
+    try:
+        sol = solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
+    except _OverBudget:
+        raise ParameterError(
+            f"t_end = {t_end!r} s needs more than {MAX_NFEV} right-hand-side evaluations with {method} at "
+            f"rtol = {rtol!r}, atol = {atol!r}: allowed a shorter window or looser tolerances"
+        ) from None
+    if sol.status == 0 and not t_eval and sol.t.size > n_points:
+        raise ParameterError(
+            f"n_points = {n_points} is out of range: the solver took {sol.t.size - 1} steps and t_eval=False "
+            f"returns every one: allowed n_points >= {sol.t.size} (<= {N_POINTS_MAX}), or t_eval=True"
+        )
+    if sol.status == 0 and not (np.all(np.isfinite(sol.y))):
+        raise ParameterError(f"t_end = {t_end!r} s: the response overflows the float range: allowed a shorter window")
     if sol.status != 0:
         raise RuntimeError(f"solve_ivp ({method}) failed at t = {sol.t[-1]:g} s: {sol.message}")
     return Response(
@@ -114,3 +166,31 @@ def simulate(
         rtol=rtol,
         atol=atol,
     )
+
+
+def _check_window(osc: Oscillator, force: SineForce, t_end: float, method: str) -> None:
+    """Refuse windows whose work or growth is unbounded, before integrating."""
+    fastest = max(force.omega, osc.natural_frequency)  # rad/s
+    periods = t_end * fastest / (2.0 * math.pi)
+    if periods > MAX_PERIODS:
+        raise ParameterError(
+            f"t_end = {t_end!r} s is out of range: it holds {periods:.3g} periods of the fastest oscillation "
+            f"({fastest:.6g} rad/s): allowed t_end <= {MAX_PERIODS * 2.0 * math.pi / fastest:.6g} s "
+            f"({MAX_PERIODS} periods)"
+        )
+    sigma, wn2 = osc.decay_rate, osc.k / osc.m
+    q = sigma * sigma - wn2
+    mu = math.sqrt(q) if q > 0.0 else 0.0
+    growth = -sigma + mu  # largest real part of the roots, 1/s
+    fast = abs(sigma) + mu  # modulus of the fastest real part, 1/s
+    if method in EXPLICIT and fast * t_end > MAX_STIFFNESS:
+        raise ParameterError(
+            f"t_end = {t_end!r} s is out of range for the explicit {method}: the fast mode decays at {fast:.6g} 1/s, "
+            f"so stability alone needs about {fast * t_end / 3:.3g} steps: allowed t_end <= "
+            f"{MAX_STIFFNESS / fast:.6g} s, or an implicit method (Radau, BDF, LSODA)"
+        )
+    if growth * t_end > MAX_GROWTH:
+        raise ParameterError(
+            f"t_end = {t_end!r} s is out of range: the unstable free mode grows like exp({growth:.6g} t) and would "
+            f"overflow: allowed t_end <= {MAX_GROWTH / growth:.6g} s"
+        )
