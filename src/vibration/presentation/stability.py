@@ -957,10 +957,12 @@ def labels_figure(st: StabilityStudy):
     off = [f"“{LABELS[n]}” ($c$ = {c:g} N s/m)" for n, c in st.by_value() if c <= 0.0]
     if off:
         ax.text(
-            0.02,
-            0.02,
+            0.98,
+            0.97,
             "not on these axes (no finite peak or settling):\n" + ", ".join(off),
             transform=ax.transAxes,
+            ha="right",
+            va="top",
             fontsize=7.5,
         )
     s = st.star
