@@ -106,6 +106,8 @@ def frequency_response_figure(curves, omegas, marks=(), omega_n: float | None = 
     if omega_n is not None:
         for ax in (ax_m, ax_p):
             ax.axvline(omega_n, color="0.5", lw=0.8, ls=":")
+    lo, hi = ax_m.get_ylim()
+    ax_m.set_ylim(lo, hi * 4.0)  # room above the highest peak for its label
     ax_m.set_ylabel(r"magnification $|X|\,/\,(F_0/k)$")
     ax_p.set_ylabel(r"phase lag $\varphi$ (deg)")
     ax_p.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
