@@ -116,6 +116,31 @@ def _header_myst(text: str) -> str:
     return "".join(out)
 
 
+_CAPTION_SUB = re.compile(r"_(\w+)")
+
+
+def _caption_html(text: str) -> str:
+    """Caption text with ``x_ss``-style subscripts (word characters only, so "ω_1," keeps its comma)."""
+    return _CAPTION_SUB.sub(lambda m: f"<sub>{m.group(1)}</sub>", html.escape(text))
+
+
+def _caption_myst(text: str) -> str:
+    """The caption as MyST: subscripts as the ``{sub}`` role, everything else escaped.
+
+    Examples
+    --------
+    >>> _caption_myst("Bands ω_1, ω_2 (rad/s).")
+    'Bands ω{sub}`1`, ω{sub}`2` (rad/s).'
+    """
+    out, last = [], 0
+    for m in _CAPTION_SUB.finditer(text):
+        out.append(_escape_md(text[last : m.start()]))
+        out.append("{sub}`" + m.group(1) + "`")
+        last = m.end()
+    out.append(_escape_md(text[last:]))
+    return "".join(out)
+
+
 def _escape_md(text: str) -> str:
     return re.sub(r"([\\`*_\[\]|<>#])", r"\\\1", text)
 
@@ -185,12 +210,12 @@ class Table:
         notes = "".join(f"<p class='vib-table-note'>{html.escape(n)}</p>" for n in self.footnotes())
         return (
             f"<div class='vib-table' id='{html.escape(self.name)}'><table>"
-            f"<caption>{html.escape(self.caption)}</caption>"
+            f"<caption>{_caption_html(self.caption)}</caption>"
             f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>{notes}</div>"
         )
 
     def _repr_markdown_(self) -> str:
-        lines = [f"```{{list-table}} {_escape_md(self.caption)}", ":header-rows: 1", f":name: {self.name}"]
+        lines = [f"```{{list-table}} {_caption_myst(self.caption)}", ":header-rows: 1", f":name: {self.name}"]
         lines.append(":class: vib-table")
         lines.append("")
         lines.append("* - " + "\n  - ".join(_header_myst(c.header) for c in self.columns))
