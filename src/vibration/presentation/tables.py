@@ -215,13 +215,17 @@ class Table:
         )
 
     def _repr_markdown_(self) -> str:
-        lines = [f"```{{list-table}} {_caption_myst(self.caption)}", ":header-rows: 1", f":name: {self.name}"]
+        caption = _caption_myst(self.caption)
+        # A backtick fence may not carry backticks in its info string (CommonMark), and the caption's
+        # {sub} roles have them: such captions open a tilde fence, which may.
+        fence = "~~~" if "`" in caption else "```"
+        lines = [f"{fence}{{list-table}} {caption}", ":header-rows: 1", f":name: {self.name}"]
         lines.append(":class: vib-table")
         lines.append("")
         lines.append("* - " + "\n  - ".join(_header_myst(c.header) for c in self.columns))
         for r in self.cells():
             lines.append("* - " + "\n  - ".join(_escape_md(v) for v in r))
-        lines.append("```")
+        lines.append(fence)
         if self.footnotes():
             lines.append("")
             lines.append("<div class='vib-table-notes'>" + "<br>".join(map(html.escape, self.footnotes())) + "</div>")
