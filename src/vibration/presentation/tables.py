@@ -92,7 +92,9 @@ def fmt(value, digits: int = 4) -> str:
     return str(value)
 
 
-_SUB = re.compile(r"_([^\s(]+)")
+#: A header subscript: word characters (and ∞), so "|x − x_exact| (m)", "M(ω_ref)" and "t_s, 2 %" end it at
+#: the bar, bracket or comma.
+_SUB = re.compile(r"_([\w∞]+)")
 
 
 def _header_html(text: str) -> str:
@@ -106,6 +108,10 @@ def _header_myst(text: str) -> str:
     --------
     >>> _header_myst("σ_x (m)")
     'σ{sub}`x` (m)'
+    >>> _header_myst("M(ω_ref)"), _header_myst("t_s, 2 % (s)"), _header_myst("J_∞ (s)")
+    ('M(ω{sub}`ref`)', 't{sub}`s`, 2 % (s)', 'J{sub}`∞` (s)')
+    >>> _header_html("max |x − x_exact| (m)")
+    'max |x − x<sub>exact</sub>| (m)'
     """
     out, last = [], 0
     for m in _SUB.finditer(text):
