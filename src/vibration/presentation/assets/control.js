@@ -61,6 +61,7 @@
   }
 
   function shaper(kind, m, c, k) {
+    if (kind === "none") { return { times: [0], amps: [1] }; }
     var wn = Math.sqrt(k / m), z = c / (2 * Math.sqrt(k * m));
     if (!(z >= 0 && z < 1)) { return null; }
     var wd = wn * Math.sqrt(1 - z * z), K = Math.exp(-z * Math.PI / Math.sqrt(1 - z * z));
@@ -97,9 +98,8 @@
   function linspace(a, b, n) { var o = []; for (var i = 0; i < n; i++) { o.push(a + (b - a) * i / (n - 1)); } return o; }
   function geomspace(a, b, n) { return linspace(Math.log(a), Math.log(b), n).map(Math.exp); }
 
-  var NS = "http://www.w3.org/2000/svg";
   function el(name, attrs, parent) {
-    var e = document.createElementNS(NS, name);
+    var e = document.createElementNS(parent.namespaceURI, name);  /* the SVG namespace of the plot */
     for (var key in attrs) { e.setAttribute(key, attrs[key]); }
     if (parent) { parent.appendChild(e); }
     return e;
@@ -138,7 +138,7 @@
     });
   }
 
-  function fmt(v, d) { return Number(v).toPrecision(d || 4); }
+  function fmt(v, d) { return String(Number(Number(v).toPrecision(d || 4))); }
 
   function mount(root) {
     var p = JSON.parse(root.getAttribute("data-params"));
