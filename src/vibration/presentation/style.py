@@ -14,6 +14,7 @@ Examples
 >>> _ = place_legend(ax)
 >>> legend_overlap(ax) == 0.0
 True
+>>> import matplotlib.pyplot as plt; plt.close(fig)
 """
 
 from __future__ import annotations
@@ -58,11 +59,15 @@ def use() -> None:
 
 
 def figure(nrows: int = 1, ncols: int = 1, height: float = 3.6, **kwargs):
-    """A figure in the report style, the width of the text column: ``(fig, axes)``."""
+    """A figure in the report style, the width of the text column: ``(fig, axes)``.
+
+    The style applies to this figure only (``rc_context``): matplotlib's global settings,
+    and so other figures and the slider widgets, are left as they were.
+    """
     import matplotlib.pyplot as plt
 
-    use()
-    fig, axes = plt.subplots(nrows, ncols, figsize=(WIDTH_IN, height), **kwargs)
+    with mpl.rc_context(RC):
+        fig, axes = plt.subplots(nrows, ncols, figsize=(WIDTH_IN, height), **kwargs)
     return fig, axes
 
 
