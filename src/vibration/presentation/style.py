@@ -61,13 +61,13 @@ def use() -> None:
 def figure(nrows: int = 1, ncols: int = 1, height: float = 3.6, **kwargs):
     """A figure in the report style, the width of the text column: ``(fig, axes)``.
 
-    The style applies to this figure only (``rc_context``): matplotlib's global settings,
-    and so other figures and the slider widgets, are left as they were.
+    The style is applied to matplotlib's settings (:func:`use`), so the labels, legends and
+    lines drawn on the figure afterwards follow it too.
     """
     import matplotlib.pyplot as plt
 
-    with mpl.rc_context(RC):
-        fig, axes = plt.subplots(nrows, ncols, figsize=(WIDTH_IN, height), **kwargs)
+    use()
+    fig, axes = plt.subplots(nrows, ncols, figsize=(WIDTH_IN, height), **kwargs)
     return fig, axes
 
 

@@ -116,7 +116,7 @@ def _omega_grid(omega_n: float, zeta: float, omega_max: float, n: int = 1201) ->
 class _Row:
     key: str  # key in Explorer.values
     label: str  # quantity, with symbol
-    unit: str  # SI unit, "1" when dimensionless, "" for words
+    unit: str  # SI unit, "" for dimensionless numbers and words
     fmt: str  # format of the value
 
 
@@ -125,10 +125,10 @@ _ROWS = (
     _Row("f_n", "natural frequency f_n", "Hz", ".5g"),
     _Row("omega", "forcing frequency ω", "rad/s", ".5g"),
     _Row("f", "forcing frequency f", "Hz", ".5g"),
-    _Row("ratio", "frequency ratio ω/ω_n", "1", ".5g"),
-    _Row("zeta", "damping ratio ζ", "1", ".5g"),
+    _Row("ratio", "frequency ratio ω/ω_n", "", ".5g"),
+    _Row("zeta", "damping ratio ζ", "", ".5g"),
     _Row("regime", "regime", "", "s"),
-    _Row("magnification", "magnification |X|/(F0/k)", "1", ".5g"),
+    _Row("magnification", "magnification |X|/(F0/k)", "", ".5g"),
     _Row("amplitude", "steady-state amplitude |X|", "m", ".5g"),
     _Row("peak", "peak |x| in the window", "m", ".5g"),
     _Row("settling", "2 % settling time", "s", ".5g"),
@@ -137,7 +137,7 @@ _ROWS = (
 )
 _RK45_ROWS = (
     _Row("rk45_max_error", "RK45 max |x − x_exact|", "m", ".3e"),
-    _Row("rk45_nfev", "RK45 right-hand-side evaluations", "1", "d"),
+    _Row("rk45_nfev", "RK45 right-hand-side evaluations", "", "d"),
 )
 
 
@@ -280,7 +280,7 @@ class Explorer(widgets.VBox):
     # ------------------------------------------------------------------ figure
     def _build_figure(self) -> Figure:
         """Create the figure and its (empty) artists once; :meth:`update` fills them."""
-        fig = Figure(figsize=FIGSIZE, dpi=DPI)
+        fig = Figure(figsize=FIGSIZE, dpi=DPI, layout="none")  # fixed layout: blits need fixed axes
         FigureCanvasAgg(fig)
         gs = fig.add_gridspec(
             2,
@@ -610,10 +610,10 @@ class Explorer(widgets.VBox):
         natural frequency f_n                  0.71176  Hz
         forcing frequency ω                          3  rad/s
         forcing frequency f                    0.47746  Hz
-        frequency ratio ω/ω_n                  0.67082  1
-        damping ratio ζ                       0.055902  1
+        frequency ratio ω/ω_n                  0.67082
+        damping ratio ζ                       0.055902
         regime                             underdamped
-        magnification |X|/(F0/k)                1.8015  1
+        magnification |X|/(F0/k)                1.8015
         steady-state amplitude |X|             0.45038  m
         peak |x| in the window                  0.6129  m
         2 % settling time                       14.057  s
