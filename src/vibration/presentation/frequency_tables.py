@@ -584,7 +584,7 @@ def design_map(
     direct = [float(np.max(np.abs(exact_response(Oscillator(m, c, k), res.force, study.t).x))) for c in cs]
     checks = [
         {
-            "check": f"design-map kernel against exact_response at ω_res, {case_name(s)}",
+            "check": f"design-map kernel against the exact response at ω_res, {case_name(s)}",
             "value": abs(a / d - 1) if d > 0 else abs(a - d),
             "tol": TOL_CLOSED,
         }
@@ -751,16 +751,20 @@ def frequency_summary(study: FrequencyStudy, dm: DesignMap) -> str:
 
     def names(which):
         cases = [f"**{b['case']}**" for b in study.bands if b["inside"] is which]
-        return " and ".join([", ".join(cases[:-1]), cases[-1]] if len(cases) > 1 else cases)
+        listed = " and ".join([", ".join(cases[:-1]), cases[-1]] if len(cases) > 1 else cases)
+        return f"{listed} {'cases' if len(cases) > 1 else 'case'}" if cases else ""
+
+    def have(which):
+        return "have" if sum(b["inside"] is which for b in study.bands) > 1 else "has"
 
     w = f"ω_res = {g(study.resonance.force.omega)} rad/s"
     band = []
     if names(True):
-        band.append(f"{w} lies inside the half-power band of the {names(True)} case(s)")
+        band.append(f"{w} lies inside the half-power band of the {names(True)}")
     if names(False):
-        band.append(f"{w} lies outside the half-power band of the {names(False)} case(s)")
+        band.append(f"{w} lies outside the half-power band of the {names(False)}")
     if names(None):
-        band.append(f"the {names(None)} case(s) have no half-power band")
+        band.append(f"the {names(None)} {have(None)} no half-power band")
     eb = {name: eb for name, eb in study.energy}
     paper = next(v for k, v in eb.items() if k != "exact")
     rel = float(np.max(np.abs(paper.residual)) / np.max(np.abs(paper.work)))
