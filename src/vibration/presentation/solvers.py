@@ -302,7 +302,7 @@ def steps_text(study: SolverStudy) -> str:
     low = 100 * (1 - s["late_peak_steps_m"] / s["late_peak_m"]) if s["late_peak_m"] > 0 else 0.0
     return (
         f"At the paper's tolerance RK45 takes {s['steps']} steps, {g(s['per_period'], 3)} per forcing period "
-        f"(the largest {g(s['max_step_s'], 3)} s). A line drawn through those steps alone reaches on average "
+        f"(the largest step {g(s['max_step_s'], 3)} s). A line drawn through those steps alone reaches on average "
         f"{g(s['late_peak_steps_m'])} m per half period in the last part of the window, and only "
         f"{g(s['late_low_steps_m'])} m at worst, against the exact {g(s['late_peak_m'])} m ({g(low, 2)} % lower on "
         "average); on the output grid the same solver's error is the one of "
