@@ -312,7 +312,7 @@
     var sx = function (v) { return PAD.l + (v / p.t_end) * (TW - PAD.l - PAD.r); };
     var sy = function (v) { return PAD.t + ((ymax - v) / (2 * ymax)) * (TH - PAD.t - PAD.b); };
     var s = [frame(TW, TH, ticks(0, p.t_end, Math.max(3, Math.round(TW / 80))), ticks(-ymax, ymax, 6), sx, sy,
-      "time t, s", vel ? "velocity v, m/s" : "displacement x, m")];
+      "time t (s)", vel ? "velocity v (m/s)" : "displacement x (m)")];
     var yA = isFinite(amp) && p.c > 0 ? [sy(amp).toFixed(2), sy(-amp).toFixed(2)] : [];
     yA.forEach(function (Y) {
       s.push('<line class="vib-envelope" x1="' + PAD.l + '" x2="' + (TW - PAD.r) + '" y1="' + Y +
@@ -323,7 +323,7 @@
       s.push('<line class="vib-settle" x1="' + X + '" x2="' + X + '" y1="' + PAD.t + '" y2="' +
         (TH - PAD.b) + '"></line>');
       s.push('<text class="vib-note" x="' + X + '" y="' + (PAD.t - 5) +
-        '" text-anchor="middle">2% settled</text>');
+        '" text-anchor="middle">2 % settled</text>');
     }
     var pts = new Array(r.t.length);
     for (var i = 0; i < r.t.length; i++) {
@@ -368,8 +368,8 @@
     for (var d = d0; d <= d1; d++) {
       yt.push(Math.pow(10, d));
     }
-    var s = [frame(FW, FH, ticks(0, wMax, Math.max(3, Math.round(FW / 70))), yt, sx, sy, "forcing frequency \u03c9, rad/s",
-      "magnification X/(F\u2080/k), log", decade)];
+    var s = [frame(FW, FH, ticks(0, wMax, Math.max(3, Math.round(FW / 70))), yt, sx, sy, "forcing frequency \u03c9 (rad/s)",
+      "magnification |X|/(F\u2080/k), log", decade)];
     var Xn = sx(r.wn).toFixed(2);
     s.push('<line class="vib-settle" x1="' + Xn + '" x2="' + Xn + '" y1="' + PAD.t + '" y2="' +
       (FH - PAD.b) + '"></line>');
