@@ -215,7 +215,7 @@
         (yfmt ? yfmt(v) : fmt(v, 3)) + "</text>");
     });
     s.push('<text class="vst-label" x="' + ((x0 + x1) / 2) + '" y="' + (h - 6) + '" text-anchor="middle">' + xl + "</text>");
-    s.push('<text class="vst-label" transform="translate(12,' + ((y0 + y1) / 2) + ') rotate(-90)" text-anchor="middle">' +
+    s.push('<text class="vst-label" transform="translate(14,' + ((y0 + y1) / 2) + ') rotate(-90)" text-anchor="middle">' +
       yl + "</text>");
     return s.join("");
   }
