@@ -474,8 +474,13 @@ def building_source(ch: TMDChapter) -> str:
 
 def checks_table(ch: TMDChapter) -> Table:
     """Self-checks at rounding level, printed as bounds."""
+
+    def power(b: float) -> str:  # "1e-6", as the other chapters print bounds (not "1e-06")
+        mant, exp = f"{b:.0e}".split("e")
+        return f"{mant}e{int(exp)}"
+
     rows = [
-        {"check": name, "bound": f"< {bound:.0e}", "ok": value < bound} for name, (value, bound) in ch.checks.items()
+        {"check": name, "bound": f"< {power(bound)}", "ok": value < bound} for name, (value, bound) in ch.checks.items()
     ]
     return Table(
         rows,
@@ -662,7 +667,7 @@ def modes_figure(ch: TMDChapter):
     ax.axvline(0.0, color="0.5", lw=0.8)
     ax.set_yticks(floors)
     ax.set_ylabel("floor (0 = ground)")
-    ax.set_xlabel("mode shape, largest component 1 (1)")
+    ax.set_xlabel("mode shape, scaled to a largest component of 1")
     place_legend(ax, outside=True)
     return fig
 
