@@ -153,6 +153,19 @@ def identification_table(
     )
 
 
+def _intervals(inside: int) -> str:
+    """How many of the three 95 % intervals, in words.
+
+    Examples
+    --------
+    >>> _intervals(3), _intervals(1), _intervals(0)
+    ('all three 95 % intervals', 'one of the three 95 % intervals', 'none of the three 95 % intervals')
+    """
+    if inside == 3:
+        return "all three 95 % intervals"
+    return f"{('none', 'one', 'two')[inside]} of the three 95 % intervals"
+
+
 def identification_sentence(fit: Identification, truth: Oscillator) -> str:
     """One paragraph: what was estimated, how far from the truth in standard errors, the noise found."""
     tv = np.array([truth.m, truth.c, truth.k])
@@ -163,7 +176,7 @@ def identification_sentence(fit: Identification, truth: Oscillator) -> str:
         f"From {fit.n} samples ({(fit.n - 1) * fit.dt:.4g} s at {1 / fit.dt:.4g} Hz) the least-squares fit gives "
         f"m = {fit.m:.4g} ± {fit.stderr[0]:.2g} kg, c = {fit.c:.4g} ± {fit.stderr[1]:.2g} N s/m and "
         f"k = {fit.k:.5g} ± {fit.stderr[2]:.2g} N/m (± one standard error). The estimates sit "
-        f"{np.abs(z).max():.2g} standard errors or less from the truth, and {inside} of the three 95 % intervals "
+        f"{np.abs(z).max():.2g} standard errors or less from the truth, and {_intervals(inside)} "
         f"contain it. The residual's standard deviation, {fit.sigma:.3g} {unit}, is the estimated sensor noise."
     )
 
@@ -207,8 +220,12 @@ def coverage_table(experiments: list[CoverageExperiment]) -> Table:
         caption="Monte Carlo: how often the 95 % intervals contain the truth, and the relative errors.",
         name="tab-twin-coverage",
         notes=(
-            "Coverage of R runs has a binomial 95 % half-width of about 1.96 √(0.95·0.05/R) "
-            "(0.030 for 200 runs, 0.068 for 40).",
+            "Coverage of R runs has a binomial 95 % half-width of about 1.96 √(0.95·0.05/R) ("
+            + ", ".join(
+                f"{1.96 * np.sqrt(0.95 * 0.05 / r):.3f} for {r} runs"
+                for r in sorted({ex.runs for ex in experiments}, reverse=True)
+            )
+            + ").",
         ),
     )
 
@@ -232,8 +249,9 @@ def coverage_sentence(main: CoverageExperiment, by_noise: list[CoverageExperimen
     return (
         f"Over {main.runs} noisy realisations the 95 % intervals contained the true m, c and k in "
         f"{100 * cov[0]:.1f} %, {100 * cov[1]:.1f} % and {100 * cov[2]:.1f} % of the runs (± {100 * half:.1f} % "
-        f"binomial), {verdict}. The stiffness error grows as noise^{p_s:.2f} (least-squares theory: 1) and "
-        f"falls as T^{p_d:.2f} with the record length T (theory for a stationary random force: −0.5)."
+        f"binomial), {verdict}. The stiffness error grows as the noise level to the power {p_s:.2f} "
+        f"(least-squares theory: 1) and falls as the record length T to the power {p_d:.2f} (theory for a "
+        f"stationary random force: −0.5)."
     )
 
 
@@ -376,7 +394,8 @@ def twin_checks_table(checks: dict[str, tuple[float, float]]) -> Table:
     """Self-checks printed as bounds: name -> (measured value, bound)."""
     rows = []
     for name, (value, bound) in checks.items():
-        rows.append({"check": name, "bound": f"< {bound:.0e}", "ok": bool(value < bound)})
+        mant, exp = f"{bound:.0e}".split("e")  # "1e-8" as the other chapters print bounds, not "1e-08"
+        rows.append({"check": name, "bound": f"< {mant}e{int(exp)}", "ok": bool(value < bound)})
     return Table(
         rows,
         [Column("check", "check"), Column("bound", "measured difference"), Column("ok", "passes")],
