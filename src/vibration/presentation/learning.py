@@ -235,7 +235,7 @@ def _realised(cmp: Comparison, i: int) -> str:
     t = cmp.task
     if g[0] == 0.0:
         c = g[1] if t.mode == "force" else min(max(g[1], t.c_min), t.c_max)
-        return f"c = {c:.3g} N s/m" if t.mode == "damping" else f"c_add = {c:.3g} N s/m"
+        return f"c = {c:.3g} N s/m" if t.mode == "damping" else f"added c = {c:.3g} N s/m"
     return f"K = [{g[0]:.3g}, {g[1]:.3g}]"
 
 
@@ -266,7 +266,7 @@ def comparison_table(cmp: Comparison, caption: str, name: str, reference: int = 
             Column("J", "J (s)", 4),
             Column("sem", "± (s)", 2),
             Column("exact", "J exact (s)", 4),
-            Column("rel", f"J / J_{reference + 1}", 4),
+            Column("rel", "J / J_ref", 4),
             Column("xpk", "max |x| (m)", 3),
             Column("xrms", "x_rms (m)", 3),
             Column("urms", "u_rms (N)", 3),
@@ -277,6 +277,7 @@ def comparison_table(cmp: Comparison, caption: str, name: str, reference: int = 
         notes=(
             f"Mean over the same {cmp.runs[0].cost.size} seeded episodes (seed {cmp.seed}), "
             "± its standard error; the exact expected cost where the law is linear on the task.",
+            f"J_ref: the mean cost J of {cmp.names[reference]}.",
         ),
     )
 
