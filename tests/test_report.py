@@ -145,3 +145,12 @@ def test_failed_chapter_leaves_previous_tree_untouched(tmp_path, monkeypatch):
     assert (out / "report" / "index.html").read_text(encoding="utf-8") == "previous"
     assert not list(out.glob(".report-*"))
     shutil.rmtree(root)
+
+
+def test_every_declared_parameter_has_a_range(chapters):
+    declared = {name for ch in chapters for name in ch.params}
+    assert declared - set(report.PARAMETER_RULES) == set(), "parameters the runner cannot range-check"
+    assert set(report.PARAMETER_RULES) - declared == set(), "ranges of parameters no chapter declares"
+    for ch in chapters:  # every default is inside its own range
+        values = report.check_parameters([ch], [(n, info["default"]) for n, info in ch.params.items()])
+        assert set(values) == set(ch.params)
