@@ -8,6 +8,8 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 BUILD := build
 CHROMIUM ?= /usr/bin/chromium
+# pytest workers, one per core (--dist loadfile keeps a notebook's cells, and a module's fixtures, in one worker)
+JOBS ?= 2
 
 .PHONY: help setup report test test-fast bench lint format notebooks lab browser clean
 
@@ -37,7 +39,7 @@ test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval a
 	$(PY) -m ruff check src tests notebooks
 	$(VENV)/bin/lint-imports
 	@mkdir -p $(BUILD); rc=0; \
-	$(PY) -m pytest --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg tests src notebooks || rc=$$?; \
+	$(PY) -m pytest -n $(JOBS) --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg tests src notebooks || rc=$$?; \
 	echo $$rc > $(BUILD)/pytest.rc; \
 	if [ $$rc -eq 5 ]; then echo "error: pytest collected no tests (exit code 5)" >&2; fi; \
 	exit $$rc
