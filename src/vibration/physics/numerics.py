@@ -138,7 +138,8 @@ def simulate(
     grid = np.linspace(0.0, t_end, n_points) if t_eval else None
     extra = {"jac": jac} if method in ("Radau", "BDF", "LSODA") else {}
     try:
-        sol = solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
+        with np.errstate(all="ignore"):  # an overflow is reported below, by name
+            sol = solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
     except _OverBudget:
         raise ParameterError(
             f"t_end = {t_end!r} s needs more than {MAX_NFEV} right-hand-side evaluations with {method} at "
