@@ -327,10 +327,7 @@ def write_source(pages: list[ChapterPage], src: Path) -> None:
     src.mkdir(parents=True, exist_ok=True)
     (src / "_static").mkdir(exist_ok=True)
     (src / "_static" / "vibration-book.css").write_text(_css(), encoding="utf-8")
-    footer = (
-        "Built by papermill and Sphinx from the notebooks in notebooks/; "
-        "every number on these pages was computed by this run."
-    )
+    footer = "Every number on these pages was computed by this run (papermill, then Sphinx)."
     (src / "conf.py").write_text(CONF.format(title=BOOK_TITLE, footer=footer), encoding="utf-8")
     front = [p for p in pages if p.number == FRONT]
     chapters = [p for p in pages if p.number != FRONT]
