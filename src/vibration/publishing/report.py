@@ -273,30 +273,14 @@ def kernel_name() -> str:
     return KERNEL if KERNEL in KernelSpecManager().find_kernel_specs() else "python3"
 
 
-class _QuietKernels:
-    """Kernel managers on the IPC transport (no "running over TCP" warning), sockets in one folder."""
-
-    def __init__(self, folder: Path) -> None:
-        from jupyter_client.manager import AsyncKernelManager
-        from traitlets import default
-
-        prefix = str(folder / "kernel")
-
-        class IPCKernelManager(AsyncKernelManager):
-            @default("transport")
-            def _default_transport(self):
-                return "ipc"
-
-            @default("ip")
-            def _default_ip(self):
-                import uuid
-
-                return f"{prefix}-{uuid.uuid4().hex[:8]}"  # one socket family per kernel: no port race
-
-        self.cls = IPCKernelManager
+#: Kernel arguments: log errors only, so the runner's output carries no kernel log lines
+#: (such as the warning that the kernel talks over TCP on the loopback interface).
+KERNEL_ARGS = ["--IPKernelApp.log_level=ERROR"]
+#: Longest a single cell may run, s: a lost kernel message becomes an error instead of a hang.
+CELL_TIMEOUT_S = 900
 
 
-def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str, kernels: _QuietKernels) -> dict:
+def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
     import papermill
 
     start = time.perf_counter()
@@ -310,7 +294,8 @@ def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str, kernels: _Q
         cwd=str(ch.path.parent),
         progress_bar=False,
         log_output=False,
-        kernel_manager_class=kernels.cls,
+        execution_timeout=CELL_TIMEOUT_S,
+        extra_arguments=KERNEL_ARGS,
     )
     return {"name": ch.name, "executed": executed, "elapsed_s": time.perf_counter() - start}
 
@@ -358,7 +343,6 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
     out = out.resolve()  # kernels run in notebooks/: every path they get must be absolute
     out.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".report-", dir=out))
-    sockets = Path(tempfile.mkdtemp(prefix="vib-kernels-"))
     for name in ("papermill", "traitlets", "nbclient", "sphinx"):
         logging.getLogger(name).setLevel(logging.ERROR)
     try:
@@ -366,12 +350,11 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
             (work / sub).mkdir()
         os.environ[TABLES_ENV] = str(work / "tables")
         kernel = kernel_name()
-        kernels = _QuietKernels(sockets)
         total = len(chapters)
         t0 = time.perf_counter()
         results = {}
         with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
-            futures = {pool.submit(_run_chapter, ch, values, work, kernel, kernels): ch for ch in chapters}
+            futures = {pool.submit(_run_chapter, ch, values, work, kernel): ch for ch in chapters}
             for ch in chapters:
                 log(f"[start] {ch.name}")
             for fut in as_completed(futures):
@@ -412,7 +395,6 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
     finally:
         os.environ.pop(TABLES_ENV, None)
         shutil.rmtree(work, ignore_errors=True)
-        shutil.rmtree(sockets, ignore_errors=True)
 
 
 def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True, log=print) -> dict:
@@ -461,7 +443,8 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
         NotebookClient(
             nb,
             kernel_name=kernel,
-            timeout=900,
+            timeout=CELL_TIMEOUT_S,
+            extra_arguments=KERNEL_ARGS,
             record_timing=False,
             resources={"metadata": {"path": str(ch.path.parent)}},
         ).execute()
