@@ -34,7 +34,9 @@ NOTEBOOKS = ROOT / "notebooks"
 JUPYTER = Path(sys.executable).parent / "jupyter"
 SCREENSHOTS = ROOT / "build" / "screenshots"
 KERNEL_DISPLAY_NAME = "Python 3 (vibration)"
-USES_WIDGETS = re.compile(r"vibration\.presentation\.widgets|from\s+vibration\.presentation\s+import\s+[^\n]*\bwidgets\b")
+USES_WIDGETS = re.compile(
+    r"vibration\.presentation\.widgets|from\s+vibration\.presentation\s+import\s+[^\n]*\bwidgets\b"
+)
 
 #: JupyterLab settings for a quiet, deterministic session.
 LAB_SETTINGS = {
