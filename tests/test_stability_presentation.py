@@ -15,7 +15,7 @@ from vibration import Oscillator
 from vibration.presentation import stability as pres
 from vibration.presentation.style import legend_overlap
 from vibration.presentation.tables import Missing
-from vibration.publishing.render import external_urls
+from vibration.publishing.mathml import external_urls
 
 SCREENSHOTS = Path(__file__).resolve().parents[1] / "build" / "screenshots"
 

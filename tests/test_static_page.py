@@ -15,7 +15,7 @@ from conftest import open_offline
 
 from vibration import Oscillator, ParameterError, SineForce, exact_response, settling_time, steady_state
 from vibration.presentation.static_page import C_MIN, slider_panel_html
-from vibration.publishing.render import external_urls
+from vibration.publishing.mathml import external_urls
 
 SCREENSHOTS = Path(__file__).resolve().parents[1] / "build" / "screenshots"
 
