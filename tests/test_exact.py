@@ -11,14 +11,11 @@ Two references, neither sharing code or formulas with ``vibration.physics.exact`
 
 Errors are measured as ``max|err| / max|ref|`` over the window. Measured (this
 machine, SciPy 1.17): exact vs expm worst 5e-13 (undamped, 20 s, where expm's
-own error dominates), exact vs decimal worst 1.1e-14, in every case except
-these, which fail (bugs in ``vibration.physics.exact``, reported to the lead):
-
-* forced, c < -c_crit (two positive real roots): 6.6e-2 at c = -2 sqrt(k m),
-  5.6e-10 at c = -15 over 2 s, 2.5e-3 at c = -12 over 1 s;
-* subnormal damping at exact resonance (c = 1e-310): nan/inf and a RuntimeWarning;
-* slow forcing, omega <= 1e-9 rad/s, c in {0, 0.5}: x loses eps / omega relative;
-* c = -0.0: steady-state phase -pi instead of pi above resonance.
+own error dominates), exact vs decimal worst 1.1e-14. The cases that once failed
+(forced with c < -c_crit, subnormal damping at exact resonance, forcing slower
+than 1e-9 rad/s, c = -0.0) are fixed and stay in the parameter lists below;
+pointwise 50-digit checks of the two accuracy corners (strong negative damping,
+windows much shorter than a period) are in ``test_foundation_accuracy.py``.
 """
 
 from __future__ import annotations
