@@ -101,6 +101,20 @@ def test_figures_and_tables_are_numbered_per_chapter_from_one(site):
     assert numbered >= 1
 
 
+def test_banner_lists_own_and_other_changes():
+    from vibration.publishing.book import Parameter, banner_html
+
+    own = [Parameter("k", 30.0, 20.0, "spring stiffness", "N/m", True), Parameter("m", 1.0, 1.0, "mass", "kg", True)]
+    other = [Parameter("c_low", 0.05, 0.1, "low damping", "N s/m", True)]
+    assert banner_html([p for p in own if p.name == "m"], []) == ""
+    text = banner_html(own, own[:1] + other)
+    assert "k</code> (spring stiffness) = <strong>30 N/m</strong>; the paper: 20 N/m" in text
+    assert "Also changed in this run" in text and "c_low" in text
+    assert "<code>m</code>" not in text
+    only_other = banner_html(own[1:], other)
+    assert "Not the paper" not in only_other and "not used on this page" in only_other
+
+
 def test_split_help_and_summary_helpers():
     assert split_help("spring stiffness, N/m") == ("spring stiffness", "N/m")
     assert split_help("output samples, 1") == ("output samples", "")
@@ -246,7 +260,7 @@ def test_front_page_reports_computed_headline(browser, site):
 @pytest.mark.slow
 def test_runner_banner_with_changed_parameter(browser, tmp_path):
     proc = subprocess.run(
-        [sys.executable, "-m", "vibration.report", "00", "01", "-p", "c_low", "0.05", "--out", str(tmp_path)],
+        [sys.executable, "-m", "vibration.report", "00", "01", "08", "-p", "c_low", "0.05", "--out", str(tmp_path)],
         capture_output=True,
         text=True,
         timeout=600,
@@ -255,7 +269,7 @@ def test_runner_banner_with_changed_parameter(browser, tmp_path):
     assert proc.returncode == 0, proc.stderr[-2000:]
     log = proc.stdout + proc.stderr
     assert "Kernel is running over TCP" not in log and "[IPKernelApp]" not in log, log[-1500:]
-    assert "2 chapters" in log and "book: built in" in log
+    assert "3 chapters" in log and "book: built in" in log
     for name in ("index.html", "01_reproduction.html"):
         page, outside, errors = open_offline(browser, tmp_path / "report" / name, viewport=(1280, 900))
         banner = page.locator(".vib-banner")
@@ -266,6 +280,12 @@ def test_runner_banner_with_changed_parameter(browser, tmp_path):
         if name == "01_reproduction.html":
             page.screenshot(path=str(Path(SCREENSHOTS) / "book-banner.png"))
         page.close()
+    # chapter 8 does not declare c_low: its banner says the run changed it but this page does not use it
+    page, _, errors = open_offline(browser, tmp_path / "report" / "08_tmd.html", viewport=(1280, 900))
+    text = page.locator(".vib-banner").inner_text()
+    assert "not used on this page" in text and "c_low" in text and "0.05 N s/m" in text, text
+    assert "Not the paper's parameters" not in text and errors == []
+    page.close()
     assert (tmp_path / "report" / "report.pdf").is_file()
 
 

@@ -147,22 +147,51 @@ def _unit_text(value, unit: str) -> str:
     return f"{_value_text(value)} {unit}".strip()
 
 
-def banner_html(params: list[Parameter]) -> str:
-    """The changed-parameters banner (empty when nothing changed)."""
-    changed = [p for p in params if p.changed]
-    if not changed:
-        return ""
-    items = "".join(
+def _items(params: list[Parameter]) -> str:
+    return "".join(
         f"<li><code>{html.escape(p.name)}</code> ({html.escape(p.meaning)}) = "
         f"<strong>{html.escape(_unit_text(p.value, p.unit))}</strong>; "
         f"{'the paper' if p.paper else 'default'}: {html.escape(_unit_text(p.default, p.unit))}</li>"
-        for p in changed
+        for p in params
     )
-    return (
-        '<div class="vib-banner" role="note"><p><strong>Not the paper\'s parameters.</strong> '
-        "This page was computed with these values changed:</p>"
-        f"<ul>{items}</ul></div>"
-    )
+
+
+def banner_html(params: list[Parameter], run_changes: list[Parameter] = ()) -> str:
+    """The changed-parameters banner of a page (empty when the run changed nothing).
+
+    ``params`` are the page's own parameters; ``run_changes`` every parameter the run changed
+    in any chapter. Those this page does not declare are listed as not used here, so every
+    page of a changed run says so, and says whether its own numbers moved.
+    """
+    changed = [p for p in params if p.changed]
+    own = {p.name for p in params}
+    elsewhere = [p for p in run_changes if p.changed and p.name not in own]
+    if not changed and not elsewhere:
+        return ""
+    parts = ['<div class="vib-banner" role="note">']
+    if changed:
+        parts.append(
+            "<p><strong>Not the paper's parameters.</strong> This page was computed with these values changed:</p>"
+            f"<ul>{_items(changed)}</ul>"
+        )
+    if elsewhere:
+        lead = "Also changed in this run" if changed else "<strong>This run changed parameters.</strong> Changed"
+        parts.append(
+            f"<p>{lead}, but not used on this page (its numbers are those of its own parameters, "
+            f"shown below):</p><ul>{_items(elsewhere)}</ul>"
+        )
+    parts.append("</div>")
+    return "".join(parts)
+
+
+def run_changes(pages: list[ChapterPage]) -> list[Parameter]:
+    """Every parameter some chapter of the run changed, once per name, in chapter order."""
+    seen: dict[str, Parameter] = {}
+    for page in pages:
+        for p in page.parameters:
+            if p.changed and p.name not in seen:
+                seen[p.name] = p
+    return list(seen.values())
 
 
 def parameters_table(params: list[Parameter]) -> str:
@@ -190,7 +219,7 @@ def _tags(cell) -> list[str]:
     return list(cell.get("metadata", {}).get("tags", []))
 
 
-def prepare(page: ChapterPage) -> nbformat.NotebookNode:
+def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.NotebookNode:
     """A copy of the executed notebook as the book shows it (see the module docstring)."""
     nb = copy.deepcopy(page.notebook)
     nb.metadata.pop("widgets", None)
@@ -211,7 +240,7 @@ def prepare(page: ChapterPage) -> nbformat.NotebookNode:
             if "show-input" not in tags and not {"hide-input", "remove-input", "remove-cell"} & set(tags):
                 cell.metadata.setdefault("tags", []).append("hide-input")
         cells.append(cell)
-    banner = banner_html(page.parameters)
+    banner = banner_html(page.parameters, changes)
     if banner:
         at = 1 if cells and cells[0].cell_type == "markdown" and cells[0].source.lstrip().startswith("# ") else 0
         if at == 1:  # keep the title first, banner right under it
@@ -331,19 +360,20 @@ def write_source(pages: list[ChapterPage], src: Path) -> None:
     (src / "conf.py").write_text(CONF.format(title=BOOK_TITLE, footer=footer), encoding="utf-8")
     front = [p for p in pages if p.number == FRONT]
     chapters = [p for p in pages if p.number != FRONT]
+    changes = run_changes(pages)
     if front:
-        nb = prepare(front[0])
+        nb = prepare(front[0], changes)
     else:
         nb = nbformat.v4.new_notebook()
         nb.cells = [nbformat.v4.new_markdown_cell(f"# {BOOK_TITLE}")]
-        banner = banner_html([q for p in chapters for q in p.parameters])
+        banner = banner_html([], changes)
         if banner:
             nb.cells.append(nbformat.v4.new_markdown_cell(banner))
     nb.cells.append(nbformat.v4.new_markdown_cell(contents_markdown(chapters)))
     nb.cells.append(nbformat.v4.new_markdown_cell(_toctree(chapters)))
     nbformat.write(nb, src / "index.ipynb")
     for p in chapters:
-        nbformat.write(prepare(p), src / f"{p.name}.ipynb")
+        nbformat.write(prepare(p, changes), src / f"{p.name}.ipynb")
 
 
 def sphinx_build(src: Path, out: Path, builder: str, log=print) -> None:
