@@ -12,7 +12,7 @@ import vibration
 from vibration import Oscillator, ParameterError, SineForce, exact_response
 from vibration.physics.control import lqr_closed_form, shaped_move, shaper_residual
 from vibration.presentation.control import control_panel, control_panel_html
-from vibration.publishing.render import external_urls
+from vibration.publishing.mathml import external_urls
 
 #: Tolerances of the JavaScript against Python: gains, transmissibility, residual (relative); x samples
 #: relative to max |x|.

@@ -11,7 +11,7 @@ from conftest import open_offline
 from vibration import Duffing, ParameterError, folds, hb_amplitudes, response_curve
 from vibration.presentation import duffing as pres
 from vibration.presentation.style import legend_overlap
-from vibration.publishing.render import external_urls
+from vibration.publishing.mathml import external_urls
 
 
 @pytest.fixture(scope="module")

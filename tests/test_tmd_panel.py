@@ -20,7 +20,7 @@ from conftest import SCREENSHOTS, open_offline
 import vibration
 from vibration import den_hartog, h2_tuning, hinf_tuning, tmd_fixed_points, tmd_magnification, tmd_peak
 from vibration.presentation import tmd as pres
-from vibration.publishing.render import external_urls
+from vibration.publishing.mathml import external_urls
 
 RTOL_CLOSED = 1e-12
 RTOL_PEAK = 1e-9

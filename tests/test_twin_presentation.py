@@ -14,7 +14,7 @@ from vibration import Oscillator, ParameterError
 from vibration.physics import twin
 from vibration.presentation import twin as show
 from vibration.presentation.style import legend_overlap
-from vibration.publishing.render import external_urls
+from vibration.publishing.mathml import external_urls
 
 matplotlib.use("Agg")
 
