@@ -84,8 +84,13 @@ def test_skeleton_and_no_physics_in_notebooks(path):
     code = [c for c in cells if c["cell_type"] == "code"]
     for c in code:
         tree = ast.parse(_src(c))
-        defs = [n for n in ast.walk(tree) if isinstance(n, ast.FunctionDef | ast.ClassDef | ast.Lambda)]
-        assert not defs, f"{path.name}: define functions in src/vibration, not in notebooks"
+        kinds = (
+            ast.FunctionDef | ast.ClassDef if "show-input" in _tags(c) else ast.FunctionDef | ast.ClassDef | ast.Lambda
+        )
+        defs = [n for n in ast.walk(tree) if isinstance(n, kinds)]
+        assert not defs, (
+            f"{path.name}: define functions in src/vibration, not in notebooks (a lesson cell may pass a lambda)"
+        )
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
@@ -93,7 +98,9 @@ def test_only_live_widget_cells_skip_nbval_and_outputs_are_committed(path):
     code = [c for c in _nb(path)["cells"] if c["cell_type"] == "code"]
     for c in code:
         if "nbval-ignore-output" in _tags(c):
-            assert "explorer(" in _src(c), f"{path.name}: only widget cells may skip nbval: {_src(c)[:80]}"
+            assert re.search(r"(explorer|panel)\(", _src(c)), (
+                f"{path.name}: only slider cells may skip nbval: {_src(c)[:80]}"
+            )
     assert all(c.get("execution_count") for c in code), f"{path.name}: re-execute it (make notebooks)"
     printed = [c for c in code if "show_table(" in _src(c) or "print(" in _src(c) or "_table(" in _src(c)]
     assert printed and all(c["outputs"] for c in printed), f"{path.name}: tables without outputs"
