@@ -105,6 +105,26 @@
     return e;
   }
 
+  /* Tick positions (in axis units, log10 for a log axis) at round values: 1, 2 or 5 times a power of ten. */
+  function ticks(a, b, log) {
+    if (log) {
+      var decades = [];
+      for (var d = Math.ceil(a - 1e-9); d <= b + 1e-9; d++) { decades.push(d); }
+      if (decades.length >= 2) { return decades; }
+    }
+    var raw = (b - a) / 4, mag = Math.pow(10, Math.floor(Math.log10(raw))), r = raw / mag;
+    var step = (r < 1.5 ? 1 : r < 3 ? 2 : r < 7 ? 5 : 10) * mag, out = [];
+    for (var v = Math.ceil(a / step - 1e-9) * step; v <= b + 1e-9 * step; v += step) {
+      out.push(Math.abs(v) < 1e-9 * step ? 0 : v);
+    }
+    return out;
+  }
+
+  function tickLabel(t, log) {
+    var v = log ? Math.pow(10, t) : t;
+    return String(Number(v.toPrecision(log ? 2 : 3)));
+  }
+
   /* Draw series [{x: [], y: [], cls: ""}] into an svg with linear or log axes and tick labels. */
   function plot(svg, series, opts) {
     while (svg.firstChild) { svg.removeChild(svg.firstChild); }
@@ -121,14 +141,14 @@
     function px(v) { return L + (fx(v) - x0) / (x1 - x0) * (W - L - R); }
     function py(v) { return H - B - (Math.max(fy(v), y0) - y0) / (y1 - y0) * (H - T - B); }
     el("rect", { x: L, y: T, width: W - L - R, height: H - T - B, class: "vc-frame" }, svg);
-    for (var i = 0; i <= 4; i++) {
-      var yv = y0 + (y1 - y0) * i / 4, yy = H - B - i / 4 * (H - T - B);
-      var lab = opts.logy ? Math.pow(10, yv).toPrecision(2) : yv.toPrecision(3);
-      el("text", { x: L - 4, y: yy + 3, class: "vc-tick", "text-anchor": "end" }, svg).textContent = lab;
-      var xv = x0 + (x1 - x0) * i / 4, xx = L + i / 4 * (W - L - R);
-      var xl = opts.logx ? Math.pow(10, xv).toPrecision(2) : xv.toPrecision(3);
-      el("text", { x: xx, y: H - B + 14, class: "vc-tick", "text-anchor": "middle" }, svg).textContent = xl;
-    }
+    ticks(y0, y1, opts.logy).forEach(function (t) {
+      var yy = H - B - (t - y0) / (y1 - y0) * (H - T - B);
+      el("text", { x: L - 4, y: yy + 3, class: "vc-tick", "text-anchor": "end" }, svg).textContent = tickLabel(t, opts.logy);
+    });
+    ticks(x0, x1, opts.logx).forEach(function (t) {
+      var xx = L + (t - x0) / (x1 - x0) * (W - L - R);
+      el("text", { x: xx, y: H - B + 14, class: "vc-tick", "text-anchor": "middle" }, svg).textContent = tickLabel(t, opts.logx);
+    });
     el("text", { x: (L + W - R) / 2, y: H - 6, class: "vc-label", "text-anchor": "middle" }, svg).textContent = opts.xlabel;
     el("text", { x: 12, y: (T + H - B) / 2, class: "vc-label", "text-anchor": "middle", transform: "rotate(-90 12 " + (T + H - B) / 2 + ")" }, svg).textContent = opts.ylabel;
     series.forEach(function (s) {
