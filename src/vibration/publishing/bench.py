@@ -140,7 +140,7 @@ def bench_report() -> None:
     import nbformat
     import papermill
 
-    from .report import discover, kernel_name
+    from .report import KERNEL_ARGS, discover, kernel_name
 
     chapters = discover()
     kernel = kernel_name()
@@ -154,7 +154,11 @@ def bench_report() -> None:
         def empties():
             for i in range(len(chapters)):
                 papermill.execute_notebook(
-                    str(empty), str(Path(tmp) / f"out{i}.ipynb"), kernel_name=kernel, progress_bar=False
+                    str(empty),
+                    str(Path(tmp) / f"out{i}.ipynb"),
+                    kernel_name=kernel,
+                    progress_bar=False,
+                    extra_arguments=KERNEL_ARGS,
                 )
 
         def empties_cli():
