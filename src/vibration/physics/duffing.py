@@ -1393,7 +1393,11 @@ class LyapunovResult:
     v_end: float  # m/s
 
 
-def _chaos_args(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period):
+def _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, mode=0, d0=1.0):
+    """Check the arguments, discard ``n_transient`` periods, then run the compiled RK4 in ``mode``.
+
+    Returns the averaging time ``n_periods T`` (s) and the kernel's ``(points, running, tail)``.
+    """
     d = _check_duffing(duffing)
     F0 = check_real("F0", F0, low=0.0, unit="N")
     w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
@@ -1401,8 +1405,24 @@ def _chaos_args(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_pe
     v0 = check_real("v0", v0, unit="m/s")
     n_periods = check_int("n_periods", n_periods, low=1, high=10_000_000)
     n_transient = check_int("n_transient", n_transient, low=0, high=10_000_000)
-    steps_per_period = check_int("steps_per_period", steps_per_period, low=8, high=100_000)
-    return d, F0, w, x0, v0, n_periods, n_transient, steps_per_period
+    spp = check_int("steps_per_period", steps_per_period, low=8, high=100_000)
+    kern = _kernels()[1]
+    if n_transient:
+        *_, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_transient, spp, 0, 1.0, False)
+        x0, v0 = float(tail[2]), float(tail[3])
+    time = n_periods * 2.0 * math.pi / w
+    return (time, *kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_periods, spp, mode, d0, mode != 0))
+
+
+def _lyapunov_result(time, running, tail, method, n_exponents) -> LyapunovResult:
+    return LyapunovResult(
+        exponents=tuple(float(s / time) for s in tail[:n_exponents]),
+        running=running,
+        method=method,
+        time=time,
+        x_end=float(tail[2]),
+        v_end=float(tail[3]),
+    )
 
 
 def poincare_section(
@@ -1447,14 +1467,7 @@ def poincare_section(
     >>> bool(np.ptp(pts[:, 0]) < 1e-9)           # a period-1 orbit: one point
     True
     """
-    d, F0, w, x0, v0, n_periods, n_transient, spp = _chaos_args(
-        duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period
-    )
-    kern = _kernels()[1]
-    if n_transient:
-        *_, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_transient, spp, 0, 1.0, False)
-        x0, v0 = float(tail[2]), float(tail[3])
-    pts, _, _ = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_periods, spp, 0, 1.0, False)
+    _, pts, _, _ = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period)
     return pts
 
 
@@ -1503,23 +1516,8 @@ def lyapunov_qr(
     >>> round(sum(r.exponents), 6)        # = -c/m, 1/s
     -0.5
     """
-    d, F0, w, x0, v0, n_periods, n_transient, spp = _chaos_args(
-        duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period
-    )
-    kern = _kernels()[1]
-    if n_transient:
-        *_, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_transient, spp, 0, 1.0, False)
-        x0, v0 = float(tail[2]), float(tail[3])
-    _, running, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_periods, spp, 1, 1.0, True)
-    time = n_periods * 2.0 * math.pi / w
-    return LyapunovResult(
-        exponents=(float(tail[0] / time), float(tail[1] / time)),
-        running=running,
-        method="qr",
-        time=time,
-        x_end=float(tail[2]),
-        v_end=float(tail[3]),
-    )
+    time, _, running, tail = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, 1)
+    return _lyapunov_result(time, running, tail, "qr", 2)
 
 
 def lyapunov_benettin(
@@ -1567,21 +1565,6 @@ def lyapunov_benettin(
     >>> r.exponents[0] < 0                # a stable periodic orbit
     True
     """
-    d, F0, w, x0, v0, n_periods, n_transient, spp = _chaos_args(
-        duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period
-    )
     d0 = check_real("d0", d0, low=1e-12, high=1e-4)
-    kern = _kernels()[1]
-    if n_transient:
-        *_, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_transient, spp, 0, 1.0, False)
-        x0, v0 = float(tail[2]), float(tail[3])
-    _, running, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_periods, spp, 2, d0, True)
-    time = n_periods * 2.0 * math.pi / w
-    return LyapunovResult(
-        exponents=(float(tail[0] / time),),
-        running=running,
-        method="benettin",
-        time=time,
-        x_end=float(tail[2]),
-        v_end=float(tail[3]),
-    )
+    time, _, running, tail = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, 2, d0)
+    return _lyapunov_result(time, running, tail, "benettin", 1)
