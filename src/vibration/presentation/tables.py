@@ -92,54 +92,36 @@ def fmt(value, digits: int = 4) -> str:
     return str(value)
 
 
-#: A header subscript: word characters (and ∞), so "|x − x_exact| (m)", "M(ω_ref)" and "t_s, 2 %" end it at
-#: the bar, bracket or comma.
+#: A subscript in a header or caption: word characters (and ∞), so "|x − x_exact| (m)", "M(ω_ref)",
+#: "t_s, 2 %" and "ω_1," end it at the bar, bracket or comma.
 _SUB = re.compile(r"_([\w∞]+)")
 
 
-def _header_html(text: str) -> str:
+def _sub_html(text: str) -> str:
+    """Header or caption as HTML, ``_sub`` as ``<sub>``.
+
+    Examples
+    --------
+    >>> _sub_html("max |x − x_exact| (m)")
+    'max |x − x<sub>exact</sub>| (m)'
+    """
     return _SUB.sub(lambda m: f"<sub>{m.group(1)}</sub>", html.escape(text))
 
 
-def _header_myst(text: str) -> str:
-    """Header text as MyST: ``_sub`` becomes the ``{sub}`` role, everything else escaped.
+def _sub_myst(text: str) -> str:
+    """Header or caption as MyST: ``_sub`` becomes the ``{sub}`` role, everything else escaped.
 
     Examples
     --------
-    >>> _header_myst("σ_x (m)")
+    >>> _sub_myst("σ_x (m)")
     'σ{sub}`x` (m)'
-    >>> _header_myst("M(ω_ref)"), _header_myst("t_s, 2 % (s)"), _header_myst("J_∞ (s)")
+    >>> _sub_myst("M(ω_ref)"), _sub_myst("t_s, 2 % (s)"), _sub_myst("J_∞ (s)")
     ('M(ω{sub}`ref`)', 't{sub}`s`, 2 % (s)', 'J{sub}`∞` (s)')
-    >>> _header_html("max |x − x_exact| (m)")
-    'max |x − x<sub>exact</sub>| (m)'
-    """
-    out, last = [], 0
-    for m in _SUB.finditer(text):
-        out.append(_escape_md(text[last : m.start()]))
-        out.append("{sub}`" + m.group(1) + "`")
-        last = m.end()
-    out.append(_escape_md(text[last:]))
-    return "".join(out)
-
-
-_CAPTION_SUB = re.compile(r"_(\w+)")
-
-
-def _caption_html(text: str) -> str:
-    """Caption text with ``x_ss``-style subscripts (word characters only, so "ω_1," keeps its comma)."""
-    return _CAPTION_SUB.sub(lambda m: f"<sub>{m.group(1)}</sub>", html.escape(text))
-
-
-def _caption_myst(text: str) -> str:
-    """The caption as MyST: subscripts as the ``{sub}`` role, everything else escaped.
-
-    Examples
-    --------
-    >>> _caption_myst("Bands ω_1, ω_2 (rad/s).")
+    >>> _sub_myst("Bands ω_1, ω_2 (rad/s).")
     'Bands ω{sub}`1`, ω{sub}`2` (rad/s).'
     """
     out, last = [], 0
-    for m in _CAPTION_SUB.finditer(text):
+    for m in _SUB.finditer(text):
         out.append(_escape_md(text[last : m.start()]))
         out.append("{sub}`" + m.group(1) + "`")
         last = m.end()
@@ -211,24 +193,24 @@ class Table:
         return "\n".join(lines)
 
     def _repr_html_(self) -> str:
-        head = "".join(f"<th>{_header_html(c.header)}</th>" for c in self.columns)
+        head = "".join(f"<th>{_sub_html(c.header)}</th>" for c in self.columns)
         body = "".join("<tr>" + "".join(f"<td>{html.escape(v)}</td>" for v in r) + "</tr>" for r in self.cells())
         notes = "".join(f"<p class='vib-table-note'>{html.escape(n)}</p>" for n in self.footnotes())
         return (
             f"<div class='vib-table' id='{html.escape(self.name)}'><table>"
-            f"<caption>{_caption_html(self.caption)}</caption>"
+            f"<caption>{_sub_html(self.caption)}</caption>"
             f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>{notes}</div>"
         )
 
     def _repr_markdown_(self) -> str:
-        caption = _caption_myst(self.caption)
+        caption = _sub_myst(self.caption)
         # A backtick fence may not carry backticks in its info string (CommonMark), and the caption's
         # {sub} roles have them: such captions open a tilde fence, which may.
         fence = "~~~" if "`" in caption else "```"
         lines = [f"{fence}{{list-table}} {caption}", ":header-rows: 1", f":name: {self.name}"]
         lines.append(":class: vib-table")
         lines.append("")
-        lines.append("* - " + "\n  - ".join(_header_myst(c.header) for c in self.columns))
+        lines.append("* - " + "\n  - ".join(_sub_myst(c.header) for c in self.columns))
         for r in self.cells():
             lines.append("* - " + "\n  - ".join(_escape_md(v) for v in r))
         lines.append(fence)
