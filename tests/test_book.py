@@ -28,7 +28,7 @@ CHAPTERS = [p.stem for p in NOTEBOOKS if not p.stem.startswith("00_")]
 @pytest.fixture(scope="module")
 def site(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("book") / "report"
-    report.book_from_sources(report.discover(ROOT), out, pdf=True, log=lambda *a: None)
+    report.book_from_sources(report.discover(ROOT), out, pdf=True)
     return out
 
 

@@ -13,7 +13,7 @@ from vibration.publishing import report
 def built(tmp_path_factory):
     out = tmp_path_factory.mktemp("book") / "report"
     chapters = report.select(report.discover(), ["05"])
-    report.book_from_sources(chapters, out, pdf=False, log=lambda *a: None)
+    report.book_from_sources(chapters, out, pdf=False)
     return out
 
 

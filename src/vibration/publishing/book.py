@@ -62,7 +62,7 @@ class Parameter:
 
     @property
     def changed(self) -> bool:
-        return _differs(self.value, self.default)
+        return differs(self.value, self.default)
 
 
 @dataclass
@@ -91,7 +91,8 @@ class ChapterPage:
         return summary(self.notebook)
 
 
-def _differs(a, b) -> bool:
+def differs(a, b) -> bool:
+    """Whether two parameter values differ (numerically when both are numbers, else as text)."""
     try:
         return float(a) != float(b)
     except (TypeError, ValueError):
@@ -210,11 +211,6 @@ def parameters_table(params: list[Parameter]) -> str:
     )
 
 
-def _raw_html_cell(text: str):
-    cell = nbformat.v4.new_markdown_cell(text)
-    return cell
-
-
 def _tags(cell) -> list[str]:
     return list(cell.get("metadata", {}).get("tags", []))
 
@@ -232,7 +228,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
         tags = _tags(cell)
         if cell.cell_type == "code" and ("parameters" in tags or "injected-parameters" in tags):
             if not params_done and page.parameters:
-                cells.append(_raw_html_cell(parameters_table(page.parameters)))
+                cells.append(nbformat.v4.new_markdown_cell(parameters_table(page.parameters)))
                 params_done = True
             continue
         if cell.cell_type == "code":
@@ -248,10 +244,10 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
             cells[0] = nbformat.v4.new_markdown_cell(title)
             if rest.strip():
                 cells.insert(1, nbformat.v4.new_markdown_cell(rest))
-        cells.insert(at, _raw_html_cell(banner))
+        cells.insert(at, nbformat.v4.new_markdown_cell(banner))
     if page.elapsed_s is not None:
         cells.append(
-            _raw_html_cell(
+            nbformat.v4.new_markdown_cell(
                 f'<p class="vib-footer">This chapter was executed by papermill in {page.elapsed_s:.1f} s.</p>'
             )
         )
@@ -376,8 +372,8 @@ def write_source(pages: list[ChapterPage], src: Path) -> None:
         nbformat.write(prepare(p, changes), src / f"{p.name}.ipynb")
 
 
-def sphinx_build(src: Path, out: Path, builder: str, log=print) -> None:
-    """Run Sphinx in this process (warnings go to the build log, errors raise)."""
+def sphinx_build(src: Path, out: Path, builder: str) -> None:
+    """Run Sphinx in this process: errors raise; its messages go to ``src/sphinx-<builder>.log``."""
     from sphinx.application import Sphinx
     from sphinx.util.docutils import docutils_namespace
 
@@ -435,7 +431,7 @@ def print_pdf(html_path: Path, pdf_path: Path, title: str = BOOK_TITLE) -> int:
     return len(PdfReader(str(pdf_path)).pages)
 
 
-def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, log=print) -> dict:
+def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True) -> dict:
     """Build the HTML book into ``out`` (``out/index.html``) and ``out/report.pdf``.
 
     ``work`` holds the Sphinx sources and the single-page build used for the PDF.
@@ -444,13 +440,13 @@ def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, log
     t0 = time.perf_counter()
     src = work / "book-src"
     write_source(pages, src)
-    sphinx_build(src, out, "html", log)
+    sphinx_build(src, out, "html")
     _check_offline(out)
     info = {"html_s": time.perf_counter() - t0}
     if pdf:
         t1 = time.perf_counter()
         single = work / "book-single"
-        sphinx_build(src, single, "singlehtml", log)
+        sphinx_build(src, single, "singlehtml")
         info["pdf_pages"] = print_pdf(single / "index.html", out / "report.pdf")
         info["pdf_s"] = time.perf_counter() - t1
     shutil.rmtree(out / ".doctrees", ignore_errors=True)

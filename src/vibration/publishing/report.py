@@ -305,7 +305,7 @@ def chapter_parameters(ch: Chapter, values: dict) -> list:
     import ast
 
     from ..physics.paper import paper_defaults
-    from .book import Parameter, split_help
+    from .book import Parameter, differs, split_help
 
     paper = paper_defaults()
     out = []
@@ -315,16 +315,9 @@ def chapter_parameters(ch: Chapter, values: dict) -> list:
         except (ValueError, SyntaxError):
             default = info.get("default")
         meaning, unit = split_help(info.get("help", ""))
-        is_paper = name in paper and not _differs_num(default, paper[name])
+        is_paper = name in paper and not differs(default, paper[name])
         out.append(Parameter(name, values.get(name, default), default, meaning, unit, is_paper))
     return out
-
-
-def _differs_num(a, b) -> bool:
-    try:
-        return float(a) != float(b)
-    except (TypeError, ValueError):
-        return True
 
 
 def _plural(n: int, word: str) -> str:
@@ -378,7 +371,7 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
             for ch in chapters
         ]
         t1 = time.perf_counter()
-        info = build_book(pages, work / "report", work / "book", pdf=pdf, log=log)
+        info = build_book(pages, work / "report", work / "book", pdf=pdf)
         shutil.rmtree(work / "book", ignore_errors=True)
         pdf_text = f", PDF {_plural(info['pdf_pages'], 'page')}" if "pdf_pages" in info else ""
         log(f"book: built in {time.perf_counter() - t1:.1f} s{pdf_text}")
@@ -397,7 +390,7 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
         shutil.rmtree(work, ignore_errors=True)
 
 
-def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True, log=print) -> dict:
+def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True) -> dict:
     """Build the book from the committed notebooks as they are (their stored outputs), no kernel.
 
     For checking the publishing stack quickly (tests, previews); ``make report`` executes.
@@ -414,7 +407,7 @@ def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True, log=
         pages = [
             ChapterPage(ch.name, nbformat.read(ch.path, as_version=4), chapter_parameters(ch, {})) for ch in chapters
         ]
-        return build_book(pages, out, work, pdf=pdf, log=log)
+        return build_book(pages, out, work, pdf=pdf)
     finally:
         shutil.rmtree(work, ignore_errors=True)
 

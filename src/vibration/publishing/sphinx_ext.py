@@ -23,10 +23,7 @@ def _visit_math(self, node) -> None:
 
 
 def _visit_displaymath(self, node) -> None:
-    if node.get("nowrap"):
-        tex = node.astext()
-    else:
-        tex = node.astext()
+    tex = node.astext()
     label = node.get("label")
     number = node.get("number")
     self.body.append('<div class="math-wrapper docutils container">')
