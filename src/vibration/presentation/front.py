@@ -15,6 +15,7 @@ import numpy as np
 
 from ..physics.exact import exact_response, steady_state
 from ..physics.model import Oscillator, SineForce
+from ..physics.stability import poles
 from .style import figure, place_legend
 from .tables import Column, Table
 
@@ -55,13 +56,6 @@ class Headline:
         return self.x_res / self.x_ref
 
 
-def _largest_real_pole(m: float, c: float, k: float) -> float:
-    disc = c * c - 4 * m * k
-    if disc >= 0:
-        return (-c + math.sqrt(disc)) / (2 * m)
-    return -c / (2 * m)
-
-
 def headline(m, k, F0, t_end, omega_ref, omega_res, c_low, c_nominal, c_high, n_points: int = 5001) -> Headline:
     """Compute the front page's numbers for these parameters (SI units)."""
     nominal = Oscillator(m, c_nominal, k)
@@ -70,16 +64,14 @@ def headline(m, k, F0, t_end, omega_ref, omega_res, c_low, c_nominal, c_high, n_
     t = np.linspace(0.0, t_end, n_points)
     low = Oscillator(m, c_low, k)
     peak_low = float(np.max(np.abs(exact_response(low, SineForce(F0, omega_res), t).x)))
-    try:
-        bounded_low = steady_state(low, SineForce(F0, omega_res)).amplitude if c_low > 0 else math.inf
-    except Exception:  # undamped at exact resonance: no steady state
-        bounded_low = math.inf
+    # with c <= 0 the response has no bounded steady state
+    bounded_low = steady_state(low, SineForce(F0, omega_res)).amplitude if c_low > 0 else math.inf
     high = Oscillator(m, c_high, k)
     peak_high = float(np.max(np.abs(exact_response(high, SineForce(F0, omega_res), t).x)))
     return Headline(
         m, k, F0, t_end, omega_ref, omega_res, c_low, c_nominal, c_high,
         x_ref=ref.amplitude, x_res=res.amplitude, v_res=omega_res * res.amplitude,
-        peak_low=peak_low, growth_low=_largest_real_pole(m, c_low, k), bounded_low=bounded_low,
+        peak_low=peak_low, growth_low=max(s.real for s in poles(low)), bounded_low=bounded_low,
         peak_high=peak_high,
     )  # fmt: skip
 

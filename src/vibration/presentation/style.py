@@ -99,12 +99,9 @@ def place_legend(ax, outside: bool = False, **kwargs):
     return ax.legend(loc=best_loc, **kwargs)
 
 
-def _data_points_display(ax) -> np.ndarray:
+def _marker_points(ax) -> np.ndarray:
+    """Display coordinates of the collections' points (scatter markers); lines are densified separately."""
     pts = []
-    for line in ax.get_lines():
-        xy = np.column_stack(line.get_data(orig=False)).astype(float)
-        if xy.size:
-            pts.append(line.get_transform().transform(xy))
     for coll in ax.collections:
         offs = coll.get_offsets()
         if len(offs):
@@ -124,6 +121,7 @@ def legend_overlap(ax) -> float:
     fig: Figure = ax.figure
     fig.canvas.draw()
     box: Bbox = leg.get_window_extent()
+    ax_box = ax.get_window_extent()
     pts = []
     for line in ax.get_lines():
         x, y = (np.asarray(a, float) for a in line.get_data(orig=False))
@@ -134,12 +132,11 @@ def legend_overlap(ax) -> float:
         s = np.linspace(0, x.size - 1, max(2000, x.size))
         xs, ys = np.interp(s, np.arange(x.size), x), np.interp(s, np.arange(y.size), y)
         xy = line.get_transform().transform(np.column_stack([xs, ys]))
-        ax_box = ax.get_window_extent()
         inside_axes = (
             (xy[:, 0] >= ax_box.x0) & (xy[:, 0] <= ax_box.x1) & (xy[:, 1] >= ax_box.y0) & (xy[:, 1] <= ax_box.y1)
         )
         pts.append(xy[inside_axes & np.isfinite(xy).all(axis=1)])
-    other = _data_points_display(ax)
+    other = _marker_points(ax)
     if other.size:
         pts.append(other)
     if not pts:
