@@ -46,6 +46,7 @@ import numpy as np
 
 from .exact import exact_response
 from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
+from .stability import transmissibility
 
 __all__ = [
     "SPENCER_1997",
@@ -583,7 +584,9 @@ def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, ki:
 def passive_transmissibility(osc: Oscillator, omegas) -> np.ndarray:
     """Base-excitation transmissibility ``|X/Y| = |k + i c w| / |k - m w^2 + i c w|``, 1.
 
-    The absolute displacement of the mass over the base amplitude, in steady state.
+    The absolute displacement of the mass over the base amplitude, in steady state:
+    :func:`vibration.physics.stability.transmissibility`, for a scalar or 1-D ``omegas``,
+    always as an array.
 
     Examples
     --------
@@ -592,8 +595,7 @@ def passive_transmissibility(osc: Oscillator, omegas) -> np.ndarray:
     1.0
     """
     _check_osc(osc)
-    w = _omegas(omegas)
-    return np.abs(osc.k + 1j * osc.c * w) / np.abs(osc.k - osc.m * w * w + 1j * osc.c * w)
+    return np.asarray(transmissibility(osc, _omegas(omegas)))
 
 
 def skyhook_transmissibility(osc: Oscillator, c_sky: float, omegas) -> np.ndarray:
