@@ -446,6 +446,15 @@ def _hinf_numerical(mu: float, zp: float, f0: float, z0: float) -> tuple[float, 
     return float(best[0]), math.exp(float(best[1]))
 
 
+def _closed_form(method, zp: float) -> bool:
+    """Check an optimiser's ``method`` against ``zp``; True when the closed form applies."""
+    if method not in ("auto", "closed form", "numerical"):
+        raise ParameterError(f"method = {method!r} is not known: allowed 'auto', 'closed form', 'numerical'")
+    if method == "closed form" and zp != 0.0:
+        raise ParameterError(f"zeta_p = {zp!r}: the closed form needs an undamped primary, allowed zeta_p = 0")
+    return method == "closed form" or (method == "auto" and zp == 0.0)
+
+
 def hinf_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     """The H∞ optimum: (f, ζ_a) minimising the primary's largest magnification.
 
@@ -478,11 +487,7 @@ def hinf_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     """
     mu = _mu(mu)
     zp = _zeta("zeta_p", zeta_p, ZETA_P_OPT_MAX)
-    if method not in ("auto", "closed form", "numerical"):
-        raise ParameterError(f"method = {method!r} is not known: allowed 'auto', 'closed form', 'numerical'")
-    if method == "closed form" and zp != 0.0:
-        raise ParameterError(f"zeta_p = {zp!r}: the closed form needs an undamped primary, allowed zeta_p = 0")
-    if method == "closed form" or (method == "auto" and zp == 0.0):
+    if _closed_form(method, zp):
         f, za, peak = _hinf_closed(mu)
         return TMDTuning("H∞ closed form", mu, f, za, 0.0, peak, _peak(mu, f, za, 0.0)[1])
     f0, z0 = 1.0 / (1.0 + mu), math.sqrt(3.0 * mu / (8.0 * (1.0 + mu)))
@@ -522,13 +527,10 @@ def h2_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     """
     mu = _mu(mu)
     zp = _zeta("zeta_p", zeta_p, ZETA_P_OPT_MAX)
-    if method not in ("auto", "closed form", "numerical"):
-        raise ParameterError(f"method = {method!r} is not known: allowed 'auto', 'closed form', 'numerical'")
-    if method == "closed form" and zp != 0.0:
-        raise ParameterError(f"zeta_p = {zp!r}: the closed form needs an undamped primary, allowed zeta_p = 0")
+    closed = _closed_form(method, zp)
     f = math.sqrt(1.0 + mu / 2.0) / (1.0 + mu)
     za = math.sqrt(mu * (1.0 + 0.75 * mu) / (4.0 * (1.0 + mu) * (1.0 + mu / 2.0)))
-    if method == "closed form" or (method == "auto" and zp == 0.0):
+    if closed:
         return _record("H2 closed form", mu, f, za, 0.0)
 
     def cost(x):
