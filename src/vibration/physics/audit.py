@@ -410,35 +410,24 @@ def _evaluate(q: str, sid: str, runs: dict[str, _Run]):
             pk_e,
             f"Over [0, {_g(t_end)}] s the peak |v| is {_g(pk_e)} m/s exactly ({_g(pk_p)} m/s by RK45){bound}.",
         )
-    if q == "amplitude_ratio_resonance_reference":
-        ref = runs["reference"]
-        if not (run.has_steady and ref.has_steady) or ref.ss.amplitude == 0:
+    if q.startswith("amplitude_ratio_"):
+        other = runs[ALSO_USES[q][0]]
+        if not (run.has_steady and other.has_steady) or other.ss.amplitude == 0:
             return "", None, no_steady
-        r_e = ss.amplitude / ref.ss.amplitude
-        r_p = run.late(run.paper.x) / ref.late(ref.paper.x)
-        return (
-            r_p,
-            r_e,
-            (
-                f"The steady amplitudes are {_g(ss.amplitude)} m and {_g(ref.ss.amplitude)} m, "
+        r_e = ss.amplitude / other.ss.amplitude
+        r_p = run.late(run.paper.x) / other.late(other.paper.x)
+        if q == "amplitude_ratio_resonance_reference":
+            text = (
+                f"The steady amplitudes are {_g(ss.amplitude)} m and {_g(other.ss.amplitude)} m, "
                 f"a ratio of {_g(r_e, 3)}, set by the magnifications {_g(ss.magnification, 3)} "
-                f"and {_g(ref.ss.magnification, 3)}."
-            ),
-        )
-    if q == "amplitude_ratio_high_nominal":
-        nom = runs["damping_nominal"]
-        if not (run.has_steady and nom.has_steady) or nom.ss.amplitude == 0:
-            return "", None, no_steady
-        r_e = ss.amplitude / nom.ss.amplitude
-        r_p = run.late(run.paper.x) / nom.late(nom.paper.x)
-        return (
-            r_p,
-            r_e,
-            (
-                f"x_ss falls from {_g(nom.ss.amplitude)} m to {_g(ss.amplitude)} m (ratio {_g(r_e, 3)}), still "
+                f"and {_g(other.ss.magnification, 3)}."
+            )
+        else:
+            text = (
+                f"x_ss falls from {_g(other.ss.amplitude)} m to {_g(ss.amplitude)} m (ratio {_g(r_e, 3)}), still "
                 f"{_g(ss.magnification, 2)} times the static deflection F0/k = {_g(ss.static_deflection)} m."
-            ),
-        )
+            )
+        return r_p, r_e, text
     if q == "stability":
         late = _growing(run.paper.t[run.late_mask], run.paper.x[run.late_mask])
         paper = "growing at t_end" if late == "yes" else "steady at t_end"
@@ -515,31 +504,24 @@ def readings(q: str, sid: str, runs: dict[str, _Run]) -> list[tuple[str, object,
             ("2 × steady amplitude (peak-to-peak)", None if a is None else 2.0 * a, unit),
             ("peak-to-peak in the window", float(np.max(arr) - np.min(arr)), unit),
         ]
-    if q == "amplitude_ratio_resonance_reference":
-        ref = runs["reference"]
-        ok = run.has_steady and ref.has_steady and ref.ss.amplitude > 0
-        r = ss.amplitude / ref.ss.amplitude if ok else None
-        return [
+    if q.startswith("amplitude_ratio_"):
+        other = runs[ALSO_USES[q][0]]
+        ok = run.has_steady and other.has_steady and other.ss.amplitude > 0
+        r = ss.amplitude / other.ss.amplitude if ok else None
+        readings = [
             ("ratio of steady amplitudes", r, "1"),
             (
                 "ratio of window peaks of |x|",
-                float(np.max(np.abs(run.exact.x)) / np.max(np.abs(ref.exact.x))),
-                "1",
-            ),
-            ("magnification x_ss/(F0/k) at resonance", ss.magnification if ok else None, "1"),
-            ("2 x_ss at resonance / x_ss of reference", None if r is None else 2 * r, "1"),
-        ]
-    if q == "amplitude_ratio_high_nominal":
-        nom = runs["damping_nominal"]
-        ok = run.has_steady and nom.has_steady and nom.ss.amplitude > 0
-        return [
-            ("ratio of steady amplitudes", ss.amplitude / nom.ss.amplitude if ok else None, "1"),
-            (
-                "ratio of window peaks of |x|",
-                float(np.max(np.abs(run.exact.x)) / np.max(np.abs(nom.exact.x))),
+                float(np.max(np.abs(run.exact.x)) / np.max(np.abs(other.exact.x))),
                 "1",
             ),
         ]
+        if q == "amplitude_ratio_resonance_reference":
+            readings += [
+                ("magnification x_ss/(F0/k) at resonance", ss.magnification if ok else None, "1"),
+                ("2 x_ss at resonance / x_ss of reference", None if r is None else 2 * r, "1"),
+            ]
+        return readings
     if q == "stability":
         late = _growing(run.exact.t[run.late_mask], run.exact.x[run.late_mask])
         return [
