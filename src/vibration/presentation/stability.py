@@ -25,7 +25,7 @@ from matplotlib.colors import LogNorm
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FuncFormatter
 
-from ..physics.exact import exact_response
+from ..physics.exact import exact_response, steady_state
 from ..physics.model import Oscillator, SineForce, check_int, check_real
 from ..physics.stability import (
     DesignMetrics,
@@ -454,10 +454,6 @@ def growth_figure(st: StabilityStudy):
     return fig
 
 
-def _steady_amplitude(st: StabilityStudy, c: float, w: float) -> float:
-    return st.F0 / math.hypot(st.m * (st.omega_n - w) * (st.omega_n + w), c * w)
-
-
 def growth_table(st: StabilityStudy) -> Table:
     """Growth law, rate and the size reached at the end of the window, per case."""
     rows = []
@@ -477,7 +473,7 @@ def growth_table(st: StabilityStudy) -> Table:
             "env_end": float(g["env"][-1]),
         }
         if case == "bounded":
-            row["steady"] = _steady_amplitude(st, osc.c, force.omega)
+            row["steady"] = steady_state(osc, force).amplitude
         elif case == "linear":
             row["slope"] = st.F0 / (2.0 * st.m * st.omega_n)
         elif osc.c < 0.0:
@@ -505,7 +501,7 @@ def growth_sentence(st: StabilityStudy) -> str:
     """How the three cases compare at the end of their windows."""
     b, lin, ex = (st.growth[c] for c in ("bounded", "linear", "exponential"))
     ob = b["osc"]
-    amp = _steady_amplitude(st, ob.c, st.omega_res)
+    amp = steady_state(ob, b["force"]).amplitude
     text = (
         f"Over {st.t_growth:g} s, {st.bounded_source} forced at {st.omega_res:g} rad/s reaches at most "
         f"{fmt(float(np.max(np.abs(b['x']))), 3)} m and its envelope closes in on the steady amplitude "
