@@ -243,7 +243,6 @@ def comparison_table(cmp: Comparison, caption: str, name: str, reference: int = 
     """Cost, peak and RMS displacement and control effort of each controller on the same episodes."""
     rows = []
     for i, run in enumerate(cmp.runs):
-        d, se = cmp.paired_gain(reference, i) if i != reference else (0.0, 0.0)
         rows.append(
             {
                 "name": cmp.names[i],
