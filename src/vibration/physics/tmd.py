@@ -164,9 +164,7 @@ def tmd_magnification(mu, f, zeta_a, r, zeta_p=0.0) -> np.ndarray:
     """
     mu, f = _mu(mu), _f(f)
     za, zp = _zeta("zeta_a", zeta_a), _zeta("zeta_p", zeta_p)
-    r = _ratios(r)
-    num = f * f - r * r + 2j * za * f * r
-    den = (1.0 - r * r + 2j * zp * r) * num - mu * r * r * (f * f + 2j * za * f * r)
+    num, den = _factors(mu, f, za, zp, _ratios(r))
     with np.errstate(divide="ignore", invalid="ignore"):
         h = np.abs(num) / np.abs(den)
     return np.where(np.abs(den) == 0.0, np.inf, h)
@@ -203,10 +201,16 @@ def _peak(mu: float, f: float, za: float, zp: float) -> tuple[float, float]:
     return math.sqrt(float(g[i])), math.sqrt(s[i])
 
 
-def _h2(mu, f, za, zp, r):
-    """|H(r)|² in the factored form (no cancellation of expanded polynomials near a sharp peak)."""
+def _factors(mu, f, za, zp, r):
+    """Numerator and denominator of H(r) = X_p / (F0 / k_p), factored, complex, validated inputs."""
     num = f * f - r * r + 2j * za * f * r
     den = (1.0 - r * r + 2j * zp * r) * num - mu * r * r * (f * f + 2j * za * f * r)
+    return num, den
+
+
+def _h2(mu, f, za, zp, r):
+    """|H(r)|² in the factored form (no cancellation of expanded polynomials near a sharp peak)."""
+    num, den = _factors(mu, f, za, zp, r)
     return (num.real**2 + num.imag**2) / (den.real**2 + den.imag**2)
 
 
