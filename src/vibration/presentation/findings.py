@@ -93,25 +93,14 @@ def scenarios_from(
     }
 
 
-def scenario_findings(sc: Scenario, n_points: int = DEFAULT_N_POINTS, paper=None) -> dict[str, object]:
+def _findings(sc: Scenario, paper: Response, exact: Response) -> dict[str, object]:
     """The findings of one scenario: exact quantities and the paper's method side by side.
-
-    ``paper`` is the scenario's :func:`simulate` result if the caller already has
-    it; otherwise it is computed here.
 
     Returns a dict with ``scenario``, ``omega_rad_s``, ``c_Ns_m``, ``omega_n_rad_s``,
     ``zeta``, ``regime``, ``x_ss_m``, ``v_ss_m_s``, ``peak_x_rk45_m``, ``peak_x_exact_m``,
     ``peak_v_rk45_m_s``, ``peak_v_exact_m_s``, ``max_err_x_rk45_m``, ``tau_s``,
     ``t_settle_2pct_s`` (``inf`` when c <= 0) and ``steady_in_window`` (bool).
     """
-    osc, force = sc.oscillator, sc.force
-    if paper is None:
-        paper = simulate(osc, force, sc.t_end, n_points, sc.x0, sc.v0)
-    exact = exact_response(osc, force, paper.t, sc.x0, sc.v0)
-    return _findings(sc, paper, exact)
-
-
-def _findings(sc: Scenario, paper: Response, exact: Response) -> dict[str, object]:
     osc, force = sc.oscillator, sc.force
     ss = steady_state(osc, force)
     ts = settling_time(osc, force)
@@ -142,7 +131,7 @@ class Reproduction:
     scenarios: dict  # scenario_id -> Scenario
     paper: dict  # scenario_id -> Response of RK45 at SciPy's defaults (s, m, m/s)
     exact: dict  # scenario_id -> Response of the closed form on the same times
-    findings: list  # one dict per scenario (scenario_findings), in scenario order
+    findings: list  # one dict per scenario (see _findings), in scenario order
 
     @property
     def by_id(self) -> dict:
