@@ -44,6 +44,7 @@ from ..physics.control import (
 )
 from ..physics.exact import exact_response, steady_state
 from ..physics.model import N_POINTS_MAX, Oscillator, SineForce, check_int, check_real
+from .static_page import _asset
 from .style import figure, place_legend
 from .tables import Column, Table
 
@@ -960,12 +961,6 @@ def summary(a: ActiveStudy, s: SemiActiveStudy, sh: ShapingStudy) -> str:
 
 
 _PANEL_COUNTER = itertools.count(1)
-
-
-def _asset(name: str) -> str:
-    from importlib.resources import files
-
-    return files("vibration.presentation").joinpath("assets", name).read_text(encoding="utf-8")
 
 
 def control_panel_html(

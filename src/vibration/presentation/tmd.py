@@ -16,7 +16,6 @@ import itertools
 import json
 import math
 from dataclasses import dataclass, field
-from importlib.resources import files
 
 import numpy as np
 
@@ -40,6 +39,7 @@ from ..physics.tmd import (
     tmd_peak,
     tmd_system,
 )
+from .static_page import _asset
 from .style import figure, place_legend
 from .tables import Column, Missing, Table
 
@@ -703,10 +703,6 @@ ZETA_P_RANGE = (0.0, 0.3)
 R_RANGE = (0.4, 1.6)
 _SLIDER_RULES = (("dh", "Den Hartog"), ("hinf", "H∞ (Nishihara–Asami)"), ("h2", "H2 (Warburton)"))
 _counter = itertools.count(1)
-
-
-def _asset(name: str) -> str:
-    return files("vibration.presentation").joinpath("assets", name).read_text(encoding="utf-8")
 
 
 def _slider_values(mu, f, zeta_a, zeta_p) -> tuple[float, float, float, float]:
