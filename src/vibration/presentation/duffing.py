@@ -39,7 +39,8 @@ from ..physics.duffing import (
     poincare_section,
     response_curve,
 )
-from ..physics.model import ParameterError, check_int, check_real
+from ..physics.exact import exact_response
+from ..physics.model import Oscillator, ParameterError, SineForce, check_int, check_real
 from .style import figure, place_legend
 from .tables import Column, Missing, Table
 
@@ -201,7 +202,7 @@ def duffing_study(
     hard = cases[0].duffing
     lin = Duffing(m, c, k, 0.0)
     t = np.linspace(0.0, t_end, 2001)
-    x_lin, _ = duffing_response(lin, F0, omega_res, t, sine=True)
+    x_lin = exact_response(Oscillator(m, c, k), SineForce(F0, omega_res), t).x  # Part I's closed form
     x_duf, _ = duffing_response(hard, F0, omega_res, t, sine=True)
     history = []
     targets = [("the paper's ω", omega_res)]
