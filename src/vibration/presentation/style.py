@@ -54,7 +54,8 @@ RC = {
 
 
 def use() -> None:
-    """Apply the report style to matplotlib's global settings."""
+    """Apply the report style: matplotlib's defaults, then :data:`RC` (nothing leaks in from an earlier style)."""
+    mpl.rcdefaults()
     mpl.rcParams.update(RC)
 
 
