@@ -229,22 +229,6 @@ def reproduction_summary(rep: Reproduction) -> str:
     return "\n".join("- " + b for b in bullets)
 
 
-def versions_line() -> str:
-    """Python and library versions, one line."""
-    import platform
-
-    import matplotlib
-    import numpy
-    import scipy
-
-    from .. import __version__
-
-    return (
-        f"python {platform.python_version()}, numpy {numpy.__version__}, scipy {scipy.__version__}, "
-        f"matplotlib {matplotlib.__version__}, vibration {__version__}"
-    )
-
-
 def explorer_start(c: float) -> tuple[float, str]:
     """The damping the sliders start at (N s/m) and a sentence saying why, for a chapter's ``c``.
 
