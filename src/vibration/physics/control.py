@@ -46,7 +46,7 @@ import numpy as np
 
 from .exact import exact_response
 from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
-from .stability import transmissibility
+from .stability import _check_osc, transmissibility
 
 __all__ = [
     "SPENCER_1997",
@@ -81,12 +81,6 @@ __all__ = [
 
 ANTI_WINDUP = ("none", "clamping", "back-calculation")
 SEMI_ACTIVE_LAWS = ("passive", "skyhook", "on-off", "clipped", "mr")
-
-
-def _check_osc(osc) -> Oscillator:
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
-    return osc
 
 
 def _omegas(omegas, name: str = "omegas") -> np.ndarray:
