@@ -17,7 +17,6 @@ import itertools
 import json
 import math
 from dataclasses import dataclass, field
-from importlib.resources import files
 
 import numpy as np
 
@@ -41,6 +40,7 @@ from ..physics.duffing import (
 )
 from ..physics.exact import exact_response
 from ..physics.model import Oscillator, ParameterError, SineForce, check_int, check_real
+from .static_page import _asset
 from .style import figure, place_legend
 from .tables import Column, Missing, Table
 
@@ -681,10 +681,6 @@ def lyapunov_sentence(study: DuffingStudy) -> str:
 
 
 _counter = itertools.count(1)
-
-
-def _asset(name: str) -> str:
-    return files("vibration.presentation").joinpath("assets", name).read_text(encoding="utf-8")
 
 
 def _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max) -> dict:

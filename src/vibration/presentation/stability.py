@@ -18,7 +18,6 @@ import itertools
 import json
 import math
 from dataclasses import dataclass, field
-from importlib.resources import files
 
 import numpy as np
 from matplotlib.colors import LogNorm
@@ -45,6 +44,7 @@ from ..physics.stability import (
     white_noise_variance,
     white_noise_velocity_variance,
 )
+from .static_page import _asset
 from .style import figure, place_legend
 from .tables import Column, Missing, Table, fmt
 
@@ -1208,10 +1208,6 @@ ZETA_MIN, ZETA_MAX = 0.005, 5.0
 #: Positions of the logarithmic slider.
 ZETA_STEPS = 600
 _counter = itertools.count(1)
-
-
-def _asset(name: str) -> str:
-    return files("vibration.presentation").joinpath("assets", name).read_text(encoding="utf-8")
 
 
 def stability_panel_html(
