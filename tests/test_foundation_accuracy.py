@@ -30,7 +30,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from vibration import Oscillator, SineForce, exact_response, peak_displacement_map
+from vibration import Oscillator, ParameterError, SineForce, exact_response, peak_displacement_map
 from vibration.physics import exact as exact_module
 
 EPS = float(np.finfo(float).eps)
@@ -236,3 +236,29 @@ def test_design_map_uses_the_block_path_and_matches_exact_response():
         for j, w in enumerate(omegas):
             ref = np.max(np.abs(pointwise_path(Oscillator(1.0, c, 20.0), SineForce(5.0, w), t).x))
             assert pk[i, j] == pytest.approx(ref, rel=1e-12)
+
+
+@pytest.mark.parametrize("n", [64, 65, 66, 82, 4097, 5000, 5001, 5002])
+@pytest.mark.parametrize(("m", "c", "k", "F0", "w"), REGIMES)
+def test_block_sizes_and_grids_not_from_zero(n, m, c, k, F0, w):
+    """Block boundaries for every remainder of n / B, grids from t0 > 0 and strided views."""
+    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    base = np.linspace(0.0, 20.0, 2 * n - 1)
+    for t in (np.linspace(0.0, 20.0, n), np.linspace(0.05, 20.0, n), np.linspace(3.0, 20.0, n), base[::2]):
+        assert exact_module._uniform(t) is not None
+        fast, slow = exact_response(osc, force, t, 0.3, -0.7), pointwise_path(osc, force, t, 0.3, -0.7)
+        assert np.max(np.abs(fast.x - slow.x)) <= 1e-13 * np.max(np.abs(slow.x))
+        assert np.max(np.abs(fast.v - slow.v)) <= 1e-13 * np.max(np.abs(slow.v))
+
+
+def test_block_path_near_the_float_range():
+    """A response growing to 1e285 m on a uniform grid matches the pointwise path; beyond the range it is refused."""
+    osc, force = Oscillator(1.0, -60.0, 20.0), SineForce(5.0, 3.0)
+    t = np.linspace(0.0, 23.0, 5001)  # exp(59.66 * 23) = 1e596 overflows; the end of the window is refused
+    with pytest.raises(ParameterError, match=r"t = .* s gives a response beyond the float range"):
+        exact_response(osc, force, t)
+    t = np.linspace(0.0, 11.0, 5001)  # x reaches about 1e285: finite on both paths
+    fast, slow = exact_response(osc, force, t), pointwise_path(osc, force, t)
+    growth = (60.0 + math.sqrt(60.0**2 - 4.0 * 20.0)) / 2.0 * 11.0  # s_fast t_end, the exponent's size
+    assert np.all(np.isfinite(fast.x))
+    assert np.max(np.abs(fast.x - slow.x)) <= 8 * EPS * (1.0 + growth) * np.max(np.abs(slow.x))

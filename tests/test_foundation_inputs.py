@@ -66,6 +66,12 @@ def test_settling_and_energy_refuse_a_non_force(bad):
         energy_balance(OSC, bad, exact_response(OSC, FORCE, np.linspace(0.0, 1.0, 11)))
 
 
+@pytest.mark.parametrize("tol", [0.0, -0.02, 2.2e-309, 1e-13, 1.0, 5.0, math.nan])
+def test_settling_time_refuses_a_tolerance_outside_its_range(tol):
+    with pytest.raises(ParameterError, match=r"tol = .* allowed tol >= 1e-12, tol <= 0.999"):
+        settling_time(OSC, FORCE, tol)
+
+
 def test_energy_balance_refuses_bad_responses(raises_parameter_error):
     with raises_parameter_error("resp", "x", "Response"):
         energy_balance(OSC, FORCE, "x")

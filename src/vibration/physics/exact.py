@@ -39,12 +39,15 @@ however short the time.
 Cost per sample. On a uniform increasing grid (``numpy.linspace``, what every
 chapter and slider uses) every exponential ``exp(s t)`` is a product
 ``exp(s a) exp(s d)`` of about sqrt(n) anchors and sqrt(n) offsets, each
-computed directly (no recurrence, so no error growth), and x and v come out
-of one small matrix product: a few ``np.exp`` over the grid in all (see
-``make bench``). On arbitrary times the pointwise path evaluates five
-transcendental functions per sample (``exp``, ``cos``/``sin`` of ``wd t`` and
-of ``omega t``) for an underdamped oscillator, three more near undamped
-resonance, four to six with real roots.
+computed directly (no recurrence, so no error growth). A compiled kernel
+(numba, :mod:`._exact_kernels`) checks that the grid is uniform, evaluates the
+2 sqrt(n) anchors and offsets, and forms x and v with a few multiply-adds per
+sample: about 1.5 times the cost of one ``np.exp`` over the grid on the
+development machine, Python's per-call overhead included (see ``make bench``).
+On arbitrary times the pointwise path evaluates five transcendental functions
+per sample (``exp``, ``cos``/``sin`` of ``wd t`` and of ``omega t``) for an
+underdamped oscillator, three more near undamped resonance, four to six with
+real roots.
 """
 
 from __future__ import annotations
@@ -280,7 +283,13 @@ SERIES_RHO = 1.0
 #: Smallest number of samples for which a uniform grid takes the block path.
 UNIFORM_MIN = 64
 
-_EPS = float(np.finfo(float).eps)
+
+@functools.cache
+def _compiled():
+    """The compiled kernels (:mod:`vibration.physics._exact_kernels`); numba is imported on first use."""
+    from . import _exact_kernels
+
+    return _exact_kernels
 
 
 def _uniform(t: np.ndarray) -> float | None:
@@ -289,18 +298,10 @@ def _uniform(t: np.ndarray) -> float | None:
     Uniform means ``|t[n] - (t[0] + n h)| <= 4 eps t[-1]`` for every n, which
     ``numpy.linspace`` meets (it deviates by at most an ulp or two).
     """
-    n = t.size
-    if t.ndim != 1 or n < UNIFORM_MIN:
+    if t.ndim != 1 or t.size < UNIFORM_MIN:
         return None
-    t0, t1 = float(t[0]), float(t[-1])
-    if not (t0 >= 0.0 and t1 > t0):
-        return None
-    h = (t1 - t0) / (n - 1)
-    r = _arange(n) * h
-    r += t0
-    r -= t
-    np.abs(r, out=r)
-    return h if float(r.max()) <= 4.0 * _EPS * t1 else None
+    h = _compiled().uniform_step(t, _arange(t.size))
+    return h if h > 0.0 else None
 
 
 @functools.lru_cache(maxsize=8)
@@ -308,65 +309,6 @@ def _arange(n: int) -> np.ndarray:
     r = np.arange(n, dtype=float)
     r.flags.writeable = False
     return r
-
-
-def _series(ro: _Roots, omega: float, t: np.ndarray, step: float | None = None) -> np.ndarray:
-    """``E[i omega, s1, s2](t)`` from its Taylor series, for ``R |t| <= SERIES_RHO``.
-
-    ``E = sum_k h_k t^(k+2) / (k+2)!`` with ``h_k`` the complete homogeneous
-    symmetric polynomial of degree k in the three nodes, from
-    ``p_k = -2 sigma p_(k-1) - wn2 p_(k-2)`` (the two roots, real) and
-    ``h_k = i omega h_(k-1) + p_k``, the nodes scaled by ``s`` (``step`` when
-    ``t = 0, step, 2 step, ...``, else ``max|t|``) so nothing overflows:
-    ``E = t^2 sum_k h_k(s nodes) (t/s)^k / (k+2)!``. ``Re E = t^2/2 + ...`` and
-    ``Im E = omega t^3/6 + ...`` are both led by exact terms. Returns
-    ``(Re E, Im E)`` as a (2, len(t)) array, s^2.
-    """
-    tmax = float(np.abs(t).max())
-    if tmax == 0.0:
-        return np.zeros((2, t.size))
-    s = step if step is not None else tmax
-    rho = max(omega, ro.radius) * tmax
-    # term k is at most rho^k / (2 k!) of t^2 (and of omega t^3 / 6 for the imaginary
-    # part, one power less): stop once rho^(k-1) / (k-1)! < 1e-18
-    n_terms, term = 1, 1.0
-    while term > 1e-18 and n_terms < 60:
-        term *= rho / n_terms
-        n_terms += 1
-    n_terms += 2
-    s2, wn2, w = -2.0 * ro.sigma * s, ro.wn2 * s * s, omega * s
-    hr, hi = [1.0], [0.0]
-    p_prev, p = 0.0, 1.0  # p_(k-1), p_k for k = 0
-    for _ in range(1, n_terms):
-        p_prev, p = p, s2 * p - wn2 * p_prev
-        hr.append(p - w * hi[-1])
-        hi.append(w * hr[-2])
-    coef = np.array((hr, hi))  # (2, K)
-    if step is not None:
-        out = coef @ _powers(t.size, n_terms)
-    else:
-        f = np.multiply.outer(_inverse(n_terms), t / s)  # (t/s) / (k+2), k = 1..K-1
-        np.cumprod(f, axis=0, out=f)  # (t/s)^k 2 / (k+2)!
-        out = coef[:, 1:] @ f
-        out += coef[:, :1]
-        out *= 0.5
-    out *= t * t
-    return out  # Re E, Im E
-
-
-@functools.lru_cache(maxsize=64)
-def _powers(m: int, n_terms: int) -> np.ndarray:
-    """``i^k / (k+2)!`` for k < n_terms (rows) and i < m (columns)."""
-    k = np.arange(n_terms, dtype=float)
-    fact = np.cumprod(np.arange(1.0, n_terms + 3.0))[k.astype(int) + 1]  # (k+2)!
-    out = np.power.outer(np.arange(m, dtype=float), k).T / fact[:, None]
-    out.flags.writeable = False
-    return out
-
-
-@functools.lru_cache(maxsize=64)
-def _inverse(n_terms: int) -> np.ndarray:
-    return 1.0 / np.arange(3.0, n_terms + 2.0)
 
 
 def _grid_exp(s, t: np.ndarray, step: float | None) -> np.ndarray:
@@ -387,7 +329,7 @@ def _grid_exp(s, t: np.ndarray, step: float | None) -> np.ndarray:
 
 
 def _forced_and_free(ro: _Roots, osc: Oscillator, force: SineForce, tmax: float, x0: float, v0: float):
-    """Decide the form of the forced response; return ``(kind, consts)`` for :func:`_assemble`."""
+    """Decide the form of the forced response; return ``(kind, consts)`` for :func:`_pack` and :func:`_pointwise`."""
     w, F0 = force.omega, force.F0
     if F0 == 0.0 or w == 0.0:
         return "free", {"x0": x0, "v0": v0}
@@ -471,85 +413,13 @@ def _pointwise(ro: _Roots, w: float, kind: str, c: dict, t: np.ndarray) -> np.nd
     return out
 
 
-def _assemble(ro: _Roots, w: float, kind: str, c: dict, anchors: np.ndarray, offsets: np.ndarray):
-    """``x, v`` on ``anchors (+) offsets``, shape (2, J, B), as one matrix product.
-
-    Every term of x and v is ``Im(C(a) F(d))`` with ``t = a + d``: ``exp(i w t) =
-    exp(i w a) exp(i w d)``, ``exp(s t) = exp(s a) exp(s d)`` and, with real
-    roots or a double root, ``g(a + d) = E(a) g(d) + g(a) e(d)`` (both terms of
-    the sign of g when ``a, d >= 0``, so nothing cancels). With ``C`` as a
-    (2J, K) complex and ``F`` as a (B, K) complex array, ``Im(C F^T)`` is the
-    real product ``[Re C, Im C] @ [Im F, Re F]^T``. With ``offsets = [0]`` this is
-    the pointwise formula on arbitrary times.
-    """
-    wn2, a, sig = ro.wn2, ro.a, ro.sigma
-    x0, v0 = c["x0"], c["v0"]
-    bx, bv = v0 + a * x0, -(a * v0 + wn2 * x0)  # coefficients of g in x and v
-    cols: list = []  # (offset function, x coefficient, v coefficient), complex
-    gx = c.get("gx", 0.0)  # g terms of the near-resonance form
-    gv = c.get("gv", 0.0)
-    if ro.kind == "osc":
-        s1 = complex(-sig, ro.wd)
-        za = np.exp(s1 * anchors)
-        # x0 kc + bx g = Re(x0 Z) + (bx / wd) Im(Z) = Im((i x0 + bx / wd) Z)
-        cols.append((np.exp(s1 * offsets), (1j * x0 + (bx + gx) / ro.wd) * za, (1j * v0 + (bv + gv) / ro.wd) * za))
-    else:
-        A, R = _basis(ro, anchors), _basis(ro, offsets)
-        if ro.kind == "critical":
-            p, q, ea = "e", "e", A["e"]
-        else:
-            p, q, ea = "es", "ef", A["ef"]
-        # x0 P + bx g with P(a + d) = P(a) P(d), g(a + d) = ea g(d) + g(a) eo(d)
-        px, pv = 1j * x0 * A[p], 1j * v0 * A[q]
-        gxa, gva = 1j * (bx + gx) * A["g"], 1j * (bv + gv) * A["g"]
-        if p == q:
-            cols.append((R[p], px + gxa, pv + gva))
-        else:
-            cols.append((R[p], px + gxa, gva))
-            cols.append((R[q], 0.0, pv))
-        cols.append((R["g"], 1j * (bx + gx) * ea, 1j * (bv + gv) * ea))
-    if kind != "free":
-        pa, po = np.exp(1j * w * anchors), np.exp(1j * w * offsets)
-        if kind == "steady":
-            h = c["H"]
-            cols.append((po, h * pa, (1j * w * h) * pa))
-        else:
-            s1 = c["s1"]
-            za = np.exp(s1 * anchors)
-            qa, qb = _qn(c, anchors)
-            qo, qi = _qn(c, offsets)
-            c1 = pa * (qa + 1j * qb)  # PQ(a + d) = c1 P(d) + za P(d) Q(d)
-            mx, mv = c["mx"], 1j * c["mv"]  # v = Re(mv PQ) = Im(i mv PQ)
-            cols.append((po, mx * c1, mv * c1))
-            cols.append((po * (qo + 1j * qi), mx * za, mv * za))
-    J, B, K = anchors.size, offsets.size, len(cols)
-    C = np.empty((2, J, K), dtype=complex)
-    F = np.empty((B, K), dtype=complex)
-    for k, (f, cx, cv) in enumerate(cols):
-        F[:, k], C[0, :, k], C[1, :, k] = f, cx, cv
-    Cf = C.view(float).reshape(2 * J, 2 * K)  # [Re C, Im C] per column
-    Ff = F.view(float).reshape(B, K, 2)[:, :, ::-1].reshape(B, 2 * K)  # [Im F, Re F] per column
-    return (Cf @ Ff.T).reshape(2, J, B)
-
-
-def _evaluate(ro: _Roots, w: float, kind: str, c: dict, flat: np.ndarray, step: float | None) -> np.ndarray:
-    """``x, v`` at ``flat`` as a (2, n) array: blocks of about sqrt(n) on a uniform grid, else pointwise."""
-    n = flat.size
-    if step is None:
-        return _pointwise(ro, w, kind, c, flat)
-    B = math.isqrt(n - 1) + 1
-    anchors = flat[::B]
-    offsets = _arange(B) * step
-    return _assemble(ro, w, kind, c, anchors, offsets).reshape(2, anchors.size * B)[:, :n]
-
-
 def exact_response(osc: Oscillator, force: SineForce, t, x0: float = 0.0, v0: float = 0.0) -> Response:
     """Exact displacement and velocity at the times ``t``.
 
     On a uniform increasing grid from ``t >= 0`` (``numpy.linspace``, detected
     to within 4 ulps) ``exp(i omega t)`` and the decaying kernels are formed as
     products of their values at about sqrt(n) exact anchors and sqrt(n) exact
-    offsets (one matrix product), at rounding level; any other ``t`` is
+    offsets (a compiled kernel), at rounding level; any other ``t`` is
     evaluated pointwise. The first samples (``R |t| <= SERIES_RHO``) take the
     forced part from its Taylor series, so that x stays accurate relative to
     itself however short the time.
@@ -597,46 +467,68 @@ def exact_response(osc: Oscillator, force: SineForce, t, x0: float = 0.0, v0: fl
     return _response(osc, force, _times(t), x0, v0)
 
 
+# codes of the regimes in the compiled kernels' parameter vector
+OSC, CRITICAL, REAL = 0, 1, 2  # roots: -sigma +/- i wd, double root -sigma, two real roots
+FREE, STEADY, NEAR_FORM = 0, 1, 2  # forced part: none, steady state + transient, near-resonance form
+_ROOT_CODES = {"osc": OSC, "critical": CRITICAL, "real": REAL}
+_FORCED_CODES = {"free": FREE, "steady": STEADY, "near": NEAR_FORM}
+
+
+def _pack(ro: _Roots, osc: Oscillator, force: SineForce, kind: str, c: dict, x0: float, v0: float) -> np.ndarray:
+    """The parameter vector of the compiled kernels in :mod:`._exact_kernels`.
+
+    ``[roots code, forced code, sigma, wd, wn2, slow, fast, a, x0', v0', gx, gv, omega,
+    Re H, Im H, Re s1, Im s1, Re d, Im d, tiny, Re mx, Im mx, Re mv, Im mv, F0/m,
+    radius, x0, v0]``: ``x0', v0'`` and the rest are the constants of
+    :func:`_forced_and_free` (0 where a form has none), ``x0, v0`` the initial
+    state the series samples add their free response from.
+    """
+    h, s1, d, mx, mv = (c.get(key, 0j) for key in ("H", "s1", "d", "mx", "mv"))
+    return np.array(
+        [_ROOT_CODES[ro.kind], _FORCED_CODES[kind], ro.sigma, ro.wd, ro.wn2, ro.slow, ro.fast, ro.a,
+         c["x0"], c["v0"], c.get("gx", 0.0), c.get("gv", 0.0), force.omega,
+         h.real, h.imag, s1.real, s1.imag, d.real, d.imag, float(c.get("tiny", False)),
+         mx.real, mx.imag, mv.real, mv.imag, force.F0 / osc.m, ro.radius, x0, v0],
+    )  # fmt: skip
+
+
 def _response(osc: Oscillator, force: SineForce, tt: np.ndarray, x0: float, v0: float, blocks: bool = True):
     """:func:`exact_response` after validation; ``blocks=False`` forces the pointwise path."""
     flat = tt.reshape(-1)
+    n = flat.size
     ro = _roots(osc)
+    if blocks and n >= UNIFORM_MIN and 0.0 <= flat[0] < flat[-1]:
+        # a uniform grid is checked inside the compiled kernel; if it is one, t[-1] is max |t|
+        kind, consts = _forced_and_free(ro, osc, force, float(flat[-1]), x0, v0)
+        if kind == "free" and x0 == 0.0 and v0 == 0.0:
+            return Response(t=tt, x=np.zeros(tt.shape), v=np.zeros(tt.shape), method="exact")
+        out = np.empty((2, n))
+        status = _compiled().block(flat, _arange(n), _pack(ro, osc, force, kind, consts, x0, v0), out)
+        if status == 0:
+            return Response(t=tt, x=out[0].reshape(tt.shape), v=out[1].reshape(tt.shape), method="exact")
+        # 1: not uniform; 2: a value beyond the float range, which the pointwise path judges
     w = force.omega
-    step = _uniform(flat) if blocks else None
-    at = None if step is not None else np.abs(flat)
-    tmax = float(flat[-1]) if at is None else float(at.max())
-    kind, consts = _forced_and_free(ro, osc, force, tmax, x0, v0)
+    at = np.abs(flat)
+    kind, consts = _forced_and_free(ro, osc, force, float(at.max()), x0, v0)
     if kind == "free" and x0 == 0.0 and v0 == 0.0:
         return Response(t=tt, x=np.zeros(tt.shape), v=np.zeros(tt.shape), method="exact")
     with np.errstate(all="ignore"):
-        xv = _evaluate(ro, w, kind, consts, flat, step)
+        xv = _pointwise(ro, w, kind, consts, flat)
         if kind != "free":
             # first samples: forced part from rest by series, plus the free response
-            rho_t = SERIES_RHO / max(w, ro.radius)
-            if step is not None:
-                idx = slice(0, int(np.searchsorted(flat, rho_t, side="right")))
-                from_zero = step if flat[0] == 0.0 else None
-            else:
-                idx = np.flatnonzero((np.abs(flat) if at is None else at) <= rho_t)
-                from_zero = None
-            ts = flat[idx]
-            if ts.size:
-                e3 = _series(ro, w, ts, from_zero)
-                scale = force.F0 / osc.m
-                xs, vs = scale * e3[1], (scale * w) * e3[0]
+            idx = np.flatnonzero(at <= SERIES_RHO / max(w, ro.radius))
+            if idx.size:
+                ts = flat[idx]
+                xs = _compiled().series(_pack(ro, osc, force, kind, consts, x0, v0), ts)
                 if x0 != 0.0 or v0 != 0.0:
-                    fr = _pointwise(ro, w, "free", {"x0": x0, "v0": v0}, ts)
-                    xs, vs = xs + fr[0], vs + fr[1]
-                xv[0, idx], xv[1, idx] = xs, vs
-    ok = True if math.isfinite(xv.sum()) else np.isfinite(xv)
-    if ok is not True and not ok.all() and step is not None:
-        return _response(osc, force, tt, x0, v0, blocks=False)  # an anchor overflowed: judge pointwise
-    if ok is not True and not ok.all():
+                    xs += _pointwise(ro, w, "free", {"x0": x0, "v0": v0}, ts)
+                xv[:, idx] = xs
+    ok = np.isfinite(xv)
+    if not ok.all():
         bad = int(np.nonzero(~(ok[0] & ok[1]))[0][0])
         raise ParameterError(
             f"t = {float(flat[bad])!r} s gives a response beyond the float range (x = {float(xv[0, bad])!r} m, "
             f"v = {float(xv[1, bad])!r} m/s) for {osc}: allowed times at which |x| and |v| stay below "
             f"{np.finfo(float).max:.3g}"
         )
-    shape = tt.shape
-    return Response(t=tt, x=xv[0].reshape(shape), v=xv[1].reshape(shape), method="exact")
+    return Response(t=tt, x=xv[0].reshape(tt.shape), v=xv[1].reshape(tt.shape), method="exact")

@@ -251,6 +251,8 @@ def log_decrement(t, x) -> tuple[float, float]:
 def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float:
     """Time after which the transient stays within ``tol`` of the steady amplitude, s.
 
+    ``tol`` is a fraction of the steady amplitude, from 1e-12 to 0.999.
+
     The transient is the exact response from rest minus the steady state. For
     an underdamped oscillator its envelope ``R exp(-sigma t)`` is used (the
     usual definition); otherwise the transient itself, located by bracketing
@@ -262,7 +264,7 @@ def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float
     14.06
     """
     check_records(osc, force)
-    tol = check_real("tol", tol, low=0.0, low_open=True)
+    tol = check_real("tol", tol, low=1e-12, high=0.999)  # a fraction: below 1e-12 t_s is rounding noise
     if osc.c <= 0.0:
         return math.inf
     ss = steady_state(osc, force)

@@ -55,7 +55,7 @@ def bench_exact(quick: bool) -> None:
     The floor is one ``numpy.exp`` over the same grid: the least any closed form
     that evaluates an exponential per sample can cost. On a uniform grid
     ``exact_response`` forms its exponentials from about sqrt(n) anchors and
-    offsets (one matrix product), so it can come within a few floors.
+    offsets in a compiled kernel, so it can come within a few floors.
     """
     osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)
     t = np.linspace(0.0, 50.0, 5001)
