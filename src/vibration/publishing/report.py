@@ -19,13 +19,14 @@ from __future__ import annotations
 
 import argparse
 import math
+import multiprocessing
 import os
 import shutil
 import signal
 import sys
 import tempfile
 import time
-from concurrent.futures import ThreadPoolExecutor, as_completed
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -276,28 +277,48 @@ def kernel_name() -> str:
 #: Kernel arguments: log errors only, so the runner's output carries no kernel log lines
 #: (such as the warning that the kernel talks over TCP on the loopback interface).
 KERNEL_ARGS = ["--IPKernelApp.log_level=ERROR"]
-#: Longest a single cell may run, s: a lost kernel message becomes an error instead of a hang.
-CELL_TIMEOUT_S = 900
+#: Longest a single cell may run, s (the longest cell of the default run takes about 10 s):
+#: a kernel message that never arrives becomes a time-out instead of a hang.
+CELL_TIMEOUT_S = 300
+#: Runs of a chapter that timed out before the run gives up on it.
+ATTEMPTS = 2
 
 
 def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
+    """Execute one chapter; runs in its own process (one kernel client per process).
+
+    A chapter whose cell times out (a lost kernel message, which jupyter clients
+    sharing one process are prone to) is run once more with a fresh kernel.
+    """
+    import logging
+
     import papermill
 
+    for name in ("papermill", "traitlets", "nbclient"):
+        logging.getLogger(name).setLevel(logging.ERROR)
+    os.environ[TABLES_ENV] = str(work / "tables")  # the kernel inherits it (a forked worker may predate this run)
     start = time.perf_counter()
     params = {k: v for k, v in values.items() if k in ch.params}
     executed = work / "notebooks" / ch.path.name
-    papermill.execute_notebook(
-        str(ch.path),
-        str(executed),
-        parameters=params,
-        kernel_name=kernel,
-        cwd=str(ch.path.parent),
-        progress_bar=False,
-        log_output=False,
-        execution_timeout=CELL_TIMEOUT_S,
-        extra_arguments=KERNEL_ARGS,
-    )
-    return {"name": ch.name, "executed": executed, "elapsed_s": time.perf_counter() - start}
+    for attempt in range(1, ATTEMPTS + 1):
+        try:
+            papermill.execute_notebook(
+                str(ch.path),
+                str(executed),
+                parameters=params,
+                kernel_name=kernel,
+                cwd=str(ch.path.parent),
+                progress_bar=False,
+                log_output=False,
+                execution_timeout=CELL_TIMEOUT_S,
+                extra_arguments=KERNEL_ARGS,
+            )
+        except TimeoutError:
+            if attempt == ATTEMPTS:
+                raise
+        else:
+            break
+    return {"name": ch.name, "executed": executed, "elapsed_s": time.perf_counter() - start, "attempts": attempt}
 
 
 def chapter_parameters(ch: Chapter, values: dict) -> list:
@@ -346,7 +367,11 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
         total = len(chapters)
         t0 = time.perf_counter()
         results = {}
-        with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        # one process per chapter, forked from a server that has imported papermill once:
+        # jupyter clients sharing a process can lose a kernel message
+        ctx = multiprocessing.get_context("forkserver")
+        ctx.set_forkserver_preload(["papermill", __name__])
+        with ProcessPoolExecutor(max_workers=max(1, jobs), mp_context=ctx, max_tasks_per_child=1) as pool:
             futures = {pool.submit(_run_chapter, ch, values, work, kernel): ch for ch in chapters}
             for ch in chapters:
                 log(f"[start] {ch.name}")
@@ -359,7 +384,8 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
                         other.cancel()
                     raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
                 done = len(results)
-                log(f"[{done}/{total}] {ch.name} done in {results[ch.name]['elapsed_s']:.1f} s")
+                again = " (run twice: the first run timed out)" if results[ch.name]["attempts"] > 1 else ""
+                log(f"[{done}/{total}] {ch.name} done in {results[ch.name]['elapsed_s']:.1f} s{again}")
         t_run = time.perf_counter() - t0
         pages = [
             ChapterPage(
