@@ -161,6 +161,25 @@ def test_first_samples_of_a_window_pointwise(m, c, k, F0, w, x0, v0):
         assert np.max(pointwise(r.v, vr)) <= 5e-14
 
 
+@pytest.mark.parametrize(
+    ("m", "c", "k", "F0", "w", "bound"),
+    [
+        (1.0, 200.0, 20.0, 5.0, 3.0, 32),  # zeta 22: 3e4 eps before the near/steady split by sample
+        (1.0, 15.0, 20.0, 5.0, 1.0, 96),
+        (1.0, 50.0, 20.0, 5.0, 0.5, 600),  # zeta 5.6, forcing near the slow root: 2.4e4 eps before
+        (2.0, 40.0, 3.0, 1.0, 0.2, 600),
+        (1.0, 2000.0, 1.0, 5.0, 0.1, 1000),  # zeta 1000: 1e9 eps before
+    ],
+)
+def test_strongly_damped_short_windows_from_rest(m, c, k, F0, w, bound):
+    """Windows shorter than the slow time scale, from rest: x is far smaller than the steady amplitude |H|."""
+    for t in (np.geomspace(1e-6, 1.0, 40), np.linspace(0.0, 0.5, 101)[1:]):
+        r = exact_response(Oscillator(m, c, k), SineForce(F0, w), t)
+        xr, vr = modal(m, c, k, F0, w, t)
+        assert np.max(pointwise(r.x, xr)) <= bound * EPS
+        assert np.max(pointwise(r.v, vr)) <= 8 * EPS
+
+
 def test_short_window_at_exact_resonance_and_critical_damping():
     """Confluent cases (double root, exact resonance) against the 50-digit matrix exponential."""
     t = np.array([1e-5, 1e-3, 0.05])
@@ -262,3 +281,26 @@ def test_block_path_near_the_float_range():
     growth = (60.0 + math.sqrt(60.0**2 - 4.0 * 20.0)) / 2.0 * 11.0  # s_fast t_end, the exponent's size
     assert np.all(np.isfinite(fast.x))
     assert np.max(np.abs(fast.x - slow.x)) <= 8 * EPS * (1.0 + growth) * np.max(np.abs(slow.x))
+
+
+def test_grids_that_cross_the_near_steady_split():
+    """A uniform grid is evaluated in two stretches (near form, then steady split): one-sample stretches included."""
+    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)
+    ro = exact_module._roots(osc)
+    dist = min(abs(1j * force.omega - s) for s in ro.pair)
+    split = exact_module.NEAR_SPLIT / dist  # s
+    h = 0.01
+    grids = [
+        np.linspace(split - 0.5 * h, split - 0.5 * h + 100 * h, 101),  # one sample before the split
+        np.linspace(split - 100.5 * h, split - 0.5 * h, 101),  # none after
+        np.linspace(split - 99.5 * h, split + 0.5 * h, 101),  # one sample after
+        np.linspace(0.0, 3 * split, 5001),
+    ]
+    for t in grids:
+        assert exact_module._uniform(t) is not None
+        for x0, v0 in [(0.0, 0.0), (0.3, -0.7)]:
+            fast, slow = exact_response(osc, force, t, x0, v0), pointwise_path(osc, force, t, x0, v0)
+            assert np.max(np.abs(fast.x - slow.x)) <= 1e-13 * np.max(np.abs(slow.x))
+            assert np.max(np.abs(fast.v - slow.v)) <= 1e-13 * np.max(np.abs(slow.v))
+            xr, _ = modal(1.0, 0.5, 20.0, 5.0, 4.47, t[[0, 1, -2, -1]], x0, v0)
+            assert scaled(fast.x[[0, 1, -2, -1]], xr, np.max(np.abs(fast.x))) <= 64 * EPS

@@ -11,10 +11,11 @@ from __future__ import annotations
 
 import json
 import re
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
+
+from vibration.publishing.report import execute_notebooks
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = ROOT / "notebooks"
@@ -76,25 +77,11 @@ def markdown_outputs(nb: dict) -> list[str]:
 @pytest.fixture(scope="module")
 def executed(tmp_path_factory):
     """Execute every run of :data:`RUNS` once (3 kernels at a time); return {run: notebook dict}."""
-    import papermill
-
     folder = tmp_path_factory.mktemp("narrative_runs")
-
-    def run(key):
-        chapter, params = RUNS[key]
-        out = folder / f"{key}.ipynb"
-        papermill.execute_notebook(
-            str(NOTEBOOKS / f"{chapter}.ipynb"),
-            str(out),
-            parameters=params,
-            kernel_name="vibration",
-            progress_bar=False,
-            cwd=str(NOTEBOOKS),
-        )
-        return key, json.loads(out.read_text(encoding="utf-8"))
-
-    with ThreadPoolExecutor(max_workers=3) as pool:
-        return dict(pool.map(run, RUNS))
+    outs = {key: folder / f"{key}.ipynb" for key in RUNS}
+    # each in its own process, as the runner does (papermill's cwd is process-wide)
+    execute_notebooks([(NOTEBOOKS / f"{RUNS[key][0]}.ipynb", outs[key], RUNS[key][1]) for key in RUNS], jobs=3)
+    return {key: json.loads(out.read_text(encoding="utf-8")) for key, out in outs.items()}
 
 
 def _bullets(texts: list[str]) -> list[str]:

@@ -29,6 +29,7 @@ def no_kernel(monkeypatch):
         raise AssertionError("a kernel was started")
 
     monkeypatch.setattr(papermill, "execute_notebook", boom)
+    monkeypatch.setattr(report, "notebook_pool", boom)  # chapters run in other processes
 
 
 def test_selects_chapters_by_stem_number_and_name(chapters):

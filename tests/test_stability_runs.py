@@ -8,10 +8,11 @@ under a minute on two cores.
 from __future__ import annotations
 
 import re
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
+
+from vibration.publishing.report import execute_notebooks
 
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks" / "06_stability.ipynb"
 RUNS = {
@@ -23,29 +24,15 @@ RUNS = {
 FAST = {"n_paths": 20, "t_growth": 60.0}
 
 
-def _execute(key: str, tmp: Path) -> dict:
-    import papermill
-
-    out = tmp / f"run-{len(key)}-{abs(hash(key))}.ipynb"
-    papermill.execute_notebook(
-        str(NOTEBOOK),
-        str(out),
-        parameters={**RUNS[key], **FAST},
-        kernel_name="python3",
-        progress_bar=False,
-        cwd=str(NOTEBOOK.parent),
-    )
-    import nbformat
-
-    return nbformat.read(str(out), as_version=4)
-
-
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory):
+    import nbformat
+
     tmp = tmp_path_factory.mktemp("stability-runs")
-    with ThreadPoolExecutor(max_workers=len(RUNS)) as pool:
-        futures = {key: pool.submit(_execute, key, tmp) for key in RUNS}
-        return {key: f.result() for key, f in futures.items()}
+    outs = {key: tmp / f"run-{i}.ipynb" for i, key in enumerate(RUNS)}
+    # each in its own process, as the runner does (papermill's cwd is process-wide)
+    execute_notebooks([(NOTEBOOK, outs[key], {**RUNS[key], **FAST}) for key in RUNS], jobs=2, kernel="python3")
+    return {key: nbformat.read(str(out), as_version=4) for key, out in outs.items()}
 
 
 def _outputs(nb) -> tuple[dict[str, str], list[str]]:

@@ -138,8 +138,32 @@ def series(p, ts):  # pragma: no cover - compiled
 
 
 @numba.njit(cache=True)
-def block(t, ramp, p, out):  # pragma: no cover - compiled
-    """x, v on a uniform grid into ``out`` (2, n); returns 0, 1 (not uniform) or 2 (not finite).
+def block(t, ramp, forms, bounds, xo, vo):  # pragma: no cover - compiled
+    """x, v on a uniform grid into ``xo``, ``vo``; returns 0, 1 (not uniform) or 2 (not finite).
+
+    ``forms[f]`` (a parameter vector) serves the samples with ``bounds[f, 0] <= t <
+    bounds[f, 1]`` (the near-resonance form, then the steady-state split).
+    """
+    n = t.shape[0]
+    h = uniform_step(t, ramp)
+    if h < 0.0:
+        return 1
+    for f in range(forms.shape[0]):
+        a = np.searchsorted(t, bounds[f, 0])
+        b = np.searchsorted(t, bounds[f, 1])
+        if b > a:
+            _block_form(t[a:b], h, forms[f], xo[a:b], vo[a:b])
+    ok = True
+    big = np.finfo(np.float64).max
+    for i in range(n):  # no early exit: the loop vectorises
+        ok &= abs(xo[i]) <= big
+        ok &= abs(vo[i]) <= big
+    return 0 if ok else 2
+
+
+@numba.njit(cache=True)
+def _block_form(t, h, p, xo, vo):  # pragma: no cover - compiled
+    """x, v of one form on the uniform grid ``t`` (step ``h``, s) into ``xo``, ``vo``.
 
     With ``t = a + d`` (anchors ``a = t[j B]``, offsets ``d = b h``, ``B`` about
     sqrt(n)) every term of x and v is ``Im(C(a) F(d))``: ``exp(s t) = exp(s a)
@@ -150,9 +174,6 @@ def block(t, ramp, p, out):  # pragma: no cover - compiled
     take the forced part from :func:`series` plus the free response.
     """
     n = t.shape[0]
-    h = uniform_step(t, ramp)
-    if h < 0.0:
-        return 1
     kr, kf = int(p[0]), int(p[1])
     sigma, wd, wn2, slow, fast, a = p[2], p[3], p[4], p[5], p[6], p[7]
     x0, v0, gx, gv, w = p[8], p[9], p[10], p[11], p[12]
@@ -213,7 +234,6 @@ def block(t, ramp, p, out):  # pragma: no cover - compiled
             za = cmath.exp(s1 * ta)
             CX[j, nfree], CV[j, nfree] = mx * c1, mv * c1
             CX[j, nfree + 1], CV[j, nfree + 1] = mx * za, mv * za
-    xo, vo = out[0], out[1]
     for j in range(J):
         base = j * B
         nb = min(B, n - base)
@@ -243,11 +263,5 @@ def block(t, ramp, p, out):  # pragma: no cover - compiled
                 P, Q, g = _free_basis(kr, sigma, wd, slow, fast, t[i])
                 if kr == OSC:
                     g /= wd
-                out[0, i] = xs[0, i] + (x0o * P + ax * g)
-                out[1, i] = xs[1, i] + (v0o * Q + av * g)
-    ok = True
-    big = np.finfo(np.float64).max
-    for i in range(n):  # no early exit: the loop vectorises
-        ok &= abs(xo[i]) <= big
-        ok &= abs(vo[i]) <= big
-    return 0 if ok else 2
+                xo[i] = xs[0, i] + (x0o * P + ax * g)
+                vo[i] = xs[1, i] + (v0o * Q + av * g)

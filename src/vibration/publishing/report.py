@@ -284,11 +284,12 @@ CELL_TIMEOUT_S = 300
 ATTEMPTS = 2
 
 
-def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
-    """Execute one chapter; runs in its own process (one kernel client per process).
+def _execute(source: Path, output: Path, params: dict, kernel: str, tables: str | None) -> tuple[float, int]:
+    """Execute one notebook with papermill; runs in its own process. Returns (seconds, attempts).
 
-    A chapter whose cell times out (a lost kernel message, which jupyter clients
-    sharing one process are prone to) is run once more with a fresh kernel.
+    One process per notebook: jupyter clients sharing a process can lose a kernel
+    message, and papermill's ``cwd`` changes the working directory of the whole
+    process. A notebook whose cell times out is run once more with a fresh kernel.
     """
     import logging
 
@@ -296,18 +297,19 @@ def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
 
     for name in ("papermill", "traitlets", "nbclient"):
         logging.getLogger(name).setLevel(logging.ERROR)
-    os.environ[TABLES_ENV] = str(work / "tables")  # the kernel inherits it (a forked worker may predate this run)
+    if tables is None:  # the kernel inherits the environment (a forked worker may predate this run)
+        os.environ.pop(TABLES_ENV, None)
+    else:
+        os.environ[TABLES_ENV] = tables
     start = time.perf_counter()
-    params = {k: v for k, v in values.items() if k in ch.params}
-    executed = work / "notebooks" / ch.path.name
     for attempt in range(1, ATTEMPTS + 1):
         try:
             papermill.execute_notebook(
-                str(ch.path),
-                str(executed),
+                str(source),
+                str(output),
                 parameters=params,
                 kernel_name=kernel,
-                cwd=str(ch.path.parent),
+                cwd=str(source.parent),
                 progress_bar=False,
                 log_output=False,
                 execution_timeout=CELL_TIMEOUT_S,
@@ -318,7 +320,22 @@ def _run_chapter(ch: Chapter, values: dict, work: Path, kernel: str) -> dict:
                 raise
         else:
             break
-    return {"name": ch.name, "executed": executed, "elapsed_s": time.perf_counter() - start, "attempts": attempt}
+    return time.perf_counter() - start, attempt
+
+
+def notebook_pool(jobs: int = 2) -> ProcessPoolExecutor:
+    """A pool that runs each notebook in its own process, forked from a server that imported papermill once."""
+    ctx = multiprocessing.get_context("forkserver")
+    ctx.set_forkserver_preload(["papermill", __name__])
+    return ProcessPoolExecutor(max_workers=max(1, jobs), mp_context=ctx, max_tasks_per_child=1)
+
+
+def execute_notebooks(runs: list[tuple[Path, Path, dict]], jobs: int = 2, kernel: str | None = None) -> list[float]:
+    """Execute ``(source, output, parameters)`` runs with papermill, ``jobs`` at a time; seconds each, in order."""
+    kernel = kernel or kernel_name()
+    with notebook_pool(jobs) as pool:
+        futures = [pool.submit(_execute, Path(src), Path(out), dict(params), kernel, None) for src, out, params in runs]
+        return [f.result()[0] for f in futures]
 
 
 def chapter_parameters(ch: Chapter, values: dict) -> list:
@@ -362,30 +379,35 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
     try:
         for sub in ("notebooks", "report", "tables"):
             (work / sub).mkdir()
-        os.environ[TABLES_ENV] = str(work / "tables")
         kernel = kernel_name()
         total = len(chapters)
         t0 = time.perf_counter()
         results = {}
-        # one process per chapter, forked from a server that has imported papermill once:
-        # jupyter clients sharing a process can lose a kernel message
-        ctx = multiprocessing.get_context("forkserver")
-        ctx.set_forkserver_preload(["papermill", __name__])
-        with ProcessPoolExecutor(max_workers=max(1, jobs), mp_context=ctx, max_tasks_per_child=1) as pool:
-            futures = {pool.submit(_run_chapter, ch, values, work, kernel): ch for ch in chapters}
+        with notebook_pool(jobs) as pool:
+            futures = {
+                pool.submit(
+                    _execute,
+                    ch.path,
+                    work / "notebooks" / ch.path.name,
+                    {k: v for k, v in values.items() if k in ch.params},
+                    kernel,
+                    str(work / "tables"),
+                ): ch
+                for ch in chapters
+            }
             for ch in chapters:
                 log(f"[start] {ch.name}")
             for fut in as_completed(futures):
                 ch = futures[fut]
                 try:
-                    results[ch.name] = fut.result()
+                    elapsed, attempts = fut.result()
                 except Exception as exc:  # a chapter failed: report it, keep the old tree
                     for other in futures:
                         other.cancel()
                     raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
-                done = len(results)
-                again = " (run twice: the first run timed out)" if results[ch.name]["attempts"] > 1 else ""
-                log(f"[{done}/{total}] {ch.name} done in {results[ch.name]['elapsed_s']:.1f} s{again}")
+                results[ch.name] = {"executed": work / "notebooks" / ch.path.name, "elapsed_s": elapsed}
+                again = " (run twice: the first run timed out)" if attempts > 1 else ""
+                log(f"[{len(results)}/{total}] {ch.name} done in {elapsed:.1f} s{again}")
         t_run = time.perf_counter() - t0
         pages = [
             ChapterPage(
@@ -412,7 +434,6 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
         )
         return [{"name": p.name, "title": p.title, "elapsed_s": p.elapsed_s} for p in pages]
     finally:
-        os.environ.pop(TABLES_ENV, None)
         shutil.rmtree(work, ignore_errors=True)
 
 
