@@ -274,9 +274,11 @@ def kernel_name() -> str:
     return KERNEL if KERNEL in KernelSpecManager().find_kernel_specs() else "python3"
 
 
-#: Kernel arguments: log errors only, so the runner's output carries no kernel log lines
-#: (such as the warning that the kernel talks over TCP on the loopback interface).
-KERNEL_ARGS = ["--IPKernelApp.log_level=ERROR"]
+#: Kernel arguments: the runner's output carries no kernel log lines, such as the warning
+#: that the kernel talks over TCP on the loopback interface, or the "KeyboardInterrupt caught"
+#: an idle kernel logs at ERROR when its client interrupts it before every shutdown. A cell's
+#: error still reaches the runner through papermill.
+KERNEL_ARGS = ["--IPKernelApp.log_level=CRITICAL"]
 #: Longest a single cell may run, s (the longest cell of the default run takes about 10 s):
 #: a kernel message that never arrives becomes a time-out instead of a hang.
 CELL_TIMEOUT_S = 300
