@@ -499,11 +499,12 @@ def _pack(ro: _Roots, osc: Oscillator, force: SineForce, kind: str, c: dict, x0:
     :func:`_forced_and_free` (0 where a form has none), ``x0, v0`` the initial
     state the series samples add their free response from.
     """
-    h, s1, d, mx, mv = (c.get(key, 0j) for key in ("H", "s1", "d", "mx", "mv"))
+    get = c.get
+    h, s1, d, mx, mv = get("H", 0j), get("s1", 0j), get("d", 0j), get("mx", 0j), get("mv", 0j)
     return [
         _ROOT_CODES[ro.kind], _FORCED_CODES[kind], ro.sigma, ro.wd, ro.wn2, ro.slow, ro.fast, ro.a,
-        c["x0"], c["v0"], c.get("gx", 0.0), c.get("gv", 0.0), force.omega,
-        h.real, h.imag, s1.real, s1.imag, d.real, d.imag, float(c.get("tiny", False)),
+        c["x0"], c["v0"], get("gx", 0.0), get("gv", 0.0), force.omega,
+        h.real, h.imag, s1.real, s1.imag, d.real, d.imag, float(get("tiny", False)),
         mx.real, mx.imag, mv.real, mv.imag, force.F0 / osc.m, ro.radius, x0, v0,
     ]  # fmt: skip
 
@@ -513,19 +514,20 @@ def _response(osc: Oscillator, force: SineForce, tt: np.ndarray, x0: float, v0: 
     flat = tt.reshape(-1)
     n = flat.size
     ro = _roots(osc)
-    kernels = _compiled()
-    uniform = blocks and n >= UNIFORM_MIN and 0.0 <= flat[0] < flat[-1] and kernels.uniform_step(flat, _arange(n)) > 0.0
-    tmax = float(flat[-1]) if uniform else float(np.abs(flat).max())
-    forms = _forced_and_free(ro, osc, force, x0, v0, tmax)
-    if forms[0][0] == "free" and x0 == 0.0 and v0 == 0.0:
-        return Response(t=tt, x=np.zeros(tt.shape), v=np.zeros(tt.shape), method="exact")
-    if uniform:
+    if blocks and n >= UNIFORM_MIN and 0.0 <= flat[0] < flat[-1]:
+        # a uniform grid (the kernel checks, and returns 1 if it is not one): t[-1] is the largest |t|
+        forms = _forced_and_free(ro, osc, force, x0, v0, float(flat[-1]))
+        if forms[0][0] == "free" and x0 == 0.0 and v0 == 0.0:
+            return Response(t=tt, x=np.zeros(tt.shape), v=np.zeros(tt.shape), method="exact")
         xv = np.empty((2, n))
         p = np.array([_pack(ro, osc, force, kind, consts, x0, v0) for kind, consts, _, _ in forms])
         bounds = np.array([(lo, hi) for _, _, lo, hi in forms])
-        if kernels.block(flat, _arange(n), p, bounds, xv[0], xv[1]) == 0:
+        if _compiled().block(flat, _arange(n), p, bounds, xv[0], xv[1]) == 0:
             return Response(t=tt, x=xv[0], v=xv[1], method="exact")
-        # 2: a value beyond the float range, which the pointwise path judges
+        # 1: not a uniform grid; 2: a value beyond the float range, which the pointwise path judges
+    forms = _forced_and_free(ro, osc, force, x0, v0, float(np.abs(flat).max()))
+    if forms[0][0] == "free" and x0 == 0.0 and v0 == 0.0:
+        return Response(t=tt, x=np.zeros(tt.shape), v=np.zeros(tt.shape), method="exact")
     xv = _pointwise_forms(ro, osc, force, forms, flat, x0, v0)
     ok = np.isfinite(xv)
     if not ok.all():
