@@ -29,9 +29,12 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from vibration import Oscillator, ParameterError, SineForce, exact_response, peak_displacement_map
 from vibration.physics import exact as exact_module
+from vibration.physics.exact import UNIFORM_MIN
 
 EPS = float(np.finfo(float).eps)
 DPS = 50
@@ -304,3 +307,37 @@ def test_grids_that_cross_the_near_steady_split():
             assert np.max(np.abs(fast.v - slow.v)) <= 1e-13 * np.max(np.abs(slow.v))
             xr, _ = modal(1.0, 0.5, 20.0, 5.0, 4.47, t[[0, 1, -2, -1]], x0, v0)
             assert scaled(fast.x[[0, 1, -2, -1]], xr, np.max(np.abs(fast.x))) <= 64 * EPS
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    log_m=st.floats(-3, 3),
+    log_k=st.floats(-3, 3),
+    zeta=st.one_of(st.sampled_from([0.0, 1.0]), st.floats(-0.05, 3.0), st.floats(3.0, 300.0)),
+    ratio=st.one_of(st.just(1.0), st.floats(1e-10, 1e-1).map(lambda e: 1.0 + e), st.floats(0.01, 100.0)),
+    F0=st.sampled_from([0.0, 0.3, 5.0]),
+    x0=st.sampled_from([0.0, 0.3]),
+    v0=st.sampled_from([0.0, -0.7]),
+    n=st.integers(UNIFORM_MIN, 3000),
+    periods=st.floats(1e-4, 30.0),
+    start=st.sampled_from([0.0, 0.25, 1.0]),
+)
+def test_block_path_equals_pointwise_path_on_random_grids(log_m, log_k, zeta, ratio, F0, x0, v0, n, periods, start):
+    """Any regime, any forcing, any uniform grid: the compiled block path agrees with the pointwise path."""
+    m, k = 10.0**log_m, 10.0**log_k
+    wn = math.sqrt(k / m)
+    osc, force = Oscillator(m, 2.0 * zeta * math.sqrt(k * m), k), SineForce(F0, ratio * wn)
+    T = periods * 2.0 * math.pi / wn
+    t = np.linspace(start * T, start * T + T, n)
+    try:
+        slow = pointwise_path(osc, force, t, x0, v0)
+    except ParameterError:  # beyond the float range: the block path refuses too
+        with pytest.raises(ParameterError):
+            exact_response(osc, force, t, x0, v0)
+        return
+    fast = exact_response(osc, force, t, x0, v0)
+    ro = exact_module._roots(osc)
+    tol = 64 * EPS * (1.0 + max(force.omega, ro.radius, abs(ro.sigma)) * t[-1])  # the phase/exponent rounding
+    for got, ref in ((fast.x, slow.x), (fast.v, slow.v)):
+        scale = np.max(np.abs(ref))
+        assert np.max(np.abs(got - ref)) <= tol * scale
