@@ -155,3 +155,28 @@ def test_every_declared_parameter_has_a_range(chapters):
     for ch in chapters:  # every default is inside its own range
         values = report.check_parameters([ch], [(n, info["default"]) for n, info in ch.params.items()])
         assert set(values) == set(ch.params)
+
+
+@pytest.mark.slow
+def test_sigterm_stops_the_running_chapters_at_once(tmp_path):
+    """The runner ends within seconds of SIGTERM (it used to wait for every queued chapter) and leaves no output."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    out = tmp_path / "out"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "vibration.report", "07", "10", "11", "--out", str(out), "--no-pdf"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    time.sleep(8.0)  # both workers are inside a chapter (07 and 10 take 20 s each)
+    proc.send_signal(signal.SIGTERM)
+    start = time.perf_counter()
+    _, err = proc.communicate(timeout=60)
+    assert time.perf_counter() - start < 15.0
+    assert proc.returncode == 130
+    assert "interrupted: the previous output was left as it was" in err
+    assert not (out / "report").exists() and not list(out.glob(".report-*"))

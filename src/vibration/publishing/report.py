@@ -21,12 +21,12 @@ import argparse
 import math
 import multiprocessing
 import os
+import queue
 import shutil
 import signal
 import sys
 import tempfile
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -325,19 +325,24 @@ def _execute(source: Path, output: Path, params: dict, kernel: str, tables: str 
     return time.perf_counter() - start, attempt
 
 
-def notebook_pool(jobs: int = 2) -> ProcessPoolExecutor:
-    """A pool that runs each notebook in its own process, forked from a server that imported papermill once."""
+def notebook_pool(jobs: int = 2):
+    """A pool that runs each notebook in its own process, forked from a server that imported papermill once.
+
+    Leaving its ``with`` block terminates what still runs (a failed chapter, Ctrl-C, SIGTERM).
+    """
     ctx = multiprocessing.get_context("forkserver")
     ctx.set_forkserver_preload(["papermill", __name__])
-    return ProcessPoolExecutor(max_workers=max(1, jobs), mp_context=ctx, max_tasks_per_child=1)
+    return ctx.Pool(processes=max(1, jobs), maxtasksperchild=1)
 
 
 def execute_notebooks(runs: list[tuple[Path, Path, dict]], jobs: int = 2, kernel: str | None = None) -> list[float]:
     """Execute ``(source, output, parameters)`` runs with papermill, ``jobs`` at a time; seconds each, in order."""
     kernel = kernel or kernel_name()
     with notebook_pool(jobs) as pool:
-        futures = [pool.submit(_execute, Path(src), Path(out), dict(params), kernel, None) for src, out, params in runs]
-        return [f.result()[0] for f in futures]
+        pending = [
+            pool.apply_async(_execute, (Path(src), Path(out), dict(params), kernel, None)) for src, out, params in runs
+        ]
+        return [p.get()[0] for p in pending]
 
 
 def chapter_parameters(ch: Chapter, values: dict) -> list:
@@ -385,28 +390,22 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
         total = len(chapters)
         t0 = time.perf_counter()
         results = {}
+        finished: queue.Queue = queue.Queue()  # (chapter, (seconds, attempts) or None, exception or None)
         with notebook_pool(jobs) as pool:
-            futures = {
-                pool.submit(
-                    _execute,
-                    ch.path,
-                    work / "notebooks" / ch.path.name,
-                    {k: v for k, v in values.items() if k in ch.params},
-                    kernel,
-                    str(work / "tables"),
-                ): ch
-                for ch in chapters
-            }
             for ch in chapters:
+                args = (ch.path, work / "notebooks" / ch.path.name, {k: v for k, v in values.items() if k in ch.params})
+                pool.apply_async(
+                    _execute,
+                    (*args, kernel, str(work / "tables")),
+                    callback=lambda res, ch=ch: finished.put((ch, res, None)),
+                    error_callback=lambda exc, ch=ch: finished.put((ch, None, exc)),
+                )
                 log(f"[start] {ch.name}")
-            for fut in as_completed(futures):
-                ch = futures[fut]
-                try:
-                    elapsed, attempts = fut.result()
-                except Exception as exc:  # a chapter failed: report it, keep the old tree
-                    for other in futures:
-                        other.cancel()
+            for _ in chapters:
+                ch, res, exc = finished.get()
+                if exc is not None:  # a chapter failed: report it, keep the old tree (the pool stops the others)
                     raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
+                elapsed, attempts = res
                 results[ch.name] = {"executed": work / "notebooks" / ch.path.name, "elapsed_s": elapsed}
                 again = " (run twice: the first run timed out)" if attempts > 1 else ""
                 log(f"[{len(results)}/{total}] {ch.name} done in {elapsed:.1f} s{again}")
