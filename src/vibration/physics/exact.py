@@ -348,26 +348,24 @@ def _forced_and_free(ro: _Roots, osc: Oscillator, force: SineForce, x0: float, v
         s1, s2 = s2, s1  # pair i omega with the nearer root (real roots)
     dist = abs(1j * w - s1)  # 1/s
     split = NEAR_SPLIT / dist if dist > 0.0 else math.inf  # s (inf at exact resonance)
-    forms = []
-    if split > 0.0:
-        scale = F0 / osc.m
-        alpha, beta = -s1.real, s1.imag  # decay rate (1/s) and frequency (rad/s) of the paired root
-        d = complex(alpha, w - beta)
-        lam = 1.0 / (1j * w - s2)
-        tiny = abs(d) * min(tmax, split) < 1e-8  # exact resonance or subnormal detuning: series of 1 - exp(-z)
-        mu = lam if tiny else lam / d
-        near = {
-            "x0": x0,
-            "v0": v0,
-            "s1": s1,
-            "d": d,
-            "tiny": tiny,
-            "mx": scale * mu,
-            "mv": scale * w * mu,
-            "gx": -scale * lam.imag,
-            "gv": -scale * w * lam.real,
-        }
-        forms.append(("near", near, 0.0, split))
+    scale = F0 / osc.m
+    alpha, beta = -s1.real, s1.imag  # decay rate (1/s) and frequency (rad/s) of the paired root
+    d = complex(alpha, w - beta)
+    lam = 1.0 / (1j * w - s2)
+    tiny = abs(d) * min(tmax, split) < 1e-8  # exact resonance or subnormal detuning: series of 1 - exp(-z)
+    mu = lam if tiny else lam / d
+    near = {
+        "x0": x0,
+        "v0": v0,
+        "s1": s1,
+        "d": d,
+        "tiny": tiny,
+        "mx": scale * mu,
+        "mv": scale * w * mu,
+        "gx": -scale * lam.imag,
+        "gv": -scale * w * lam.real,
+    }
+    forms = [("near", near, 0.0, split)]
     if split <= tmax:
         # steady state Im(H exp(i w t)), H = F0 / (k - m w^2 + i c w); the transient
         # is the free response from the initial conditions it leaves over
