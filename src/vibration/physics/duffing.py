@@ -39,11 +39,12 @@ from __future__ import annotations
 
 import functools
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
-from .model import ParameterError, check_int, check_real
+from .model import N_POINTS_MAX, ParameterError, check_int, check_real
 
 __all__ = [
     "Duffing",
@@ -68,6 +69,102 @@ __all__ = [
 
 #: Newton polishing steps applied to every closed-form root of the amplitude cubic.
 NEWTON_STEPS = 3
+
+#: Work budgets (each a few seconds at most): integrator steps of one :func:`frequency_sweep` (or of all
+#: the sweeps of one :func:`locate_jump`) with the compiled integrator and with SciPy's; right-hand-side
+#: evaluations of one :func:`duffing_response` or :func:`periodic_orbit`; fixed RK4 steps of one
+#: :func:`poincare_section`, :func:`lyapunov_qr` or :func:`lyapunov_benettin`.
+MAX_SWEEP_STEPS = 20_000_000
+MAX_SCIPY_SWEEP_STEPS = 100_000
+MAX_RHS_EVALUATIONS = 600_000
+MAX_RK4_STEPS = 50_000_000
+
+#: Largest ``h lambda`` of the fixed-step RK4 (its stability interval on the negative real axis is 2.785).
+RK4_STABILITY = 2.78
+
+
+# --------------------------------------------------------------------------------------- inputs
+
+
+def _real_array(name: str, value, *, unit: str = "", min_size: int = 1, max_size: int = N_POINTS_MAX) -> np.ndarray:
+    """``value`` as a finite float array, or :class:`ParameterError`.
+
+    Refuses strings, bools, complex numbers, objects that are not real numbers, ragged
+    sequences, non-finite values and sizes outside ``[min_size, max_size]``; the message names
+    the parameter, its value and what is allowed.
+    """
+    allowed = f"an array of finite real numbers{f' ({unit})' if unit else ''}, {min_size} to {max_size} values"
+    if isinstance(value, (str, bytes)):
+        raise ParameterError(f"{name} = {value!r:.60} is a string: allowed {allowed}")
+    try:
+        arr = np.asarray(value)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} = {value!r:.60} is not an array of numbers: allowed {allowed}") from None
+    if arr.dtype.kind == "O" and all(
+        isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in arr.reshape(-1)
+    ):
+        arr = arr.astype(float)
+    if arr.dtype.kind not in "iuf":
+        raise ParameterError(
+            f"{name} = {value!r:.60} has values of type {arr.dtype} (not real numbers: bool, complex, string "
+            f"or object): allowed {allowed}"
+        )
+    if not min_size <= arr.size <= max_size:
+        raise ParameterError(f"{name} has {arr.size} values: allowed {allowed}")
+    arr = arr.astype(float)
+    bad = np.flatnonzero(~np.isfinite(arr))
+    if bad.size:
+        i = int(bad[0])
+        raise ParameterError(f"{name}[{i}] = {arr.reshape(-1)[i]!r} is not finite: allowed {allowed}")
+    return arr
+
+
+class _OverBudget(Exception):
+    """Raised inside a right-hand side when its evaluation budget is spent."""
+
+
+class _Counted:
+    """A right-hand side that counts its evaluations and stops the integrator past ``limit``."""
+
+    def __init__(self, fun, limit: int) -> None:
+        self.fun, self.limit, self.calls = fun, limit, 0
+
+    def __call__(self, t, y):
+        self.calls += 1
+        if self.calls > self.limit:
+            raise _OverBudget
+        return self.fun(t, y)
+
+
+def _linear_rate(d: Duffing, amplitude: float = 0.0) -> float:
+    """Fastest rate of the linearised oscillator about ``|x| = amplitude``, 1/s (largest |eigenvalue|)."""
+    k_eff = abs(d.k + 3.0 * d.k3 * amplitude * amplitude)
+    sig = d.c / (2.0 * d.m)
+    wn2 = k_eff / d.m
+    if sig * sig > wn2:
+        return sig + math.sqrt(sig * sig - wn2)
+    return math.sqrt(wn2)
+
+
+def _overflow_is_error(fun):
+    """Turn a float overflow (``OverflowError``, ``ZeroDivisionError``) inside ``fun`` into :class:`ParameterError`."""
+
+    @functools.wraps(fun)
+    def wrapper(*args, **kwargs):
+        try:
+            return fun(*args, **kwargs)
+        except (OverflowError, ZeroDivisionError) as exc:
+            shown = ", ".join([repr(a) for a in args] + [f"{k}={v!r}" for k, v in kwargs.items()])
+            raise ParameterError(
+                f"{fun.__name__}({shown:.200}) overflows a float ({exc}): allowed parameters whose amplitudes, "
+                "frequencies and their powers are finite floats"
+            ) from None
+
+    return wrapper
+
+
+def _rates(d: Duffing) -> str:
+    return f"c/m = {d.c / d.m:.3g} 1/s, sqrt(|k|/m) = {math.sqrt(d.k / d.m):.3g} rad/s"
 
 
 # --------------------------------------------------------------------------------------- model
@@ -190,6 +287,7 @@ def _cubic_real_roots(b: float, c1: float, d: float) -> list[float]:
     return out
 
 
+@_overflow_is_error
 def hb_amplitudes(duffing: Duffing, F0: float, omega: float) -> list[tuple[float, bool]]:
     """Every one-harmonic steady amplitude at one forcing frequency, with its stability.
 
@@ -246,6 +344,11 @@ def hb_amplitudes(duffing: Duffing, F0: float, omega: float) -> list[tuple[float
             continue
         stable = (s + y) * (s + 3.0 * y) + cw2 > 0.0
         pairs.append((math.sqrt(z), bool(stable)))
+    if not pairs:  # the cubic always has a root z > 0 (p(0) = -F0^2 < 0): only an overflow loses it
+        raise ParameterError(
+            f"F0 = {F0!r} N with k3 = {d.k3!r} N/m^3 and omega = {omega!r} rad/s overflows the amplitude cubic "
+            "((3/4) k3 F0^2 or (k - m omega^2)^2 is not a finite float): allowed smaller F0, |k3| or omega"
+        )
     pairs.sort()
     unique: list[tuple[float, bool]] = []
     for a, st in pairs:  # a double root split by rounding, polished onto the same value
@@ -255,6 +358,7 @@ def hb_amplitudes(duffing: Duffing, F0: float, omega: float) -> list[tuple[float
     return unique
 
 
+@_overflow_is_error
 def backbone(duffing: Duffing, amplitude):
     """Backbone (free-vibration frequency of one harmonic) ``sqrt(k/m + (3/4)(k3/m) A^2)``, rad/s.
 
@@ -276,15 +380,22 @@ def backbone(duffing: Duffing, amplitude):
     5.099
     """
     d = _check_duffing(duffing)
-    a = np.asarray(amplitude, dtype=float)
-    if np.any(~np.isfinite(a)) or np.any(a < 0):
-        raise ParameterError(f"amplitude = {amplitude!r} is out of range: allowed amplitude >= 0 m, finite")
-    w2 = (d.k + d.kappa * a * a) / d.m
+    a = _real_array("amplitude", amplitude, unit="m")
+    if np.any(a < 0):
+        raise ParameterError(f"amplitude = {amplitude!r:.60} is out of range: allowed amplitude >= 0 m, finite")
+    with np.errstate(over="ignore"):
+        w2 = (d.k + d.kappa * a * a) / d.m
+    if not np.all(np.isfinite(w2)):
+        raise ParameterError(
+            f"amplitude = {amplitude!r:.60} overflows (3/4) k3 A^2 with k3 = {d.k3!r} N/m^3: allowed amplitudes "
+            "whose backbone frequency is a finite float"
+        )
     with np.errstate(invalid="ignore"):
         out = np.where(w2 >= 0, np.sqrt(np.maximum(w2, 0.0)), np.nan)
     return float(out) if out.ndim == 0 else out
 
 
+@_overflow_is_error
 def linear_trust_amplitude(duffing: Duffing) -> float:
     """Amplitude at which the backbone has moved one half-power bandwidth ``c/m`` from ``omega_n``, m.
 
@@ -376,6 +487,7 @@ def _peak(d: Duffing, F0: float) -> tuple[float, float]:
     return math.nan, math.nan
 
 
+@_overflow_is_error
 def folds(duffing: Duffing, F0: float) -> Folds:
     """Fold frequencies, their amplitudes and the peak of the one-harmonic response curve.
 
@@ -424,6 +536,11 @@ def folds(duffing: Duffing, F0: float) -> Folds:
     coeffs = np.array(
         [4 * c * c * y0**5, 4 * c * c * k * y0**4, -4 * m * g * y0**3, 2 * c * c * g * y0**2, 0.0, m * g * g]
     )
+    if not (np.all(np.isfinite(coeffs)) and math.isfinite(g * g) and np.max(np.abs(coeffs)) > 0):
+        raise ParameterError(
+            f"F0 = {F0!r} N with k3 = {d.k3!r} N/m^3, c = {c!r} N s/m overflows the fold quintic (its "
+            "coefficients are not finite floats): allowed smaller F0 or |k3|"
+        )
     coeffs = coeffs / np.max(np.abs(coeffs))
     found = []
     for r in np.roots(coeffs):
@@ -452,6 +569,7 @@ def folds(duffing: Duffing, F0: float) -> Folds:
     return Folds(wl, wh, al, ah, a_peak, w_peak)
 
 
+@_overflow_is_error
 def response_curve(duffing: Duffing, F0: float, omega_max: float, n: int = 801, amplitude_max: float | None = None):
     """The whole one-harmonic response curve, parametrised by the amplitude.
 
@@ -492,18 +610,31 @@ def response_curve(duffing: Duffing, F0: float, omega_max: float, n: int = 801, 
     F0 = check_real("F0", F0, low=0.0, low_open=True, unit="N")
     omega_max = check_real("omega_max", omega_max, low=0.0, low_open=True, unit="rad/s")
     n = check_int("n", n, low=10, high=100_000)
+    if amplitude_max is not None:
+        amplitude_max = check_real("amplitude_max", amplitude_max, low=0.0, low_open=True, unit="m")
     m, c, k, kap = d.m, d.c, d.k, d.kappa
     a_peak, w_peak = _peak(d, F0)
     if math.isfinite(a_peak) and w_peak > 0:
         a_top = a_peak
     else:
-        a_top = check_real("amplitude_max", amplitude_max, low=0.0, low_open=True, unit="m") if amplitude_max else None
+        a_top = amplitude_max
         a_top = a_top or 1.5 * (d.barrier if math.isfinite(d.barrier) else max(hb_amplitudes(d, F0, omega_max))[0])
     a_low = min(hb_amplitudes(d, F0, omega_max))[0]
     a_low = min(a_low, 0.999 * a_top)
     # denser near the peak, where the two branches turn: cosine spacing in A
     s = 0.5 * (1 - np.cos(np.linspace(0.0, np.pi, n)))
-    a = a_low + (a_top - a_low) * s
+    with np.errstate(all="ignore"):
+        omega, A, stable = _curve_points(m, c, k, kap, F0, omega_max, a_low + (a_top - a_low) * s)
+    if not (np.all(np.isfinite(omega)) and np.all(np.isfinite(A))):
+        raise ParameterError(
+            f"F0 = {F0!r} N with k3 = {d.k3!r} N/m^3 overflows the response curve (A up to {a_top:.3g} m): "
+            "allowed smaller F0 or |k3|"
+        )
+    return omega, A, stable
+
+
+def _curve_points(m, c, k, kap, F0, omega_max, a):
+    """Points ``(omega, A, stable)`` of the response curve at the amplitudes ``a``, in order along it."""
     z = a * a
     kz = k + kap * z
     B = 2 * m * kz - c * c
@@ -565,8 +696,11 @@ def _kernels():
         xs,
         vs,
         nsteps,
+        max_steps,
     ):  # pragma: no cover
+        """Returns ``(status, j)``: status 0 done, 1 ``max_steps`` attempted steps spent (at frequency j)."""
         x, v = x0, v0
+        attempted = 0
         for j in range(omegas.shape[0]):
             w = omegas[j]
             T = 2.0 * np.pi / w
@@ -584,6 +718,11 @@ def _kernels():
                 a0 = (F0 * np.cos(w * tau) - c * v - k * x - k3 * x * x * x) / m
                 rejected = False
                 while tau < T:
+                    attempted += 1
+                    if attempted > max_steps:
+                        nsteps[j] = steps
+                        periods[j] = n
+                        return 1, j
                     if h > hmax:
                         h = hmax
                     last = tau + h >= T
@@ -703,12 +842,20 @@ def _kernels():
                 steady[j] = done
                 xs[j] = x
                 vs[j] = v
+        return 0, omegas.shape[0]
 
     @numba.njit(cache=True)
-    def rk4_kernel(m, c, k, k3, F0, w, x0, v0, n_periods, steps_per_period, mode, d0, record):  # pragma: no cover
+    def rk4_kernel(
+        m, c, k, k3, F0, w, x0, v0, n_periods, steps_per_period, mode, d0, record, gs_every, blow_up
+    ):  # pragma: no cover
         """mode 0: Poincare points; 1: QR on the variational equations; 2: two-trajectory renormalisation.
 
-        Returns (points (n_periods, 2), running largest exponent per period, sums of logs (2,)).
+        The tangent vectors (mode 1) or the separation (mode 2) are renormalised at the end of
+        every period and, when the damping contracts them strongly, also every ``gs_every`` steps.
+        Returns (points (n_periods, 2), running largest exponent per period, tail): tail holds the
+        sums of logs (2), the final state and tangent vectors (6), a status (0 done, 1 the state
+        left ``|x| <= blow_up`` or stopped being finite, 2 a tangent vector or the separation
+        underflowed to 0 or overflowed) and the period at which it stopped.
         """
         T = 2.0 * np.pi / w
         h = T / steps_per_period
@@ -768,26 +915,35 @@ def _kernels():
                     m4x, m4v = wc, (f1 - c * wc - k * yc - k3 * yc**3) / m
                     px += h / 6.0 * (m1x + 2 * m2x + 2 * m3x + m4x)
                     pv += h / 6.0 * (m1v + 2 * m2v + 2 * m3v + m4v)
-            if mode == 1:  # Gram-Schmidt (QR) once per period
-                r11 = np.sqrt(q11 * q11 + q21 * q21)
-                q11, q21 = q11 / r11, q21 / r11
-                dot = q11 * q12 + q21 * q22
-                q12, q22 = q12 - dot * q11, q22 - dot * q21
-                r22 = np.sqrt(q12 * q12 + q22 * q22)
-                q12, q22 = q12 / r22, q22 / r22
-                if record:
-                    s1 += np.log(r11)
-                    s2 += np.log(r22)
-            if mode == 2:  # renormalise the separation to d0 along its current direction
-                dx, dv = px - x, pv - v
-                dist = np.sqrt(dx * dx + dv * dv)
-                if record:
-                    s1 += np.log(dist / d0)
-                px, pv = x + dx * d0 / dist, v + dv * d0 / dist
+                renorm = i == steps_per_period - 1 or (i + 1) % gs_every == 0
+                if mode == 1 and renorm:  # Gram-Schmidt (QR) once per period (or every gs_every steps)
+                    r11 = np.sqrt(q11 * q11 + q21 * q21)
+                    if not (r11 > 0.0 and r11 < np.inf):
+                        return pts[:n], running[:n], np.array([s1, s2, x, v, q11, q21, q12, q22, 2.0, n])
+                    q11, q21 = q11 / r11, q21 / r11
+                    dot = q11 * q12 + q21 * q22
+                    q12, q22 = q12 - dot * q11, q22 - dot * q21
+                    r22 = np.sqrt(q12 * q12 + q22 * q22)
+                    if not (r22 > 0.0 and r22 < np.inf):
+                        return pts[:n], running[:n], np.array([s1, s2, x, v, q11, q21, q12, q22, 2.0, n])
+                    q12, q22 = q12 / r22, q22 / r22
+                    if record:
+                        s1 += np.log(r11)
+                        s2 += np.log(r22)
+                if mode == 2 and renorm:  # renormalise the separation to d0 along its current direction
+                    dx, dv = px - x, pv - v
+                    dist = np.sqrt(dx * dx + dv * dv)
+                    if not (dist > 0.0 and dist < np.inf):
+                        return pts[:n], running[:n], np.array([s1, s2, x, v, q11, q21, q12, q22, 2.0, n])
+                    if record:
+                        s1 += np.log(dist / d0)
+                    px, pv = x + dx * d0 / dist, v + dv * d0 / dist
+            if not (abs(x) <= blow_up and abs(v) < np.inf):
+                return pts[:n], running[:n], np.array([s1, s2, x, v, q11, q21, q12, q22, 1.0, n])
             pts[n, 0] = x
             pts[n, 1] = v
             running[n] = s1 / ((n + 1) * T)
-        return pts, running, np.array([s1, s2, x, v, q11, q21, q12, q22])
+        return pts, running, np.array([s1, s2, x, v, q11, q21, q12, q22, 0.0, n_periods])
 
     return sweep_kernel, rk4_kernel
 
@@ -826,15 +982,41 @@ class SweepResult:
                 out.append((float(self.omega[i]), float(self.omega[j]), float(a), float(b)))
         return out
 
+    @property
+    def escaped(self) -> np.ndarray:
+        """Whether the mass escaped (softening spring past its barrier) at each frequency: amplitude ``nan`` there."""
+        return ~np.isfinite(self.amplitude)
+
 
 def _check_omegas(omegas) -> np.ndarray:
-    try:
-        w = np.asarray(omegas, dtype=float).reshape(-1)
-    except (TypeError, ValueError):
-        raise ParameterError(f"omegas = {omegas!r} is not an array of numbers: allowed omegas > 0 rad/s") from None
-    if w.size == 0 or not np.all(np.isfinite(w)) or np.any(w <= 0):
-        raise ParameterError(f"omegas = {omegas!r} is out of range: allowed non-empty, every omega > 0 rad/s, finite")
+    w = _real_array("omegas", omegas, unit="rad/s", max_size=1_000_000).reshape(-1)
+    if np.any(w <= 0):
+        raise ParameterError(
+            f"omegas = {omegas!r:.60} is out of range: allowed non-empty, every omega > 0 rad/s, finite"
+        )
     return w
+
+
+def _sweep_work(d: Duffing, F0: float, ws: np.ndarray, x0: float, min_periods: int, max_steps: int, name: str) -> None:
+    """Refuse up front a sweep whose first ``min_periods`` periods alone need more than ``max_steps`` steps.
+
+    An explicit Runge-Kutta pair needs ``h lambda`` within its stability interval (about 3.3
+    for Dormand-Prince 5(4)), ``lambda`` the fastest rate of the linearised oscillator, and at
+    least 16 steps per period (its largest step).
+    """
+    lam = _linear_rate(d, max(abs(x0), _x_ref(d, F0) if F0 > 0 else 0.0))
+    periods = 2.0 * np.pi / ws
+    with np.errstate(over="ignore"):
+        need = float(np.sum(min_periods * np.maximum(16.0, periods * lam / 3.3)))
+    if not need <= max_steps:
+        w_min = float(np.min(ws))
+        raise ParameterError(
+            f"{name} needs at least {need:.3g} integrator steps ({min_periods} forcing periods at each of "
+            f"{ws.size} frequencies, the lowest omega = {w_min:.3g} rad/s with period {2 * np.pi / w_min:.3g} s, "
+            f"step <= 3.3/lambda for the fastest rate lambda = {lam:.3g} 1/s: {_rates(d)}), more than "
+            f"max_steps = {max_steps}: allowed fewer frequencies, higher omega or a less stiff oscillator "
+            "(smaller c/m, k/m)"
+        )
 
 
 def frequency_sweep(
@@ -850,6 +1032,7 @@ def frequency_sweep(
     steady_tol: float = 1e-6,
     max_periods: int = 5000,
     integrator: str = "compiled",
+    max_steps: int | None = None,
 ) -> SweepResult:
     """Stepped frequency sweep by time integration, each step from the previous steady state.
 
@@ -890,10 +1073,17 @@ def frequency_sweep(
         The compiled Dormand-Prince 5(4) (numba) or ``scipy.integrate.solve_ivp`` with
         RK45 one period at a time (extrema from its events): the same method and error
         control, for checking and timing.
+    max_steps : int, optional
+        Work budget: most integrator steps (accepted and rejected, all frequencies together);
+        default ``MAX_SWEEP_STEPS`` (compiled, a few seconds) or ``MAX_SCIPY_SWEEP_STEPS``
+        (scipy). A sweep that clearly needs more (a stiff oscillator, c/m or k/m large
+        against omega, or a very low omega) is refused before it starts; one that spends the
+        budget stops with a :class:`ParameterError` naming the frequency it reached.
 
     Returns
     -------
     SweepResult
+        ``escaped`` flags the frequencies where the mass escaped (amplitude ``nan``).
 
     Examples
     --------
@@ -922,6 +1112,9 @@ def frequency_sweep(
     max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
     if integrator not in ("compiled", "scipy"):
         raise ParameterError(f"integrator = {integrator!r} is not valid: allowed 'compiled' or 'scipy'")
+    limit = MAX_SWEEP_STEPS if integrator == "compiled" else MAX_SCIPY_SWEEP_STEPS
+    max_steps = limit if max_steps is None else check_int("max_steps", max_steps, low=1, high=limit)
+    _sweep_work(d, F0, w, x0, 3, max_steps, "frequency_sweep")
     order = np.argsort(w, kind="stable")
     if direction == "down":
         order = order[::-1]
@@ -934,9 +1127,15 @@ def frequency_sweep(
     args = (d.m, d.c, d.k, d.k3, F0, ws, x0, v0, rtol, atol, steady_tol, 3, max_periods, blow_up)
     outs = (amp, xmax, xmin, steady, periods, xs, vs, nsteps)
     if integrator == "compiled":
-        _kernels()[0](*args, *outs)
+        status, j = _kernels()[0](*args, *outs, max_steps)
     else:
-        _sweep_scipy(*args, *outs)
+        status, j = _sweep_scipy(*args, *outs, max_steps)
+    if status != 0:
+        raise ParameterError(
+            f"frequency_sweep spent its budget of max_steps = {max_steps} integrator steps at omega = {ws[j]:.6g} "
+            f"rad/s (frequency {j + 1} of {nw} in sweep order, {periods[j]} periods there; {_rates(d)}): allowed "
+            "fewer frequencies, a smaller max_periods, a looser steady_tol or rtol, or a less stiff oscillator"
+        )
     inv = np.empty_like(order)
     inv[order] = np.arange(nw)
     return SweepResult(
@@ -1033,8 +1232,11 @@ def locate_jump(
     (5.107, 0.001)
     """
     d = _check_duffing(duffing)
+    _check_damped(d)
+    F0 = check_real("F0", F0, low=0.0, unit="N")
     if not isinstance(result, SweepResult):
-        raise ParameterError(f"result = {result!r} is not a SweepResult: allowed the output of frequency_sweep")
+        raise ParameterError(f"result = {result!r:.60} is not a SweepResult: allowed the output of frequency_sweep")
+    max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
     jumps = result.jumps()
     which = check_int("which", which, low=0, high=max(len(jumps) - 1, 0))
     if not jumps:
@@ -1044,9 +1246,16 @@ def locate_jump(
     w_before, w_after, *_ = jumps[which]
     i = int(np.flatnonzero(result.omega == w_before)[0])
     x, v = float(result.x_end[i]), float(result.v_end[i])
+    budget = MAX_SWEEP_STEPS  # shared by every level
     for _ in range(levels):
         ws = np.linspace(w_before, w_after, n + 1)
-        res = frequency_sweep(d, F0, ws, result.direction, x0=x, v0=v, max_periods=max_periods)
+        if budget < 1:
+            raise ParameterError(
+                f"locate_jump spent its budget of {MAX_SWEEP_STEPS} integrator steps with levels = {levels}, "
+                f"n = {n}: allowed fewer levels or steps per level"
+            )
+        res = frequency_sweep(d, F0, ws, result.direction, x0=x, v0=v, max_periods=max_periods, max_steps=budget)
+        budget -= int(res.n_steps.sum())
         order = np.argsort(ws) if result.direction == "up" else np.argsort(ws)[::-1]
         amps = res.amplitude[order]
         a0 = amps[0]
@@ -1116,19 +1325,62 @@ def duffing_response(
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-3)
-    tt = np.asarray(t, dtype=float).reshape(-1)
-    if tt.size == 0 or not np.all(np.isfinite(tt)) or np.any(np.diff(tt) < 0) or tt[0] < 0:
-        raise ParameterError(f"t = {t!r} is out of range: allowed non-empty, increasing, t >= 0 s, finite")
+    if not isinstance(sine, (bool, np.bool_)):
+        raise ParameterError(f"sine = {sine!r:.60} is not a bool: allowed True or False")
+    tt = _real_array("t", t, unit="s").reshape(-1)
+    if np.any(np.diff(tt) < 0) or tt[0] < 0:
+        raise ParameterError(f"t = {t!r:.60} is out of range: allowed non-empty, increasing, t >= 0 s, finite")
     m, c, k, k3 = d.m, d.c, d.k, d.k3
     trig = math.sin if sine else math.cos
+    t_end = float(tt[-1])
+    xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
+    # DOP853 needs h lambda within its stability interval (about 6) and takes 12 evaluations a step
+    lam = _linear_rate(d, max(abs(x0), xr))
+    need = 12.0 * t_end * max(lam, w) / 6.0
+    if not need <= MAX_RHS_EVALUATIONS:
+        raise ParameterError(
+            f"t up to {t_end:.6g} s needs at least {need:.3g} right-hand-side evaluations (step <= 6/lambda, "
+            f"lambda = {max(lam, w):.3g} 1/s from {_rates(d)}, omega = {w:.3g} rad/s), more than "
+            f"{MAX_RHS_EVALUATIONS}: allowed a shorter window or a less stiff oscillator (smaller c/m, k/m)"
+        )
+    blow_up = 1e3 * max(xr, abs(x0), d.barrier) if d.k3 < 0 else math.inf
 
     def rhs(time, y):
         return (y[1], (F0 * trig(w * time) - c * y[1] - k * y[0] - k3 * y[0] ** 3) / m)
 
-    xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
-    sol = solve_ivp(rhs, (0.0, float(tt[-1])), (x0, v0), method="DOP853", t_eval=tt, rtol=rtol, atol=rtol * xr)
-    if sol.status != 0:  # pragma: no cover - DOP853 does not fail on this smooth system
-        raise ParameterError(f"the integration failed: {sol.message}; allowed parameters whose motion stays bounded")
+    def escape(time, y):
+        return blow_up - abs(y[0])
+
+    escape.terminal = True
+    counted = _Counted(rhs, MAX_RHS_EVALUATIONS)
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):
+            sol = solve_ivp(
+                counted,
+                (0.0, t_end),
+                (x0, v0),
+                method="DOP853",
+                t_eval=tt,
+                rtol=rtol,
+                atol=rtol * xr,
+                events=escape if d.k3 < 0 else None,
+            )
+    except _OverBudget:
+        raise ParameterError(
+            f"duffing_response spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations before "
+            f"t = {t_end:.6g} s ({_rates(d)}, k3 = {k3!r} N/m^3, x0 = {x0!r} m, v0 = {v0!r} m/s): allowed a shorter "
+            "window, a looser rtol or a less stiff oscillator"
+        ) from None
+    if sol.status == 1:
+        raise ParameterError(
+            f"the mass escaped over the softening spring's barrier ({d.barrier:.3g} m): |x| passed {blow_up:.3g} m "
+            f"at t = {float(sol.t_events[0][0]):.6g} s: allowed parameters whose motion stays bounded "
+            "(smaller F0, x0, v0 or |k3|)"
+        )
+    if sol.status != 0 or not (np.all(np.isfinite(sol.y)) and sol.y.shape[1] == tt.size):
+        raise ParameterError(
+            f"the integration failed ({sol.message}): allowed parameters whose motion stays bounded and finite"
+        )
     return sol.y[0], sol.y[1]
 
 
@@ -1155,15 +1407,24 @@ def _sweep_scipy(
     xs,
     vs,
     nsteps,
+    max_steps,
 ):
-    """The sweep of the compiled kernel with ``solve_ivp(method="RK45")``, one period per call."""
+    """The sweep of the compiled kernel with ``solve_ivp(method="RK45")``, one period per call.
+
+    Returns ``(status, j)`` as the kernel: status 1 when about ``max_steps`` steps (counted as
+    right-hand-side evaluations / 6) are spent, at frequency j.
+    """
     from scipy.integrate import solve_ivp
 
     x, v = x0, v0
+    budget = _Counted(None, 6 * max_steps)
     for j, w in enumerate(omegas):
         T = 2.0 * math.pi / w
 
         def rhs(t, y, w=w):
+            budget.calls += 1
+            if budget.calls > budget.limit:
+                raise _OverBudget
             return (y[1], (F0 * math.cos(w * t) - c * y[1] - k * y[0] - k3 * y[0] ** 3) / m)
 
         def turning(t, y):
@@ -1172,7 +1433,14 @@ def _sweep_scipy(
         d_prev, ok_prev, rho_prev, done, escaped, n, steps = -1.0, False, 1.0, False, False, 0, 0
         xmax = xmin = x
         while n < max_periods and not done:
-            sol = solve_ivp(rhs, (0.0, T), (x, v), method="RK45", rtol=rtol, atol=atol, events=turning, max_step=T / 16)
+            try:
+                with np.errstate(over="ignore", invalid="ignore"):
+                    sol = solve_ivp(
+                        rhs, (0.0, T), (x, v), method="RK45", rtol=rtol, atol=atol, events=turning, max_step=T / 16
+                    )
+            except _OverBudget:
+                nsteps[j], periods[j] = steps, n
+                return 1, j
             steps += sol.t.size - 1
             if sol.status != 0 or not np.all(np.isfinite(sol.y[:, -1])) or np.max(np.abs(sol.y[0])) > blow_up:
                 escaped = True
@@ -1197,6 +1465,7 @@ def _sweep_scipy(
             x, v = 0.0, 0.0
         else:
             amp[j], xmax_out[j], xmin_out[j], steady[j], xs[j], vs[j] = 0.5 * (xmax - xmin), xmax, xmin, done, x, v
+    return 0, len(omegas)
 
 
 # ------------------------------------------------------------------- periodic orbits and Floquet
@@ -1220,12 +1489,17 @@ class PeriodicOrbit:
         return max(abs(mu) for mu in self.multipliers) < 1.0
 
 
-def _flow_period(d: Duffing, F0: float, w: float, x0: float, v0: float, rtol: float, events=False):
+def _flow_period(d: Duffing, F0: float, w: float, x0: float, v0: float, rtol: float, events=False, budget=None):
+    """One forcing period of the state and its variational equations (DOP853); ``budget`` a :class:`_Counted`."""
     from scipy.integrate import solve_ivp
 
     m, c, k, k3 = d.m, d.c, d.k, d.k3
 
     def rhs(t, y):
+        if budget is not None:
+            budget.calls += 1
+            if budget.calls > budget.limit:
+                raise _OverBudget
         x, v = y[0], y[1]
         jx = -(k + 3.0 * k3 * x * x) / m
         return (
@@ -1242,15 +1516,16 @@ def _flow_period(d: Duffing, F0: float, w: float, x0: float, v0: float, rtol: fl
 
     T = 2.0 * math.pi / w
     xr = max(abs(x0), abs(v0) / w, 1e-300)
-    sol = solve_ivp(
-        rhs,
-        (0.0, T),
-        (x0, v0, 1.0, 0.0, 0.0, 1.0),
-        method="DOP853",
-        rtol=rtol,
-        atol=rtol * xr * 1e-3,
-        events=turning if events else None,
-    )
+    with np.errstate(over="ignore", invalid="ignore"):
+        sol = solve_ivp(
+            rhs,
+            (0.0, T),
+            (x0, v0, 1.0, 0.0, 0.0, 1.0),
+            method="DOP853",
+            rtol=rtol,
+            atol=rtol * xr * 1e-3,
+            events=turning if events else None,
+        )
     return sol
 
 
@@ -1315,9 +1590,17 @@ def periodic_orbit(
     w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-6)
     max_iterations = check_int("max_iterations", max_iterations, low=1, high=200)
-    if x0 is None or v0 is None:
+    if (x0 is None) != (v0 is None):
+        raise ParameterError(f"x0 = {x0!r:.30} and v0 = {v0!r:.30}: allowed both given (m, m/s) or both None")
+    if x0 is None:
         if amplitude_guess is None:
-            amplitude_guess = max(hb_amplitudes(d, F0, w))[0]
+            hb = hb_amplitudes(d, F0, w)
+            if not hb:
+                raise ParameterError(
+                    f"omega = {w!r} rad/s is the undamped linear oscillator's resonance (no steady amplitude): "
+                    "allowed c > 0, k3 != 0 or another omega"
+                )
+            amplitude_guess = max(hb)[0]
         A = check_real("amplitude_guess", amplitude_guess, low=0.0, unit="m")
         # a cos(wt) + b sin(wt): from the cosine/sine balance, a = (s + y) A^2 / F0, b = c w A^2 / F0
         s, y = d.k - d.m * w * w, d.kappa * A * A
@@ -1329,10 +1612,37 @@ def periodic_orbit(
     else:
         x = check_real("x0", x0, unit="m")
         v = check_real("v0", v0, unit="m/s")
+    if not (math.isfinite(x) and math.isfinite(v)):
+        raise ParameterError(
+            f"amplitude_guess = {amplitude_guess!r} m gives a non-finite starting state: allowed a smaller guess"
+        )
+    # each period needs h lambda within DOP853's stability interval (about 6), 12 evaluations a step
+    T = 2.0 * math.pi / w
+    lam = _linear_rate(d, max(abs(x), _x_ref(d, F0) if F0 > 0 else 0.0))
+    need = 2.0 * 12.0 * max(T * lam / 6.0, 1.0)
+    if not need <= MAX_RHS_EVALUATIONS:
+        raise ParameterError(
+            f"omega = {w!r} rad/s (period {T:.3g} s) needs at least {need:.3g} right-hand-side evaluations for two "
+            f"periods (step <= 6/lambda, lambda = {lam:.3g} 1/s: {_rates(d)}), more than {MAX_RHS_EVALUATIONS}: "
+            "allowed a higher omega or a less stiff oscillator (smaller c/m, k/m)"
+        )
+    budget = _Counted(None, MAX_RHS_EVALUATIONS)
+    try:
+        return _shoot(d, F0, w, x, v, rtol, max_iterations, budget)
+    except _OverBudget:
+        raise ParameterError(
+            f"periodic_orbit spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations at omega = "
+            f"{w!r} rad/s ({_rates(d)}): allowed fewer max_iterations, a looser rtol, a higher omega or a less "
+            "stiff oscillator"
+        ) from None
+
+
+def _shoot(d: Duffing, F0: float, w: float, x: float, v: float, rtol: float, max_iterations: int, budget):
+    """Damped Newton shooting from ``(x, v)``, then the orbit's multipliers (see :func:`periodic_orbit`)."""
     res = math.inf
     it = 0
     for it in range(1, max_iterations + 1):  # noqa: B007
-        sol = _flow_period(d, F0, w, x, v, rtol)
+        sol = _flow_period(d, F0, w, x, v, rtol, budget=budget)
         yT = sol.y[:, -1]
         g = np.array([yT[0] - x, yT[1] - v])
         M = np.array([[yT[2], yT[4]], [yT[3], yT[5]]])
@@ -1344,10 +1654,12 @@ def periodic_orbit(
             dx = np.linalg.solve(M - np.eye(2), -g)
         except np.linalg.LinAlgError:
             break
+        if not np.all(np.isfinite(dx)):
+            break
         lam = 1.0  # damped Newton: halve the step until the residual decreases
         while lam > 1e-3:
             xt, vt = x + lam * dx[0], v + lam * dx[1]
-            yt = _flow_period(d, F0, w, xt, vt, rtol).y[:, -1]
+            yt = _flow_period(d, F0, w, xt, vt, rtol, budget=budget).y[:, -1]
             if math.isfinite(yt[0]) and math.hypot(yt[0] - xt, (yt[1] - vt) / w) < res:
                 break
             lam *= 0.5
@@ -1361,9 +1673,14 @@ def periodic_orbit(
             f"periodic_orbit did not converge at omega = {w!r} rad/s (residual {res:.3g} m): allowed a guess "
             "closer to a periodic orbit (amplitude_guess or x0, v0)"
         )
-    sol = _flow_period(d, F0, w, x, v, rtol, events=True)
+    sol = _flow_period(d, F0, w, x, v, rtol, events=True, budget=budget)
     yT = sol.y[:, -1]
     M = np.array([[yT[2], yT[4]], [yT[3], yT[5]]])
+    if not np.all(np.isfinite(M)):
+        raise ParameterError(
+            f"periodic_orbit: the monodromy matrix at omega = {w!r} rad/s is not finite (overflow): allowed "
+            "parameters whose orbit and its variations stay finite over one period"
+        )
     mu = np.linalg.eigvals(M)
     xe = sol.y_events[0][:, 0] if sol.y_events[0].size else sol.y[0]
     xa = np.concatenate([xe, sol.y[0]])
@@ -1403,15 +1720,66 @@ def _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_perio
     w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
-    n_periods = check_int("n_periods", n_periods, low=1, high=10_000_000)
+    n_periods = check_int("n_periods", n_periods, low=1, high=2_000_000)
     n_transient = check_int("n_transient", n_transient, low=0, high=10_000_000)
     spp = check_int("steps_per_period", steps_per_period, low=8, high=100_000)
+    total = (n_periods + n_transient) * spp
+    if total > MAX_RK4_STEPS:
+        raise ParameterError(
+            f"n_periods = {n_periods}, n_transient = {n_transient} and steps_per_period = {spp} make {total} RK4 "
+            f"steps: allowed at most {MAX_RK4_STEPS} "
+            "((n_periods + n_transient) steps_per_period)"
+        )
+    T = 2.0 * math.pi / w
+    h = T / spp
+    lam = _linear_rate(d, max(abs(x0), _x_ref(d, F0) if F0 > 0 else 0.0))
+    if h * lam > RK4_STABILITY:
+        need = math.ceil(T * lam / RK4_STABILITY)
+        raise ParameterError(
+            f"steps_per_period = {spp} at omega = {w!r} rad/s gives a step of {h:.3g} s, and the fixed-step RK4 is "
+            f"unstable for h lambda > {RK4_STABILITY} with lambda = {lam:.3g} 1/s ({_rates(d)}): allowed "
+            f"steps_per_period >= {need:.3g}"
+            + (" (above its limit 100000: a higher omega or a less stiff oscillator)" if need > 100_000 else "")
+        )
+    blow_up = 1e3 * max(_x_ref(d, F0), abs(x0), d.barrier) if d.k3 < 0 else math.inf
+    # renormalise at least every time the damping alone contracts by exp(-5): the second tangent vector
+    # (QR) and the separation (two trajectories) must stay well above the rounding of the leading one
+    contraction = d.c / d.m * T
+    gs_every = spp if contraction <= 5.0 else max(1, int(spp * 5.0 / contraction))
     kern = _kernels()[1]
     if n_transient:
-        *_, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_transient, spp, 0, 1.0, False)
+        *_, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_transient, spp, 0, 1.0, False, spp, blow_up)
+        _rk4_status(d, F0, w, x0, v0, tail, 0)
         x0, v0 = float(tail[2]), float(tail[3])
-    time = n_periods * 2.0 * math.pi / w
-    return (time, *kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_periods, spp, mode, d0, mode != 0))
+    out = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_periods, spp, mode, d0, mode != 0, gs_every, blow_up)
+    _rk4_status(d, F0, w, x0, v0, out[2], n_transient)
+    time = n_periods * T
+    return (time, *out)
+
+
+def _rk4_status(d: Duffing, F0: float, w: float, x0: float, v0: float, tail: np.ndarray, offset: int) -> None:
+    """Raise :class:`ParameterError` when the compiled RK4 stopped early (see its status codes)."""
+    status, n = int(tail[8]), int(tail[9]) + offset
+    if status == 1:
+        what = (
+            f"the mass escaped over the softening spring's barrier ({d.barrier:.3g} m; |x| passed "
+            f"{1e3 * max(_x_ref(d, F0), abs(x0), d.barrier):.3g} m or overflowed)"
+            if d.k3 < 0
+            else "the fixed-step RK4 overflowed (the state is not finite: the step is too large for the cubic "
+            "stiffness at this amplitude, or the motion is unbounded)"
+        )
+        raise ParameterError(
+            f"{what} in forcing period {n + 1} (F0 = {F0!r} N, omega = {w!r} rad/s, x0 = {x0!r} m, v0 = {v0!r} "
+            "m/s): allowed parameters whose motion stays bounded, or more steps_per_period"
+        )
+    if status == 2:
+        raise ParameterError(
+            f"the tangent vectors or the trajectories' separation underflowed or overflowed in forcing period "
+            f"{n + 1} ({_rates(d)}, omega = {w!r} rad/s): allowed a less extreme damping or forcing period"
+        )
+    exps = tail[:2]
+    if not np.all(np.isfinite(exps)):  # pragma: no cover - the kernel stops before
+        raise ParameterError("the Lyapunov sums are not finite: allowed parameters whose motion stays bounded")
 
 
 def _lyapunov_result(time, running, tail, method, n_exponents) -> LyapunovResult:
