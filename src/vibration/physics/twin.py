@@ -66,6 +66,7 @@ from scipy import signal
 from scipy.optimize import least_squares
 from scipy.stats import t as student_t
 
+from .duffing import _Counted, _OverBudget, _real_array
 from .model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real
 
 __all__ = [
@@ -136,6 +137,18 @@ K_QUANTUM = 1e-5
 
 #: Fraction of a record used to calibrate the detector (and to identify it when no reference is given).
 CALIBRATION = 0.25
+
+#: Work budgets: samples times frequencies of one :func:`random_force` (cosines evaluated); samples
+#: of one :func:`track_stiffness` (a Python loop); samples simulated and identified (or monitored) by one
+#: Monte Carlo experiment, all its records together; right-hand-side evaluations of the ``solve_ivp``
+#: reference of :func:`discretisation_checks`.
+MAX_MULTISINE_TERMS = 100_000_000
+MAX_TRACK_SAMPLES = 1_000_000
+MAX_EXPERIMENT_SAMPLES = 20_000_000
+MAX_RHS_EVALUATIONS = 300_000
+
+#: Largest seed accepted (numpy's SeedSequence takes any non-negative int; this keeps seed + offsets an int64).
+SEED_MAX = 2**62
 
 
 # --------------------------------------------------------------------------- measurements
@@ -372,6 +385,8 @@ def measurements_csv(meas: Measurements, digits: int = 9) -> str:
     1,1,0
     <BLANKLINE>
     """
+    if not isinstance(meas, Measurements):
+        raise ParameterError(f"meas = {meas!r:.60} is not a Measurements: allowed a record (load_measurements)")
     digits = check_int("digits", digits, low=3, high=17)
     name = DISPLACEMENT if meas.x is not None else ACCELERATION
     cols = np.column_stack([meas.t, meas.force, meas.response])
@@ -409,15 +424,80 @@ def example_measurements() -> Measurements:
 # --------------------------------------------------------------------------- inputs
 
 
+def _check_seed(seed, name: str = "seed", none: bool = False):
+    """A seed: a non-negative int (or None when ``none``), else :class:`ParameterError`."""
+    if seed is None and none:
+        return None
+    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)):
+        allowed = "a non-negative integer" + (" or None" if none else "")
+        raise ParameterError(f"{name} = {seed!r:.60} is not an integer: allowed {allowed} (<= {SEED_MAX})")
+    return check_int(name, int(seed), low=0, high=SEED_MAX)
+
+
+def _check_band(band) -> tuple[float, float]:
+    """A frequency band ``(low, high)``, Hz, 0 < low < high."""
+    if isinstance(band, (str, bytes)) or not hasattr(band, "__len__") or len(band) != 2:
+        raise ParameterError(f"band = {band!r:.60} is not a pair: allowed (low, high) Hz with 0 < low < high")
+    lo = check_real("band[0]", band[0], low=0.0, low_open=True, unit="Hz")
+    hi = check_real("band[1]", band[1], low=lo, low_open=True, unit="Hz")
+    return lo, hi
+
+
+def _check_sensor(sensor) -> str:
+    if not isinstance(sensor, str) or sensor not in ("x", "a"):
+        raise ParameterError(f"sensor = {sensor!r:.60}: allowed 'x' (displacement) or 'a' (acceleration)")
+    return sensor
+
+
+def _check_osc(osc) -> Oscillator:
+    if not isinstance(osc, Oscillator):
+        raise ParameterError(f"osc = {osc!r:.60} is not an Oscillator: allowed Oscillator(m, c, k)")
+    return osc
+
+
+def _grid_size(duration: float, dt: float, what: str = "duration") -> int:
+    """Samples of ``arange(round(duration / dt) + 1) * dt``, refused above ``N_POINTS_MAX`` before allocating."""
+    n = round(duration / dt) + 1
+    if n > N_POINTS_MAX:
+        raise ParameterError(
+            f"{what} = {duration!r} s with dt = {dt!r} s makes {n:.3g} samples: allowed at most {N_POINTS_MAX} "
+            f"({what} / dt <= {N_POINTS_MAX - 1})"
+        )
+    return int(n)
+
+
+def _work(name: str, value, work: float, limit: float, what: str) -> None:
+    if not work <= limit:
+        raise ParameterError(f"{name} = {value!r:.60} makes {work:.3g} {what}: allowed at most {limit:.3g}")
+
+
+def _finite_output(arr, what: str, cause: str) -> None:
+    if not np.all(np.isfinite(arr)):
+        raise ParameterError(f"{what} overflows (not finite): {cause}")
+
+
 def _signal(name: str, value, n: int | None = None) -> np.ndarray:
+    if isinstance(value, (str, bytes)):
+        raise ParameterError(f"{name} = {value!r:.60} is a string: allowed a 1-D array of numbers")
     try:
-        arr = np.asarray(value, dtype=float)
+        raw = np.asarray(value)
     except (TypeError, ValueError):
         raise ParameterError(f"{name} = {value!r:.60} is not an array of numbers: allowed a 1-D array") from None
+    if raw.dtype.kind not in "iufO":
+        raise ParameterError(
+            f"{name} = {value!r:.60} has values of type {raw.dtype} (bool, complex or string): allowed a 1-D "
+            "array of real numbers"
+        )
+    try:
+        arr = _real_array(name, raw, max_size=N_POINTS_MAX) if raw.dtype.kind == "O" else raw.astype(float)
+    except ParameterError:
+        raise ParameterError(f"{name} = {value!r:.60} is not an array of real numbers: allowed a 1-D array") from None
     if arr.ndim != 1:
         raise ParameterError(f"{name} has shape {arr.shape}: allowed a 1-D array")
     if n is not None and arr.size != n:
         raise ParameterError(f"{name} has {arr.size} samples: allowed as many as t ({n})")
+    if not 1 <= arr.size <= N_POINTS_MAX:
+        raise ParameterError(f"{name} has {arr.size} samples: allowed 1 to {N_POINTS_MAX}")
     bad = np.nonzero(~np.isfinite(arr) | (np.abs(arr) > MAX_ABS))[0]
     if bad.size:
         i = int(bad[0])
@@ -494,9 +574,13 @@ def expm_batch(a: np.ndarray) -> np.ndarray:
     >>> bool(np.allclose(expm_batch(x), [[np.cos(1), np.sin(1)], [-np.sin(1), np.cos(1)]], rtol=0, atol=1e-15))
     True
     """
-    a = np.asarray(a, dtype=float)
+    a = _real_array("a", a, max_size=N_POINTS_MAX)
+    if a.ndim < 2 or a.shape[-1] != a.shape[-2]:
+        raise ParameterError(f"a has shape {a.shape}: allowed a stack of square matrices, shape (..., n, n)")
     n = a.shape[-1]
     norm = np.max(np.sum(np.abs(a), axis=-2), axis=-1)
+    if not np.all(np.isfinite(norm)):
+        raise ParameterError("a has a matrix whose 1-norm overflows: allowed matrices of finite 1-norm")
     s = np.maximum(0, np.ceil(np.log2(np.maximum(norm, 1e-300) / 5.371920351148152))).astype(int)
     a = a / (2.0**s)[..., None, None]
     b = _PADE13
@@ -508,9 +592,15 @@ def expm_batch(a: np.ndarray) -> np.ndarray:
     v = a6 @ (b[12] * a6 + b[10] * a4 + b[8] * a2) + b[6] * a6 + b[4] * a4 + b[2] * a2 + b[0] * eye
     r = np.linalg.solve(v - u, v + u)
     smax = int(np.max(s)) if s.size else 0
-    for j in range(smax):
-        sq = r @ r
-        r = np.where((s > j)[..., None, None], sq, r)
+    with np.errstate(over="ignore", invalid="ignore"):
+        for j in range(smax):
+            sq = r @ r
+            r = np.where((s > j)[..., None, None], sq, r)
+    if not np.all(np.isfinite(r)):
+        raise ParameterError(
+            f"a has a matrix whose exponential overflows (1-norm up to {float(np.max(norm)):.3g}): allowed "
+            "matrices whose exponential is a finite float"
+        )
     return r
 
 
@@ -524,7 +614,14 @@ def _foh(m, c, k, h):
     big[:, 1, 1] = -c / m * h
     big[:, 1, 2] = h / m
     big[:, 2, 3] = 1.0
-    e = expm_batch(big)
+    try:
+        e = expm_batch(big)
+    except ParameterError:
+        raise ParameterError(
+            f"the step h = {h!r} s with c/m up to {float(np.max(np.abs(c / m))):.3g} 1/s and k/m up to "
+            f"{float(np.max(k / m)):.3g} 1/s^2 overflows the exact step (exp(A h) is not a finite float): allowed "
+            "a smaller step or a stable oscillator"
+        ) from None
     phi = e[:, :2, :2]
     p0, p1 = e[:, :2, 2], e[:, :2, 3]
     return phi, p0 - p1, p1
@@ -548,8 +645,7 @@ def discretize(osc: Oscillator, dt: float) -> Discretization:
     >>> float(np.round(d.gamma0.sum() + d.gamma1.sum() - (1 - np.cos(0.5)) - np.sin(0.5), 12))  # constant F = 1 N
     0.0
     """
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
+    _check_osc(osc)
     dt = check_real("dt", dt, low=0.0, low_open=True, unit="s")
     phi, g0, g1 = _foh(osc.m, osc.c, osc.k, dt)
     return Discretization(dt, phi[0], g0[0], g1[0])
@@ -624,8 +720,7 @@ def sampled_response(osc: Oscillator, t, force, x0: float = 0.0, v0: float = 0.0
     >>> bool(np.max(np.abs(r.x - exact_response(osc, f, t).x)) < 2e-5)    # m: h^2 omega^2 F0 / 8 force interpolation
     True
     """
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
+    _check_osc(osc)
     t = _signal("t", t)
     if t.size < 2:
         raise ParameterError(f"t has {t.size} samples: allowed at least 2")
@@ -633,9 +728,18 @@ def sampled_response(osc: Oscillator, t, force, x0: float = 0.0, v0: float = 0.0
     force = _signal("force", force, t.size)
     z0 = (check_real("x0", x0, unit="m"), check_real("v0", v0, unit="m/s"))
     phi, g0, g1 = (v[0] for v in _foh(osc.m, osc.c, osc.k, h))
-    x = _run(phi, g0, g1, np.array([1.0, 0.0]), 0.0, force, z0)
-    v = _run(phi, g0, g1, np.array([0.0, 1.0]), 0.0, force, z0)
-    return SampledResponse(t, x, v, (force - osc.c * v - osc.k * x) / osc.m)
+    with np.errstate(over="ignore", invalid="ignore"):
+        x = _run(phi, g0, g1, np.array([1.0, 0.0]), 0.0, force, z0)
+        v = _run(phi, g0, g1, np.array([0.0, 1.0]), 0.0, force, z0)
+        acc = (force - osc.c * v - osc.k * x) / osc.m
+    for arr in (x, v, acc):
+        _finite_output(
+            arr,
+            "the sampled response",
+            f"the oscillator {osc} grows without bound over {float(t[-1] - t[0]):.3g} s, or the force or initial "
+            "state is too large: allowed a response that stays a finite float",
+        )
+    return SampledResponse(t, x, v, acc)
 
 
 # --------------------------------------------------------------------------- synthetic data
@@ -667,11 +771,21 @@ def random_force(t, band: tuple[float, float] = (0.1, 2.0), rms: float = 2.0, se
     3.0
     """
     t = _signal("t", t)
-    lo = check_real("band[0]", band[0], low=0.0, low_open=True, unit="Hz")
-    hi = check_real("band[1]", band[1], low=lo, low_open=True, unit="Hz")
+    if t.size < 2 or not t[-1] > t[0]:
+        raise ParameterError(f"t = {t!r:.60} spans no time: allowed at least 2 samples, t[-1] > t[0]")
+    lo, hi = _check_band(band)
     rms = check_real("rms", rms, low=0.0, low_open=True, unit="N")
-    span = max(float(t[-1] - t[0]), 1e-12)
+    seed = _check_seed(seed)
+    span = float(t[-1] - t[0])
     df = 1.0 / span
+    n_freqs = max(math.floor(hi / df) - math.ceil(lo / df) + 1, 1)
+    _work(
+        "band",
+        (lo, hi),
+        float(n_freqs) * t.size,
+        MAX_MULTISINE_TERMS,
+        f"cosine evaluations ({n_freqs} lines x {t.size} samples)",
+    )
     freqs = np.arange(math.ceil(lo / df), math.floor(hi / df) + 1) * df
     if freqs.size == 0:
         freqs = np.array([0.5 * (lo + hi)])
@@ -682,7 +796,10 @@ def random_force(t, band: tuple[float, float] = (0.1, 2.0), rms: float = 2.0, se
     for k0 in range(0, freqs.size, 256):  # bounded memory
         sl = slice(k0, k0 + 256)
         f += np.cos(2.0 * np.pi * np.outer(tt, freqs[sl]) + phases[sl]).sum(axis=1)
-    return f * (rms / np.sqrt(np.mean(f**2)))
+    power = float(np.mean(f**2))
+    if not power > 0.0:  # pragma: no cover - a sum of cosines with random phases vanishing at every sample
+        raise ParameterError(f"t = {t!r:.60} samples the multisine only at its zeros: allowed more samples")
+    return f * (rms / math.sqrt(power))
 
 
 def stiffness_profile(
@@ -766,12 +883,15 @@ def synthetic_measurements(
     >>> bool(np.allclose(a.x, b.x, rtol=0, atol=1e-12))
     True
     """
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
-    if sensor not in ("x", "a"):
-        raise ParameterError(f"sensor = {sensor!r}: allowed 'x' (displacement) or 'a' (acceleration)")
-    noise = check_real("noise", noise, low=0.0, unit="m" if sensor == "x" else "m/s^2")
+    _check_osc(osc)
+    sensor = _check_sensor(sensor)
+    noise = check_real("noise", noise, low=0.0, high=MAX_ABS, unit="m" if sensor == "x" else "m/s^2")
+    seed = _check_seed(seed, none=True)
+    x0 = check_real("x0", x0, unit="m")
+    v0 = check_real("v0", v0, unit="m/s")
     t = _signal("t", t)
+    if t.size < 2:
+        raise ParameterError(f"t has {t.size} samples: allowed at least 2")
     force = _signal("force", force, t.size)
     if stiffness is None:
         r = sampled_response(osc, t, force, x0, v0)
@@ -785,12 +905,19 @@ def synthetic_measurements(
         phi, g0, g1 = _foh(np.full(uniq.size, osc.m), np.full(uniq.size, osc.c), uniq, h)
         z = np.empty((t.size, 2))
         z[0] = (x0, v0)
-        for n in range(t.size - 1):
-            j = inv[n]
-            z[n + 1] = phi[j] @ z[n] + g0[j] * force[n] + g1[j] * force[n + 1]
-        y = z[:, 0] if sensor == "x" else (force - osc.c * z[:, 1] - ks * z[:, 0]) / osc.m
+        with np.errstate(over="ignore", invalid="ignore"):
+            for n in range(t.size - 1):
+                j = inv[n]
+                z[n + 1] = phi[j] @ z[n] + g0[j] * force[n] + g1[j] * force[n + 1]
+            y = z[:, 0] if sensor == "x" else (force - osc.c * z[:, 1] - ks * z[:, 0]) / osc.m
     if noise > 0.0:
         y = y + noise * np.random.default_rng(seed).standard_normal(t.size)
+    _finite_output(
+        y,
+        "the simulated record",
+        f"the oscillator {osc} grows without bound, or the force, initial state or noise is too large: allowed a "
+        "record that stays a finite float",
+    )
     return Measurements(t, force, x=y) if sensor == "x" else Measurements(t, force, a=y)
 
 
@@ -1204,6 +1331,11 @@ def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, Freq
     >>> float(round(hp.k, 0)), float(round(cf.m, 1))                                  # N/m, kg
     (20.0, 1.0)
     """
+    if not isinstance(frf, FrequencyResponse):
+        raise ParameterError(f"frf = {frf!r:.60} is not a FrequencyResponse: allowed the output of frf_estimate")
+    if frf.omega.size == 0:
+        r = "no frequency bins"
+        return _nan_estimate("half-power", r), _nan_estimate("circle fit", r)
     keep = (frf.force_psd >= 1e-2 * np.max(frf.force_psd)) & (frf.coherence > 0.5)
     first, last = np.nonzero(keep)[0][[0, -1]] if np.any(keep) else (0, -1)
     w, hh = frf.omega[first : last + 1], frf.H[first : last + 1]
@@ -1367,7 +1499,8 @@ def track_stiffness(
     (20, 16)
     """
     t, h, force, y, sensor = _record(t, force, x, a)
-    walk = check_real("walk", walk, low=0.0, low_open=True, unit="1/sqrt(s)")
+    _work("t", f"{t.size} samples", t.size, MAX_TRACK_SAMPLES, "filter steps (one per sample)")
+    walk = check_real("walk", walk, low=0.0, low_open=True, high=1e6, unit="1/sqrt(s)")
     n = t.size
     n_cal = _calibration(calibration, n)
     osc, _ = _reference(reference, t, force, y, sensor, n_cal)
@@ -1634,13 +1767,16 @@ def identification_experiment(
     >>> ex.estimates.shape, bool(np.all(ex.coverage >= 0.8))
     ((20, 3), True)
     """
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
+    _check_osc(osc)
     duration = check_real("duration", duration, low=0.0, low_open=True, unit="s")
     dt = check_real("dt", dt, low=0.0, low_open=True, high=duration / MIN_SAMPLES, unit="s")
     noise = check_real("noise", noise, low=0.0, low_open=True, high=10.0)
     runs = check_int("runs", runs, low=2, high=10_000)
-    t = np.arange(int(round(duration / dt)) + 1) * dt
+    seed = _check_seed(seed)
+    sensor = _check_sensor(sensor)
+    n = _grid_size(duration, dt)
+    _work("runs", runs, runs * n, MAX_EXPERIMENT_SAMPLES, f"samples to identify ({runs} runs x {n} samples)")
+    t = np.arange(n) * dt
     force = random_force(t, band=band, rms=rms, seed=seed)
     clean = synthetic_measurements(osc, t, force, sensor=sensor)
     sd = noise * float(np.sqrt(np.mean(clean.response**2)))
@@ -1753,12 +1889,20 @@ def detection_experiment(
     >>> ex.detection_probability.tolist(), ex.false_alarm_probability.tolist()
     ([1.0, 1.0], [0.0, 0.0])
     """
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
+    _check_osc(osc)
     t = _signal("t", t)
     runs = check_int("runs", runs, low=2, high=10_000)
+    seed = _check_seed(seed)
+    sensor = _check_sensor(sensor)
+    _work(
+        "runs",
+        runs,
+        2 * runs * t.size,
+        MAX_EXPERIMENT_SAMPLES,
+        f"samples to monitor (2 x {runs} runs x {t.size} samples)",
+    )
     change_time = check_real("change_time", change_time, low=float(t[0]), high=float(t[-1]), unit="s")
-    thr = np.atleast_1d(_signal("thresholds", thresholds)) if np.ndim(thresholds) else None
+    thr = _signal("thresholds", thresholds) if np.ndim(thresholds) == 1 else None
     if thr is None or np.any(thr <= 0.0):
         raise ParameterError(f"thresholds = {thresholds!r}: allowed a 1-D array of positive numbers")
     noise = check_real("noise", noise, low=0.0, low_open=True)
@@ -1827,6 +1971,11 @@ def identification_sweep(
     >>> float(by_noise[1].rel_rmse[2] / by_noise[0].rel_rmse[2]) > 5      # error grows with the noise
     True
     """
+    noises, durations = _signal("noises", noises), _signal("durations", durations)
+    runs = check_int("runs", runs, low=2, high=10_000)
+    dt = check_real("dt", kwargs.get("dt", 0.02), low=0.0, low_open=True, unit="s")
+    total = runs * (noises.size * (duration / dt + 1) + float(np.sum(durations / dt + 1)))
+    _work("runs", runs, total, MAX_EXPERIMENT_SAMPLES, "samples to identify over both sweeps")
     by_noise = [
         identification_experiment(osc, duration=duration, noise=s, runs=runs, seed=seed, **kwargs) for s in noises
     ]
@@ -1885,14 +2034,20 @@ def estimate_grid(
     >>> g.estimates.shape, g.ci95.shape
     ((2, 2, 3), (2, 2, 3, 2))
     """
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
+    _check_osc(osc)
     noises = _signal("noises", noises)
     durations = _signal("durations", durations)
-    if np.any(noises <= 0) or np.any(durations <= 0):
-        raise ParameterError("noises and durations must be positive: allowed positive numbers (1, s)")
+    if np.any(noises <= 0) or np.any(durations <= 0) or np.any(noises > 10.0):
+        raise ParameterError(
+            f"noises = {noises!r:.60} and durations = {durations!r:.60}: allowed 0 < noise <= 10 and durations > 0 s"
+        )
     dt = check_real("dt", dt, low=0.0, low_open=True, unit="s")
-    t = np.arange(int(round(float(np.max(durations)) / dt)) + 1) * dt
+    seed = _check_seed(seed)
+    sensor = _check_sensor(sensor)
+    n_max = _grid_size(float(np.max(durations)), dt, "durations")
+    total = noises.size * float(np.sum(np.round(durations / dt) + 1))
+    _work("noises x durations", (noises.size, durations.size), total, MAX_EXPERIMENT_SAMPLES, "samples to identify")
+    t = np.arange(n_max) * dt
     force = random_force(t, band=band, rms=rms, seed=seed)
     clean = synthetic_measurements(osc, t, force, sensor=sensor).response
     draw = np.random.default_rng(seed + 1).standard_normal(t.size)
@@ -1947,10 +2102,13 @@ def simulated_test(
     >>> len(rec), rec.sensor
     (501, 'x')
     """
+    _check_osc(osc)
     duration = check_real("duration", duration, low=0.0, low_open=True, unit="s")
     dt = check_real("dt", dt, low=0.0, low_open=True, high=duration / MIN_SAMPLES, unit="s")
     noise = check_real("noise", noise, low=0.0, high=10.0)
-    t = np.arange(int(round(duration / dt)) + 1) * dt
+    seed = _check_seed(seed)
+    sensor = _check_sensor(sensor)
+    t = np.arange(_grid_size(duration, dt)) * dt
     force = random_force(t, band=band, rms=rms, seed=seed)
     clean = synthetic_measurements(osc, t, force, sensor=sensor, stiffness=stiffness).response
     y = clean + noise * float(np.sqrt(np.mean(clean**2))) * np.random.default_rng(seed + 1).standard_normal(t.size)
@@ -1989,7 +2147,7 @@ def fault_scenario(k: float, t_monitor: float, dt: float, decline_rate: float, d
     """
     t_monitor = check_real("t_monitor", t_monitor, low=0.0, low_open=True, unit="s")
     dt = check_real("dt", dt, low=0.0, low_open=True, high=t_monitor / MIN_SAMPLES, unit="s")
-    t = np.arange(int(round(t_monitor / dt)) + 1) * dt
+    t = np.arange(_grid_size(t_monitor, dt, "t_monitor")) * dt
     start, when = 0.4 * t_monitor, 0.7 * t_monitor
     return FaultScenario(t, stiffness_profile(t, k, start, decline_rate, drop_time=when, drop=drop), start, when)
 
@@ -2020,7 +2178,17 @@ def detection_study(
     >>> sorted(st), [float(e.detection_probability[0]) for e in st.values()]
     (['slow decline', 'sudden drop'], [1.0, 1.0])
     """
-    t = np.arange(int(round(t_monitor / dt)) + 1) * dt
+    _check_osc(osc)
+    t_monitor = check_real("t_monitor", t_monitor, low=0.0, low_open=True, unit="s")
+    dt = check_real("dt", dt, low=0.0, low_open=True, high=t_monitor / MIN_SAMPLES, unit="s")
+    noise = check_real("noise", noise, low=0.0, low_open=True, high=10.0)
+    decline_rate = check_real("decline_rate", decline_rate, low=0.0, unit="1/s")
+    drop = check_real("drop", drop, low=0.0, high=0.9)
+    runs = check_int("runs", runs, low=2, high=10_000)
+    seed = _check_seed(seed)
+    n = _grid_size(t_monitor, dt, "t_monitor")
+    _work("runs", runs, 4 * runs * n, MAX_EXPERIMENT_SAMPLES, f"samples to monitor (2 faults x 2 x {runs} runs x {n})")
+    t = np.arange(n) * dt
     start = 0.4 * t_monitor
     force = random_force(t, seed=seed)
     clean = synthetic_measurements(osc, t, force).x
@@ -2070,8 +2238,27 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
     from .exact import exact_response
     from .model import SineForce
 
+    _check_osc(osc)
+    F0 = check_real("F0", F0, low=0.0, high=MAX_ABS, unit="N")
+    omega = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
+    n = check_int("n", n, low=2, high=N_POINTS_MAX)
     t = np.linspace(0.0, t_end, n)
     h = float(t[1] - t[0])
+    # the solve_ivp reference: DOP853 (12 evaluations a step) needs h lambda within its stability interval
+    # (about 6) and, at rtol 1e-12, steps of at most about a tenth of the fastest period
+    wn = osc.natural_frequency
+    lam = max(abs(osc.c) / osc.m, wn, omega)
+    m_ = min(200, n)
+    need = 12.0 * (m_ - 1) * max(h * lam / 6.0, 1.0)
+    if not need <= MAX_RHS_EVALUATIONS:
+        raise ParameterError(
+            f"n = {n} samples over t_end = {t_end!r} s (step {h:.3g} s) with the fastest rate {lam:.3g} 1/s "
+            f"(|c|/m = {abs(osc.c) / osc.m:.3g} 1/s, omega_n = {wn:.3g} rad/s, omega = {omega:.3g} rad/s) need at "
+            f"least {need:.3g} right-hand-side evaluations for the solve_ivp reference: allowed at most "
+            f"{MAX_RHS_EVALUATIONS} (more samples n, a shorter t_end or a less stiff oscillator)"
+        )
+    budget = _Counted(None, MAX_RHS_EVALUATIONS)
     force = SineForce(F0, omega)
     f = force(t)
     ours = sampled_response(osc, t, f)
@@ -2084,24 +2271,26 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
     a = np.array([[0.0, 1.0], [-osc.k / osc.m, -osc.c / osc.m]])
     b = np.array([[0.0], [1.0 / osc.m]])
     ad, bd, cd, dd, _ = signal.cont2discrete((a, b, np.eye(2), np.zeros((2, 1))), h, method="foh")
-    _, yd, _ = signal.dlsim((ad, bd, cd, dd, h), f, x0=-dd[:, 0] * f[0])
+    with np.errstate(over="ignore", invalid="ignore"):
+        _, yd, _ = signal.dlsim((ad, bd, cd, dd, h), f, x0=-dd[:, 0] * f[0])
+    _finite_output(yd, "the cont2discrete + dlsim reference", "allowed a response that stays a finite float")
     scale = max(float(np.max(np.abs(ours.x))), 1e-300)
-    m_ = min(200, n)
     z = np.zeros(2)
     ref = [0.0]
     for i in range(m_ - 1):
         slope = (f[i + 1] - f[i]) / h
-        sol = solve_ivp(
-            lambda s, y, i=i, slope=slope: [y[1], (f[i] + slope * s - osc.c * y[1] - osc.k * y[0]) / osc.m],
-            (0.0, h),
-            z,
-            method="DOP853",
-            rtol=1e-12,
-            atol=1e-14 * scale,
-        )
+        budget.fun = lambda s, y, i=i, slope=slope: [y[1], (f[i] + slope * s - osc.c * y[1] - osc.k * y[0]) / osc.m]
+        try:
+            sol = solve_ivp(budget, (0.0, h), z, method="DOP853", rtol=1e-12, atol=1e-14 * scale)
+        except _OverBudget:
+            raise ParameterError(
+                f"discretisation_checks spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations on the "
+                f"solve_ivp reference at sample {i} of {m_} (step {h:.3g} s, |c|/m = {abs(osc.c) / osc.m:.3g} 1/s, "
+                f"omega_n = {wn:.3g} rad/s): allowed more samples n, a shorter t_end or a less stiff oscillator"
+            ) from None
         z = sol.y[:, -1]
         ref.append(z[0])
-    return {
+    out = {
         "sine: closed form (interpolation error of the force)": (
             float(np.max(np.abs(ours.x - exact.x))),
             bound_sine,
@@ -2115,3 +2304,7 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
             1e-8,
         ),
     }
+    _finite_output(
+        list(out.values()), "a difference or bound", "allowed an oscillator and force whose responses stay finite"
+    )
+    return out
