@@ -401,6 +401,201 @@ def simulate_controlled(
 
 # ----------------------------------------------------------------------------- PID with a force limit
 
+#: Right-hand-side evaluations one adaptive (DOP853) run may use, about 5 s of Python work.
+MAX_NFEV = 250_000
+
+#: Smooth pieces (between switching events) one run of :func:`pid_response` may have.
+MAX_SEGMENTS = 20_000
+
+
+class _OverBudget(Exception):
+    """Raised from a counting right-hand side when the run exceeds its evaluation budget."""
+
+
+def _counted(f, budget: list):
+    """Wrap ``f`` so that every call spends one unit of ``budget[0]``; :class:`_OverBudget` when spent."""
+
+    def g(t, y):
+        budget[0] -= 1
+        if budget[0] < 0:
+            raise _OverBudget
+        return f(t, y)
+
+    return g
+
+
+def _work_check(t_end: float, rate: float, rtol: float, what: str) -> None:
+    """Refuse up front a window that spans too many of the loop's fastest time scales for DOP853."""
+    # DOP853 at rtol 1e-10 needs about 100 evaluations per unit of t * rate on these loops (measured)
+    est = 100.0 * t_end * rate * (1e-10 / rtol) ** 0.125
+    if not est <= MAX_NFEV:
+        raise ParameterError(
+            f"t_end = {t_end!r} s spans {t_end * rate:.3g} time scales of the {what} (fastest rate {rate:.3g} 1/s): "
+            f"about {est:.3g} right-hand-side evaluations, allowed at most {MAX_NFEV} "
+            f"(t_end * rate <= {MAX_NFEV / 100.0 / (1e-10 / rtol) ** 0.125:.3g}); shorten t_end or soften the loop"
+        )
+
+
+def _over_budget(t: float, t_end: float, what: str) -> ParameterError:
+    return ParameterError(
+        f"t_end = {t_end!r} s: the {what} used its budget of {MAX_NFEV} right-hand-side evaluations by t = {t:.6g} s "
+        "(a stiff loop, a discontinuous controller or a tolerance too tight); shorten t_end or loosen rtol"
+    )
+
+
+def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) -> tuple[np.ndarray, int]:
+    """Integrate the limited PID loop piece by piece between its switching events (DOP853 on each piece).
+
+    The pieces: ``L`` (linear, ``|u_d| < u_max``), ``S`` (saturated at ``s u_max``, ``s = +-1``;
+    with clamping the integrator is frozen while ``s e > 0``) and, with clamping, the sliding
+    mode ``Z`` on ``u_d = s u_max``: there the linear side pushes ``u_d`` into the limit and
+    the frozen side pulls it back, so the state sticks on the surface; Filippov's solution keeps
+    ``u_d = s u_max`` with the integrator rate ``I' = (kp v + kd a) / ki``. Each piece is smooth, so
+    DOP853 keeps its order; the pieces end at located events. Returns the states ``(3, n)`` on the
+    grid and the number of right-hand-side evaluations.
+    """
+    from scipy.integrate import solve_ivp
+
+    m, c, k, F0, wf = p["m"], p["c"], p["k"], p["F0"], p["wf"]
+    kp, ki, kd, umax, xr, mode, gbc = p["kp"], p["ki"], p["kd"], p["umax"], p["x_ref"], p["mode"], p["gain_bc"]
+    sin = math.sin
+
+    def acc(t, x, v, u):
+        return (F0 * sin(wf * t) - c * v - k * x + u) / m
+
+    def ud_of(x, v, i):
+        return kp * (xr - x) + ki * i - kd * v
+
+    def rhs_lin(t, y):
+        x, v, i = y
+        e = xr - x
+        return (v, acc(t, x, v, kp * e + ki * i - kd * v), e)
+
+    def make_sat(s, frozen):
+        u = s * umax
+
+        def rhs(t, y):
+            x, v, i = y
+            e = xr - x
+            if frozen:
+                di = 0.0
+            elif mode == 2:
+                di = e + (u - (kp * e + ki * i - kd * v)) * gbc
+            else:
+                di = e
+            return (v, acc(t, x, v, u), di)
+
+        return rhs
+
+    def make_slide(s):
+        u = s * umax
+
+        def rhs(t, y):
+            x, v, _ = y
+            a = acc(t, x, v, u)
+            return (v, a, (kp * v + kd * a) / ki)
+
+        return rhs
+
+    def ev(f, direction):
+        f.terminal, f.direction = True, direction
+        return f
+
+    def events(kind, s, frozen):
+        if kind == "L":
+            return [
+                ev(lambda t, y: ud_of(*y) - umax, 1.0),
+                ev(lambda t, y: ud_of(*y) + umax, -1.0),
+            ]
+        if kind == "S":
+            out = [ev(lambda t, y: s * ud_of(*y) - umax, -1.0)]
+            if mode == 1:  # the integrator law switches where e changes sign
+                out.append(ev(lambda t, y: xr - y[0], -s if frozen else s))
+            return out
+
+        def d_rate(t, y):  # rate of u_d with the integrator frozen, on the surface
+            return -kp * y[1] - kd * acc(t, y[0], y[1], s * umax)
+
+        return [
+            ev(lambda t, y: s * d_rate(t, y), 1.0),  # the frozen side no longer pulls back: into S
+            ev(lambda t, y: s * (d_rate(t, y) + ki * (xr - y[0])), -1.0),  # the linear side no longer pushes: into L
+        ]
+
+    def classify(t, y):
+        x, v, i = y
+        e = xr - x
+        ud = ud_of(x, v, i)
+        tol = 1e-9 * (umax + abs(kp * e) + abs(ki * i) + abs(kd * v))
+        for s in (1.0, -1.0):
+            gap = s * ud - umax
+            se = s * e if abs(e) > 1e-12 * (abs(xr) + abs(x)) else -s * v
+            if gap > tol:
+                return "S", s, mode == 1 and se > 0.0
+            if gap >= -tol:  # on the surface u_d = s u_max: the rates decide
+                d = -kp * v - kd * acc(t, x, v, s * umax)
+                r_lin = d + ki * e
+                if mode == 1 and se > 0.0:
+                    if s * r_lin <= 0.0:
+                        return "L", s, False
+                    return ("S", s, True) if s * d > 0.0 else ("Z", s, False)
+                return ("S", s, False) if s * r_lin > 0.0 else ("L", s, False)
+        return "L", 1.0, False
+
+    n = grid.size
+    out = np.empty((3, n))
+    filled, t0, y0 = 0, 0.0, np.zeros(3)
+    budget = [MAX_NFEV]
+    segments = 0
+    what = "PID loop"
+    nxt = None
+    while True:
+        if not math.isfinite(umax):
+            kind, s, frozen = "L", 1.0, False
+        else:
+            kind, s, frozen = nxt if nxt is not None else classify(t0, y0)
+        if kind == "Z":  # put the state exactly on the surface
+            y0 = y0.copy()
+            y0[2] = (s * umax - kp * (xr - y0[0]) + kd * y0[1]) / ki
+        f = rhs_lin if kind == "L" else make_sat(s, frozen) if kind == "S" else make_slide(s)
+        evs = events(kind, s, frozen) if math.isfinite(umax) else None
+        segments += 1
+        if segments > MAX_SEGMENTS:
+            raise ParameterError(
+                f"u_max = {umax!r} N: the limited PID loop switched more than {MAX_SEGMENTS} times by t = {t0:.6g} s "
+                "(chattering against the limit); allowed at most that many pieces: shorten t_end"
+            )
+        try:
+            sol = solve_ivp(
+                _counted(f, budget), (t0, t_end), y0, method="DOP853", t_eval=grid[filled:], rtol=rtol, atol=atol,
+                events=evs,
+            )  # fmt: skip
+        except _OverBudget:
+            raise _over_budget(t0, t_end, what) from None
+        if sol.status < 0:  # pragma: no cover - DOP853 does not fail on this bounded piecewise-linear system
+            raise RuntimeError(f"solve_ivp (DOP853) failed at t = {sol.t[-1]:g} s: {sol.message}")
+        m_new = len(sol.t)  # a list (empty) when the piece ends before the next sample
+        if m_new:
+            ys = sol.y
+            if kind == "Z":
+                ys = ys.copy()
+                ys[2] = (s * umax - kp * (xr - ys[0]) + kd * ys[1]) / ki
+            out[:, filled : filled + m_new] = ys
+            filled += m_new
+        if sol.status == 0 or filled >= n:
+            break
+        hit = next(j for j, te in enumerate(sol.t_events) if te.size)
+        t0, y0 = float(sol.t_events[hit][0]), np.array(sol.y_events[hit][0], dtype=float)
+        nxt = None
+        if kind == "Z":  # leaving the sliding mode: to the frozen side or to the linear side
+            nxt = ("S", s, True) if hit == 0 else ("L", s, False)
+        elif kind == "S" and hit == 1:  # e changed sign: the integrator law switches
+            nxt = ("S", s, not frozen)
+    if not np.all(np.isfinite(out[:, :filled])) or filled < n:
+        raise ParameterError(
+            f"t_end = {t_end!r} s: the PID loop's response overflowed (an unstable loop grows beyond floating point)"
+        )
+    return out, MAX_NFEV - budget[0]
+
 
 @dataclass(frozen=True)
 class PIDResponse:
@@ -479,8 +674,6 @@ def pid_response(
     >>> round(float(r.x[-1]), 6)                        # m: integral action removes the offset
     0.1
     """
-    from scipy.integrate import solve_ivp
-
     _check_osc(osc)
     if force is not None and not isinstance(force, SineForce):
         raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
@@ -498,29 +691,15 @@ def pid_response(
     grid = _grid(t_end, n_points)
     rtol = check_real("rtol", rtol, low=0.0, low_open=True)
     atol = check_real("atol", atol, low=0.0, low_open=True)
-    m, c, k = osc.m, osc.c, osc.k
     F0, wf = (force.F0, force.omega) if force is not None else (0.0, 0.0)
-    sin = math.sin
     mode = ANTI_WINDUP.index(anti_windup)
-    gain_bc = 1.0 / (ki * tt)
-
-    def rhs(t, y):
-        x, v, i = y
-        e = x_ref - x
-        ud = kp * e + ki * i - kd * v
-        u = min(max(ud, -umax), umax)
-        if mode == 0:
-            di = e
-        elif mode == 1:
-            di = 0.0 if (u != ud and e * ud > 0.0) else e
-        else:
-            di = e + (u - ud) * gain_bc
-        return (v, (F0 * sin(wf * t) - c * v - k * x + u) / m, di)
-
-    sol = solve_ivp(rhs, (0.0, grid[-1]), (0.0, 0.0, 0.0), method="DOP853", t_eval=grid, rtol=rtol, atol=atol)
-    if sol.status != 0:  # pragma: no cover - DOP853 does not fail on this bounded system
-        raise RuntimeError(f"solve_ivp (DOP853) failed at t = {sol.t[-1]:g} s: {sol.message}")
-    x, v, integ = sol.y
+    p = dict(m=osc.m, c=osc.c, k=osc.k, F0=F0, wf=wf, kp=kp, ki=ki, kd=kd, umax=umax, x_ref=x_ref, mode=mode,
+             gain_bc=1.0 / (ki * tt))  # fmt: skip
+    A = np.array([[0.0, 1.0, 0.0], [-(osc.k + kp) / osc.m, -(osc.c + kd) / osc.m, ki / osc.m], [-1.0, 0.0, 0.0]])
+    rate = max(float(np.max(np.abs(np.linalg.eigvals(A)))), osc.natural_frequency + abs(osc.c) / osc.m, wf)
+    _work_check(float(grid[-1]), rate, rtol, "PID loop")
+    y, nfev = _pid_run(p, grid, rtol, atol, float(grid[-1]))
+    x, v, integ = y
     ud = kp * (x_ref - x) + ki * integ - kd * v
     return PIDResponse(
         t=grid,
@@ -531,7 +710,7 @@ def pid_response(
         u_demand=ud,
         anti_windup=anti_windup,
         u_max=umax,
-        nfev=int(sol.nfev),
+        nfev=int(nfev),
     )
 
 
@@ -750,141 +929,151 @@ def _sa_params(osc, law, c_sky, c_min, c_max, damper):
     return SEMI_ACTIVE_LAWS.index(law), p
 
 
+# The kernels are plain module-level functions compiled on first use by _sa_kernel (numba is imported
+# lazily). They refer to each other through the module globals below, not through closures: numba's
+# on-disk cache keys a closure by its pickled free variables, which differ in every process, so nested
+# kernels were recompiled (several seconds) by every new process.
 _KERNEL = None
+_nb_device = _nb_rhs = _nb_run = None
+_prange = range
+
+
+def _sa_device(law, p, xb, vb, s):  # pragma: no cover - compiled
+    """Force of the device on the mass (N), state derivatives of the MR internals, command."""
+    c_sky, c_min, c_max = p[3], p[4], p[5]
+    x, v = s[0], s[1]
+    vr = v - vb
+    dz = dy = du = 0.0
+    cmd = 0.0
+    if law == 0:  # passive at c_min
+        f = -c_min * vr
+    elif law == 1:  # ideal skyhook
+        f = -c_sky * v
+    elif law == 2:  # on-off skyhook
+        if v * vr > 0.0:
+            f = -c_max * vr
+            cmd = 1.0
+        else:
+            f = -c_min * vr
+    elif law == 3:  # continuous clipped skyhook
+        if v * vr > 0.0:
+            a = min(max(c_sky * abs(v), c_min * abs(vr)), c_max * abs(vr))
+            f = -a if vr > 0.0 else a
+            cmd = 1.0
+        else:
+            f = -c_min * vr
+    else:  # MR damper, modified Bouc-Wen, clipped-optimal voltage
+        xr = x - xb
+        z, y, u = s[2], s[3], s[4]
+        c0 = p[6] + p[7] * u
+        k0 = p[8]
+        c1 = p[9] + p[10] * u
+        k1 = p[11]
+        alpha = p[12] + p[13] * u
+        gam, bet, A, n, eta, vmax = p[14], p[15], p[16], p[17], p[18], p[19]
+        dy = (alpha * z + c0 * vr + k0 * (xr - y)) / (c0 + c1)
+        d = vr - dy
+        az = abs(z)
+        if n == 2.0:
+            dz = -gam * abs(d) * z * az - bet * d * az * az + A * d
+        else:
+            dz = -gam * abs(d) * z * az ** (n - 1.0) - bet * d * az**n + A * d
+        f = -(c1 * dy + k1 * xr)
+        if v * vr > 0.0:
+            cmd = 1.0
+        du = -eta * (u - cmd * vmax)
+    return f, dz, dy, du, cmd
+
+
+def _sa_rhs(law, p, xb, vb, s, out):  # pragma: no cover - compiled
+    m, c, k = p[0], p[1], p[2]
+    f, dz, dy, du, cmd = _nb_device(law, p, xb, vb, s)
+    out[0] = s[1]
+    out[1] = (-k * (s[0] - xb) - c * (s[1] - vb) + f) / m
+    out[2] = dz
+    out[3] = dy
+    out[4] = du
+    return f, cmd
+
+
+def _sa_run(law, p, Y, w, s0, dt, n_steps, stride, m_start):  # pragma: no cover - compiled
+    """RK4 from state s0 for n_steps of dt; record every stride steps; measure from step m_start.
+
+    Returns (record (n_rec, 5): t, x, v, f, cmd; stats: sum x cos, sum x sin, max|x|,
+    sum f^2, max|f|, switches, samples, sum |f vr| dt).
+    """
+    s = s0.copy()
+    k1 = np.empty(5)
+    k2 = np.empty(5)
+    k3 = np.empty(5)
+    k4 = np.empty(5)
+    tmp = np.empty(5)
+    n_rec = n_steps // stride + 1
+    rec = np.empty((n_rec, 5))
+    stats = np.zeros(8)
+    prev = -1.0
+    yw = Y * w
+    for i in range(n_steps + 1):
+        t = i * dt
+        sn, cs = math.sin(w * t), math.cos(w * t)
+        f, cmd = _nb_rhs(law, p, Y * sn, yw * cs, s, k1)
+        if i % stride == 0:
+            j = i // stride
+            rec[j, 0] = t
+            rec[j, 1] = s[0]
+            rec[j, 2] = s[1]
+            rec[j, 3] = f
+            rec[j, 4] = s[4] if law == 4 else cmd
+        if i >= m_start and i < n_steps:  # left-point sums over whole periods (exact for trig polynomials)
+            x = s[0]
+            stats[0] += x * cs
+            stats[1] += x * sn
+            stats[2] = max(stats[2], abs(x))
+            stats[3] += f * f
+            stats[4] = max(stats[4], abs(f))
+            if prev >= 0.0 and cmd != prev:
+                stats[5] += 1.0
+            prev = cmd
+            stats[6] += 1.0
+            stats[7] += abs(f * (s[1] - yw * cs)) * dt
+        if i == n_steps:
+            break
+        for q in range(5):
+            tmp[q] = s[q] + 0.5 * dt * k1[q]
+        sh, ch = math.sin(w * (t + 0.5 * dt)), math.cos(w * (t + 0.5 * dt))
+        _nb_rhs(law, p, Y * sh, yw * ch, tmp, k2)
+        for q in range(5):
+            tmp[q] = s[q] + 0.5 * dt * k2[q]
+        _nb_rhs(law, p, Y * sh, yw * ch, tmp, k3)
+        for q in range(5):
+            tmp[q] = s[q] + dt * k3[q]
+        t1 = (i + 1) * dt
+        _nb_rhs(law, p, Y * math.sin(w * t1), yw * math.cos(w * t1), tmp, k4)
+        for q in range(5):
+            s[q] += dt / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
+    return rec, stats
+
+
+def _sa_sweep(law, p, Y, ws, s0s, dts, n_steps, n_settle):  # pragma: no cover - compiled
+    out = np.empty((ws.size, 8))
+    for j in _prange(ws.size):
+        _, st = _nb_run(law, p, Y, ws[j], s0s[j], dts[j], n_steps[j], n_steps[j], n_settle[j])
+        out[j] = st
+    return out
 
 
 def _sa_kernel():
     """Compile (once per process, cached on disk) the fixed-step RK4 of the semi-active loop."""
-    global _KERNEL
+    global _KERNEL, _nb_device, _nb_rhs, _nb_run, _prange
     if _KERNEL is not None:
         return _KERNEL
     import numba
 
-    @numba.njit(cache=True)
-    def device(law, p, xb, vb, s):  # pragma: no cover - compiled
-        """Force of the device on the mass (N), state derivatives of the MR internals, command."""
-        c_sky, c_min, c_max = p[3], p[4], p[5]
-        x, v = s[0], s[1]
-        vr = v - vb
-        dz = dy = du = 0.0
-        cmd = 0.0
-        if law == 0:  # passive at c_min
-            f = -c_min * vr
-        elif law == 1:  # ideal skyhook
-            f = -c_sky * v
-        elif law == 2:  # on-off skyhook
-            if v * vr > 0.0:
-                f = -c_max * vr
-                cmd = 1.0
-            else:
-                f = -c_min * vr
-        elif law == 3:  # continuous clipped skyhook
-            if v * vr > 0.0:
-                a = min(max(c_sky * abs(v), c_min * abs(vr)), c_max * abs(vr))
-                f = -a if vr > 0.0 else a
-                cmd = 1.0
-            else:
-                f = -c_min * vr
-        else:  # MR damper, modified Bouc-Wen, clipped-optimal voltage
-            xr = x - xb
-            z, y, u = s[2], s[3], s[4]
-            c0 = p[6] + p[7] * u
-            k0 = p[8]
-            c1 = p[9] + p[10] * u
-            k1 = p[11]
-            alpha = p[12] + p[13] * u
-            gam, bet, A, n, eta, vmax = p[14], p[15], p[16], p[17], p[18], p[19]
-            dy = (alpha * z + c0 * vr + k0 * (xr - y)) / (c0 + c1)
-            d = vr - dy
-            az = abs(z)
-            if n == 2.0:
-                dz = -gam * abs(d) * z * az - bet * d * az * az + A * d
-            else:
-                dz = -gam * abs(d) * z * az ** (n - 1.0) - bet * d * az**n + A * d
-            f = -(c1 * dy + k1 * xr)
-            if v * vr > 0.0:
-                cmd = 1.0
-            du = -eta * (u - cmd * vmax)
-        return f, dz, dy, du, cmd
-
-    @numba.njit(cache=True)
-    def rhs(law, p, xb, vb, s, out):  # pragma: no cover - compiled
-        m, c, k = p[0], p[1], p[2]
-        f, dz, dy, du, cmd = device(law, p, xb, vb, s)
-        out[0] = s[1]
-        out[1] = (-k * (s[0] - xb) - c * (s[1] - vb) + f) / m
-        out[2] = dz
-        out[3] = dy
-        out[4] = du
-        return f, cmd
-
-    @numba.njit(cache=True)
-    def run(law, p, Y, w, s0, dt, n_steps, stride, m_start):  # pragma: no cover - compiled
-        """RK4 from state s0 for n_steps of dt; record every stride steps; measure from step m_start.
-
-        Returns (record (n_rec, 5): t, x, v, f, cmd; stats: sum x cos, sum x sin, max|x|,
-        sum f^2, max|f|, switches, samples, sum |f vr| dt).
-        """
-        s = s0.copy()
-        k1 = np.empty(5)
-        k2 = np.empty(5)
-        k3 = np.empty(5)
-        k4 = np.empty(5)
-        tmp = np.empty(5)
-        n_rec = n_steps // stride + 1
-        rec = np.empty((n_rec, 5))
-        stats = np.zeros(8)
-        prev = -1.0
-        yw = Y * w
-        for i in range(n_steps + 1):
-            t = i * dt
-            sn, cs = math.sin(w * t), math.cos(w * t)
-            f, cmd = rhs(law, p, Y * sn, yw * cs, s, k1)
-            if i % stride == 0:
-                j = i // stride
-                rec[j, 0] = t
-                rec[j, 1] = s[0]
-                rec[j, 2] = s[1]
-                rec[j, 3] = f
-                rec[j, 4] = s[4] if law == 4 else cmd
-            if i >= m_start and i < n_steps:  # left-point sums over whole periods (exact for trig polynomials)
-                x = s[0]
-                stats[0] += x * cs
-                stats[1] += x * sn
-                stats[2] = max(stats[2], abs(x))
-                stats[3] += f * f
-                stats[4] = max(stats[4], abs(f))
-                if prev >= 0.0 and cmd != prev:
-                    stats[5] += 1.0
-                prev = cmd
-                stats[6] += 1.0
-                stats[7] += abs(f * (s[1] - yw * cs)) * dt
-            if i == n_steps:
-                break
-            for q in range(5):
-                tmp[q] = s[q] + 0.5 * dt * k1[q]
-            sh, ch = math.sin(w * (t + 0.5 * dt)), math.cos(w * (t + 0.5 * dt))
-            rhs(law, p, Y * sh, yw * ch, tmp, k2)
-            for q in range(5):
-                tmp[q] = s[q] + 0.5 * dt * k2[q]
-            rhs(law, p, Y * sh, yw * ch, tmp, k3)
-            for q in range(5):
-                tmp[q] = s[q] + dt * k3[q]
-            t1 = (i + 1) * dt
-            rhs(law, p, Y * math.sin(w * t1), yw * math.cos(w * t1), tmp, k4)
-            for q in range(5):
-                s[q] += dt / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
-        return rec, stats
-
-    @numba.njit(cache=True, parallel=True)
-    def sweep(law, p, Y, ws, s0s, dts, n_steps, n_settle):  # pragma: no cover - compiled
-        out = np.empty((ws.size, 8))
-        for j in numba.prange(ws.size):
-            _, st = run(law, p, Y, ws[j], s0s[j], dts[j], n_steps[j], n_steps[j], n_settle[j])
-            out[j] = st
-        return out
-
-    _KERNEL = (run, sweep)
+    _prange = numba.prange
+    _nb_device = numba.njit(cache=True)(_sa_device)
+    _nb_rhs = numba.njit(cache=True)(_sa_rhs)
+    _nb_run = numba.njit(cache=True)(_sa_run)
+    _KERNEL = (_nb_run, numba.njit(cache=True, parallel=True)(_sa_sweep))
     return _KERNEL
 
 
