@@ -1,5 +1,24 @@
-"""Lab oscillator: reader and analyses of a real driven, damped torsional oscillator."""
+"""Lab oscillator: reader and analyses of a real driven, damped torsional oscillator.
 
+Modules: :mod:`~vibration.physics.lab.logger` (the logger's CSV exports),
+:mod:`~vibration.physics.lab.decay` (exact free decay with viscous and Coulomb friction, and its
+whole-trace least-squares fit), :mod:`~vibration.physics.lab.peaks` (extrema and the classical
+peak analysis, an independent estimator).
+"""
+
+from vibration.physics.lab.decay import FreeDecayFit, fit_free_decay, free_decay_response
 from vibration.physics.lab.logger import LoggerRun, load_logger_runs
+from vibration.physics.lab.peaks import DecayPeaks, PeakDecayFit, free_decay_peaks, half_period_losses, peak_decay_fit
 
-__all__ = ["LoggerRun", "load_logger_runs"]
+__all__ = [
+    "DecayPeaks",
+    "FreeDecayFit",
+    "LoggerRun",
+    "PeakDecayFit",
+    "fit_free_decay",
+    "free_decay_peaks",
+    "free_decay_response",
+    "half_period_losses",
+    "load_logger_runs",
+    "peak_decay_fit",
+]
