@@ -8,6 +8,11 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 BUILD := build
 CHROMIUM ?= /usr/bin/chromium
+# The numerical environment of `make test`: generic machine code from numba, numpy's SIMD loops limited to
+# x86-64-v2, OpenBLAS's oldest x86-64 kernels, one thread. `make notebooks` writes the nbval references in
+# the machine's own environment, so every `make test` proves that they reproduce under other arithmetic.
+PORTABLE := NUMBA_CPU_NAME=generic NPY_DISABLE_CPU_FEATURES="X86_V3 X86_V4 AVX512_ICL AVX512_SPR" \
+	OPENBLAS_CORETYPE=Prescott OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 VIBRATION_PORTABLE=1
 # pytest workers, one per core (--dist loadfile keeps a notebook's cells, and a module's fixtures, in one worker)
 JOBS ?= 2
 
@@ -39,7 +44,7 @@ test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval a
 	$(PY) -m ruff check src tests notebooks
 	$(VENV)/bin/lint-imports
 	@mkdir -p $(BUILD); rc=0; \
-	$(PY) -m pytest -n $(JOBS) --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg tests src notebooks || rc=$$?; \
+	$(PORTABLE) $(PY) -m pytest -n $(JOBS) --dist loadfile --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg tests src notebooks || rc=$$?; \
 	echo $$rc > $(BUILD)/pytest.rc; \
 	if [ $$rc -eq 5 ]; then echo "error: pytest collected no tests (exit code 5)" >&2; fi; \
 	exit $$rc

@@ -46,17 +46,10 @@ from ..physics.exact import exact_response, steady_state
 from ..physics.model import N_POINTS_MAX, Oscillator, SineForce, check_int, check_real
 from .static_page import _asset
 from .style import figure, place_legend
-from .tables import Column, Table
+from .tables import Column, Table, bound
 
 #: Forcing periods at the end of the window that count as steady state.
 STEADY_PERIODS = 10
-
-
-def _bound(value: float) -> str:
-    """A rounding-level number as a bound: "< 1e-12" style (stable across CPUs)."""
-    if value == 0.0:
-        return "0"
-    return f"< 1e{math.floor(math.log10(abs(value))) + 1:d}"
 
 
 def _t_steady(t_end: float, omega: float) -> float:
@@ -332,12 +325,12 @@ def checks_table(a: ActiveStudy) -> Table:
     """Rounding-level checks of the active designs, printed as bounds."""
     rows = [
         {"check": "PD simulated (DOP853) against the exact oscillator (m, c + K_v, k + K_x), max |Δx| (m)",
-         "value": _bound(a.pd_error)},
+         "value": bound(a.pd_error, 1e-9)},
         {"check": "LQR gains: python-control against scipy's Riccati solver, relative",
-         "value": _bound(a.lqr_check["scipy"])},
+         "value": bound(a.lqr_check["scipy"], 1e-12)},
         {"check": "LQR gains: python-control against the closed form, relative",
-         "value": _bound(a.lqr_check["closed form"])},
-        {"check": "Riccati residual of the returned P, relative", "value": _bound(a.lqr_check["residual"])},
+         "value": bound(a.lqr_check["closed form"], 1e-12)},
+        {"check": "Riccati residual of the returned P, relative", "value": bound(a.lqr_check["residual"], 1e-12)},
     ]  # fmt: skip
     return Table(
         rows,

@@ -42,7 +42,7 @@ from ..physics.exact import exact_response
 from ..physics.model import Oscillator, ParameterError, SineForce, check_int, check_real
 from .static_page import _asset
 from .style import figure, place_legend
-from .tables import Column, Missing, Table
+from .tables import Column, Missing, Table, bound
 
 STABLE_LS, UNSTABLE_LS = "-", "--"
 C_HARD, C_SOFT, C_LIN = "#1f77b4", "#d62728", "#7f7f7f"
@@ -581,21 +581,16 @@ def lyapunov_table(study: DuffingStudy) -> Table:
     )
 
 
-def _bound(x: float) -> str:
-    if not math.isfinite(x):
-        return "—"
-    if x == 0:
-        return "0"
-    return f"< 1e{math.ceil(math.log10(x))}" if x > 0 else "0"
-
-
 def checks_table(study: DuffingStudy) -> Table:
     """Rounding-level self-checks, printed as bounds."""
     qr_sums = [abs(sum(r.exponents) + study.ueda.c / study.ueda.m) for _, _, r in study.lyapunov if r.method == "qr"]
     rows = [
-        {"check": "amplitude equation on the drawn curves, relative residual", "bound": _bound(study.amp_residual)},
-        {"check": "Floquet: |μ₁ μ₂| against exp(−cT/m), relative error", "bound": _bound(study.liouville)},
-        {"check": "QR exponents: |λ₁ + λ₂ + c/m| (RK4 step error), 1/s", "bound": _bound(max(qr_sums))},
+        {
+            "check": "amplitude equation on the drawn curves, relative residual",
+            "bound": bound(study.amp_residual, 1e-12),
+        },
+        {"check": "Floquet: |μ₁ μ₂| against exp(−cT/m), relative error", "bound": bound(study.liouville, 1e-9)},
+        {"check": "QR exponents: |λ₁ + λ₂ + c/m| (RK4 step error), 1/s", "bound": bound(max(qr_sums), 1e-6)},
     ]
     return Table(
         rows, [Column("check", "check"), Column("bound", "bound")], caption="Self-checks.", name="tab-duffing-checks"

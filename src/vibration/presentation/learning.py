@@ -18,7 +18,7 @@ import numpy as np
 
 from ..physics.learning import Comparison, LQRReference, OscillatorTask, TrainingResult, _moments
 from .style import figure, place_legend
-from .tables import Column, Missing, Table
+from .tables import Column, Missing, Table, bound
 
 __all__ = [
     "bound_fraction",
@@ -355,21 +355,13 @@ def checks_table(checks: dict[str, float]) -> Table:
     rows = []
     for key, value in checks.items():
         what, against = labels[key]
-        bound = Missing("not applicable") if not math.isfinite(value) else _bound(value)
-        rows.append({"what": what, "against": against, "bound": bound})
+        rows.append({"what": what, "against": against, "bound": bound(value, 1e-12)})
     return Table(
         rows,
         [Column("what", "quantity"), Column("against", "independent method"), Column("bound", "relative difference")],
         caption="Self-checks of the optimum and of the simulators (relative differences, printed as bounds).",
         name="tab-learning-checks",
     )
-
-
-def _bound(value: float) -> str:
-    for b in (1e-12, 1e-10, 1e-8, 1e-6, 1e-4, 1e-2):
-        if value < b:
-            return f"< {b:.0e}".replace("e-0", "e-")
-    return f"{value:.2g}"
 
 
 def closing_note(

@@ -46,7 +46,7 @@ from ..physics.stability import (
 )
 from .static_page import _asset
 from .style import figure, place_legend
-from .tables import Column, Missing, Table, fmt
+from .tables import Column, Missing, Table, bound, fmt
 
 __all__ = [
     "StabilityExplorer",
@@ -1120,10 +1120,10 @@ def checks_table(st: StabilityStudy) -> Table:
     s = st.star
     band = max(band, abs(abs(float(step_response(st.osc(st.c_star), s.settling_time)) - 1.0) - BAND))
     rows = [
-        {"check": "|T(√2 ω_n) − 1| over 200 ζ from 1e-4 to 100", "value": _bound(cross, 1e-13)},
-        {"check": "poles against numpy.roots, relative to max(ω_n, |c|/m)", "value": _bound(roots, 1e-12)},
-        {"check": "|x| above its closed-form envelope, relative", "value": _bound(max(env, 0.0), 1e-9)},
-        {"check": "| |y(t_s) − 1| − 0.02 | at the settling times", "value": _bound(band, 1e-12)},
+        {"check": "|T(√2 ω_n) − 1| over 200 ζ from 1e-4 to 100", "value": bound(cross, 1e-13)},
+        {"check": "poles against numpy.roots, relative to max(ω_n, |c|/m)", "value": bound(roots, 1e-12)},
+        {"check": "|x| above its closed-form envelope, relative", "value": bound(max(env, 0.0), 1e-9)},
+        {"check": "| |y(t_s) − 1| − 0.02 | at the settling times", "value": bound(band, 1e-12)},
     ]
     return Table(
         rows,
@@ -1131,10 +1131,6 @@ def checks_table(st: StabilityStudy) -> Table:
         caption="Self-checks at rounding level (printed as bounds).",
         name="tab-stability-checks",
     )
-
-
-def _bound(value: float, bound: float) -> str:
-    return f"< {bound:g}" if value < bound else f"{value:.2e} (above {bound:g})"
 
 
 def summary_text(st: StabilityStudy) -> str:

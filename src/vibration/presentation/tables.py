@@ -45,6 +45,8 @@ import numpy as np
 
 TABLES_ENV = "VIBRATION_TABLES_DIR"
 DASH = "—"
+#: Text width reserved for an ≈ cell in the plain-text table ("≈-1.234e-10").
+APPROX_WIDTH = 11
 _MARKS = "abcdefghijklmnopqrstuvwxyz"
 
 
@@ -53,6 +55,30 @@ class Missing:
     """A quantity that does not exist in this case, and why (shown as a footnote)."""
 
     reason: str
+
+
+@dataclass(frozen=True)
+class Approx:
+    """A number whose printed digits depend on the machine: shown as "≈value", not compared by nbval.
+
+    Adaptive step controllers at loose tolerances amplify last-bit differences of floating-point
+    rounding (CPU, vector maths library, BLAS build) into different step sequences, so their step
+    counts and errors differ between machines in the second or third digit. Such a cell prints as
+    ``≈2829``; the nbval sanitizer (``tests/nbval_sanitize.cfg``) masks it, and a test compares it
+    with the reference within a stated relative tolerance instead.
+
+    >>> fmt(Approx(2829)), fmt(Approx(0.0338123), 3)
+    ('≈2829', '≈0.0338')
+    """
+
+    value: float
+
+
+#: The footnote that explains a table's ≈ cells.
+APPROX_NOTE = (
+    "≈: these digits depend on the machine's floating-point rounding (the text says why), so they differ "
+    "between computers and are not part of the regression comparison."
+)
 
 
 @dataclass(frozen=True)
@@ -74,6 +100,8 @@ def fmt(value, digits: int = 4) -> str:
     """
     if value is None or isinstance(value, Missing):
         return DASH
+    if isinstance(value, Approx):
+        return "≈" + fmt(value.value, digits)
     if isinstance(value, bool | np.bool_):
         return "yes" if value else "no"
     if isinstance(value, int | np.integer):
@@ -177,14 +205,29 @@ class Table:
         return out
 
     def footnotes(self) -> list[str]:
-        """The Missing reasons (``a: ...``) then the notes."""
-        return [f"{mark}: {reason}" for reason, mark in self._marks.items()] + list(self.notes)
+        """The Missing reasons (``a: ...``), the note on ≈ cells if any, then the notes."""
+        approx = any(isinstance(row[c.key], Approx) for row in self.rows for c in self.columns)
+        return (
+            [f"{mark}: {reason}" for reason, mark in self._marks.items()]
+            + ([APPROX_NOTE] if approx else [])
+            + list(self.notes)
+        )
 
     # -- representations -----------------------------------------------------
     def __repr__(self) -> str:
         heads = [c.header for c in self.columns]
         cells = self.cells()
-        widths = [max(len(h), *(len(r[i]) for r in cells)) for i, h in enumerate(heads)]
+        # An ≈ cell counts with a fixed width, so that its machine-dependent digits cannot move the layout.
+        widths = [
+            max(
+                len(h),
+                *(
+                    APPROX_WIDTH if isinstance(row[c.key], Approx) else len(r[i])
+                    for row, r in zip(self.rows, cells, strict=True)
+                ),
+            )
+            for i, (h, c) in enumerate(zip(heads, self.columns, strict=True))
+        ]
         lines = [f"Table {self.name}: {self.caption}"]
         lines.append("  ".join(h.ljust(w) for h, w in zip(heads, widths, strict=True)).rstrip())
         lines.append("  ".join("-" * w for w in widths))
@@ -235,8 +278,30 @@ class Table:
             writer = csv.writer(fh, lineterminator="\n")
             writer.writerow([c.header for c in self.columns])
             for row in self.rows:
-                writer.writerow(["" if isinstance(row[c.key], Missing) else fmt(row[c.key], 10) for c in self.columns])
+                writer.writerow([_csv_cell(row[c.key]) for c in self.columns])
         return path
+
+
+def bound(value: float, tol: float) -> str | Missing:
+    """A check against its stated tolerance: ``"< tol"`` when it holds, else the value and the tolerance.
+
+    The printed tolerance, not the value's order of magnitude, is what reproduces on every machine:
+    a rounding-level difference of 3e-15 on one CPU may be 1.2e-14 on another.
+
+    >>> bound(3e-15, 1e-12), bound(2.5e-9, 1e-12), bound(float("nan"), 1e-12)
+    ('< 1e-12', '2.5e-09 (above 1e-12)', Missing(reason='not computed (nan)'))
+    """
+    if not math.isfinite(value):
+        return Missing("not computed (nan)") if math.isnan(value) else Missing("infinite")
+    if abs(value) < tol:
+        return f"< {fmt(tol)}"
+    return f"{abs(value):.2g} (above {fmt(tol)})"
+
+
+def _csv_cell(value) -> str:
+    if isinstance(value, Missing):
+        return ""
+    return fmt(value.value if isinstance(value, Approx) else value, 10)
 
 
 def table(rows: Iterable[dict], columns: Sequence[Column | tuple], caption: str, name: str, notes=()) -> Table:
