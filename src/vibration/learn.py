@@ -39,6 +39,7 @@ import gymnasium
 import numpy as np
 from gymnasium import spaces
 
+from .physics.duffing import _real_array
 from .physics.learning import (
     LinearPolicy,
     LQRReference,
@@ -127,7 +128,15 @@ class OscillatorEnv(gymnasium.Env):
         super().__init__()
         task = _check_task(task)
         if fields:
-            task = replace(task, **fields)
+            try:
+                task = replace(task, **fields)
+            except TypeError as exc:  # an unknown field (ParameterError, also a TypeError, passes through)
+                if isinstance(exc, ParameterError):
+                    raise
+                raise ParameterError(
+                    f"fields {sorted(fields)!r} are not all fields of OscillatorTask ({exc}): allowed "
+                    f"{sorted(OscillatorTask.__dataclass_fields__)}"
+                ) from None
         if render_mode is not None:
             raise ParameterError(f"render_mode = {render_mode!r} is not supported: allowed None")
         self.task = task
@@ -159,12 +168,23 @@ class OscillatorEnv(gymnasium.Env):
         return nxt, u, c
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
-        super().reset(seed=seed)
+        if seed is not None and (
+            isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)) or seed < 0
+        ):
+            raise ParameterError(f"seed = {seed!r:.60} is not a non-negative integer: allowed None or an int >= 0")
+        if options is not None and not isinstance(options, dict):
+            raise ParameterError(f"options = {options!r:.60} is not a dict: allowed None or {{'state': [x, v]}}")
+        super().reset(seed=None if seed is None else int(seed))
         t = self.task
         if options and "state" in options:
-            s = np.asarray(options["state"], dtype=float).reshape(-1)
-            if s.shape != (2,) or not np.all(np.isfinite(s)):
-                raise ParameterError(f"state = {options['state']!r} is not [x, v]: allowed two finite numbers (m, m/s)")
+            try:
+                s = _real_array("state", options["state"], max_size=2).reshape(-1)
+            except ParameterError:
+                s = None
+            if s is None or s.shape != (2,):
+                raise ParameterError(
+                    f"state = {options['state']!r:.60} is not [x, v]: allowed two finite numbers (m, m/s)"
+                )
             self._state = s.copy()
         else:
             self._state = self.np_random.uniform(-1.0, 1.0, size=2) * np.array([t.x0_max, t.v0_max])
@@ -173,12 +193,25 @@ class OscillatorEnv(gymnasium.Env):
 
     def step(self, action):
         t = self.task
-        a = float(np.asarray(action, dtype=float).reshape(-1)[0])
-        if not math.isfinite(a):
-            raise ParameterError(f"action = {action!r} is not finite: allowed a finite force (N) or damping (N s/m)")
+        try:
+            arr = _real_array("action", action, max_size=1)
+        except ParameterError:
+            arr = None
+        if arr is None:
+            raise ParameterError(
+                f"action = {action!r:.60} is not one finite number: allowed a finite force (N) or damping (N s/m), "
+                "shape (1,)"
+            )
+        a = float(arr.reshape(-1)[0])
         x, v = (float(z) for z in self._state)
-        nxt, u, c = self._advance(self._state, self._k, a)
-        cost = (t.q_x * x * x + t.q_v * v * v + t.r * u * u) * t.dt
+        with np.errstate(over="ignore", invalid="ignore"):
+            nxt, u, c = self._advance(self._state, self._k, a)
+            cost = (t.q_x * x * x + t.q_v * v * v + t.r * u * u) * t.dt
+        if not (math.isfinite(cost) and np.all(np.isfinite(nxt))):
+            raise ParameterError(
+                f"the state [{x!r}, {v!r}] overflows (not finite) after this step: allowed states and actions whose "
+                "step stays a finite float"
+            )
         self._state = nxt
         self._k += 1
         truncated = self._k >= t.n_steps

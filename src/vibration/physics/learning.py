@@ -57,6 +57,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import scipy.linalg
 
+from .duffing import _real_array
 from .model import ParameterError, check_int, check_real
 
 # Exported at the top level (``vibration.<name>``); the rest is in ``vibration.learn``.
@@ -75,6 +76,13 @@ __all__ = [
 
 MODES = ("force", "damping")
 METHODS = ("ars", "cma")
+
+#: Work budgets: simulated steps (laws x episodes x steps) of one :func:`episode_costs` call and of one
+#: :func:`train` run; recorded steps (episodes x steps, three float arrays) of one :func:`rollout` and of one
+#: :func:`compare_controllers` (all controllers); initial states drawn at once.
+MAX_EPISODE_STEPS = 300_000_000
+MAX_RECORDED_STEPS = 10_000_000
+MAX_STATES = 1_000_000
 
 
 # ----------------------------------------------------------------------------- the task
@@ -200,11 +208,21 @@ def _check_task(task) -> OscillatorTask:
 
 def _check_gains(gains) -> np.ndarray:
     try:
-        g = np.asarray(gains, dtype=float)
-    except (TypeError, ValueError):
+        g = _real_array("gains", gains, max_size=2)
+    except ParameterError:
         g = None
-    if g is None or g.shape != (2,) or not np.all(np.isfinite(g)):
-        raise ParameterError(f"gains = {gains!r} is not two finite numbers: allowed [K_x (N/m), K_v (N s/m)]")
+    if g is None or g.shape != (2,):
+        raise ParameterError(f"gains = {gains!r:.80} is not two finite numbers: allowed [K_x (N/m), K_v (N s/m)]")
+    return g
+
+
+def _check_gain_rows(gains) -> np.ndarray:
+    """Gains as an (n, 2) array of finite numbers, n >= 1."""
+    g = _real_array("gains", gains, max_size=2 * MAX_STATES)
+    if g.ndim == 1:
+        return _check_gains(g)[None, :]
+    if g.ndim != 2 or g.shape[1] != 2:
+        raise ParameterError(f"gains has shape {g.shape}: allowed finite [K_x, K_v] rows, shape (2,) or (n, 2)")
     return g
 
 
@@ -239,7 +257,7 @@ def zoh(task: OscillatorTask | None = None, c: float | None = None) -> tuple[np.
            [-0.19943,  0.99402]])
     """
     task = _check_task(task)
-    cc = task.c if c is None else check_real("c", c, low=0.0, unit="N s/m")
+    cc = task.c if c is None else check_real("c", c, low=0.0, high=700.0 * task.m / task.dt, unit="N s/m")
     a_d, b_d = _zoh(task.m, cc, task.k, task.dt)
     return a_d.copy(), b_d.copy()
 
@@ -364,6 +382,14 @@ def _kernel():
                     us[i, j, step] = u
                 acc += (qx * x * x + qv * v * v + r * u * u) * dt
                 x, v = xn, vn
+                if not acc < np.inf:  # overflow (inf or nan): the law destabilises the plant
+                    acc = np.inf
+                    if rec:
+                        for rest in range(step + 1, n):
+                            xs[i, j, rest] = np.nan
+                            vs[i, j, rest] = np.nan
+                            us[i, j, rest] = np.nan
+                    break
             costs[i, j] = acc
         return costs
 
@@ -390,12 +416,21 @@ def _run(task: OscillatorTask, gains: np.ndarray, x0: np.ndarray, record: bool):
 
 
 def _check_states(x0) -> np.ndarray:
-    s = np.asarray(x0, dtype=float)
+    s = _real_array("x0", x0, max_size=2 * MAX_STATES)
     if s.ndim == 1:
         s = s[None, :]
-    if s.ndim != 2 or s.shape[1] != 2 or s.shape[0] < 1 or not np.all(np.isfinite(s)):
+    if s.ndim != 2 or s.shape[1] != 2 or s.shape[0] < 1:
         raise ParameterError(f"x0 has shape {np.shape(x0)}: allowed finite [x (m), v (m/s)] rows, shape (n, 2)")
     return s
+
+
+def _check_work(task: OscillatorTask, n_laws: int, n_states: int, limit: int, what: str) -> None:
+    work = n_laws * n_states * task.n_steps
+    if work > limit:
+        raise ParameterError(
+            f"{n_laws} laws x {n_states} initial states x n_steps = {task.n_steps} make {work} {what}: allowed at "
+            f"most {limit}"
+        )
 
 
 def sample_initial_states(task: OscillatorTask | None, n: int, seed: int | np.random.Generator = 0) -> np.ndarray:
@@ -408,7 +443,7 @@ def sample_initial_states(task: OscillatorTask | None, n: int, seed: int | np.ra
     ((4, 2), True)
     """
     task = _check_task(task)
-    n = check_int("n", n, low=1, high=10_000_000)
+    n = check_int("n", n, low=1, high=MAX_STATES)
     rng = (
         seed
         if isinstance(seed, np.random.Generator)
@@ -432,6 +467,11 @@ def episode_costs(task: OscillatorTask | None, gains, x0) -> np.ndarray:
     x0 : array_like, shape (2,) or (n_states, 2)
         Initial states ``[x, v]``, m and m/s.
 
+    Returns
+    -------
+    numpy.ndarray
+        Costs, s; ``inf`` for an episode whose state overflows (a law that destabilises the plant).
+
     Examples
     --------
     >>> ref = lqr_reference()
@@ -439,12 +479,10 @@ def episode_costs(task: OscillatorTask | None, gains, x0) -> np.ndarray:
     True
     """
     task = _check_task(task)
-    g = np.asarray(gains, dtype=float)
-    if g.ndim == 1:
-        g = _check_gains(g)[None, :]
-    elif g.ndim != 2 or g.shape[1] != 2 or not np.all(np.isfinite(g)):
-        raise ParameterError(f"gains has shape {g.shape}: allowed finite [K_x, K_v] rows, shape (n, 2)")
-    return _run(task, g, _check_states(x0), record=False)[0]
+    g = _check_gain_rows(gains)
+    states = _check_states(x0)
+    _check_work(task, g.shape[0], states.shape[0], MAX_EPISODE_STEPS, "simulated steps")
+    return _run(task, g, states, record=False)[0]
 
 
 @dataclass(frozen=True)
@@ -514,7 +552,14 @@ def rollout(task: OscillatorTask | None, gains, x0) -> Rollouts:
     """
     task = _check_task(task)
     g = _check_gains(gains)
-    costs, xs, vs, us = _run(task, g[None, :], _check_states(x0), record=True)
+    states = _check_states(x0)
+    _check_work(task, 1, states.shape[0], MAX_RECORDED_STEPS, "recorded steps")
+    costs, xs, vs, us = _run(task, g[None, :], states, record=True)
+    if not (np.all(np.isfinite(costs)) and np.all(np.isfinite(xs)) and np.all(np.isfinite(vs))):
+        raise ParameterError(
+            f"gains = {g.tolist()!r} destabilise the plant: the state overflows (not finite) within "
+            f"{task.n_steps} steps: allowed gains whose episodes stay finite"
+        )
     return Rollouts(task.t, xs[0], vs[0], us[0], costs[0])
 
 
@@ -550,7 +595,14 @@ def peak_force(task: OscillatorTask | None, gains) -> float:
     """
     task = _check_task(task)
     _force_mode(task, "peak_force")
-    return _moments(task, _check_gains(gains))[1]
+    g = _check_gains(gains)
+    peak = _moments(task, g)[1]
+    if not math.isfinite(peak):
+        raise ParameterError(
+            f"gains = {g.tolist()!r} destabilise the plant: the force overflows within {task.n_steps} steps: "
+            "allowed gains whose force stays finite"
+        )
+    return peak
 
 
 def _force_mode(task: OscillatorTask, what: str) -> None:
@@ -671,11 +723,15 @@ class PassiveOptimum:
 def _largest_damper(task: OscillatorTask) -> float:
     """Largest added damping whose force stays within u_max for every initial state of the box, N s/m."""
     lo, hi = 0.0, task.u_max / task.v0_max if task.v0_max > 0.0 else 1e3 * task.c_max
-    while peak_force(task, [0.0, hi]) <= task.u_max and hi < 1e12:
+
+    def peak(c):
+        return _moments(task, np.array([0.0, c]))[1]  # inf when the damper destabilises the sampled loop
+
+    while peak(hi) <= task.u_max and hi < 1e12:
         lo, hi = hi, 2.0 * hi
     for _ in range(60):
         mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if peak_force(task, [0.0, mid]) <= task.u_max else (lo, mid)
+        lo, hi = (mid, hi) if peak(mid) <= task.u_max else (lo, mid)
     return lo
 
 
@@ -765,8 +821,16 @@ def lqr_reference(task: OscillatorTask | None = None) -> LQRReference:
     a_d, b_d = zoh(task)
     b = b_d[:, None]
     q, r = task.state_weight, np.array([[task.dt * task.r]])
-    p = scipy.linalg.solve_discrete_are(a_d, b, q, r)
-    k = np.linalg.solve(r + b.T @ p @ b, b.T @ p @ a_d).ravel()
+    try:
+        p = scipy.linalg.solve_discrete_are(a_d, b, q, r)
+        k = np.linalg.solve(r + b.T @ p @ b, b.T @ p @ a_d).ravel()
+    except (ValueError, np.linalg.LinAlgError) as exc:
+        raise ParameterError(
+            f"the Riccati equation of the task has no stabilising solution ({exc}): allowed a task whose weights "
+            f"q_x = {task.q_x!r}, q_v = {task.q_v!r}, r = {task.r!r} and plant make it solvable"
+        ) from None
+    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(k))):
+        raise ParameterError("the Riccati solution of the task is not finite: allowed a better scaled task")
     cost, peak = _moments(task, k)
     return LQRReference(
         gains=k,
@@ -807,7 +871,10 @@ class LinearPolicy:
         object.__setattr__(self, "task", _check_task(self.task))
 
     def __call__(self, observation) -> np.ndarray:
-        x, v = (float(z) for z in np.asarray(observation, dtype=float).reshape(2))
+        obs = _real_array("observation", observation, max_size=2)
+        if obs.size != 2:
+            raise ParameterError(f"observation = {observation!r:.60} is not [x, v]: allowed two finite numbers")
+        x, v = (float(z) for z in obs.reshape(2))
         kx, kv = (float(z) for z in self.gains)
         t = self.task
         if t.mode == "force":
@@ -850,6 +917,17 @@ class TrainingResult:
     def expected_cost(self) -> float:
         """Expected cost of the learned gains as in the curve's last point, s."""
         return float(self.curve_cost[-1])
+
+
+def _finite_costs(costs: np.ndarray, cand: np.ndarray) -> np.ndarray:
+    """The candidates' mean costs, or :class:`ParameterError` when one of them overflowed (inf)."""
+    bad = np.flatnonzero(~np.isfinite(costs))
+    if bad.size:
+        raise ParameterError(
+            f"the learner's candidate gains {cand[bad[0]].tolist()!r} destabilise the plant (the episode cost "
+            "overflows): allowed smaller initial_gains, noise, step or sigma0"
+        )
+    return costs
 
 
 def _curve_point(task, g, eval_states):
@@ -925,8 +1003,8 @@ def train(
     """
     task = _check_task(task)
     seed = check_int("seed", seed, low=0, high=2**32 - 2)
-    if method not in METHODS:
-        raise ParameterError(f"method = {method!r} is not a learner: allowed one of {METHODS}")
+    if not isinstance(method, str) or method not in METHODS:
+        raise ParameterError(f"method = {method!r:.60} is not a learner: allowed one of {METHODS}")
     opts = dict(DEFAULTS[method])
     unknown = set(options) - set(opts) - {"iterations", "n_episodes"}
     if unknown:
@@ -936,6 +1014,18 @@ def train(
     n_ep = check_int("n_episodes", opts["n_episodes"] if n_episodes is None else n_episodes, low=1, high=100_000)
     n_eval = check_int("n_eval", n_eval, low=1, high=1_000_000)
     theta = _check_gains(initial_gains).copy()
+    if method == "ars":
+        per_iteration = 2 * check_int("n_directions", opts["n_directions"], low=1, high=10_000)
+    else:
+        per_iteration = check_int("popsize", opts["popsize"], low=2, high=10_000)
+    # every iteration simulates its candidates, and a curve point that is not exact its n_eval episodes
+    work = (iters * (per_iteration * n_ep + n_eval) + n_eval) * task.n_steps
+    if work > MAX_EPISODE_STEPS:
+        raise ParameterError(
+            f"iterations = {iters}, n_episodes = {n_ep}, n_eval = {n_eval} with {per_iteration} candidates per "
+            f"iteration and n_steps = {task.n_steps} make up to {work} simulated steps: allowed at most "
+            f"{MAX_EPISODE_STEPS}"
+        )
     train_seq, eval_seq, algo_seq = np.random.SeedSequence([seed, 14]).spawn(3)
     states_rng = np.random.default_rng(train_seq)
     eval_states = sample_initial_states(task, n_eval, np.random.default_rng(eval_seq))
@@ -954,7 +1044,7 @@ def train(
             delta = rng.standard_normal((n_dir, 2))
             cand = np.concatenate([theta + noise * delta, theta - noise * delta])
             states = sample_initial_states(task, n_ep, states_rng)
-            ret = -episode_costs(task, cand, states).mean(axis=1)
+            ret = -_finite_costs(episode_costs(task, cand, states).mean(axis=1), cand)
             r_plus, r_minus = ret[:n_dir], ret[n_dir:]
             best = np.argsort(-np.maximum(r_plus, r_minus), kind="stable")[:top]
             sigma = float(np.std(np.concatenate([r_plus[best], r_minus[best]])))
@@ -980,7 +1070,7 @@ def train(
         for _ in range(iters):
             cand = np.asarray(es.ask(), dtype=float)
             states = sample_initial_states(task, n_ep, states_rng)
-            es.tell(list(cand), list(episode_costs(task, cand, states).mean(axis=1)))
+            es.tell(list(cand), list(_finite_costs(episode_costs(task, cand, states).mean(axis=1), cand)))
             theta = np.asarray(es.mean, dtype=float).copy()
             episodes.append(episodes[-1] + popsize * n_ep)
             gains_hist.append(theta.copy())
@@ -1033,8 +1123,11 @@ def compare_controllers(task: OscillatorTask, controllers: dict, n_episodes: int
     (('LQR',), 0.7663)
     """
     task = _check_task(task)
-    n_episodes = check_int("n_episodes", n_episodes, low=2, high=1_000_000)
+    n_episodes = check_int("n_episodes", n_episodes, low=2, high=MAX_STATES)
     seed = check_int("seed", seed, low=0, high=2**32 - 2)
+    if not isinstance(controllers, dict) or not controllers:
+        raise ParameterError(f"controllers = {controllers!r:.60} is not a dict: allowed a non-empty {{name: gains}}")
+    _check_work(task, len(controllers), n_episodes, MAX_RECORDED_STEPS, "recorded steps")
     states = sample_initial_states(task, n_episodes, np.random.default_rng(np.random.SeedSequence([seed, 14, 1])))
     names, gains, runs, exact = [], [], [], []
     for name, g in controllers.items():
