@@ -44,6 +44,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from .checks import check_array
 from .exact import exact_response
 from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
 from .stability import _check_osc, transmissibility
@@ -84,16 +85,15 @@ SEMI_ACTIVE_LAWS = ("passive", "skyhook", "on-off", "clipped", "mr")
 
 
 def _omegas(omegas, name: str = "omegas") -> np.ndarray:
-    try:
-        w = np.asarray(omegas, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError(f"{name} = {omegas!r} is not an array of numbers: allowed finite rad/s >= 0") from None
-    if w.ndim > 1:
-        raise ParameterError(f"{name} has shape {w.shape}: allowed a scalar or 1-D array of rad/s")
-    if not np.all(np.isfinite(w)) or np.any(w < 0):
-        bad = w[~(np.isfinite(w) & (w >= 0))].ravel()[0]
-        raise ParameterError(f"{name} contains {float(bad)!r}: allowed finite frequencies >= 0 rad/s")
-    return w
+    return check_array(name, omegas, low=0.0, ndim=(0, 1), unit="rad/s")
+
+
+def _finite(name: str, value, what: str):
+    """Refuse a non-finite result: an overflow is an error, never a silent nan or inf."""
+    arr = np.asarray(value)
+    if not np.all(np.isfinite(arr)):
+        raise ParameterError(f"{name} = {value!r}: {what} is not finite (overflow); allowed inputs that keep it finite")
+    return value
 
 
 # ----------------------------------------------------------------------------- active: PD, LQR
@@ -208,7 +208,16 @@ def lqr(osc: Oscillator, q_x: float, q_v: float, r: float) -> LQRResult:
 
     a = np.array([[0.0, 1.0], [-osc.k / osc.m, -osc.c / osc.m]])
     b = np.array([[0.0], [1.0 / osc.m]])
-    K, P, E = control.lqr(a, b, np.diag([q_x, q_v]), np.array([[r]]))
+    if not (math.isfinite(q_x / r) and math.isfinite(q_v / r)):
+        raise ParameterError(f"r = {r!r} 1/N^2 with q_x = {q_x!r}, q_v = {q_v!r}: q/r overflows; allowed finite q/r")
+    try:
+        K, P, E = control.lqr(a, b, np.diag([q_x, q_v]), np.array([[r]]))
+    except (ValueError, np.linalg.LinAlgError) as err:
+        raise ParameterError(
+            f"r = {r!r} 1/N^2, q_x = {q_x!r}, q_v = {q_v!r}: the Riccati solver failed ({err})"
+        ) from None
+    if not (np.all(np.isfinite(K)) and np.all(np.isfinite(P))):
+        raise ParameterError(f"r = {r!r} 1/N^2, q_x = {q_x!r}, q_v = {q_v!r}: the Riccati solution is not finite")
     return LQRResult(
         K=np.asarray(K, dtype=float).reshape(2),
         P=np.asarray(P, dtype=float),
@@ -240,6 +249,10 @@ def lqr_closed_form(osc: Oscillator, q_x: float, q_v: float, r: float) -> np.nda
     b = q_v / r + 2.0 * m * k0
     root = math.sqrt(c * c + b)
     k1 = b / (root + c) if c > 0.0 else root - c
+    if not (math.isfinite(k0) and math.isfinite(k1)):
+        raise ParameterError(
+            f"r = {r!r} 1/N^2 with q_x = {q_x!r}, q_v = {q_v!r}: the gains overflow; allowed finite q/r"
+        )
     return np.array([k0, k1])
 
 
@@ -369,11 +382,18 @@ def simulate_controlled(
     grid = _grid(t_end, n_points)
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
-    rtol = check_real("rtol", rtol, low=0.0, low_open=True)
+    rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
     atol = check_real("atol", atol, low=0.0, low_open=True)
     step = math.inf if max_step is None else check_real("max_step", max_step, low=0.0, low_open=True, unit="s")
     m, c, k = osc.m, osc.c, osc.k
     F0, wf = (force.F0, force.omega) if force is not None else (0.0, 0.0)
+    t_end = float(grid[-1])
+    _work_check(t_end, max(osc.natural_frequency + abs(c) / m, wf, wb), rtol, "plant")
+    if t_end / step > MAX_NFEV / 12:
+        raise ParameterError(
+            f"max_step = {step!r} s: t_end / max_step = {t_end / step:.3g} steps of 12 evaluations, "
+            f"allowed at most {MAX_NFEV // 12} steps (budget {MAX_NFEV} evaluations)"
+        )
     sin, cos = math.sin, math.cos
 
     def rhs(t, y):
@@ -382,10 +402,22 @@ def simulate_controlled(
         xb, vb = Y * sin(wb * t), Y * wb * cos(wb * t)
         return (v, (F0 * sin(wf * t) - c * (v - vb) - k * (x - xb) + u) / m)
 
-    sol = solve_ivp(rhs, (0.0, grid[-1]), (x0, v0), method="DOP853", t_eval=grid, rtol=rtol, atol=atol, max_step=step)
+    budget = [MAX_NFEV]
+    try:
+        sol = solve_ivp(
+            _counted(rhs, budget), (0.0, t_end), (x0, v0), method="DOP853", t_eval=grid, rtol=rtol, atol=atol,
+            max_step=step,
+        )  # fmt: skip
+    except _OverBudget:
+        raise _over_budget(math.nan, t_end, "controlled loop") from None
     if sol.status != 0:
-        raise RuntimeError(f"solve_ivp (DOP853) failed at t = {sol.t[-1]:g} s: {sol.message}")
+        raise ParameterError(
+            f"t_end = {t_end!r} s: the solver (DOP853) stopped at t = {sol.t[-1]:g} s ({sol.message}); "
+            "allowed inputs for which the loop can be integrated"
+        )
     x, v = sol.y
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
+        raise ParameterError(f"t_end = {t_end!r} s: the controlled response overflowed (an unstable loop)")
     demand = np.array([_call(controller, ti, xi, vi) for ti, xi, vi in zip(grid, x, v, strict=True)])
     return ControlledResponse(
         t=grid,
@@ -406,6 +438,12 @@ MAX_NFEV = 250_000
 
 #: Smooth pieces (between switching events) one run of :func:`pid_response` may have.
 MAX_SEGMENTS = 20_000
+
+#: Allowed relative tolerances of the adaptive solver (below 100 eps it warns and fails).
+RTOL_MIN, RTOL_MAX = 1e-13, 1e-2
+
+#: Samples :func:`pid_linear_response` evaluates with one matrix exponential each (repeated poles).
+EXPM_SAMPLES_MAX = 20_000
 
 
 class _OverBudget(Exception):
@@ -437,8 +475,9 @@ def _work_check(t_end: float, rate: float, rtol: float, what: str) -> None:
 
 
 def _over_budget(t: float, t_end: float, what: str) -> ParameterError:
+    at = f" after t = {t:.6g} s" if math.isfinite(t) else ""
     return ParameterError(
-        f"t_end = {t_end!r} s: the {what} used its budget of {MAX_NFEV} right-hand-side evaluations by t = {t:.6g} s "
+        f"t_end = {t_end!r} s: the {what} used up its budget of {MAX_NFEV} right-hand-side evaluations{at} "
         "(a stiff loop, a discontinuous controller or a tolerance too tight); shorten t_end or loosen rtol"
     )
 
@@ -689,7 +728,7 @@ def pid_response(
         tt = check_real("t_track", t_track, low=0.0, low_open=True, unit="s")
     x_ref = check_real("x_ref", x_ref, unit="m")
     grid = _grid(t_end, n_points)
-    rtol = check_real("rtol", rtol, low=0.0, low_open=True)
+    rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
     atol = check_real("atol", atol, low=0.0, low_open=True)
     F0, wf = (force.F0, force.omega) if force is not None else (0.0, 0.0)
     mode = ANTI_WINDUP.index(anti_windup)
@@ -732,22 +771,53 @@ def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, ki:
     from scipy.linalg import expm
 
     _check_osc(osc)
-    t = np.atleast_1d(np.asarray(t, dtype=float))
+    if force is not None and not isinstance(force, SineForce):
+        raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
+    kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
+    ki = check_real("ki", ki, low=0.0, low_open=True, unit="N/(m s)")
+    kd = check_real("kd", kd, unit="N s/m")
+    x_ref = check_real("x_ref", x_ref, unit="m")
+    t = np.atleast_1d(check_array("t", t, low=0.0, unit="s"))
     m, c, k = osc.m, osc.c, osc.k
     A = np.array([[0.0, 1.0, 0.0], [-(k + kp) / m, -(c + kd) / m, ki / m], [-1.0, 0.0, 0.0]])
+    if not np.all(np.isfinite(A)):
+        raise ParameterError(
+            f"kp = {kp!r}, ki = {ki!r}, kd = {kd!r} over m = {m!r} kg overflow: allowed finite gains/m"
+        )
     bF = np.array([0.0, 1.0 / m, 0.0])
     br = np.array([0.0, kp / m, 1.0])
     F0, w = (force.F0, force.omega) if force is not None else (0.0, 0.0)
-    H = np.linalg.solve(1j * w * np.eye(3) - A, bF * F0)
-    ystat = -np.linalg.solve(A, br * x_ref)
+    try:
+        H = np.linalg.solve(1j * w * np.eye(3) - A, bF * F0)
+        ystat = -np.linalg.solve(A, br * x_ref)
+    except np.linalg.LinAlgError:
+        raise ParameterError(
+            f"force.omega = {w!r} rad/s is a pole of the loop (kp = {kp!r}, ki = {ki!r}, kd = {kd!r}): "
+            "no steady state; allowed a forcing frequency off the loop's undamped poles"
+        ) from None
     yp = np.imag(H[:, None] * np.exp(1j * w * t)[None, :]) + ystat[:, None]
     d0 = -(np.imag(H) + ystat)  # y(0) - y_p(0), y(0) = 0
     lam, V = np.linalg.eig(A)
-    coef = np.linalg.solve(V, d0)
-    free = np.real(V @ (coef[:, None] * np.exp(lam[:, None] * t[None, :])))
+    try:
+        coef = np.linalg.solve(V, d0)
+    except np.linalg.LinAlgError:  # exactly defective: the expm fallback below handles it
+        coef = np.zeros(3)
+    with np.errstate(over="ignore", invalid="ignore"):
+        free = np.real(V @ (coef[:, None] * np.exp(lam[:, None] * t[None, :])))
     if np.linalg.cond(V) > 1e8:  # defective or nearly so: fall back on expm per sample
-        free = np.stack([expm(A * ti) @ d0 for ti in t], axis=1)
+        if t.size > EXPM_SAMPLES_MAX:
+            raise ParameterError(
+                f"t has {t.size} samples: this loop (kp = {kp!r}, ki = {ki!r}, kd = {kd!r}) has a (nearly) repeated "
+                f"pole, so each sample needs its own matrix exponential; allowed at most {EXPM_SAMPLES_MAX} samples"
+            )
+        with np.errstate(over="ignore", invalid="ignore"):
+            free = np.stack([expm(A * ti) @ d0 for ti in t], axis=1)
     y = yp + free
+    if not np.all(np.isfinite(y)):
+        raise ParameterError(
+            f"t reaches {float(t.max())!r} s: the loop's response overflows there (an unstable loop, poles "
+            f"{np.round(lam, 6).tolist()!r} 1/s); allowed times at which it stays finite"
+        )
     return y[0], y[1], y[2]
 
 
@@ -933,6 +1003,9 @@ def _sa_params(osc, law, c_sky, c_min, c_max, damper):
 # lazily). They refer to each other through the module globals below, not through closures: numba's
 # on-disk cache keys a closure by its pickled free variables, which differ in every process, so nested
 # kernels were recompiled (several seconds) by every new process.
+#: Largest number of fixed RK4 steps of one semi-active run (about 8 s at 400 ns a step).
+RK4_STEPS_MAX = 20_000_000
+
 _KERNEL = None
 _nb_device = _nb_rhs = _nb_run = None
 _prange = range
@@ -1095,6 +1168,11 @@ class SemiActiveResponse:
 def _sa_step(law_i: int, w: float, steps_per_period: int, dt_max: float) -> tuple[float, int]:
     """RK4 step (s) and steps per forcing period: ``steps_per_period`` or more, below ``dt_max``."""
     period = 2.0 * math.pi / w
+    if law_i == 4 and not period / dt_max <= RK4_STEPS_MAX:
+        raise ParameterError(
+            f"omega = {w!r} rad/s with dt_max = {dt_max!r} s: {period / dt_max:.3g} RK4 steps per period, "
+            f"allowed at most {RK4_STEPS_MAX}"
+        )
     n = max(steps_per_period, math.ceil(period / dt_max)) if law_i == 4 else steps_per_period
     return period / n, n
 
@@ -1171,13 +1249,26 @@ def semi_active_response(
     spp = check_int("steps_per_period", steps_per_period, low=100, high=100_000)
     dt_max = check_real("dt_max", dt_max, low=0.0, low_open=True, unit="s")
     dt, _ = _sa_step(law_i, w, spp, dt_max)
+    if not t_end / dt <= RK4_STEPS_MAX:
+        raise ParameterError(
+            f"t_end = {t_end!r} s needs {t_end / dt:.3g} RK4 steps of {dt:.3g} s: allowed at most {RK4_STEPS_MAX} "
+            "(shorten t_end or lower steps_per_period)"
+        )
     n_steps = max(1, math.ceil(t_end / dt))
     stride = max(1, n_steps // (n_points - 1))
     n_steps = stride * (n_points - 1)
     dt = t_end / n_steps
-    if n_steps > 50_000_000:
-        raise ParameterError(f"t_end = {t_end!r} s needs {n_steps} RK4 steps: allowed at most 50000000")
+    if n_steps > RK4_STEPS_MAX:
+        raise ParameterError(
+            f"t_end = {t_end!r} s needs {n_steps} RK4 steps of {dt:.3g} s: allowed at most {RK4_STEPS_MAX} "
+            "(shorten t_end or lower steps_per_period)"
+        )
     rec, _ = _sa_kernel()[0](law_i, p, Y, w, np.zeros(5), dt, n_steps, stride, n_steps + 1)
+    if not np.all(np.isfinite(rec)):
+        raise ParameterError(
+            f"dt_max = {dt_max!r} s, steps_per_period = {spp}: the RK4 run overflowed (step {dt:.3g} s too long "
+            "for the device or the plant); allowed a smaller step"
+        )
     t = rec[:, 0]
     return SemiActiveResponse(
         t=t,
@@ -1264,14 +1355,35 @@ def semi_active_sweep(
     s0s = np.zeros((ws.size, 5))
     for j, w in enumerate(ws):
         dts[j], n_per = _sa_step(law_i, w, spp, dt_max)
-        n_settle[j] = math.ceil(settle / sigma / (2.0 * math.pi / w)) * n_per
+        settle_periods = settle / sigma / (2.0 * math.pi / w)
+        if not (settle_periods + periods) * n_per <= RK4_STEPS_MAX:
+            raise ParameterError(
+                f"omegas contains {w!r} rad/s: settling {settle!r} time constants of {1.0 / sigma:.3g} s "
+                f"(c + c_min = {osc.c + c_min!r} N s/m) takes {settle_periods:.3g} periods of {n_per} RK4 steps: "
+                f"allowed at most {RK4_STEPS_MAX} steps"
+            )
+        n_settle[j] = math.ceil(settle_periods) * n_per
         n_steps[j] = n_settle[j] + periods * n_per
-        if n_steps[j] > 50_000_000:
-            raise ParameterError(f"omegas contains {w!r}: it needs {n_steps[j]} RK4 steps, allowed at most 50000000")
+        if n_steps[j] > RK4_STEPS_MAX:
+            raise ParameterError(
+                f"omegas contains {w!r} rad/s: it needs {n_steps[j]} RK4 steps (settle = {settle!r} time constants "
+                f"of {1.0 / sigma:.3g} s plus {periods} periods), allowed at most {RK4_STEPS_MAX}"
+            )
+    if n_steps.sum() > 2 * RK4_STEPS_MAX:
+        raise ParameterError(
+            f"omegas has {ws.size} frequencies needing {int(n_steps.sum())} RK4 steps in all: "
+            f"allowed at most {2 * RK4_STEPS_MAX} (fewer frequencies, periods or steps_per_period)"
+        )
         # start in the steady state of the linear loop (c_start to the base, sky to the frame)
         h = (osc.k + 1j * osc.c * w) / (osc.k - osc.m * w * w + 1j * (c_start + sky) * w) * Y
         s0s[j, :2] = h.imag, w * h.real
     st = _sa_kernel()[1](law_i, p, Y, ws, s0s, dts, n_steps, n_settle)
+    if not np.all(np.isfinite(st)):
+        bad = ws[~np.all(np.isfinite(st), axis=1)][0]
+        raise ParameterError(
+            f"omegas contains {bad!r} rad/s: the RK4 run overflowed (step {dts[ws == bad][0]:.3g} s too long for "
+            f"the device; allowed a smaller dt_max = {dt_max!r} s or more steps_per_period = {spp})"
+        )
     n, span = st[:, 6], periods * 2.0 * np.pi / ws
     out = np.stack(
         [
@@ -1401,6 +1513,11 @@ def zvd_shaper(osc: Oscillator) -> Shaper:
 def _check_shaper(shaper) -> Shaper:
     if shaper is not None and not isinstance(shaper, Shaper):
         raise ParameterError(f"shaper = {shaper!r} is not a Shaper: allowed None, zv_shaper(osc) or zvd_shaper(osc)")
+    if shaper is not None:
+        times = check_array("shaper.times", shaper.times, low=0.0, ndim=(1,), max_size=100, unit="s")
+        amps = check_array("shaper.amplitudes", shaper.amplitudes, ndim=(1,), max_size=100)
+        if times.shape != amps.shape:
+            raise ParameterError(f"shaper has {times.size} times and {amps.size} amplitudes: allowed as many of each")
     return shaper
 
 
@@ -1483,6 +1600,9 @@ def shaped_move(
         x[on] += ai * D * xs
         v[on] += ai * D * vs
         u[on] += ai * D * osc.k
+    for name, a in (("x", x), ("v", v), ("command", u)):
+        if not np.all(np.isfinite(a)):
+            raise ParameterError(f"distance = {D!r} m: the move's {name} overflows; allowed a smaller distance")
     return t, x, v, u
 
 
@@ -1499,8 +1619,16 @@ def residual_amplitude(osc: Oscillator, t, x, v, target: float) -> np.ndarray:
     """
     zeta, wn, wd = _underdamped(osc)
     sigma = zeta * wn
-    d = np.atleast_1d(np.asarray(x, dtype=float)) - target
-    return np.hypot(d, (np.atleast_1d(np.asarray(v, dtype=float)) + sigma * d) / wd)
+    target = check_real("target", target, unit="m")
+    tt = np.atleast_1d(check_array("t", t, unit="s"))
+    xx = np.atleast_1d(check_array("x", x, unit="m"))
+    vv = np.atleast_1d(check_array("v", v, unit="m/s"))
+    if not tt.shape == xx.shape == vv.shape:
+        raise ParameterError(f"t, x, v have shapes {tt.shape}, {xx.shape}, {vv.shape}: allowed one and the same shape")
+    d = xx - target
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.hypot(d, (vv + sigma * d) / wd)
+    return _finite("x, v", out, "the ringing amplitude")
 
 
 # ----------------------------------------------------------------------------- metrics
@@ -1550,19 +1678,29 @@ def response_metrics(t, x, u, v_rel, t_steady: float) -> Metrics:
     >>> round(m.rms_x, 6), round(m.peak_u, 6), round(m.energy, 6)
     (0.707107, 2.0, 6.283185)
     """
-    t, x, u, vr = (np.asarray(a, dtype=float) for a in (t, x, u, v_rel))
-    if not (t.ndim == 1 and t.size >= 2 and x.shape == t.shape == u.shape == vr.shape):
-        raise ParameterError(f"t has shape {t.shape}: allowed 1-D with at least 2 samples, like x, u and v_rel")
+    t = check_array("t", t, ndim=(1,), min_size=2, increasing=True, unit="s")
+    x, u, vr = (check_array(n, a, ndim=(1,), min_size=2) for n, a in (("x", x), ("u", u), ("v_rel", v_rel)))
+    for name, a in (("x", x), ("u", u), ("v_rel", vr)):
+        if a.shape != t.shape:
+            raise ParameterError(f"{name} has shape {a.shape}: allowed the shape of t, {t.shape}")
     ts = check_real("t_steady", t_steady, low=float(t[0]), high=float(t[-2]), unit="s")
     span = t[-1] - t[0]
     tail = t >= ts
     tt = t[tail]
-    return Metrics(
-        peak_x=float(np.max(np.abs(x))),
-        rms_x=math.sqrt(_trapz(x * x, t) / span),
-        peak_x_ss=float(np.max(np.abs(x[tail]))),
-        rms_x_ss=math.sqrt(_trapz(x[tail] ** 2, tt) / (tt[-1] - tt[0])),
-        peak_u=float(np.max(np.abs(u))),
-        rms_u=math.sqrt(_trapz(u * u, t) / span),
-        energy=_trapz(np.abs(u * vr), t),
-    )
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = Metrics(
+            peak_x=float(np.max(np.abs(x))),
+            rms_x=math.sqrt(_trapz(x * x, t) / span),
+            peak_x_ss=float(np.max(np.abs(x[tail]))),
+            rms_x_ss=math.sqrt(_trapz(x[tail] ** 2, tt) / (tt[-1] - tt[0])),
+            peak_u=float(np.max(np.abs(u))),
+            rms_u=math.sqrt(_trapz(u * u, t) / span),
+            energy=_trapz(np.abs(u * vr), t),
+        )
+    for name in Metrics.__dataclass_fields__:
+        if not math.isfinite(getattr(out, name)):
+            raise ParameterError(
+                f"x, u, v_rel and t give {name} = {getattr(out, name)!r}: the squares or products overflow; "
+                "allowed samples whose squares and time integrals are finite"
+            )
+    return out

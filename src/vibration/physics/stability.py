@@ -38,7 +38,8 @@ from scipy.linalg import expm
 from scipy.optimize import brentq
 from scipy.signal import lfilter
 
-from .model import Oscillator, ParameterError, SineForce, check_int, check_real
+from .checks import check_array
+from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
 
 __all__ = [
     "DamperLoad",
@@ -71,6 +72,12 @@ MC_SAMPLES = 2000
 #: Samples simulated at once by :func:`white_noise_monte_carlo` (memory of one chunk ~ 50 bytes each).
 MC_CHUNK = 1_000_000
 
+#: Largest total number of samples (paths times samples per path) of one Monte Carlo estimate (about 5 s).
+MC_TOTAL_MAX = 100_000_000
+
+#: Largest number of times :func:`step_response` evaluates (one scalar closed form each).
+STEP_SAMPLES_MAX = 1_000_000
+
 
 def _check_osc(osc) -> Oscillator:
     if not isinstance(osc, Oscillator):
@@ -87,17 +94,11 @@ def _check_stable(osc: Oscillator, what: str) -> None:
 
 
 def _frequencies(omegas, name: str = "omegas") -> np.ndarray:
-    try:
-        w = np.asarray(omegas, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError(
-            f"{name} = {omegas!r} is not an array of numbers: allowed finite values >= 0 rad/s"
-        ) from None
-    ok = np.isfinite(w) & (w >= 0.0)
-    if not np.all(ok):
-        bad = w[~ok].ravel()[0]
-        raise ParameterError(f"{name} contains {bad!r}: allowed finite values >= 0 rad/s")
-    return w
+    return check_array(name, omegas, low=0.0, ndim=(0, 1, 2), unit="rad/s")
+
+
+def _times(t, name: str = "t", max_size: int = N_POINTS_MAX) -> np.ndarray:
+    return check_array(name, t, low=0.0, ndim=(0, 1, 2), max_size=max_size, unit="s")
 
 
 def _out(values: np.ndarray, like: np.ndarray):
@@ -252,10 +253,23 @@ def growth_envelope(osc: Oscillator, force: SineForce, t):
     _check_osc(osc)
     if not isinstance(force, SineForce):
         raise ParameterError(f"force = {force!r} is not a SineForce: allowed SineForce(F0, omega)")
-    tt = np.asarray(t, dtype=float)
-    if not np.all(np.isfinite(tt)) or np.any(tt < 0.0):
-        bad = tt[~(np.isfinite(tt) & (tt >= 0.0))].ravel()[0]
-        raise ParameterError(f"t contains {bad!r}: allowed finite times >= 0 s")
+    tt = _times(t)
+    with np.errstate(over="ignore", invalid="ignore"):
+        env = _growth_envelope(osc, force, tt)
+    return _finite_envelope(env, tt, osc)
+
+
+def _finite_envelope(env, tt: np.ndarray, osc: Oscillator):
+    if not np.all(np.isfinite(env)):
+        bad = float(np.asarray(tt)[~np.isfinite(np.asarray(env, dtype=float))].ravel()[0])
+        raise ParameterError(
+            f"t contains {bad!r} s: the envelope overflows there (c = {osc.c!r} N s/m grows it exponentially); "
+            "allowed times at which it stays finite"
+        )
+    return env
+
+
+def _growth_envelope(osc: Oscillator, force: SineForce, tt: np.ndarray):
     wn = osc.natural_frequency
     F0, w = force.F0, force.omega
     if osc.c == 0.0 and w == wn:
@@ -466,12 +480,16 @@ def step_response(osc: Oscillator, t):
     array([0., 2.])
     """
     _check_osc(osc)
-    tt = np.asarray(t, dtype=float)
-    if not np.all(np.isfinite(tt)) or np.any(tt < 0.0):
-        bad = tt[~(np.isfinite(tt) & (tt >= 0.0))].ravel()[0]
-        raise ParameterError(f"t contains {bad!r}: allowed finite times >= 0 s")
+    tt = _times(t, max_size=STEP_SAMPLES_MAX)
     f = _one_minus_y(osc)
-    y = 1.0 - np.array([f(float(s)) for s in tt.ravel()]).reshape(tt.shape)
+    with np.errstate(over="ignore", invalid="ignore"):
+        y = 1.0 - np.array([f(float(s)) for s in tt.ravel()]).reshape(tt.shape)
+    if not np.all(np.isfinite(y)):
+        bad = float(tt[~np.isfinite(y)].ravel()[0])
+        raise ParameterError(
+            f"t contains {bad!r} s: the step response overflows there (c = {osc.c!r} N s/m, unstable); "
+            "allowed times at which it stays finite"
+        )
     return _out(y, tt)
 
 
@@ -570,7 +588,9 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
         return StepMetrics(zeta, overshoot, half, rise, settle, band, 1.0 / osc.k)
 
     hi = osc.time_constant
-    while f(hi) > min(band, 0.1):
+    for _ in range(2100):  # doubling from any normal float reaches the overflow in < 2100 steps
+        if not f(hi) > min(band, 0.1):
+            break
         hi *= 2.0
     rise = crossing(0.9, 0.0, hi) - crossing(0.1, 0.0, hi)
     settle = crossing(1.0 - band, 0.0, hi)
@@ -744,6 +764,11 @@ def simulate_white_noise(
     dt = _default_dt(osc) if dt is None else check_real("dt", dt, low=0.0, low_open=True, unit="s")
     n_paths = check_int("n_paths", n_paths, low=1, high=100_000)
     seed = check_int("seed", seed, low=0, high=2**63 - 1)
+    if not n_paths * (t_end / dt + 1.0) <= SAMPLES_MAX:
+        raise ParameterError(
+            f"n_paths * (t_end/dt + 1) = {n_paths * (t_end / dt + 1.0):.6g} (n_paths = {n_paths}, t_end = {t_end!r} s, "
+            f"dt = {dt!r} s) is out of range: allowed <= {SAMPLES_MAX} samples (memory)"
+        )
     n = int(math.floor(t_end / dt + 1e-9)) + 1
     if n < 2:
         raise ParameterError(f"dt = {dt!r} s is out of range: allowed dt <= t_end = {t_end!r} s")
@@ -836,6 +861,13 @@ def white_noise_monte_carlo(
     burn = 12.0 * tau
     duration = 100.0 * tau if duration is None else check_real("duration", duration, low=0.0, low_open=True, unit="s")
     dt = duration / MC_SAMPLES if dt is None else check_real("dt", dt, low=0.0, low_open=True, unit="s")
+    total = n_paths * ((burn + duration) / dt + 1.0)
+    if not total <= MC_TOTAL_MAX:
+        raise ParameterError(
+            f"n_paths * (burn-in + duration) / dt = {total:.3g} samples (n_paths = {n_paths}, "
+            f"duration = {duration!r} s, dt = {dt!r} s, burn-in {burn:.3g} s): "
+            f"allowed at most {MC_TOTAL_MAX:g} samples in all (run time)"
+        )
     chunk = max(1, min(n_paths, MC_CHUNK // max(1, int((burn + duration) / dt) + 1)))
     ss = np.random.SeedSequence(check_int("seed", seed, low=0, high=2**63 - 1))
     mx, mv = [], []
@@ -912,6 +944,12 @@ def damper_load(osc: Oscillator, F0: float, omegas) -> DamperLoad:
             force = np.zeros_like(w)
         power = 0.5 * force * w * amp
         power = np.where(force == 0.0, 0.0, power)
+    if not (np.all(np.isfinite(amp)) and np.all(np.isfinite(power))):
+        bad = float(w[~(np.isfinite(amp) & np.isfinite(power))].ravel()[0])
+        raise ParameterError(
+            f"omegas contains {bad!r} rad/s: with c = {osc.c!r} N s/m the steady amplitude there is not finite "
+            "(undamped resonance or overflow); allowed frequencies with a finite steady state"
+        )
     return DamperLoad(omega=w, amplitude=amp, force_amplitude=force, mean_power=power)
 
 
