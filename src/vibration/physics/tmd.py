@@ -73,6 +73,7 @@ import numpy as np
 import scipy.linalg as sla
 from scipy.optimize import fsolve, minimize
 
+from .checks import check_array
 from .model import ParameterError, check_real
 
 __all__ = [
@@ -107,6 +108,13 @@ ZETA_P_OPT_MAX = 0.5
 SYM_TOL = 1e-10
 #: Largest number of degrees of freedom of an MDOF model.
 N_DOF_MAX = 500
+#: Largest number of stiffness errors :func:`mistuned_peak` evaluates (one peak search each).
+MISTUNED_MAX = 10_000
+#: Largest work of one frequency-response or time-response call, in units of n³ (one n x n solve each):
+#: ``len(omegas) n³`` for :meth:`MDOF.frf`, ``len(t) (2n + 2)³`` for the matrix exponentials of :meth:`MDOF.response`.
+WORK_MAX = 2e9
+#: Largest number of entries (len(t) times 2n) of one response array.
+ENTRIES_MAX = 20_000_000
 
 
 # ----------------------------------------------------------------------------- validation
@@ -123,14 +131,7 @@ def _zeta(name: str, z, high: float = ZETA_MAX) -> float:
 
 
 def _ratios(r) -> np.ndarray:
-    try:
-        arr = np.asarray(r, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError(f"r = {r!r} is not an array of numbers: allowed finite r >= 0") from None
-    if arr.size and not (np.all(np.isfinite(arr)) and np.all(arr >= 0.0)):
-        bad = arr[~(np.isfinite(arr) & (arr >= 0.0))].flat[0]
-        raise ParameterError(f"r = {float(bad)!r} is out of range: allowed finite r >= 0 (ω/ω_p)")
-    return arr
+    return check_array("r", r, low=0.0, ndim=(0, 1, 2), unit="(ω/ω_p)")
 
 
 # ----------------------------------------------------------------------------- the TMD on an SDOF primary
@@ -580,10 +581,8 @@ def mistuned_peak(tuning: TMDTuning, stiffness_error, zeta_p=None) -> np.ndarray
     if not isinstance(tuning, TMDTuning):
         raise ParameterError(f"tuning = {tuning!r} is not a TMDTuning: allowed den_hartog(...), hinf_tuning(...)")
     zp = tuning.zeta_p if zeta_p is None else _zeta("zeta_p", zeta_p)
-    eps = np.asarray(stiffness_error, dtype=float)
+    eps = check_array("stiffness_error", stiffness_error, low=-0.9, high=9.0, ndim=(0, 1, 2), max_size=MISTUNED_MAX)
     flat = eps.ravel()
-    for e in flat:
-        check_real("stiffness_error", float(e), low=-0.9, high=9.0)
     out = np.empty(flat.shape)
     for i, e in enumerate(flat):
         g = math.sqrt(1.0 + e)
@@ -768,12 +767,8 @@ class MDOF:
         return lam[np.lexsort((lam.imag, np.abs(lam)))]
 
     def _load(self, load) -> np.ndarray:
-        try:
-            p = np.array(load, dtype=float).reshape(-1)
-        except (TypeError, ValueError):
-            msg = f"load = {load!r} is not a vector of numbers: allowed {self.n} finite forces, N"
-            raise ParameterError(msg) from None
-        if p.shape != (self.n,) or not np.all(np.isfinite(p)):
+        p = check_array("load", load, ndim=(0, 1, 2), max_size=N_DOF_MAX, unit="N").reshape(-1)
+        if p.shape != (self.n,):
             raise ParameterError(f"load = {np.asarray(load).tolist()!r}: allowed {self.n} finite force amplitudes, N")
         return p
 
@@ -802,14 +797,18 @@ class MDOF:
         2.2371
         """
         p = self._load(load)
-        w = np.atleast_1d(np.asarray(omegas, dtype=float))
-        if w.ndim != 1 or not np.all(np.isfinite(w) & (w >= 0.0)):
-            raise ParameterError(f"omegas = {np.asarray(omegas).tolist()!r}: allowed finite omegas >= 0 rad/s")
-        D = self.K[None] - (w * w)[:, None, None] * self.M[None] + 1j * w[:, None, None] * self.C[None]
+        w = np.atleast_1d(check_array("omegas", omegas, low=0.0, ndim=(0, 1), unit="rad/s"))
+        if not w.size * self.n**3 <= WORK_MAX:
+            raise ParameterError(
+                f"omegas has {w.size} frequencies: with n = {self.n} degrees of freedom that is "
+                f"{w.size * self.n**3:.3g} units of n³ work, allowed at most {WORK_MAX:g} "
+                f"(len(omegas) <= {int(WORK_MAX // self.n**3)})"
+            )
         out = np.empty((w.size, self.n), dtype=complex)
         for i in range(w.size):
+            D = self.K - (w[i] * w[i]) * self.M + 1j * w[i] * self.C
             try:
-                out[i] = np.linalg.solve(D[i], p)
+                out[i] = np.linalg.solve(D, p)
             except np.linalg.LinAlgError:
                 out[i] = np.inf
         return out
@@ -852,10 +851,13 @@ class MDOF:
         """
         p = self._load(load)
         omega = check_real("omega", omega, low=0.0, unit="rad/s")
-        t = np.atleast_1d(np.asarray(t, dtype=float))
-        if t.ndim != 1 or not np.all(np.isfinite(t) & (t >= 0.0)):
-            raise ParameterError("t: allowed a 1-D array of finite times >= 0 s")
+        t = np.atleast_1d(check_array("t", t, low=0.0, ndim=(0, 1), unit="s"))
         n = self.n
+        if not t.size * 2 * n <= ENTRIES_MAX:
+            raise ParameterError(
+                f"t has {t.size} samples: with n = {n} degrees of freedom the response has {t.size * 2 * n} entries, "
+                f"allowed at most {ENTRIES_MAX} (memory)"
+            )
         z0 = np.zeros(2 * n)
         if x0 is not None:
             z0[:n] = self._state("x0", x0)
@@ -874,8 +876,9 @@ class MDOF:
                 vs = omega * (np.outer(ct, X.real) - np.outer(st, X.imag))
                 zh0 = z0 - np.concatenate([X.imag, omega * X.real])
                 q0 = np.linalg.solve(V, zh0.astype(complex))
-                zh = ((np.exp(np.outer(t, lam)) * q0) @ V.T).real
-                return MDOFResponse(t, xs + zh[:, :n], vs + zh[:, n:])
+                with np.errstate(over="ignore", invalid="ignore"):
+                    zh = ((np.exp(np.outer(t, lam)) * q0) @ V.T).real
+                return _finite_response(MDOFResponse(t, xs + zh[:, :n], vs + zh[:, n:]))
         Minv_p = np.linalg.solve(self.M, p)
         Aa = np.zeros((2 * n + 2, 2 * n + 2))
         Aa[: 2 * n, : 2 * n] = self.state_matrix
@@ -883,18 +886,30 @@ class MDOF:
         Aa[2 * n, 2 * n + 1] = omega  # s' = ω c
         Aa[2 * n + 1, 2 * n] = -omega  # c' = −ω s
         za = np.concatenate([z0, [0.0, 1.0]])
+        if not t.size * (2 * n + 2) ** 3 <= WORK_MAX:
+            raise ParameterError(
+                f"t has {t.size} samples: the matrix exponential of size {2 * n + 2} at each is "
+                f"{t.size * (2 * n + 2) ** 3:.3g} units of work, allowed at most {WORK_MAX:g} "
+                f"(len(t) <= {int(WORK_MAX // (2 * n + 2) ** 3)} here)"
+            )
         z = sla.expm(Aa[None] * t[:, None, None]) @ za
-        return MDOFResponse(t, z[:, :n], z[:, n : 2 * n])
+        return _finite_response(MDOFResponse(t, z[:, :n], z[:, n : 2 * n]))
 
     def _state(self, name: str, value) -> np.ndarray:
-        try:
-            a = np.array(value, dtype=float).reshape(-1)
-        except (TypeError, ValueError):
-            msg = f"{name} = {value!r} is not a vector of numbers: allowed {self.n} finite values"
-            raise ParameterError(msg) from None
-        if a.shape != (self.n,) or not np.all(np.isfinite(a)):
+        a = check_array(name, value, ndim=(0, 1, 2), max_size=N_DOF_MAX).reshape(-1)
+        if a.shape != (self.n,):
             raise ParameterError(f"{name} = {np.asarray(value).tolist()!r}: allowed {self.n} finite values")
         return a
+
+
+def _finite_response(r: MDOFResponse) -> MDOFResponse:
+    if not (np.all(np.isfinite(r.x)) and np.all(np.isfinite(r.v))):
+        bad = float(r.t[~(np.all(np.isfinite(r.x), axis=1) & np.all(np.isfinite(r.v), axis=1))][0])
+        raise ParameterError(
+            f"t contains {bad!r} s: the response is not finite there (overflow, or a load at an undamped "
+            "resonance the modal method cannot represent: use method='expm'); allowed times where it is finite"
+        )
+    return r
 
 
 def modal_damping_matrix(M, K, zeta) -> np.ndarray:
@@ -918,10 +933,11 @@ def modal_damping_matrix(M, K, zeta) -> np.ndarray:
     >>> round(float(C[0, 0]), 3)
     0.5
     """
-    model = MDOF(M, np.zeros_like(np.asarray(M, dtype=float)), K)
-    z = np.broadcast_to(np.asarray(zeta, dtype=float), (model.n,))
-    for v in z:
-        check_real("zeta", float(v), low=0.0, high=ZETA_MAX)
+    model = MDOF(M, np.zeros_like(_matrix("M", M, None)), K)
+    z = check_array("zeta", zeta, low=0.0, high=ZETA_MAX, ndim=(0, 1), max_size=N_DOF_MAX)
+    if z.size not in (1, model.n):
+        raise ParameterError(f"zeta has {z.size} values: allowed 1 or one per mode ({model.n})")
+    z = np.broadcast_to(z, (model.n,))
     w, phi = model.natural_frequencies, model.modes
     Mphi = model.M @ phi
     C = Mphi @ np.diag(2.0 * z * w) @ Mphi.T
@@ -953,13 +969,13 @@ def shear_building(masses, stiffnesses, zeta=0.05) -> MDOF:
     >>> b.K.tolist()
     [[2.0, -1.0], [-1.0, 1.0]]
     """
-    m = np.atleast_1d(np.asarray(masses, dtype=float))
-    k = np.atleast_1d(np.asarray(stiffnesses, dtype=float))
-    if m.ndim != 1 or m.size == 0 or m.size > N_DOF_MAX or k.shape != m.shape:
-        raise ParameterError(f"masses and stiffnesses: allowed two 1-D arrays of equal length 1..{N_DOF_MAX}")
-    for i, (mi, ki) in enumerate(zip(m, k, strict=True)):
-        check_real(f"masses[{i}]", float(mi), low=0.0, low_open=True, unit="kg")
-        check_real(f"stiffnesses[{i}]", float(ki), low=0.0, low_open=True, unit="N/m")
+    m = np.atleast_1d(check_array("masses", masses, low=0.0, low_open=True, max_size=N_DOF_MAX, unit="kg"))
+    k = np.atleast_1d(check_array("stiffnesses", stiffnesses, low=0.0, low_open=True, max_size=N_DOF_MAX, unit="N/m"))
+    if k.shape != m.shape:
+        raise ParameterError(
+            f"masses has {m.size} values and stiffnesses {k.size}: "
+            f"allowed two 1-D arrays of equal length 1..{N_DOF_MAX}"
+        )
     n = m.size
     K = np.zeros((n, n))
     for i in range(n):
