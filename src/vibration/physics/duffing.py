@@ -1101,8 +1101,8 @@ def frequency_sweep(
     _check_damped(d)
     F0 = check_real("F0", F0, low=0.0, unit="N")
     w = _check_omegas(omegas)
-    if direction not in ("up", "down"):
-        raise ParameterError(f"direction = {direction!r} is not valid: allowed 'up' or 'down'")
+    if not isinstance(direction, str) or direction not in ("up", "down"):
+        raise ParameterError(f"direction = {direction!r:.60} is not valid: allowed 'up' or 'down'")
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-2)
@@ -1110,8 +1110,8 @@ def frequency_sweep(
     atol = rtol * xr if atol is None else check_real("atol", atol, low=0.0, low_open=True, unit="m")
     steady_tol = check_real("steady_tol", steady_tol, low=1e-12, high=0.1)
     max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
-    if integrator not in ("compiled", "scipy"):
-        raise ParameterError(f"integrator = {integrator!r} is not valid: allowed 'compiled' or 'scipy'")
+    if not isinstance(integrator, str) or integrator not in ("compiled", "scipy"):
+        raise ParameterError(f"integrator = {integrator!r:.60} is not valid: allowed 'compiled' or 'scipy'")
     limit = MAX_SWEEP_STEPS if integrator == "compiled" else MAX_SCIPY_SWEEP_STEPS
     max_steps = limit if max_steps is None else check_int("max_steps", max_steps, low=1, high=limit)
     _sweep_work(d, F0, w, x0, 3, max_steps, "frequency_sweep")

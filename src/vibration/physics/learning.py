@@ -141,7 +141,7 @@ class OscillatorTask:
         s(self, "u_max", check_real("u_max", self.u_max, **pos, unit="N"))
         s(self, "F0", check_real("F0", self.F0, low=0.0, unit="N"))
         s(self, "omega", check_real("omega", self.omega, low=0.0, unit="rad/s"))
-        if self.mode not in MODES:
+        if not isinstance(self.mode, str) or self.mode not in MODES:
             raise ParameterError(f"mode = {self.mode!r} is not a mode: allowed one of {MODES}")
         s(self, "c_min", check_real("c_min", self.c_min, low=0.0, unit="N s/m"))
         s(self, "c_max", check_real("c_max", self.c_max, low=self.c_min, low_open=True, unit="N s/m"))
@@ -575,8 +575,11 @@ def _moments(task: OscillatorTask, g: np.ndarray) -> tuple[float, float]:
     """
     a_d, b_d = _zoh(task.m, task.c, task.k, task.dt)
     d = _increments(task)
-    acl = a_d - np.outer(b_d, g)
-    w = task.state_weight + task.dt * task.r * np.outer(g, g)
+    with np.errstate(over="ignore", invalid="ignore"):  # huge gains: inf weights, and the kernel returns inf
+        acl = a_d - np.outer(b_d, g)
+        w = task.state_weight + task.dt * task.r * np.outer(g, g)
+    if not (np.all(np.isfinite(acl)) and np.all(np.isfinite(w))):
+        return math.inf, math.inf
     return _moments_from(task, acl, w, d, g)
 
 

@@ -1126,7 +1126,7 @@ def identify(t, force, x=None, a=None, *, search: str = "global") -> Identificat
     ([2.0, 1.0, 50.0], (3, 2))
     """
     t, h, force, y, sensor = _record(t, force, x, a)
-    if search not in ("global", "local"):
+    if not isinstance(search, str) or search not in ("global", "local"):
         raise ParameterError(f"search = {search!r}: allowed 'global' or 'local'")
     if search == "local":
         try:
@@ -1906,6 +1906,7 @@ def detection_experiment(
     if thr is None or np.any(thr <= 0.0):
         raise ParameterError(f"thresholds = {thresholds!r}: allowed a 1-D array of positive numbers")
     noise = check_real("noise", noise, low=0.0, low_open=True)
+    stiffness = _signal("stiffness", stiffness, t.size)
     healthy = synthetic_measurements(osc, t, force, sensor=sensor)
     faulty = synthetic_measurements(osc, t, force, sensor=sensor, stiffness=stiffness)
     peaks = np.empty(runs)
