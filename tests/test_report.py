@@ -66,6 +66,13 @@ def test_physical_parameters_are_declared_by_every_chapter_that_uses_them(chapte
         ("n_points", "1", r"n_points = 1 is out of range: allowed integer 2 <= n_points <= 200001"),
         ("t_end", "1e9", r"t_end = 1000000000.0 s is out of range"),
         ("c_min", "30", r"c_max = 20.0 N s/m must exceed c_min = 30.0 N s/m"),
+        ("c_sa_min", "20", r"c_sa_max = 15.0 N s/m must exceed c_sa_min = 20.0 N s/m"),
+        ("c_semi_min", "20", r"c_semi_max = 15.0 N s/m must exceed c_semi_min = 20.0 N s/m"),
+        ("omega_sweep_min", "7", r"omega_sweep_max = 6.5 rad/s must exceed omega_sweep_min = 7.0 rad/s"),
+        ("f_max", "30", r"f_max = 30.0 Hz is not below the Nyquist frequency 1/\(2 dt\) = 25 Hz of dt = 0.02 s"),
+        ("dt", "0.5", r"f_max = 2.0 Hz is not below the Nyquist frequency 1/\(2 dt\) = 1 Hz of dt = 0.5 s"),
+        ("t_record", "0.001", r"t_record = 0.001 s holds 0.05 samples of dt = 0.02 s: allowed at least 200"),
+        ("n_sweep", "5", r"n_sweep = 5 is out of range: allowed integer 10 <= n_sweep <= 400"),
     ],
 )
 def test_bad_parameters_are_refused_before_any_kernel(chapters, no_kernel, name, value, pattern, capsys):
@@ -74,6 +81,26 @@ def test_bad_parameters_are_refused_before_any_kernel(chapters, no_kernel, name,
     assert report.main(["-p", name, value, "--out", "unused"]) == 2
     err = capsys.readouterr().err
     assert name in err and "error:" in err
+
+
+def test_a_chapter_package_declares_its_notebooks_parameters_once(chapters):
+    """The notebook's parameters cell holds exactly its schema's names, at the schema's defaults."""
+    import ast
+
+    schemas = report.chapter_schemas()
+    by_name = {ch.name: ch for ch in chapters}
+    for notebook, schema in schemas.items():
+        params = by_name[notebook].params
+        assert set(params) == {p.name for p in schema.params}, notebook
+        for p in schema.params:
+            assert ast.literal_eval(params[p.name]["default"]) == p.default, (notebook, p.name)
+
+
+def test_a_parameter_without_its_value_is_refused(chapters, no_kernel, capsys):
+    with pytest.raises(SystemExit) as info:
+        report.main(["-p", "m", "--no-pdf"])
+    assert info.value.code == 2
+    assert "expected 2 arguments" in capsys.readouterr().err
 
 
 def test_combinations_the_papers_solver_could_not_finish_are_refused(chapters, no_kernel):
@@ -149,7 +176,8 @@ def test_failed_chapter_leaves_previous_tree_untouched(tmp_path, monkeypatch):
 
 
 def test_every_declared_parameter_has_a_range(chapters):
-    declared = {name for ch in chapters for name in ch.params}
+    schemas = report.chapter_schemas()
+    declared = {name for ch in chapters if ch.name not in schemas for name in ch.params}
     assert declared - set(report.PARAMETER_RULES) == set(), "parameters the runner cannot range-check"
     assert set(report.PARAMETER_RULES) - declared == set(), "ranges of parameters no chapter declares"
     for ch in chapters:  # every default is inside its own range
@@ -180,3 +208,69 @@ def test_sigterm_stops_the_running_chapters_at_once(tmp_path):
     assert proc.returncode == 130
     assert "interrupted: the previous output was left as it was" in err
     assert not (out / "report").exists() and not list(out.glob(".report-*"))
+
+
+def _stuck_project(root: Path, seconds: float = 600.0) -> Path:
+    """A throw-away project whose one chapter spins in compiled code (no Python bytecode to interrupt)."""
+    import nbformat
+
+    (root / "notebooks").mkdir(parents=True)
+    nb = nbformat.v4.new_notebook()
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    params = nbformat.v4.new_code_cell(f"seconds: float = {seconds}  # how long to spin, s")
+    params.metadata["tags"] = ["parameters"]
+    spin = (
+        "from numba import njit\n\n\n@njit\ndef spin(n):\n    s = 0.0\n    for i in range(n):\n"
+        "        s += (i % 7) * 1e-9\n    return s\n\n\nspin(int(seconds * 3e8))\n"
+    )
+    nb.cells = [params, nbformat.v4.new_code_cell(spin)]
+    nbformat.write(nb, root / "notebooks" / "01_spin.ipynb")
+    return root
+
+
+@pytest.mark.slow
+def test_a_cell_over_the_limit_fails_its_chapter_naming_the_cell(tmp_path):
+    """The cell limit is a last resort: the run fails at once, naming the chapter and the cell (no second run)."""
+    root = _stuck_project(tmp_path / "project")
+    chapters = report.discover(root)
+    with pytest.raises(RuntimeError, match=r'chapter 01_spin failed: .*the cell starting "from numba import njit" '
+                       r"ran longer than the runner's limit of 4 s"):  # fmt: skip
+        report.run(chapters, {}, tmp_path / "out", jobs=1, log=lambda *_: None, pdf=False, cell_timeout=4)
+    assert not (tmp_path / "out" / "report").exists()
+
+
+@pytest.mark.slow
+def test_sigterm_stops_a_chapter_stuck_in_compiled_code_and_its_kernel(tmp_path):
+    """One SIGTERM stops the runner, its pool and the kernel spinning in numba code, within seconds."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    import psutil
+
+    root = _stuck_project(tmp_path / "project")
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "vibration.report", "--out", str(tmp_path / "out"), "--no-pdf"],
+        env={**os.environ, "VIBRATION_ROOT": str(root)},
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    deadline = time.monotonic() + 60
+    kernels: list = []
+    while not kernels and time.monotonic() < deadline:
+        time.sleep(0.5)
+        family = psutil.Process(proc.pid).children(recursive=True)
+        kernels = [p for p in family if "ipykernel" in " ".join(p.cmdline())]
+    assert kernels, "the chapter's kernel never started"
+    time.sleep(3.0)  # the kernel is inside the compiled loop now
+    family = psutil.Process(proc.pid).children(recursive=True)
+    proc.send_signal(signal.SIGTERM)
+    start = time.perf_counter()
+    _, err = proc.communicate(timeout=30)
+    assert time.perf_counter() - start < 10.0
+    assert proc.returncode == 130, err
+    gone, alive = psutil.wait_procs(family, timeout=10)
+    assert not alive, [p.cmdline() for p in alive]

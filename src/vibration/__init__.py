@@ -13,6 +13,9 @@ energy_balance, peak_displacement_map
     Frequency-domain and window quantities.
 load_scenarios, load_claims, paper_defaults
     The paper's inputs from ``data/``.
+load_logger_runs, fit_free_decay, harmonic_fit, friction_forced_amplitude, ...
+    Part III: a real oscillator's logger files, its free decays (viscous, Coulomb, both) and
+    driven runs, and the steady response with dry friction (``vibration.physics.lab``).
 
 Examples
 --------
@@ -23,7 +26,7 @@ Examples
 """
 
 # Part II: each chapter's physics module lists its public names in __all__.
-from .physics import control, duffing, learning, stability, tmd, twin  # noqa: E402
+from .physics import control, duffing, lab, learning, stability, tmd, twin  # noqa: E402
 from .physics.control import *  # noqa: F403
 from .physics.duffing import *  # noqa: F403
 from .physics.exact import Response, SteadyState, exact_response, steady_state
@@ -38,6 +41,7 @@ from .physics.frequency import (
     phase_lag,
     settling_time,
 )
+from .physics.lab import *  # noqa: F403
 from .physics.learning import *  # noqa: F403
 from .physics.model import N_POINTS_MAX, REGIMES, Oscillator, ParameterError, SineForce
 from .physics.numerics import METHODS, simulate
@@ -72,7 +76,7 @@ __all__ = [
     "simulate",
     "steady_state",
 ]
-for _chapter in (stability, control, tmd, duffing, twin, learning):
+for _chapter in (stability, control, tmd, duffing, twin, learning, lab):
     __all__ += _chapter.__all__
 del _chapter
 

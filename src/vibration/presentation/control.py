@@ -564,7 +564,7 @@ def semi_active_study(
     Examples
     --------
     >>> s = semi_active_study(1.0, 0.5, 20.0, 5.0, 4.47, 5.0, 101, c_sky=8.0, c_min=0.5, c_max=15.0,
-    ...                       f_mr=10.0, n_sweep=5)
+    ...                       f_mr=10.0, n_sweep=10)
     >>> round(s.Y, 3), sorted(s.sweeps)
     (0.25, ['clipped', 'mr', 'on-off'])
     """
@@ -573,7 +573,7 @@ def semi_active_study(
     c_min = check_real("c_sa_min", c_min, low=0.0, unit="N s/m")
     c_max = check_real("c_sa_max", c_max, low=c_min, unit="N s/m")
     f_mr = check_real("f_mr", f_mr, low=0.0, low_open=True, unit="N")
-    n_sweep = check_int("n_sweep", n_sweep, low=3, high=400)
+    n_sweep = check_int("n_sweep", n_sweep, low=10, high=400)  # the runner's range, as in chapter 9
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     Y = F0 / k
     wn = osc.natural_frequency

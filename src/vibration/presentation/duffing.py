@@ -159,7 +159,7 @@ def duffing_study(
         raise ParameterError("k3_soft = 0.0 N/m^3 is out of range: allowed k3_soft < 0 N/m^3")
     omega_sweep_min = check_real("omega_sweep_min", omega_sweep_min, low=0.0, low_open=True, unit="rad/s")
     omega_sweep_max = check_real("omega_sweep_max", omega_sweep_max, low=omega_sweep_min, low_open=True, unit="rad/s")
-    n_sweep = check_int("n_sweep", n_sweep, low=10, high=2000)
+    n_sweep = check_int("n_sweep", n_sweep, low=10, high=400)  # the runner's range, as in chapter 7
     n_lyapunov = check_int("n_lyapunov", n_lyapunov, low=100, high=100_000)
     c = check_real("c", c, low=0.0, low_open=True, unit="N s/m")
     F0 = check_real("F0", F0, low=0.0, low_open=True, unit="N")

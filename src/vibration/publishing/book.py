@@ -34,7 +34,8 @@ BOOK_TITLE = "Resonance and damping, reproduced and audited"
 #: (caption, first chapter number, last chapter number) of the sidebar's parts.
 PARTS = (
     ("Part I: the paper, reproduced and audited", 1, 5),
-    ("Part II: beyond the paper", 6, 99),
+    ("Part II: beyond the paper", 6, 11),
+    ("Part III: the real oscillator", 12, 99),
 )
 FRONT = 0  # chapter number of the front page
 CHROMIUM = "/usr/bin/chromium"

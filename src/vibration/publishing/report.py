@@ -22,6 +22,7 @@ import math
 import multiprocessing
 import os
 import queue
+import re
 import shutil
 import signal
 import sys
@@ -125,6 +126,21 @@ MAX_STIFFNESS = 1e6
 assert PARAMETER_RULES["n_points"][2] <= N_POINTS_MAX
 
 
+def chapter_schemas() -> dict:
+    """The parameter schemas of the chapter packages (``vibration.chapters.<name>.params.SCHEMA``), by notebook."""
+    import importlib
+    import pkgutil
+
+    from .. import chapters
+
+    out = {}
+    for info in pkgutil.iter_modules(chapters.__path__):
+        if info.ispkg:
+            schema = importlib.import_module(f"{chapters.__name__}.{info.name}.params").SCHEMA
+            out[schema.notebook] = schema
+    return out
+
+
 def project_root() -> Path:
     """The project folder (holding ``notebooks/``): ``$VIBRATION_ROOT`` or the source checkout."""
     env = os.environ.get("VIBRATION_ROOT")
@@ -202,6 +218,7 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
     Returns the typed values. Raises :class:`ParameterError` naming the
     parameter, its value and what is allowed.
     """
+    schemas = chapter_schemas()
     declared: dict[str, str] = {}
     for ch in chapters:
         for name, info in ch.params.items():
@@ -214,6 +231,8 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
                 f"parameter {name!r} (value {text!r}) is not declared by any chapter run: allowed {allowed}"
             )
         value = _convert(name, text, declared[name])
+        for schema in (schemas[ch.name] for ch in chapters if ch.name in schemas and name in ch.params):
+            schema.check({name: value})  # the chapter package's own range: one source per chapter
         if name in PARAMETER_RULES:
             low, low_open, high, unit = PARAMETER_RULES[name]
             if declared[name] == "int":
@@ -222,18 +241,45 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
                 check_real(name, value, low=low, low_open=low_open, high=high, unit=unit)
         values[name] = value
     _check_together(chapters, values)
+    for ch in chapters:
+        if ch.name in schemas:  # the chapter's rules that tie several of its parameters together
+            schemas[ch.name].check({k: v for k, v in values.items() if k in ch.params})
     return values
 
 
+#: Pairs of parameters that bound a range: (lower, upper, unit); the upper must exceed the lower.
+ORDERED = (
+    ("c_min", "c_max", "N s/m"),
+    ("c_sa_min", "c_sa_max", "N s/m"),
+    ("c_semi_min", "c_semi_max", "N s/m"),
+    ("omega_sweep_min", "omega_sweep_max", "rad/s"),
+)
+#: Fewest samples an identification record may hold (t_record / dt).
+MIN_RECORD_SAMPLES = 200
+
+
 def _check_together(chapters: list[Chapter], values: dict) -> None:
-    """Limits that involve several parameters, on the values a run would use."""
+    """Limits that involve several parameters, on the values each chapter would use (its defaults and ``-p``)."""
+    for ch in chapters:
+        _check_chapter_together({**_defaults(ch), **{k: v for k, v in values.items() if k in ch.params}})
 
-    def get(name):
-        return values.get(name, _default(chapters, name))
 
-    c_min, c_max = get("c_min"), get("c_max")
-    if c_min is not None and c_max is not None and not c_max > c_min:
-        raise ParameterError(f"c_max = {c_max!r} N s/m must exceed c_min = {c_min!r} N s/m")
+def _check_chapter_together(p: dict) -> None:
+    get = p.get
+    for low, high, unit in ORDERED:
+        if low in p and high in p and not p[high] > p[low]:
+            raise ParameterError(f"{high} = {p[high]!r} {unit} must exceed {low} = {p[low]!r} {unit}")
+    f_max, dt, t_record = get("f_max"), get("dt"), get("t_record")
+    if f_max is not None and dt is not None and not f_max < 0.5 / dt:
+        raise ParameterError(
+            f"f_max = {f_max!r} Hz is not below the Nyquist frequency 1/(2 dt) = {0.5 / dt:.4g} Hz of dt = {dt!r} s: "
+            f"allowed f_max < {0.5 / dt:.4g} Hz"
+        )
+    if t_record is not None and dt is not None and t_record / dt < MIN_RECORD_SAMPLES:
+        raise ParameterError(
+            f"t_record = {t_record!r} s holds {t_record / dt:.3g} samples of dt = {dt!r} s: allowed at least "
+            f"{MIN_RECORD_SAMPLES} samples (t_record >= {MIN_RECORD_SAMPLES * dt:.4g} s)"
+        )
     m, k, t_end = get("m"), get("k"), get("t_end")
     if None in (m, k, t_end):
         return
@@ -260,11 +306,19 @@ def _check_together(chapters: list[Chapter], values: dict) -> None:
         )
 
 
-def _default(chapters: list[Chapter], name: str):
-    for ch in chapters:
-        if name in ch.params:
-            return float(ch.params[name]["default"])
-    return None
+def _defaults(ch: Chapter) -> dict:
+    """The chapter's numeric defaults, as papermill read them from its parameters cell."""
+    import ast
+
+    out = {}
+    for name, info in ch.params.items():
+        try:
+            value = ast.literal_eval(info.get("default", ""))
+        except (ValueError, SyntaxError):
+            continue
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            out[name] = value
+    return out
 
 
 def kernel_name() -> str:
@@ -279,24 +333,32 @@ def kernel_name() -> str:
 #: an idle kernel logs at ERROR when its client interrupts it before every shutdown. A cell's
 #: error still reaches the runner through papermill.
 KERNEL_ARGS = ["--IPKernelApp.log_level=CRITICAL"]
-#: Longest a single cell may run, s (the longest cell of the default run takes about 10 s):
-#: a kernel message that never arrives becomes a time-out instead of a hang.
-CELL_TIMEOUT_S = 300
-#: Runs of a chapter that timed out before the run gives up on it.
-ATTEMPTS = 2
+#: Longest a single cell may run, s: a last resort that a run within the parameters' ranges never meets
+#: (the longest cell of the default run takes about 10 s). A cell that exceeds it fails its chapter,
+#: naming the chapter and the cell; a kernel message that never arrives becomes this failure, not a hang.
+CELL_TIMEOUT_S = 180
 
 
-def _execute(source: Path, output: Path, params: dict, kernel: str, tables: str | None) -> tuple[float, int]:
-    """Execute one notebook with papermill; runs in its own process. Returns (seconds, attempts).
+class CellTimeout(RuntimeError):
+    """A chapter's cell ran longer than :data:`CELL_TIMEOUT_S`."""
+
+
+def _execute(
+    source: Path, output: Path, params: dict, kernel: str, tables: str | None, cell_timeout: float = CELL_TIMEOUT_S
+) -> float:
+    """Execute one notebook with papermill; runs in its own process. Returns the seconds it took.
 
     One process per notebook: jupyter clients sharing a process can lose a kernel
     message, and papermill's ``cwd`` changes the working directory of the whole
-    process. A notebook whose cell times out is run once more with a fresh kernel.
+    process. SIGTERM (the pool's terminate) kills this process's kernel too: jupyter
+    starts kernels in a session of their own, where a stopped runner would leave them
+    computing.
     """
     import logging
 
     import papermill
 
+    signal.signal(signal.SIGTERM, _kill_children_and_exit)
     for name in ("papermill", "traitlets", "nbclient"):
         logging.getLogger(name).setLevel(logging.ERROR)
     if tables is None:  # the kernel inherits the environment (a forked worker may predate this run)
@@ -304,31 +366,65 @@ def _execute(source: Path, output: Path, params: dict, kernel: str, tables: str 
     else:
         os.environ[TABLES_ENV] = tables
     start = time.perf_counter()
-    for attempt in range(1, ATTEMPTS + 1):
+    try:
+        papermill.execute_notebook(
+            str(source),
+            str(output),
+            parameters=params,
+            kernel_name=kernel,
+            cwd=str(source.parent),
+            progress_bar=False,
+            log_output=False,
+            execution_timeout=cell_timeout,
+            extra_arguments=KERNEL_ARGS,
+        )
+    except TimeoutError as exc:
+        raise CellTimeout(
+            f"{_cell_preview(str(exc))} ran longer than the runner's limit of {cell_timeout:g} s"
+        ) from None
+    return time.perf_counter() - start
+
+
+def _cell_preview(message: str) -> str:
+    """The timed-out cell's first line, from nbclient's message (which quotes the cell between dashed lines,
+    a long cell as the list of its first and last lines).
+
+    >>> _cell_preview("A cell timed out.\\n-------------------\\nstudy = run(a)\\nx = 1\\n-------------------\\n")
+    'the cell starting "study = run(a)"'
+    >>> _cell_preview("A cell timed out.\\n-------------------\\n['import numba', '']\\n...\\n-------------------\\n")
+    'the cell starting "import numba"'
+    """
+    import ast
+
+    parts = message.split("-------------------\n")
+    lines = parts[1].strip().splitlines() if len(parts) > 2 else []
+    if lines and lines[0].startswith("["):
         try:
-            papermill.execute_notebook(
-                str(source),
-                str(output),
-                parameters=params,
-                kernel_name=kernel,
-                cwd=str(source.parent),
-                progress_bar=False,
-                log_output=False,
-                execution_timeout=CELL_TIMEOUT_S,
-                extra_arguments=KERNEL_ARGS,
-            )
-        except TimeoutError:
-            if attempt == ATTEMPTS:
-                raise
-        else:
-            break
-    return time.perf_counter() - start, attempt
+            lines = [ln for ln in ast.literal_eval(lines[0]) if ln.strip()]
+        except (ValueError, SyntaxError):
+            pass
+    return f'the cell starting "{lines[0]}"' if lines else "a cell the message does not quote"
+
+
+def _kill_children_and_exit(signum, frame):
+    """SIGTERM in a pool worker: kill the kernel (and anything else it started), then exit."""
+    import psutil
+
+    children = psutil.Process().children(recursive=True)
+    for child in children:
+        try:
+            child.kill()
+        except psutil.NoSuchProcess:
+            pass
+    psutil.wait_procs(children, timeout=5)
+    os._exit(143)
 
 
 def notebook_pool(jobs: int = 2):
     """A pool that runs each notebook in its own process, forked from a server that imported papermill once.
 
-    Leaving its ``with`` block terminates what still runs (a failed chapter, Ctrl-C, SIGTERM).
+    Leaving its ``with`` block terminates what still runs (a failed chapter, Ctrl-C, SIGTERM): each worker
+    kills its kernel on the way out.
     """
     ctx = multiprocessing.get_context("forkserver")
     ctx.set_forkserver_preload(["papermill", __name__])
@@ -342,7 +438,7 @@ def execute_notebooks(runs: list[tuple[Path, Path, dict]], jobs: int = 2, kernel
         pending = [
             pool.apply_async(_execute, (Path(src), Path(out), dict(params), kernel, None)) for src, out, params in runs
         ]
-        return [p.get()[0] for p in pending]
+        return [p.get() for p in pending]
 
 
 def chapter_parameters(ch: Chapter, values: dict) -> list:
@@ -369,7 +465,15 @@ def _plural(n: int, word: str) -> str:
     return f"{n} {word}" if n == 1 else f"{n} {word}s"
 
 
-def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=print, pdf: bool = True) -> list[dict]:
+def run(
+    chapters: list[Chapter],
+    values: dict,
+    out: Path,
+    jobs: int = 2,
+    log=print,
+    pdf: bool = True,
+    cell_timeout: float = CELL_TIMEOUT_S,
+) -> list[dict]:
     """Execute ``chapters`` with papermill and build the book into ``out`` (replaced only on success)."""
     import logging
 
@@ -390,13 +494,13 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
         total = len(chapters)
         t0 = time.perf_counter()
         results = {}
-        finished: queue.Queue = queue.Queue()  # (chapter, (seconds, attempts) or None, exception or None)
+        finished: queue.Queue = queue.Queue()  # (chapter, seconds or None, exception or None)
         with notebook_pool(jobs) as pool:
             for ch in chapters:
                 args = (ch.path, work / "notebooks" / ch.path.name, {k: v for k, v in values.items() if k in ch.params})
                 pool.apply_async(
                     _execute,
-                    (*args, kernel, str(work / "tables")),
+                    (*args, kernel, str(work / "tables"), cell_timeout),
                     callback=lambda res, ch=ch: finished.put((ch, res, None)),
                     error_callback=lambda exc, ch=ch: finished.put((ch, None, exc)),
                 )
@@ -405,10 +509,8 @@ def run(chapters: list[Chapter], values: dict, out: Path, jobs: int = 2, log=pri
                 ch, res, exc = finished.get()
                 if exc is not None:  # a chapter failed: report it, keep the old tree (the pool stops the others)
                     raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
-                elapsed, attempts = res
-                results[ch.name] = {"executed": work / "notebooks" / ch.path.name, "elapsed_s": elapsed}
-                again = " (run twice: the first run timed out)" if attempts > 1 else ""
-                log(f"[{len(results)}/{total}] {ch.name} done in {elapsed:.1f} s{again}")
+                results[ch.name] = {"executed": work / "notebooks" / ch.path.name, "elapsed_s": res}
+                log(f"[{len(results)}/{total}] {ch.name} done in {res:.1f} s")
         t_run = time.perf_counter() - t0
         pages = [
             ChapterPage(
@@ -551,12 +653,18 @@ def _protect_negative_values(argv: list[str]) -> list[str]:
     --------
     >>> _protect_negative_values(["-p", "c_low", "-2e4", "01"])
     ['-p', 'c_low', ' -2e4', '01']
+    >>> _protect_negative_values(["-p", "m", "--no-pdf"])  # a missing value stays missing
+    ['-p', 'm', '--no-pdf']
     """
     out = list(argv)
     for i in range(2, len(out)):
-        if out[i - 2] in ("-p", "--parameter") and out[i].startswith("-"):
+        if out[i - 2] in ("-p", "--parameter") and _NEGATIVE.match(out[i]):
             out[i] = " " + out[i]
     return out
+
+
+#: A negative number (``-2``, ``-2.5e4``, ``-.5``, ``-inf``): an option such as ``--no-pdf`` is not one.
+_NEGATIVE = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
 
 
 def _terminate(signum, frame):

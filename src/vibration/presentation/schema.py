@@ -1,0 +1,91 @@
+"""A chapter's parameters, declared once: name, symbol, default, unit, range and meaning.
+
+The runner range-checks ``-p`` values with it, a test checks the notebook's ``parameters`` cell
+against it, and the chapter's parameter table reads it.
+
+Examples
+--------
+>>> s = Schema("12_real_oscillator", (Param("t_skip", "t_skip", 2.0, "s", 0.0, 20.0, "start of the window"),))
+>>> s.check({"t_skip": 3.0})
+{'t_skip': 3.0}
+>>> s.check({"t_skip": 30.0})
+Traceback (most recent call last):
+...
+vibration.physics.model.ParameterError: t_skip = 30.0 s is out of range: allowed t_skip >= 0 s, t_skip <= 20 s, finite
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+
+from ..physics.model import ParameterError, check_int, check_real
+
+
+@dataclass(frozen=True)
+class Param:
+    """One parameter of a chapter."""
+
+    name: str  # the notebook's variable and the runner's -p NAME
+    symbol: str  # how the book writes it, e.g. "ω_res" (a "_" starts a subscript)
+    default: float | int | str
+    unit: str  # SI unit, "" when dimensionless
+    low: float | None = None  # inclusive lower bound (exclusive when low_open)
+    high: float | None = None  # inclusive upper bound
+    meaning: str = ""
+    low_open: bool = False
+    choices: tuple = ()  # for text parameters: the allowed values
+
+    def check(self, value):
+        """The value, converted and range-checked, or :class:`ParameterError`."""
+        if self.choices:
+            if value not in self.choices:
+                raise ParameterError(
+                    f"{self.name} = {value!r} is not allowed: allowed one of {', '.join(map(repr, self.choices))}"
+                )
+            return value
+        if isinstance(self.default, int) and not isinstance(self.default, bool):
+            return check_int(self.name, value, low=int(self.low), high=int(self.high))
+        return check_real(self.name, value, low=self.low, low_open=self.low_open, high=self.high, unit=self.unit)
+
+
+@dataclass(frozen=True)
+class Schema:
+    """The parameters of one chapter (its notebook's stem) and the rules that tie several together."""
+
+    notebook: str  # e.g. "12_real_oscillator"
+    params: tuple[Param, ...]
+    #: checks on the whole set of values (e.g. ordered ranges); each raises ParameterError
+    together: tuple[Callable[[dict], None], ...] = field(default=())
+
+    def __post_init__(self) -> None:
+        names = [p.name for p in self.params]
+        if len(set(names)) != len(names):
+            raise ValueError(f"schema {self.notebook}: a parameter is declared twice in {names}")
+
+    def __getitem__(self, name: str) -> Param:
+        for p in self.params:
+            if p.name == name:
+                return p
+        raise KeyError(name)
+
+    def defaults(self) -> dict:
+        """Every parameter at its default."""
+        return {p.name: p.default for p in self.params}
+
+    def check(self, values: Mapping) -> dict:
+        """``values`` (some or all parameters) checked one by one and together with the defaults of the rest."""
+        out = {}
+        for name, value in values.items():
+            try:
+                param = self[name]
+            except KeyError:
+                allowed = ", ".join(p.name for p in self.params)
+                raise ParameterError(
+                    f"parameter {name!r} = {value!r} is not one of {self.notebook}'s: allowed {allowed}"
+                ) from None
+            out[name] = param.check(value)
+        full = self.defaults() | out
+        for rule in self.together:
+            rule(full)
+        return out
