@@ -63,6 +63,8 @@ from vibration.physics.paper import data_dir
 QUANT_STEP = math.pi / 180.0
 #: Standard deviation of uniform rounding to that step (rad).
 QUANT_FLOOR = QUANT_STEP / math.sqrt(12.0)
+#: Fitted damping ratios and friction angles below this are at their bound 0.
+ZERO = 1e-8
 #: Laws fitted to each free decay.
 LAWS = ("viscous", "coulomb", "combined")
 #: Free-decay files: label -> file name (the brake off, then on).
@@ -354,6 +356,11 @@ def pool(values, stderrs) -> Pooled:
     return Pooled(mean, base * max(1.0, birge), birge, n, sd, float(np.median(se)))
 
 
+def at_bound(x: float) -> float:
+    """A fitted zeta or Delta within ZERO of its bound 0 is 0 (the solver stops within rounding of the bound)."""
+    return 0.0 if abs(x) < ZERO else float(x)
+
+
 def _select(runs, which: str):
     if which == "1-5":
         return [r for r in runs if 1 <= r.run <= 5]
@@ -378,7 +385,7 @@ def _decay_set(brake: str, which: str) -> DecaySet:
             if (law, par) in (("viscous", "friction"), ("coulomb", "zeta")):
                 continue
             pooled[(law, par)] = pool(
-                [getattr(d.fits[law], par) for d in runs], [d.fits[law].stderr[par] for d in runs]
+                [at_bound(getattr(d.fits[law], par)) for d in runs], [d.fits[law].stderr[par] for d in runs]
             )
     peaks = [d.peak for d in runs if d.peak is not None]
     peak_pooled = (
@@ -518,7 +525,7 @@ def _calibrate(base: Model, runs: list[DrivenRun]) -> Model:
 def _curves(models: dict, drive_amp: float) -> Curves:
     lin, com = models["linear"], models["combined"]
     wn = com.omega_n
-    omega = np.linspace(0.25 * wn, 1.75 * wn, 241)
+    omega = np.linspace(0.25 * wn, 1.75 * wn, 240)  # an even count: r = 1 itself is not a grid point
     r_l = omega / lin.omega_n
     lin_ratio = lin.gain / np.sqrt((1 - r_l**2) ** 2 + (2 * lin.zeta * r_l) ** 2)
     lin_lag = np.arctan2(2 * lin.zeta * r_l, 1 - r_l**2)

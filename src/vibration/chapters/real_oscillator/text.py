@@ -22,6 +22,7 @@ from vibration.chapters.real_oscillator.study import (
     SUBSTEPS,
     DrivenRun,
     RealOscillatorStudy,
+    at_bound,
 )
 from vibration.physics.paper import load_claims
 from vibration.presentation.narrative import g
@@ -36,8 +37,6 @@ PAPER_AMPLIFICATION = 10.0
 ABOUT_FACTOR = 1.5
 #: The paper's "almost completely suppressed": a steady amplitude below this fraction (claim C18).
 SUPPRESSED = 0.1
-#: Fitted damping ratios below this are at the bound 0 (printed as 0: the digits below are rounding).
-ZERO = 1e-8
 
 LAW_TEXT = {"viscous": "viscous", "coulomb": "Coulomb", "combined": "combined"}
 BRAKE_TEXT = {"off": "without the brake", "on": "with the brake"}
@@ -50,9 +49,8 @@ def _pm(x: float, s: float, digits: int = 4) -> str:
     return f"{g(x, digits)} ± {g(s, 2)}"
 
 
-def _bounded(x: float) -> float:
-    """A fitted value at its bound 0 (the solver stops within rounding of it) printed as 0."""
-    return 0.0 if abs(x) < ZERO else x
+def _amp(x: float) -> str:
+    return f"{g(x, 3)} rad" if math.isfinite(x) else "unbounded"
 
 
 def _median_duration(st: RealOscillatorStudy) -> float:
@@ -137,7 +135,7 @@ def decay_table(st: RealOscillatorStudy) -> Table:
                     "brake": b,
                     "run": d.run,
                     "wn": c.omega_n,
-                    "zeta": _bounded(c.zeta),
+                    "zeta": at_bound(c.zeta),
                     "zeta_se": c.stderr["zeta"],
                     "delta": c.friction,
                     "delta_se": c.stderr["friction"],
@@ -248,8 +246,12 @@ def brake_sentence(st: RealOscillatorStudy) -> str:
         f"{_pm(off[('combined', 'zeta')].mean, off[('combined', 'zeta')].stderr, 2)} to "
         f"{_pm(on[('combined', 'zeta')].mean, on[('combined', 'zeta')].stderr, 2)}: the brake adds "
         f"Δζ = {_pm(st.brake_dzeta, st.brake_dzeta_se, 2)} ({g(z, 2)} standard errors, {word}). The friction angle "
-        f"changes by {_pm(dd, dd_se, 2)} rad at the same time ({g(dd / dd_se, 2)} standard errors): with the brake "
-        f"part of the loss that the fit without it books as friction is taken by the viscous term."
+        f"changes by {_pm(dd, dd_se, 2)} rad at the same time ({g(dd / dd_se, 2)} standard errors)"
+        + (
+            ": with the brake, part of the loss that the fit without it books as friction is taken by the viscous term."
+            if dd / dd_se < -AGREE_Z
+            else "."
+        )
     )
 
 
@@ -403,14 +405,20 @@ def driven_sentence(st: RealOscillatorStudy) -> str:
     if not tr:
         return f"All {n} driven runs are steady by the test."
     r = sorted(d.omega / wn for d in tr)
+    dur = _median_duration(st)
+    if math.isfinite(st.build_up_time):
+        build = (
+            f"The model's build-up time 1/(ζω_n) is {g(st.build_up_time, 3)} s against records of about {g(dur, 3)} s, "
+            f"so a transient started at the beginning still has e^(−{g(dur / st.build_up_time, 2)}) of its size at "
+            f"the end."
+        )
+    else:
+        build = "The model has no viscous damping (ζ = 0), so by the model no transient ever dies out."
     return (
-        f"{n - len(tr)} of {n} driven runs are steady; {len(tr)} are transients, all at ω/ω_n between {g(r[0], 3)} "
-        f"and {g(r[-1], 3)}: near resonance the wheel is still building up when the record ends, its late amplitude "
-        f"up to {g(max(d.late.wheel_amp / d.early.wheel_amp for d in tr), 3)} times the early one. The model's "
-        f"build-up time 1/(ζω_n) is {g(st.build_up_time, 3)} s against records of about "
-        f"{g(_median_duration(st), 3)} s, so a transient started at the beginning still has "
-        f"e^(−{g(_median_duration(st) / st.build_up_time, 2)}) of its size at the end. Their "
-        f"late ratios are lower bounds of the steady ones."
+        f"{n - len(tr)} of {n} driven runs are steady; {len(tr)} are transients, at ω/ω_n between {g(r[0], 3)} "
+        f"and {g(r[-1], 3)}; their late amplitude is up to "
+        f"{g(max(d.late.wheel_amp / d.early.wheel_amp for d in tr), 3)} times the early one. {build} The "
+        f"transients' late ratios are lower bounds of the steady ones."
     )
 
 
@@ -572,18 +580,20 @@ def prediction_sentence(st: RealOscillatorStudy) -> str:
         f"({g(100 * rl, 3)} % of the motion) for the linear viscous model against {g(ec, 3)} rad ({g(100 * rc, 3)} %) "
         f"for viscous + Coulomb."
     )
+    clauses = []
     if ns:
-        text += (
-            f" On the {ns} steady runs the {w(rls, rcs)} model is better (linear {g(100 * rls, 3)} %, "
+        clauses.append(
+            f"on the {ns} steady runs the {w(rls, rcs)} model is better (linear {g(100 * rls, 3)} %, "
             f"viscous + Coulomb {g(100 * rcs, 3)} %)"
         )
     if nt:
-        text += (
-            f"; on the {nt} transients near resonance the {w(rlt, rct)} model is (linear {g(100 * rlt, 3)} %, "
-            f"viscous + Coulomb {g(100 * rct, 3)} %)."
+        clauses.append(
+            f"on the {nt} transients the {w(rlt, rct)} model is better (linear {g(100 * rlt, 3)} %, "
+            f"viscous + Coulomb {g(100 * rct, 3)} %)"
         )
-    else:
-        text += "."
+    if clauses:
+        joined = "; ".join(clauses)
+        text += " " + joined[0].upper() + joined[1:] + "."
     return text
 
 
@@ -615,7 +625,7 @@ def failure_sentence(st: RealOscillatorStudy) -> str:
     if nt and rct > rlt and st.steady_peak_combined > meas:
         text += (
             f" Near resonance the viscous + Coulomb model lets the wheel grow too far: its steady amplitude at "
-            f"resonance is {g(st.steady_peak_combined, 3)} rad, while the wheel reaches {g(meas, 3)} rad. At that "
+            f"resonance is {_amp(st.steady_peak_combined)}, while the wheel reaches {g(meas, 3)} rad. At that "
             "swing "
             f"its friction acts like a viscous damping ratio ζ + 2Δ/(πX) = {g(zeta_eq, 2)}, "
             f"{'below' if zeta_eq < lin.zeta else 'above'} the {g(lin.zeta, 2)} of the viscous-law fits: the large "
@@ -713,7 +723,7 @@ def claims_table(st: RealOscillatorStudy) -> Table:
         v2 = "not supported: the brake adds damping but the model shows no suppression"
     m2 = (
         f"the brake adds Δζ = {_pm(st.brake_dzeta, st.brake_dzeta_se, 2)}; steady resonance amplitude of the viscous + "
-        f"Coulomb model {off_txt} without, {g(pb['on'], 3)} rad with the brake"
+        f"Coulomb model {off_txt} without, {_amp(pb['on'])} with the brake"
     )
     growing = [d for d in st.driven if not d.steady and d.amp_change_z > 0]
     bounded = math.isfinite(st.steady_peak_combined) and math.isfinite(st.steady_peak_linear)
@@ -726,7 +736,7 @@ def claims_table(st: RealOscillatorStudy) -> Table:
         f"{len(growing)} runs near resonance grow throughout the record (largest "
         f"{g(max(d.late.wheel_amp for d in st.driven), 3)} rad), "
         f"but toward a bound: the steady resonance amplitude at the measured {g(st.drive_amp, 3)} rad of drive is "
-        f"{g(st.steady_peak_combined, 3)} rad (viscous + Coulomb), {g(st.steady_peak_linear, 3)} rad (linear); below "
+        f"{_amp(st.steady_peak_combined)} (viscous + Coulomb), {_amp(st.steady_peak_linear)} (linear); below "
         f"{g(st.stick_drive_exact, 3)} rad of drive the wheel sticks (Den Hartog; 4Δ/(πg) = "
         f"{g(st.stick_drive_hb, 3)} rad)"
     )
