@@ -61,6 +61,8 @@ def _den_hartog_one(r: float, zeta: float, delta: float) -> float:
     half = math.pi / r
     # particular response to cos(r tau) and sin(r tau): H = 1 / (1 - r^2 + 2 i zeta r)
     den = (1.0 - r * r) ** 2 + (2.0 * zeta * r) ** 2
+    if den == 0.0:  # undamped resonance: the force's work per cycle (pi F0 X) outgrows friction's (4 F X)
+        return math.inf if 4.0 * delta / math.pi < 1.0 else math.nan
     hr, hi = (1.0 - r * r) / den, -2.0 * zeta * r / den
 
     # force cos(r tau + phi) = c cos(r tau) - s sin(r tau); response Re(H (c + i s) e^{i r tau})
@@ -147,7 +149,9 @@ def friction_forced_amplitude(r, zeta, friction_ratio):
     float or numpy.ndarray
         X / X_st (dimensionless; X in rad when X_st is): NaN where the steady motion is not
         continuous (Den Hartog's non-stop condition fails, or the force cannot overcome friction);
-        a float for a scalar ``r``.
+        ``inf`` at ``r = 1`` without viscous damping when ``4 friction_ratio / pi < 1`` (the force's
+        work per cycle then outgrows friction's at every amplitude: no steady state); a float for a
+        scalar ``r``.
 
     Notes
     -----
@@ -162,13 +166,16 @@ def friction_forced_amplitude(r, zeta, friction_ratio):
     True
     >>> round(friction_forced_amplitude(1.5, 0.0, 0.2), 4)  # Den Hartog's pure Coulomb result
     0.7659
+    >>> friction_forced_amplitude(1.0, 0.0, 0.2), friction_forced_amplitude(1.0, 0.0, 0.9)
+    (inf, nan)
     """
     rv, scalar = _as_ratios(r)
     z = check_real("zeta", zeta, low=0.0, high=0.999)
     d = check_real("friction_ratio", friction_ratio, low=0.0, high=1e6)
     out = np.array([_den_hartog_one(float(x), z, d) for x in rv])
     if d == 0.0:  # linear: closed form, exact (the non-stop check is trivially true)
-        out = 1.0 / np.sqrt((1.0 - rv * rv) ** 2 + (2.0 * z * rv) ** 2)
+        den = np.sqrt((1.0 - rv * rv) ** 2 + (2.0 * z * rv) ** 2)
+        out = np.divide(1.0, den, out=np.full_like(den, np.inf), where=den > 0)
     return float(out[0]) if scalar else out
 
 
@@ -192,12 +199,15 @@ def friction_forced_amplitude_hb(r, zeta, friction_ratio):
     Returns
     -------
     float or numpy.ndarray
-        X / X_st, NaN where there is no continuous motion.
+        X / X_st, NaN where there is no continuous motion, ``inf`` where
+        :func:`friction_forced_amplitude` gives it.
 
     Examples
     --------
     >>> round(friction_forced_amplitude_hb(1.5, 0.0, 0.2), 4)
     0.7736
+    >>> friction_forced_amplitude_hb(1.0, 0.0, 0.2)
+    inf
     """
     rv, scalar = _as_ratios(r)
     z = check_real("zeta", zeta, low=0.0, high=0.999)
@@ -210,6 +220,7 @@ def friction_forced_amplitude_hb(r, zeta, friction_ratio):
     with np.errstate(invalid="ignore", divide="ignore"):
         X = (-b + np.sqrt(np.where(disc >= 0, disc, np.nan))) / (2.0 * a)
     X = np.where((X > 0) & (c < 0), X, np.nan)
+    X = np.where((a == 0.0) & (c < 0), np.inf, X)  # undamped resonance that friction cannot hold
     return float(X[0]) if scalar else X
 
 
