@@ -49,8 +49,8 @@ test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval a
 	if [ $$rc -eq 5 ]; then echo "error: pytest collected no tests (exit code 5)" >&2; fi; \
 	exit $$rc
 
-test-fast: $(STAMP) ## unit, property and doctests only (no notebooks, no browser)
-	$(PY) -m pytest -m "not browser"
+test-fast: $(STAMP) ## unit, property and doctests only (no kernels, no browser)
+	$(PY) -m pytest -n $(JOBS) -m "not browser and not notebooks"
 
 bench: $(STAMP) ## print speed ratios measured side by side in one run
 	$(PY) -m vibration.bench

@@ -27,7 +27,16 @@ CHAPTERS = [p.stem for p in NOTEBOOKS if not p.stem.startswith("00_")]
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory) -> Path:
+    """The book from the committed notebooks, HTML only (no Chromium needed)."""
     out = tmp_path_factory.mktemp("book") / "report"
+    report.book_from_sources(report.discover(ROOT), out, pdf=False)
+    return out
+
+
+@pytest.fixture(scope="module")
+def site_pdf(tmp_path_factory) -> Path:
+    """The same with the PDF, which Chromium prints."""
+    out = tmp_path_factory.mktemp("book-pdf") / "report"
     report.book_from_sources(report.discover(ROOT), out, pdf=True)
     return out
 
@@ -125,10 +134,11 @@ def test_split_help_and_summary_helpers():
     assert summary(nb) == "First plain."
 
 
-def test_pdf_has_a_page_or_more_per_chapter(site):
+@pytest.mark.browser
+def test_pdf_has_a_page_or_more_per_chapter(site_pdf):
     from pypdf import PdfReader
 
-    reader = PdfReader(str(site / "report.pdf"))
+    reader = PdfReader(str(site_pdf / "report.pdf"))
     assert len(reader.pages) >= len(CHAPTERS) + 1
     texts = [" ".join((page.extract_text() or "").replace("\u2019", "'").split()) for page in reader.pages]
     assert texts[0].startswith(BOOK_TITLE) or BOOK_TITLE in texts[0]
@@ -289,6 +299,7 @@ def test_runner_banner_with_changed_parameter(browser, tmp_path):
     assert (tmp_path / "report" / "report.pdf").is_file()
 
 
+@pytest.mark.notebooks
 def test_runner_says_one_chapter(tmp_path):
     proc = subprocess.run(
         [sys.executable, "-m", "vibration.report", "00", "--out", str(tmp_path), "--no-pdf"],

@@ -17,6 +17,8 @@ import pytest
 
 from vibration.publishing.report import execute_notebooks
 
+pytestmark = [pytest.mark.notebooks, pytest.mark.slow]
+
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = ROOT / "notebooks"
 REGIMES = ("underdamped", "overdamped", "critically damped", "undamped", "unstable")

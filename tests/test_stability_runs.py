@@ -14,6 +14,8 @@ import pytest
 
 from vibration.publishing.report import execute_notebooks
 
+pytestmark = [pytest.mark.notebooks, pytest.mark.slow]
+
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks" / "06_stability.ipynb"
 RUNS = {
     "c_low=0": {"c_low": 0.0},
