@@ -128,6 +128,7 @@ def _read_csv(path: Path) -> list[dict[str, str]]:
 
 
 @pytest.mark.slow
+@pytest.mark.notebooks
 def test_rerun_with_another_force_matches_exact_values_and_is_byte_identical(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # a relative --out, as `make report` passes it
     out = tmp_path / "out"
@@ -151,6 +152,7 @@ def test_rerun_with_another_force_matches_exact_values_and_is_byte_identical(tmp
 
 
 @pytest.mark.slow
+@pytest.mark.notebooks
 def test_failed_chapter_leaves_previous_tree_untouched(tmp_path, monkeypatch):
     root = tmp_path / "proj"
     (root / "notebooks").mkdir(parents=True)
@@ -186,6 +188,7 @@ def test_every_declared_parameter_has_a_range(chapters):
 
 
 @pytest.mark.slow
+@pytest.mark.notebooks
 def test_sigterm_stops_the_running_chapters_at_once(tmp_path):
     """The runner ends within seconds of SIGTERM (it used to wait for every queued chapter) and leaves no output."""
     import signal
@@ -229,6 +232,7 @@ def _stuck_project(root: Path, seconds: float = 600.0) -> Path:
 
 
 @pytest.mark.slow
+@pytest.mark.notebooks
 def test_a_cell_over_the_limit_fails_its_chapter_naming_the_cell(tmp_path):
     """The cell limit is a last resort: the run fails at once, naming the chapter and the cell (no second run)."""
     root = _stuck_project(tmp_path / "project")
@@ -240,6 +244,7 @@ def test_a_cell_over_the_limit_fails_its_chapter_naming_the_cell(tmp_path):
 
 
 @pytest.mark.slow
+@pytest.mark.notebooks
 def test_sigterm_stops_a_chapter_stuck_in_compiled_code_and_its_kernel(tmp_path):
     """One SIGTERM stops the runner, its pool and the kernel spinning in numba code, within seconds."""
     import os
