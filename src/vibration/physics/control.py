@@ -211,13 +211,18 @@ def lqr(osc: Oscillator, q_x: float, q_v: float, r: float) -> LQRResult:
     if not (math.isfinite(q_x / r) and math.isfinite(q_v / r)):
         raise ParameterError(f"r = {r!r} 1/N^2 with q_x = {q_x!r}, q_v = {q_v!r}: q/r overflows; allowed finite q/r")
     try:
-        K, P, E = control.lqr(a, b, np.diag([q_x, q_v]), np.array([[r]]))
+        with np.errstate(all="ignore"):
+            K, P, E = control.lqr(a, b, np.diag([q_x, q_v]), np.array([[r]]))
     except (ValueError, np.linalg.LinAlgError) as err:
         raise ParameterError(
-            f"r = {r!r} 1/N^2, q_x = {q_x!r}, q_v = {q_v!r}: the Riccati solver failed ({err})"
+            f"r = {r!r} 1/N^2, q_x = {q_x!r}, q_v = {q_v!r}: the Riccati solver failed ({err}); "
+            "allowed weights whose ratios q/r the solver can resolve"
         ) from None
     if not (np.all(np.isfinite(K)) and np.all(np.isfinite(P))):
-        raise ParameterError(f"r = {r!r} 1/N^2, q_x = {q_x!r}, q_v = {q_v!r}: the Riccati solution is not finite")
+        raise ParameterError(
+            f"r = {r!r} 1/N^2, q_x = {q_x!r}, q_v = {q_v!r}: the Riccati solution is not finite; "
+            "allowed weights with a finite solution"
+        )
     return LQRResult(
         K=np.asarray(K, dtype=float).reshape(2),
         P=np.asarray(P, dtype=float),
@@ -298,7 +303,8 @@ def _grid(t_end, n_points) -> np.ndarray:
 
 
 def _call(controller, t: float, x: float, v: float) -> float:
-    u = controller(t, x, v)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # a non-finite force is refused below
+        u = controller(t, x, v)
     try:
         val = float(u)
     except (TypeError, ValueError):
@@ -404,10 +410,11 @@ def simulate_controlled(
 
     budget = [MAX_NFEV]
     try:
-        sol = solve_ivp(
-            _counted(rhs, budget), (0.0, t_end), (x0, v0), method="DOP853", t_eval=grid, rtol=rtol, atol=atol,
-            max_step=step,
-        )  # fmt: skip
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused below
+            sol = solve_ivp(
+                _counted(rhs, budget), (0.0, t_end), (x0, v0), method="DOP853", t_eval=grid, rtol=rtol, atol=atol,
+                max_step=step,
+            )  # fmt: skip
     except _OverBudget:
         raise _over_budget(math.nan, t_end, "controlled loop") from None
     if sol.status != 0:
@@ -417,7 +424,9 @@ def simulate_controlled(
         )
     x, v = sol.y
     if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
-        raise ParameterError(f"t_end = {t_end!r} s: the controlled response overflowed (an unstable loop)")
+        raise ParameterError(
+            f"t_end = {t_end!r} s: the controlled response overflowed (an unstable loop); allowed a finite response"
+        )
     demand = np.array([_call(controller, ti, xi, vi) for ti, xi, vi in zip(grid, x, v, strict=True)])
     return ControlledResponse(
         t=grid,
@@ -478,7 +487,8 @@ def _over_budget(t: float, t_end: float, what: str) -> ParameterError:
     at = f" after t = {t:.6g} s" if math.isfinite(t) else ""
     return ParameterError(
         f"t_end = {t_end!r} s: the {what} used up its budget of {MAX_NFEV} right-hand-side evaluations{at} "
-        "(a stiff loop, a discontinuous controller or a tolerance too tight); shorten t_end or loosen rtol"
+        f"(a stiff loop, a discontinuous controller or a tolerance too tight); allowed at most {MAX_NFEV} "
+        "evaluations: shorten t_end or loosen rtol"
     )
 
 
@@ -604,14 +614,15 @@ def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) 
                 "(chattering against the limit); allowed at most that many pieces: shorten t_end"
             )
         try:
-            sol = solve_ivp(
-                _counted(f, budget), (t0, t_end), y0, method="DOP853", t_eval=grid[filled:], rtol=rtol, atol=atol,
-                events=evs,
-            )  # fmt: skip
+            with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused below
+                sol = solve_ivp(
+                    _counted(f, budget), (t0, t_end), y0, method="DOP853", t_eval=grid[filled:], rtol=rtol,
+                    atol=atol, events=evs,
+                )  # fmt: skip
         except _OverBudget:
             raise _over_budget(t0, t_end, what) from None
-        if sol.status < 0:  # pragma: no cover - DOP853 does not fail on this bounded piecewise-linear system
-            raise RuntimeError(f"solve_ivp (DOP853) failed at t = {sol.t[-1]:g} s: {sol.message}")
+        if sol.status < 0:  # an overflow makes DOP853 fail
+            break
         m_new = len(sol.t)  # a list (empty) when the piece ends before the next sample
         if m_new:
             ys = sol.y
@@ -631,7 +642,8 @@ def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) 
             nxt = ("S", s, not frozen)
     if not np.all(np.isfinite(out[:, :filled])) or filled < n:
         raise ParameterError(
-            f"t_end = {t_end!r} s: the PID loop's response overflowed (an unstable loop grows beyond floating point)"
+            f"t_end = {t_end!r} s: the PID loop's response overflowed (an unstable loop grows beyond floating point); "
+            "allowed inputs that keep it finite"
         )
     return out, MAX_NFEV - budget[0]
 
@@ -723,9 +735,14 @@ def pid_response(
     if anti_windup not in ANTI_WINDUP:
         raise ParameterError(f"anti_windup = {anti_windup!r} is not supported: allowed one of {', '.join(ANTI_WINDUP)}")
     if t_track is None:
-        tt = math.sqrt(abs(kd) / ki) if kd != 0.0 else 1.0 / math.sqrt(ki)
+        tt = math.sqrt(abs(kd)) / math.sqrt(ki) if kd != 0.0 else 1.0 / math.sqrt(ki)
     else:
         tt = check_real("t_track", t_track, low=0.0, low_open=True, unit="s")
+    if not (tt > 0.0 and math.isfinite(1.0 / (ki * tt))):
+        raise ParameterError(
+            f"t_track = {tt!r} s with ki = {ki!r} N/(m s): the back-calculation gain 1/(ki t_track) is not finite; "
+            "allowed ki t_track > 0 and finite"
+        )
     x_ref = check_real("x_ref", x_ref, unit="m")
     grid = _grid(t_end, n_points)
     rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
@@ -734,12 +751,23 @@ def pid_response(
     mode = ANTI_WINDUP.index(anti_windup)
     p = dict(m=osc.m, c=osc.c, k=osc.k, F0=F0, wf=wf, kp=kp, ki=ki, kd=kd, umax=umax, x_ref=x_ref, mode=mode,
              gain_bc=1.0 / (ki * tt))  # fmt: skip
-    A = np.array([[0.0, 1.0, 0.0], [-(osc.k + kp) / osc.m, -(osc.c + kd) / osc.m, ki / osc.m], [-1.0, 0.0, 0.0]])
+    with np.errstate(over="ignore", invalid="ignore"):
+        A = np.array([[0.0, 1.0, 0.0], [-(osc.k + kp) / osc.m, -(osc.c + kd) / osc.m, ki / osc.m], [-1.0, 0.0, 0.0]])
+    if not np.all(np.isfinite(A)):
+        raise ParameterError(
+            f"kp = {kp!r}, ki = {ki!r}, kd = {kd!r} over m = {osc.m!r} kg overflow: allowed finite gains/m"
+        )
     rate = max(float(np.max(np.abs(np.linalg.eigvals(A)))), osc.natural_frequency + abs(osc.c) / osc.m, wf)
     _work_check(float(grid[-1]), rate, rtol, "PID loop")
     y, nfev = _pid_run(p, grid, rtol, atol, float(grid[-1]))
     x, v, integ = y
-    ud = kp * (x_ref - x) + ki * integ - kd * v
+    with np.errstate(over="ignore", invalid="ignore"):
+        ud = kp * (x_ref - x) + ki * integ - kd * v
+    if not np.all(np.isfinite(ud)):
+        raise ParameterError(
+            f"x_ref = {x_ref!r} m, kp = {kp!r}, ki = {ki!r}, kd = {kd!r}: the PID demand overflows; "
+            "allowed inputs that keep it finite"
+        )
     return PIDResponse(
         t=grid,
         x=x,
@@ -787,36 +815,38 @@ def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, ki:
     bF = np.array([0.0, 1.0 / m, 0.0])
     br = np.array([0.0, kp / m, 1.0])
     F0, w = (force.F0, force.omega) if force is not None else (0.0, 0.0)
-    try:
-        H = np.linalg.solve(1j * w * np.eye(3) - A, bF * F0)
-        ystat = -np.linalg.solve(A, br * x_ref)
-    except np.linalg.LinAlgError:
-        raise ParameterError(
-            f"force.omega = {w!r} rad/s is a pole of the loop (kp = {kp!r}, ki = {ki!r}, kd = {kd!r}): "
-            "no steady state; allowed a forcing frequency off the loop's undamped poles"
-        ) from None
-    yp = np.imag(H[:, None] * np.exp(1j * w * t)[None, :]) + ystat[:, None]
-    d0 = -(np.imag(H) + ystat)  # y(0) - y_p(0), y(0) = 0
-    lam, V = np.linalg.eig(A)
-    try:
-        coef = np.linalg.solve(V, d0)
-    except np.linalg.LinAlgError:  # exactly defective: the expm fallback below handles it
-        coef = np.zeros(3)
-    with np.errstate(over="ignore", invalid="ignore"):
-        free = np.real(V @ (coef[:, None] * np.exp(lam[:, None] * t[None, :])))
-    if np.linalg.cond(V) > 1e8:  # defective or nearly so: fall back on expm per sample
-        if t.size > EXPM_SAMPLES_MAX:
+    with np.errstate(all="ignore"):  # an overflow is refused below
+        try:
+            H = np.linalg.solve(1j * w * np.eye(3) - A, bF * F0)
+            ystat = -np.linalg.solve(A, br * x_ref)
+        except np.linalg.LinAlgError:
             raise ParameterError(
-                f"t has {t.size} samples: this loop (kp = {kp!r}, ki = {ki!r}, kd = {kd!r}) has a (nearly) repeated "
-                f"pole, so each sample needs its own matrix exponential; allowed at most {EXPM_SAMPLES_MAX} samples"
-            )
+                f"force.omega = {w!r} rad/s is a pole of the loop (kp = {kp!r}, ki = {ki!r}, kd = {kd!r}): "
+                "no steady state; allowed a forcing frequency off the loop's undamped poles"
+            ) from None
+        yp = np.imag(H[:, None] * np.exp(1j * w * t)[None, :]) + ystat[:, None]
+        d0 = -(np.imag(H) + ystat)  # y(0) - y_p(0), y(0) = 0
+        lam, V = np.linalg.eig(A)
+        try:
+            coef = np.linalg.solve(V, d0)
+        except np.linalg.LinAlgError:  # exactly defective: the expm fallback below handles it
+            coef = np.zeros(3)
         with np.errstate(over="ignore", invalid="ignore"):
-            free = np.stack([expm(A * ti) @ d0 for ti in t], axis=1)
-    y = yp + free
+            free = np.real(V @ (coef[:, None] * np.exp(lam[:, None] * t[None, :])))
+        if np.linalg.cond(V) > 1e8:  # defective or nearly so: fall back on expm per sample
+            if t.size > EXPM_SAMPLES_MAX:
+                raise ParameterError(
+                    f"t has {t.size} samples: this loop (kp = {kp!r}, ki = {ki!r}, kd = {kd!r}) has a (nearly) "
+                    f"repeated pole, so each sample needs its own matrix exponential; "
+                    f"allowed at most {EXPM_SAMPLES_MAX} samples"
+                )
+            with np.errstate(over="ignore", invalid="ignore"):
+                free = np.stack([expm(A * ti) @ d0 for ti in t], axis=1)
+        y = yp + free
     if not np.all(np.isfinite(y)):
         raise ParameterError(
             f"t reaches {float(t.max())!r} s: the loop's response overflows there (an unstable loop, poles "
-            f"{np.round(lam, 6).tolist()!r} 1/s); allowed times at which it stays finite"
+            f"{[f'{z:.6g}' for z in lam]} 1/s); allowed times at which it stays finite"
         )
     return y[0], y[1], y[2]
 
@@ -873,7 +903,20 @@ def skyhook_transmissibility(osc: Oscillator, c_sky: float, omegas) -> np.ndarra
     _check_osc(osc)
     c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
     w = _omegas(omegas)
-    return np.abs(osc.k + 1j * osc.c * w) / np.abs(osc.k - osc.m * w * w + 1j * (osc.c + c_sky) * w)
+    # divided through by w^2 above 1 rad/s, so that no product overflows
+    s = 1.0 / np.maximum(w, 1.0)
+    m, c, k, cc = osc.m, osc.c, osc.k, osc.c + c_sky
+    with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
+        num = np.hypot(k * s * s, c * w * s * s)
+        den = np.hypot(k * s * s - m * (w * s) * (w * s), cc * w * s * s)
+        out = num / den
+    if not np.all(np.isfinite(out)):
+        bad = float(np.asarray(w)[~np.isfinite(out)].ravel()[0])
+        raise ParameterError(
+            f"omegas contains {bad!r} rad/s: the transmissibility is not finite there (undamped resonance or "
+            "overflow); allowed frequencies with a finite steady state"
+        )
+    return out
 
 
 @dataclass(frozen=True)
@@ -1165,6 +1208,17 @@ class SemiActiveResponse:
     dt: float  # RK4 step, s
 
 
+def _sa_rate_check(p: np.ndarray, dt: float, w: float, spp: int) -> None:
+    """Refuse an RK4 step longer than the plant's fastest time scale (RK4 would be inaccurate or diverge)."""
+    m, c, k, c_sky, c_max = p[0], p[1], p[2], p[3], p[5]
+    rate = math.sqrt(k / m) + (abs(c) + max(c_sky, c_max)) / m
+    if not dt * rate <= 1.0:
+        raise ParameterError(
+            f"omega = {w!r} rad/s with steps_per_period = {spp}: the RK4 step {dt:.3g} s is {dt * rate:.3g} times the "
+            f"plant's fastest time scale 1/{rate:.3g} s; allowed at most 1 (raise the frequency or steps_per_period)"
+        )
+
+
 def _sa_step(law_i: int, w: float, steps_per_period: int, dt_max: float) -> tuple[float, int]:
     """RK4 step (s) and steps per forcing period: ``steps_per_period`` or more, below ``dt_max``."""
     period = 2.0 * math.pi / w
@@ -1249,6 +1303,7 @@ def semi_active_response(
     spp = check_int("steps_per_period", steps_per_period, low=100, high=100_000)
     dt_max = check_real("dt_max", dt_max, low=0.0, low_open=True, unit="s")
     dt, _ = _sa_step(law_i, w, spp, dt_max)
+    _sa_rate_check(p, dt, w, spp)
     if not t_end / dt <= RK4_STEPS_MAX:
         raise ParameterError(
             f"t_end = {t_end!r} s needs {t_end / dt:.3g} RK4 steps of {dt:.3g} s: allowed at most {RK4_STEPS_MAX} "
@@ -1353,8 +1408,11 @@ def semi_active_sweep(
     sky = c_sky if law_i != 0 else 0.0
     dts, n_steps, n_settle = np.empty(ws.size), np.empty(ws.size, np.int64), np.empty(ws.size, np.int64)
     s0s = np.zeros((ws.size, 5))
-    for j, w in enumerate(ws):
+    for j, w in enumerate(ws.tolist()):  # Python floats: an overflow gives inf (checked below), not a warning
+        if not math.isfinite(2.0 * math.pi / w):
+            raise ParameterError(f"omegas contains {w!r} rad/s: its period overflows; allowed a finite period")
         dts[j], n_per = _sa_step(law_i, w, spp, dt_max)
+        _sa_rate_check(p, dts[j], w, spp)
         settle_periods = settle / sigma / (2.0 * math.pi / w)
         if not (settle_periods + periods) * n_per <= RK4_STEPS_MAX:
             raise ParameterError(
@@ -1369,14 +1427,14 @@ def semi_active_sweep(
                 f"omegas contains {w!r} rad/s: it needs {n_steps[j]} RK4 steps (settle = {settle!r} time constants "
                 f"of {1.0 / sigma:.3g} s plus {periods} periods), allowed at most {RK4_STEPS_MAX}"
             )
+        # start in the steady state of the linear loop (c_start to the base, sky to the frame)
+        h = (osc.k + 1j * osc.c * w) / (osc.k - osc.m * w * w + 1j * (c_start + sky) * w) * Y
+        s0s[j, :2] = h.imag, w * h.real
     if n_steps.sum() > 2 * RK4_STEPS_MAX:
         raise ParameterError(
             f"omegas has {ws.size} frequencies needing {int(n_steps.sum())} RK4 steps in all: "
             f"allowed at most {2 * RK4_STEPS_MAX} (fewer frequencies, periods or steps_per_period)"
         )
-        # start in the steady state of the linear loop (c_start to the base, sky to the frame)
-        h = (osc.k + 1j * osc.c * w) / (osc.k - osc.m * w * w + 1j * (c_start + sky) * w) * Y
-        s0s[j, :2] = h.imag, w * h.real
     st = _sa_kernel()[1](law_i, p, Y, ws, s0s, dts, n_steps, n_settle)
     if not np.all(np.isfinite(st)):
         bad = ws[~np.all(np.isfinite(st), axis=1)][0]
@@ -1430,6 +1488,10 @@ def semi_active_controller(
     c_max = check_real("c_max", c_max, low=c_min, unit="N s/m")
     Y = check_real("Y", Y, low=0.0, unit="m")
     w = check_real("omega", omega, low=0.0, unit="rad/s")
+    if not math.isfinite(max(c_max, c_sky, 1.0) * Y * max(w, 1.0)):
+        raise ParameterError(
+            f"Y = {Y!r} m, omega = {w!r} rad/s: the base velocity times the damping overflows; allowed a finite force"
+        )
 
     def controller(t: float, x: float, v: float) -> float:
         vr = v - Y * w * math.cos(w * t)

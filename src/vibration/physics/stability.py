@@ -333,8 +333,8 @@ def transmissibility(osc: Oscillator, omegas):
     """
     _check_osc(osc)
     w = _frequencies(omegas)
-    r = w / osc.natural_frequency
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        r = w / osc.natural_frequency
         b = 2.0 * osc.damping_ratio * r  # 2 zeta r
         low = np.hypot(1.0, b) / np.hypot((1.0 - r) * (1.0 + r), b)
         inv = 1.0 / np.where(r > 1.0, r, 1.0)
