@@ -473,43 +473,68 @@ def run(
     log=print,
     pdf: bool = True,
     cell_timeout: float = CELL_TIMEOUT_S,
+    cache: bool = True,
 ) -> list[dict]:
-    """Execute ``chapters`` with papermill and build the book into ``out`` (replaced only on success)."""
+    """Execute ``chapters`` with papermill and build the book into ``out`` (replaced only on success).
+
+    A chapter whose notebook, parameter values, imported modules, data and environment are those of a
+    cached run (``out/cache``) is not executed again; the runner says which chapters ran and why.
+    """
     import logging
 
+    import grimp
     import nbformat
 
     from .book import ChapterPage
     from .book import build as build_book
+    from .cache import ChapterCache
 
     out = out.resolve()  # kernels run in notebooks/: every path they get must be absolute
     out.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".report-", dir=out))
     for name in ("papermill", "traitlets", "nbclient", "sphinx"):
         logging.getLogger(name).setLevel(logging.ERROR)
+    store = ChapterCache(out / "cache")
     try:
-        for sub in ("notebooks", "report", "tables"):
+        for sub in ("notebooks", "report", "tables", "tables-of"):
             (work / sub).mkdir()
         kernel = kernel_name()
         total = len(chapters)
         t0 = time.perf_counter()
-        results = {}
+        graph = grimp.build_graph("vibration", cache_dir=None)
+        results, manifests, todo = {}, {}, []
+        for ch in chapters:
+            params = {k: v for k, v in values.items() if k in ch.params}
+            manifests[ch.name] = _manifest(ch, params, graph)
+            found = store.lookup(ch.name, manifests[ch.name]) if cache else None
+            if found is not None and found.hit:
+                store.restore(ch.name, work / "notebooks" / ch.path.name, work / "tables")
+                results[ch.name] = {"executed": work / "notebooks" / ch.path.name, "elapsed_s": found.elapsed_s}
+                log(f"[cached] {ch.name}: nothing it depends on changed")
+            else:
+                why = _why(found.reasons) if found is not None else "the cache is off"
+                todo.append((ch, params, why))
         finished: queue.Queue = queue.Queue()  # (chapter, seconds or None, exception or None)
         with notebook_pool(jobs) as pool:
-            for ch in chapters:
-                args = (ch.path, work / "notebooks" / ch.path.name, {k: v for k, v in values.items() if k in ch.params})
+            for ch, params, why in todo:
+                (work / "tables-of" / ch.name).mkdir()
+                args = (ch.path, work / "notebooks" / ch.path.name, params)
                 pool.apply_async(
                     _execute,
-                    (*args, kernel, str(work / "tables"), cell_timeout),
+                    (*args, kernel, str(work / "tables-of" / ch.name), cell_timeout),
                     callback=lambda res, ch=ch: finished.put((ch, res, None)),
                     error_callback=lambda exc, ch=ch: finished.put((ch, None, exc)),
                 )
-                log(f"[start] {ch.name}")
-            for _ in chapters:
+                log(f"[start] {ch.name}: {why}")
+            for _ in todo:
                 ch, res, exc = finished.get()
                 if exc is not None:  # a chapter failed: report it, keep the old tree (the pool stops the others)
                     raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
-                results[ch.name] = {"executed": work / "notebooks" / ch.path.name, "elapsed_s": res}
+                executed, tables = work / "notebooks" / ch.path.name, work / "tables-of" / ch.name
+                for path in tables.iterdir():
+                    shutil.copy2(path, work / "tables" / path.name)
+                store.store(ch.name, manifests[ch.name], executed, tables, res)
+                results[ch.name] = {"executed": executed, "elapsed_s": res}
                 log(f"[{len(results)}/{total}] {ch.name} done in {res:.1f} s")
         t_run = time.perf_counter() - t0
         pages = [
@@ -531,13 +556,26 @@ def run(
             if target.exists():
                 target.rename(work / f"old-{sub}")
             (work / sub).rename(target)
+        ran = len(todo)
         log(
-            f"report: {_plural(len(pages), 'chapter')} executed in {t_run:.1f} s, "
+            f"report: {_plural(ran, 'chapter')} executed and {total - ran} reused from the cache in {t_run:.1f} s, "
             f"{time.perf_counter() - t0:.1f} s in all -> {out / 'report' / 'index.html'}"
         )
         return [{"name": p.name, "title": p.title, "elapsed_s": p.elapsed_s} for p in pages]
     finally:
         shutil.rmtree(work, ignore_errors=True)
+
+
+def _manifest(ch: Chapter, params: dict, graph) -> dict[str, str]:
+    from .cache import manifest
+
+    return manifest(ch.path, params, ch.path.parent.parent, graph)
+
+
+def _why(reasons: tuple[str, ...]) -> str:
+    """The first reasons a chapter runs again, e.g. "src/vibration/presentation/tmd.py changed"."""
+    shown = ", ".join(reasons[:3])
+    return shown + (f" and {len(reasons) - 3} more" if len(reasons) > 3 else "")
 
 
 def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True) -> dict:
@@ -613,6 +651,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", default="build", help="output folder (default: build)")
     parser.add_argument("--jobs", type=int, default=2, help="chapters run at once (default: 2)")
     parser.add_argument("--no-pdf", action="store_true", help="skip the PDF (faster previews)")
+    parser.add_argument(
+        "--no-cache", action="store_true", help="execute every chapter, even those whose inputs did not change"
+    )
     parser.add_argument("--list", action="store_true", help="list chapters and their parameters")
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
     args = parser.parse_args(_protect_negative_values(sys.argv[1:] if argv is None else list(argv)))
@@ -631,7 +672,7 @@ def main(argv: list[str] | None = None) -> int:
             execute_in_place(chapters)
             return 0
         values = check_parameters(chapters, [tuple(p) for p in args.parameter])
-        run(chapters, values, Path(args.out).resolve(), jobs=args.jobs, pdf=not args.no_pdf)
+        run(chapters, values, Path(args.out).resolve(), jobs=args.jobs, pdf=not args.no_pdf, cache=not args.no_cache)
     except ParameterError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

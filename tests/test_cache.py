@@ -1,0 +1,107 @@
+"""The report's chapter cache: what a chapter depends on, and a rerun that executes only what changed."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import grimp
+import nbformat
+import pytest
+
+from vibration.publishing import report
+from vibration.publishing.cache import ChapterCache, differences, import_closure, manifest, notebook_imports
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def graph():
+    return grimp.build_graph("vibration", cache_dir=None)
+
+
+def _notebook(path: Path, code: str, param: str = "a: float = 1.0  # a number, 1") -> Path:
+    nb = nbformat.v4.new_notebook()
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    cell = nbformat.v4.new_code_cell(param)
+    cell.metadata["tags"] = ["parameters"]
+    nb.cells = [cell, nbformat.v4.new_code_cell(code)]
+    path.parent.mkdir(parents=True, exist_ok=True)
+    nbformat.write(nb, path)
+    return path
+
+
+def test_imports_are_read_from_the_code_cells(tmp_path):
+    nb = _notebook(
+        tmp_path / "n.ipynb",
+        "import numpy\nimport vibration\nfrom vibration.presentation import tables\n"
+        "from vibration.physics.exact import x",
+    )
+    assert notebook_imports(nb) == {
+        "vibration",
+        "vibration.presentation",
+        "vibration.presentation.tables",
+        "vibration.physics.exact",
+        "vibration.physics.exact.x",
+    }
+
+
+def test_the_closure_holds_what_a_module_imports_and_nothing_else(graph):
+    closure = import_closure({"vibration.presentation.solvers"}, graph)
+    assert {"vibration.presentation.solvers", "vibration.presentation.tables", "vibration.physics.exact"} <= closure
+    assert "vibration.presentation" in closure and "vibration" in closure  # the __init__ files run first
+    assert "vibration.presentation.tmd" not in closure and "vibration.chapters.real_oscillator.study" not in closure
+    # the package's __init__ imports the whole physics library, so `import vibration` brings all of it
+    assert "vibration.physics.tmd" in import_closure({"vibration"}, graph)
+
+
+def test_the_manifest_names_each_input_and_changes_with_it(tmp_path, graph):
+    nb = _notebook(tmp_path / "notebooks" / "01_x.ipynb", "from vibration.presentation.tables import fmt")
+    first = manifest(nb, {"a": 2.0}, ROOT, graph)
+    assert "src/vibration/presentation/tables.py" in first and "src/vibration/physics/model.py" in first
+    assert "src/vibration/presentation/tmd.py" not in first
+    assert any(k.startswith("src/vibration/presentation/assets/") for k in first)  # files beside the modules
+    assert any(k.startswith("data/") for k in first)
+    assert differences(first, manifest(nb, {"a": 2.0}, ROOT, graph)) == []
+    assert differences(first, manifest(nb, {"a": 3.0}, ROOT, graph)) == ["parameters changed"]
+    nb.write_text(nb.read_text().replace("fmt", "fmt, DASH"))
+    assert differences(first, manifest(nb, {"a": 2.0}, ROOT, graph)) == ["notebook changed"]
+
+
+def test_a_half_written_entry_is_never_a_hit(tmp_path):
+    cache = ChapterCache(tmp_path / "cache")
+    (tmp_path / "cache").mkdir()
+    (tmp_path / "cache" / "01_x.ipynb").write_text("{}")
+    assert not cache.lookup("01_x", {"a": "1"}).hit
+    (tmp_path / "cache" / "01_x.json").write_text("{not json")
+    assert cache.lookup("01_x", {"a": "1"}).reasons == ("the cached run's record is unreadable",)
+
+
+@pytest.mark.slow
+@pytest.mark.notebooks
+def test_a_second_run_reuses_unchanged_chapters_and_says_why_others_run(tmp_path):
+    root = tmp_path / "project"
+    code = "from vibration.presentation.tables import fmt\nprint(fmt(a * 2))"
+    a = report.Chapter(_notebook(root / "notebooks" / "01_a.ipynb", code), {})
+    b = report.Chapter(_notebook(root / "notebooks" / "02_b.ipynb", code.replace("2)", "3)")), {})
+    chapters = report.discover(root)
+    assert [c.name for c in chapters] == [a.name, b.name]
+    out = tmp_path / "out"
+    logs: list[str] = []
+    report.run(chapters, {}, out, jobs=2, log=logs.append, pdf=False)
+    assert sum(line.startswith("[start]") for line in logs) == 2
+    logs.clear()
+    report.run(chapters, {"a": 5.0}, out, jobs=2, log=logs.append, pdf=False)
+    assert sorted(line for line in logs if line.startswith(("[start]", "[cached]"))) == [
+        "[start] 01_a: parameters changed",
+        "[start] 02_b: parameters changed",
+    ]
+    logs.clear()
+    b.path.write_text(b.path.read_text().replace("a * 3", "a * 4"))
+    report.run(chapters, {"a": 5.0}, out, jobs=2, log=logs.append, pdf=False)
+    assert sorted(line for line in logs if line.startswith(("[start]", "[cached]"))) == [
+        "[cached] 01_a: nothing it depends on changed",
+        "[start] 02_b: notebook changed",
+    ]
+    executed = json.loads((out / "notebooks" / "01_a.ipynb").read_text())
+    assert "".join(executed["cells"][-1]["outputs"][0]["text"]).strip() == "10"  # the cached run of a = 5
