@@ -209,6 +209,8 @@ def _convert(name: str, text: str, type_name: str):
         if low not in ("true", "false", "1", "0"):
             raise ParameterError(f"{name} = {text!r} is not a boolean: allowed true or false")
         return low in ("true", "1")
+    if len(text) >= 2 and text[0] == text[-1] and text[0] in "'\"":  # a quoted literal, as notebooks write them
+        return text[1:-1]
     return text
 
 
