@@ -88,6 +88,13 @@ def key_results(st: RealOscillatorStudy) -> str:
     return "\n".join(lines)
 
 
+def front_page_findings() -> str:
+    """The front page's Part III paragraph: the chapter's findings at its default parameters, as bullets."""
+    from vibration.chapters.real_oscillator.study import real_oscillator_study
+
+    return "\n".join(f"* {line}" for line in front_findings(real_oscillator_study()))
+
+
 def front_findings(st: RealOscillatorStudy) -> list[str]:
     """Three to five computed sentences for the book's front page."""
     off, on = st.decays["off"], st.decays["on"]
