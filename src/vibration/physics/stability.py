@@ -75,6 +75,9 @@ MC_CHUNK = 1_000_000
 #: Largest total number of samples (paths times samples per path) of one Monte Carlo estimate (about 5 s).
 MC_TOTAL_MAX = 100_000_000
 
+#: Smallest settling band :func:`step_metrics` resolves (the crossings are found to rounding in 1 - y).
+BAND_MIN = 1e-12
+
 #: Largest number of times :func:`step_response` evaluates (one scalar closed form each).
 STEP_SAMPLES_MAX = 1_000_000
 
@@ -482,8 +485,15 @@ def step_response(osc: Oscillator, t):
     _check_osc(osc)
     tt = _times(t, max_size=STEP_SAMPLES_MAX)
     f = _one_minus_y(osc)
+
+    def one_minus_y(s: float) -> float:
+        try:
+            return f(s)
+        except OverflowError:  # math.exp of a growing (unstable) response
+            return math.inf
+
     with np.errstate(over="ignore", invalid="ignore"):
-        y = 1.0 - np.array([f(float(s)) for s in tt.ravel()]).reshape(tt.shape)
+        y = 1.0 - np.array([one_minus_y(float(s)) for s in tt.ravel()]).reshape(tt.shape)
     if not np.all(np.isfinite(y)):
         bad = float(tt[~np.isfinite(y)].ravel()[0])
         raise ParameterError(
@@ -551,7 +561,7 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
     """
     _check_osc(osc)
     _check_stable(osc, "a settling step response")
-    band = check_real("band", band, low=0.0, high=1.0, low_open=True)
+    band = check_real("band", band, low=BAND_MIN, high=1.0)
     if band == 1.0:
         raise ParameterError("band = 1.0 is out of range: allowed 0 < band < 1")
     f = _one_minus_y(osc)
@@ -937,7 +947,7 @@ def damper_load(osc: Oscillator, F0: float, omegas) -> DamperLoad:
         raise ParameterError(f"c = {osc.c!r} N s/m is out of range: allowed c >= 0 N s/m (a damper dissipates)")
     w = _frequencies(omegas)
     wn = osc.natural_frequency
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):  # a non-finite result is refused below
         amp = F0 / np.hypot(osc.m * (wn - w) * (wn + w), osc.c * w)
         force = osc.c * w * amp
         if osc.c == 0.0:

@@ -65,7 +65,9 @@ Examples
 
 from __future__ import annotations
 
+import functools
 import math
+import warnings
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -98,6 +100,8 @@ __all__ = [
 
 #: Largest mass ratio accepted, 1.
 MU_MAX = 10.0
+#: Smallest mass ratio accepted, 1 (below it the fixed points merge at r = 1 in floating point).
+MU_MIN = 1e-9
 #: Largest tuning ratio accepted, 1.
 F_MAX = 10.0
 #: Largest damping ratio accepted (absorber or primary) in the magnification, 1.
@@ -118,8 +122,34 @@ ENTRIES_MAX = 20_000_000
 
 
 # ----------------------------------------------------------------------------- validation
+def _no_nan(fn):
+    """Run ``fn`` with numpy's floating-point warnings off and refuse a nan anywhere in its result.
+
+    ``inf`` stays where it is documented (an undamped resonance); a nan would be an overflow or an
+    undefined value coming out silently, so it is a :class:`ParameterError` instead.
+    """
+
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        with np.errstate(all="ignore"):
+            out = fn(*args, **kwargs)
+        values = [out.f, out.zeta_a, out.peak] if isinstance(out, TMDTuning) else out
+        try:
+            arr = np.asarray(values, dtype=float)
+        except (TypeError, ValueError):  # a tuple of arrays of different shapes
+            arr = np.concatenate([np.ravel(np.asarray(v, dtype=float)) for v in values])
+        if np.any(np.isnan(arr)):
+            raise ParameterError(
+                f"{fn.__name__}{args!r}: the result is not defined in floating point (overflow or underflow of "
+                "the inputs' products); allowed inputs well inside their ranges"
+            )
+        return out
+
+    return wrapper
+
+
 def _mu(mu) -> float:
-    return check_real("mu", mu, low=0.0, low_open=True, high=MU_MAX, unit="(m_a/m_p)")
+    return check_real("mu", mu, low=MU_MIN, high=MU_MAX, unit="(m_a/m_p)")
 
 
 def _f(f) -> float:
@@ -135,6 +165,7 @@ def _ratios(r) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- the TMD on an SDOF primary
+@_no_nan
 def tmd_magnification(mu, f, zeta_a, r, zeta_p=0.0) -> np.ndarray:
     """Primary's steady magnification |X_p| / (F0 / k_p) with a TMD, at ratios r = ω/ω_p.
 
@@ -226,6 +257,7 @@ def _outer_peaks(mu: float, f: float, za: float, zp: float) -> tuple[float, floa
     return float(maxima[0]), float(maxima[-1])
 
 
+@_no_nan
 def tmd_peak(mu, f, zeta_a, zeta_p=0.0) -> float:
     """Largest magnification max_r |X_p| / (F0 / k_p) of the primary with a TMD, 1.
 
@@ -251,6 +283,7 @@ def tmd_peak(mu, f, zeta_a, zeta_p=0.0) -> float:
     return _peak(_mu(mu), _f(f), _zeta("zeta_a", zeta_a), _zeta("zeta_p", zeta_p))[0]
 
 
+@_no_nan
 def h2_norm(mu, f, zeta_a, zeta_p=0.0) -> float:
     """Integral of |H(r)|² over 0 <= r < ∞, 1 (the H2 criterion of Warburton 1982).
 
@@ -287,10 +320,13 @@ def h2_norm(mu, f, zeta_a, zeta_p=0.0) -> float:
         ]
     )
     B = np.array([[0.0], [0.0], [1.0], [0.0]])
-    Pm = sla.solve_continuous_lyapunov(A, -B @ B.T)
+    with warnings.catch_warnings():  # near-marginal modes: scipy perturbs and warns; the value is still its answer
+        warnings.simplefilter("ignore", RuntimeWarning)
+        Pm = sla.solve_continuous_lyapunov(A, -B @ B.T)
     return float(math.pi * Pm[0, 0])
 
 
+@_no_nan
 def tmd_fixed_points(mu, f) -> tuple[np.ndarray, np.ndarray]:
     """Den Hartog's fixed points: the two ratios where every absorber damping gives
     the same magnification of an undamped primary, and that magnification.
@@ -460,6 +496,7 @@ def _closed_form(method, zp: float) -> bool:
     return method == "closed form" or (method == "auto" and zp == 0.0)
 
 
+@_no_nan
 def hinf_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     """The H∞ optimum: (f, ζ_a) minimising the primary's largest magnification.
 
@@ -500,6 +537,7 @@ def hinf_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     return _record("H∞ numerical", mu, f, za, zp)
 
 
+@_no_nan
 def h2_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     """The H2 optimum: (f, ζ_a) minimising ∫_0^∞ |H(r)|² dr (white-noise force).
 
@@ -550,6 +588,7 @@ def h2_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     return _record("H2 numerical", mu, float(res.x[0]), math.exp(float(res.x[1])), zp)
 
 
+@_no_nan
 def mistuned_peak(tuning: TMDTuning, stiffness_error, zeta_p=None) -> np.ndarray:
     """Largest primary magnification when the primary's stiffness is off by a fraction.
 
@@ -605,10 +644,7 @@ class MDOFResponse:
 
 
 def _matrix(name: str, A, n: int | None) -> np.ndarray:
-    try:
-        arr = np.array(A, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError(f"{name} = {A!r} is not a matrix of numbers: allowed a square real matrix") from None
+    arr = check_array(name, A, ndim=(0, 2), max_size=N_DOF_MAX * N_DOF_MAX)
     if arr.ndim == 0 and n in (None, 1):
         arr = arr.reshape(1, 1)
     if arr.ndim != 2 or arr.shape[0] != arr.shape[1] or arr.shape[0] == 0:
@@ -806,7 +842,13 @@ class MDOF:
             )
         out = np.empty((w.size, self.n), dtype=complex)
         for i in range(w.size):
-            D = self.K - (w[i] * w[i]) * self.M + 1j * w[i] * self.C
+            with np.errstate(over="ignore", invalid="ignore"):
+                D = self.K - (w[i] * w[i]) * self.M + 1j * w[i] * self.C
+            if not np.all(np.isfinite(D)):
+                raise ParameterError(
+                    f"omegas contains {w[i]!r} rad/s: the dynamic stiffness K - ω² M + iω C overflows there; "
+                    "allowed frequencies at which it is finite"
+                )
             try:
                 out[i] = np.linalg.solve(D, p)
             except np.linalg.LinAlgError:
@@ -866,19 +908,31 @@ class MDOF:
         if method not in ("auto", "modal", "expm"):
             raise ParameterError(f"method = {method!r} is not known: allowed 'auto', 'modal', 'expm'")
         if method != "expm":
-            D = self.K - omega * omega * self.M + 1j * omega * self.C
+            with np.errstate(over="ignore", invalid="ignore"):
+                D = self.K - omega * omega * self.M + 1j * omega * self.C
+            if not np.all(np.isfinite(D)):
+                raise ParameterError(
+                    f"omega = {omega!r} rad/s: the dynamic stiffness K - ω² M + iω C overflows; allowed a smaller omega"
+                )
             lam, V = np.linalg.eig(self.state_matrix)
             well = np.linalg.cond(V) <= 1e8 and np.linalg.cond(D) <= 1e10
             if well or method == "modal":
-                X = np.linalg.solve(D, p)
-                st, ct = np.sin(omega * t), np.cos(omega * t)
-                xs = np.outer(st, X.real) + np.outer(ct, X.imag)
-                vs = omega * (np.outer(ct, X.real) - np.outer(st, X.imag))
-                zh0 = z0 - np.concatenate([X.imag, omega * X.real])
-                q0 = np.linalg.solve(V, zh0.astype(complex))
-                with np.errstate(over="ignore", invalid="ignore"):
-                    zh = ((np.exp(np.outer(t, lam)) * q0) @ V.T).real
-                return _finite_response(MDOFResponse(t, xs + zh[:, :n], vs + zh[:, n:]))
+                try:
+                    with np.errstate(all="ignore"):  # a non-finite result is refused below
+                        X = np.linalg.solve(D, p)
+                        st, ct = np.sin(omega * t), np.cos(omega * t)
+                        xs = np.outer(st, X.real) + np.outer(ct, X.imag)
+                        vs = omega * (np.outer(ct, X.real) - np.outer(st, X.imag))
+                        zh0 = z0 - np.concatenate([X.imag, omega * X.real])
+                        q0 = np.linalg.solve(V, zh0.astype(complex))
+                        zh = ((np.exp(np.outer(t, lam)) * q0) @ V.T).real
+                        x, v = xs + zh[:, :n], vs + zh[:, n:]
+                except np.linalg.LinAlgError:
+                    raise ParameterError(
+                        f"omega = {omega!r} rad/s is a natural frequency of the undamped model: the modal method has "
+                        "no steady state there; allowed method='expm' or 'auto' (secular growth)"
+                    ) from None
+                return _finite_response(MDOFResponse(t, x, v))
         Minv_p = np.linalg.solve(self.M, p)
         Aa = np.zeros((2 * n + 2, 2 * n + 2))
         Aa[: 2 * n, : 2 * n] = self.state_matrix
@@ -892,7 +946,8 @@ class MDOF:
                 f"{t.size * (2 * n + 2) ** 3:.3g} units of work, allowed at most {WORK_MAX:g} "
                 f"(len(t) <= {int(WORK_MAX // (2 * n + 2) ** 3)} here)"
             )
-        z = sla.expm(Aa[None] * t[:, None, None]) @ za
+        with np.errstate(all="ignore"):  # a non-finite result is refused below
+            z = sla.expm(Aa[None] * t[:, None, None]) @ za
         return _finite_response(MDOFResponse(t, z[:, :n], z[:, n : 2 * n]))
 
     def _state(self, name: str, value) -> np.ndarray:
