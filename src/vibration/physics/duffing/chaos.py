@@ -1,0 +1,363 @@
+"""Chaos in the forced Duffing oscillator: Poincaré sections and Lyapunov exponents (compiled RK4)."""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..model import ParameterError, check_int, check_real
+from .model import MAX_RK4_STEPS, RK4_STABILITY, Duffing, _check_duffing, _linear_rate, _rates, _x_ref
+
+# ------------------------------------------------------------------------------ compiled kernel
+
+
+@functools.cache
+def _rk4_kernel():
+    """Compile (once per process, cached on disk) the fixed-step RK4; numba is imported lazily."""
+    import numba
+
+    @numba.njit(cache=True)
+    def rk4_kernel(
+        m, c, k, k3, F0, w, x0, v0, n_periods, steps_per_period, mode, d0, record, gs_every, blow_up
+    ):  # pragma: no cover
+        """mode 0: Poincare points; 1: QR on the variational equations; 2: two-trajectory renormalisation.
+
+        The tangent vectors (mode 1) or the separation (mode 2) are renormalised at the end of
+        every period and, when the damping contracts them strongly, also every ``gs_every`` steps.
+        Returns (points (n_periods, 2), running largest exponent per period, tail): tail holds the
+        sums of logs (2), the final state and tangent vectors (6), a status (0 done, 1 the state
+        left ``|x| <= blow_up`` or stopped being finite, 2 a tangent vector or the separation
+        underflowed to 0 or overflowed) and the period at which it stopped.
+        """
+        T = 2.0 * np.pi / w
+        h = T / steps_per_period
+        x, v = x0, v0
+        # tangent vectors (mode 1) or the partner trajectory (mode 2)
+        q11, q21, q12, q22 = 1.0, 0.0, 0.0, 1.0
+        px, pv = x0 + d0, v0
+        pts = np.empty((n_periods, 2))
+        running = np.empty(n_periods)
+        s1, s2 = 0.0, 0.0
+        for n in range(n_periods):
+            for i in range(steps_per_period):
+                tau = i * h
+                f0 = F0 * np.cos(w * tau)
+                fh = F0 * np.cos(w * (tau + 0.5 * h))
+                f1 = F0 * np.cos(w * (tau + h))
+                # main trajectory with (optionally) the two tangent vectors
+                j1 = -(k + 3.0 * k3 * x * x) / m
+                k1x, k1v = v, (f0 - c * v - k * x - k3 * x**3) / m
+                l1a, l1b = q21, j1 * q11 - c / m * q21
+                l1c, l1d = q22, j1 * q12 - c / m * q22
+                xa, va = x + 0.5 * h * k1x, v + 0.5 * h * k1v
+                ja = -(k + 3.0 * k3 * xa * xa) / m
+                qa11, qa21 = q11 + 0.5 * h * l1a, q21 + 0.5 * h * l1b
+                qa12, qa22 = q12 + 0.5 * h * l1c, q22 + 0.5 * h * l1d
+                k2x, k2v = va, (fh - c * va - k * xa - k3 * xa**3) / m
+                l2a, l2b = qa21, ja * qa11 - c / m * qa21
+                l2c, l2d = qa22, ja * qa12 - c / m * qa22
+                xb, vb = x + 0.5 * h * k2x, v + 0.5 * h * k2v
+                jb = -(k + 3.0 * k3 * xb * xb) / m
+                qb11, qb21 = q11 + 0.5 * h * l2a, q21 + 0.5 * h * l2b
+                qb12, qb22 = q12 + 0.5 * h * l2c, q22 + 0.5 * h * l2d
+                k3x, k3v = vb, (fh - c * vb - k * xb - k3 * xb**3) / m
+                l3a, l3b = qb21, jb * qb11 - c / m * qb21
+                l3c, l3d = qb22, jb * qb12 - c / m * qb22
+                xc, vc = x + h * k3x, v + h * k3v
+                jc = -(k + 3.0 * k3 * xc * xc) / m
+                qc11, qc21 = q11 + h * l3a, q21 + h * l3b
+                qc12, qc22 = q12 + h * l3c, q22 + h * l3d
+                k4x, k4v = vc, (f1 - c * vc - k * xc - k3 * xc**3) / m
+                l4a, l4b = qc21, jc * qc11 - c / m * qc21
+                l4c, l4d = qc22, jc * qc12 - c / m * qc22
+                x += h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x)
+                v += h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
+                if mode == 1:
+                    q11 += h / 6.0 * (l1a + 2 * l2a + 2 * l3a + l4a)
+                    q21 += h / 6.0 * (l1b + 2 * l2b + 2 * l3b + l4b)
+                    q12 += h / 6.0 * (l1c + 2 * l2c + 2 * l3c + l4c)
+                    q22 += h / 6.0 * (l1d + 2 * l2d + 2 * l3d + l4d)
+                if mode == 2:  # partner trajectory, the same RK4 steps
+                    m1x, m1v = pv, (f0 - c * pv - k * px - k3 * px**3) / m
+                    ya, wa = px + 0.5 * h * m1x, pv + 0.5 * h * m1v
+                    m2x, m2v = wa, (fh - c * wa - k * ya - k3 * ya**3) / m
+                    yb, wb = px + 0.5 * h * m2x, pv + 0.5 * h * m2v
+                    m3x, m3v = wb, (fh - c * wb - k * yb - k3 * yb**3) / m
+                    yc, wc = px + h * m3x, pv + h * m3v
+                    m4x, m4v = wc, (f1 - c * wc - k * yc - k3 * yc**3) / m
+                    px += h / 6.0 * (m1x + 2 * m2x + 2 * m3x + m4x)
+                    pv += h / 6.0 * (m1v + 2 * m2v + 2 * m3v + m4v)
+                renorm = i == steps_per_period - 1 or (i + 1) % gs_every == 0
+                if mode == 1 and renorm:  # Gram-Schmidt (QR) once per period (or every gs_every steps)
+                    r11 = np.sqrt(q11 * q11 + q21 * q21)
+                    if not (r11 > 0.0 and r11 < np.inf):
+                        return pts[:n], running[:n], np.array([s1, s2, x, v, q11, q21, q12, q22, 2.0, n])
+                    q11, q21 = q11 / r11, q21 / r11
+                    dot = q11 * q12 + q21 * q22
+                    q12, q22 = q12 - dot * q11, q22 - dot * q21
+                    r22 = np.sqrt(q12 * q12 + q22 * q22)
+                    if not (r22 > 0.0 and r22 < np.inf):
+                        return pts[:n], running[:n], np.array([s1, s2, x, v, q11, q21, q12, q22, 2.0, n])
+                    q12, q22 = q12 / r22, q22 / r22
+                    if record:
+                        s1 += np.log(r11)
+                        s2 += np.log(r22)
+                if mode == 2 and renorm:  # renormalise the separation to d0 along its current direction
+                    dx, dv = px - x, pv - v
+                    dist = np.sqrt(dx * dx + dv * dv)
+                    if not (dist > 0.0 and dist < np.inf):
+                        return pts[:n], running[:n], np.array([s1, s2, x, v, q11, q21, q12, q22, 2.0, n])
+                    if record:
+                        s1 += np.log(dist / d0)
+                    px, pv = x + dx * d0 / dist, v + dv * d0 / dist
+            if not (abs(x) <= blow_up and abs(v) < np.inf):
+                return pts[:n], running[:n], np.array([s1, s2, x, v, q11, q21, q12, q22, 1.0, n])
+            pts[n, 0] = x
+            pts[n, 1] = v
+            running[n] = s1 / ((n + 1) * T)
+        return pts, running, np.array([s1, s2, x, v, q11, q21, q12, q22, 0.0, n_periods])
+
+    return rk4_kernel
+
+
+@dataclass(frozen=True)
+class LyapunovResult:
+    """Lyapunov exponents of the forced oscillator (per unit time, 1/s)."""
+
+    exponents: tuple[float, ...]  # largest first, 1/s (QR gives two, two-trajectory one)
+    running: np.ndarray  # running estimate of the largest exponent after each period, 1/s
+    method: str  # "qr" (variational equations) or "benettin" (two trajectories)
+    time: float  # averaging time, s
+    x_end: float  # final state, m
+    v_end: float  # m/s
+
+
+def _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, mode=0, d0=1.0):
+    """Check the arguments, discard ``n_transient`` periods, then run the compiled RK4 in ``mode``.
+
+    Returns the averaging time ``n_periods T`` (s) and the kernel's ``(points, running, tail)``.
+    """
+    d = _check_duffing(duffing)
+    F0 = check_real("F0", F0, low=0.0, unit="N")
+    w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
+    x0 = check_real("x0", x0, unit="m")
+    v0 = check_real("v0", v0, unit="m/s")
+    n_periods = check_int("n_periods", n_periods, low=1, high=2_000_000)
+    n_transient = check_int("n_transient", n_transient, low=0, high=10_000_000)
+    spp = check_int("steps_per_period", steps_per_period, low=8, high=100_000)
+    total = (n_periods + n_transient) * spp
+    if total > MAX_RK4_STEPS:
+        raise ParameterError(
+            f"n_periods = {n_periods}, n_transient = {n_transient} and steps_per_period = {spp} make {total} RK4 "
+            f"steps: allowed at most {MAX_RK4_STEPS} "
+            "((n_periods + n_transient) steps_per_period)"
+        )
+    T = 2.0 * math.pi / w
+    h = T / spp
+    lam = _linear_rate(d, max(abs(x0), _x_ref(d, F0) if F0 > 0 else 0.0))
+    if h * lam > RK4_STABILITY:
+        need = math.ceil(T * lam / RK4_STABILITY)
+        raise ParameterError(
+            f"steps_per_period = {spp} at omega = {w!r} rad/s gives a step of {h:.3g} s, and the fixed-step RK4 is "
+            f"unstable for h lambda > {RK4_STABILITY} with lambda = {lam:.3g} 1/s ({_rates(d)}): allowed "
+            f"steps_per_period >= {need:.3g}"
+            + (" (above its limit 100000: a higher omega or a less stiff oscillator)" if need > 100_000 else "")
+        )
+    blow_up = 1e3 * max(_x_ref(d, F0), abs(x0), d.barrier) if d.k3 < 0 else math.inf
+    # renormalise at least every time the damping alone contracts by exp(-5): the second tangent vector
+    # (QR) and the separation (two trajectories) must stay well above the rounding of the leading one
+    contraction = d.c / d.m * T
+    gs_every = spp if contraction <= 5.0 else max(1, int(spp * 5.0 / contraction))
+    kern = _rk4_kernel()
+    if n_transient:
+        *_, tail = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_transient, spp, 0, 1.0, False, spp, blow_up)
+        _rk4_status(d, F0, w, x0, v0, tail, 0)
+        x0, v0 = float(tail[2]), float(tail[3])
+    out = kern(d.m, d.c, d.k, d.k3, F0, w, x0, v0, n_periods, spp, mode, d0, mode != 0, gs_every, blow_up)
+    _rk4_status(d, F0, w, x0, v0, out[2], n_transient)
+    time = n_periods * T
+    return (time, *out)
+
+
+def _rk4_status(d: Duffing, F0: float, w: float, x0: float, v0: float, tail: np.ndarray, offset: int) -> None:
+    """Raise :class:`ParameterError` when the compiled RK4 stopped early (see its status codes)."""
+    status, n = int(tail[8]), int(tail[9]) + offset
+    if status == 1:
+        what = (
+            f"the mass escaped over the softening spring's barrier ({d.barrier:.3g} m; |x| passed "
+            f"{1e3 * max(_x_ref(d, F0), abs(x0), d.barrier):.3g} m or overflowed)"
+            if d.k3 < 0
+            else "the fixed-step RK4 overflowed (the state is not finite: the step is too large for the cubic "
+            "stiffness at this amplitude, or the motion is unbounded)"
+        )
+        raise ParameterError(
+            f"{what} in forcing period {n + 1} (F0 = {F0!r} N, omega = {w!r} rad/s, x0 = {x0!r} m, v0 = {v0!r} "
+            "m/s): allowed parameters whose motion stays bounded, or more steps_per_period"
+        )
+    if status == 2:
+        raise ParameterError(
+            f"the tangent vectors or the trajectories' separation underflowed or overflowed in forcing period "
+            f"{n + 1} ({_rates(d)}, omega = {w!r} rad/s): allowed a less extreme damping or forcing period"
+        )
+    exps = tail[:2]
+    if not np.all(np.isfinite(exps)):  # pragma: no cover - the kernel stops before
+        raise ParameterError("the Lyapunov sums are not finite: allowed parameters whose motion stays bounded")
+
+
+def _lyapunov_result(time, running, tail, method, n_exponents) -> LyapunovResult:
+    return LyapunovResult(
+        exponents=tuple(float(s / time) for s in tail[:n_exponents]),
+        running=running,
+        method=method,
+        time=time,
+        x_end=float(tail[2]),
+        v_end=float(tail[3]),
+    )
+
+
+def poincare_section(
+    duffing: Duffing,
+    F0: float,
+    omega: float,
+    x0: float = 0.0,
+    v0: float = 0.0,
+    n_periods: int = 2000,
+    n_transient: int = 200,
+    steps_per_period: int = 400,
+):
+    """Stroboscopic Poincaré section: the state at phase 0 of the forcing, once per period.
+
+    Integrated with a compiled fixed-step RK4 (``steps_per_period`` steps per period).
+
+    Parameters
+    ----------
+    duffing : Duffing
+        The oscillator.
+    F0 : float
+        Force amplitude, N.
+    omega : float
+        Forcing frequency, rad/s.
+    x0, v0 : float
+        Initial state at t = 0, m and m/s.
+    n_periods : int
+        Points returned (after the transient).
+    n_transient : int
+        Periods discarded first.
+    steps_per_period : int
+        RK4 steps per forcing period (8 to 100000).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape ``(n_periods, 2)``: x (m) and v (m/s) at ``t = (n_transient + i + 1) T``.
+
+    Examples
+    --------
+    >>> pts = poincare_section(Duffing(1.0, 0.5, 20.0, 2.0), 5.0, 3.0, n_periods=3)
+    >>> bool(np.ptp(pts[:, 0]) < 1e-9)           # a period-1 orbit: one point
+    True
+    """
+    _, pts, _, _ = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period)
+    return pts
+
+
+def lyapunov_qr(
+    duffing: Duffing,
+    F0: float,
+    omega: float,
+    x0: float = 0.0,
+    v0: float = 0.0,
+    n_periods: int = 2000,
+    n_transient: int = 100,
+    steps_per_period: int = 400,
+) -> LyapunovResult:
+    """Both Lyapunov exponents from the variational equations with QR (Gram-Schmidt) re-orthonormalisation.
+
+    The state and two tangent vectors are integrated together (compiled RK4); once per
+    forcing period the tangent vectors are orthonormalised and the logarithms of the
+    diagonal of R accumulated (Benettin et al. 1980; Wolf et al. 1985). The two exponents
+    sum to ``-c/m`` (the trace of the Jacobian), whatever the motion.
+
+    Parameters
+    ----------
+    duffing : Duffing
+        The oscillator.
+    F0 : float
+        Force amplitude, N.
+    omega : float
+        Forcing frequency, rad/s.
+    x0, v0 : float
+        Initial state, m and m/s.
+    n_periods : int
+        Periods averaged over (after the transient).
+    n_transient : int
+        Periods discarded first (the tangent vectors align meanwhile).
+    steps_per_period : int
+        RK4 steps per forcing period.
+
+    Returns
+    -------
+    LyapunovResult
+        ``exponents = (lambda_1, lambda_2)``, 1/s.
+
+    Examples
+    --------
+    >>> r = lyapunov_qr(Duffing(1.0, 0.5, 20.0, 2.0), 5.0, 3.0, n_periods=200)
+    >>> round(sum(r.exponents), 6)        # = -c/m, 1/s
+    -0.5
+    """
+    time, _, running, tail = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, 1)
+    return _lyapunov_result(time, running, tail, "qr", 2)
+
+
+def lyapunov_benettin(
+    duffing: Duffing,
+    F0: float,
+    omega: float,
+    x0: float = 0.0,
+    v0: float = 0.0,
+    n_periods: int = 2000,
+    n_transient: int = 100,
+    steps_per_period: int = 400,
+    d0: float = 1e-8,
+) -> LyapunovResult:
+    """Largest Lyapunov exponent from two nearby trajectories, renormalised once per period.
+
+    A partner trajectory starts ``d0`` away; both are integrated with the same compiled RK4
+    steps (no variational equations), and once per forcing period the logarithm of their
+    separation over ``d0`` is accumulated and the partner pulled back to distance ``d0``
+    along the separation (Benettin et al. 1976). Independent of :func:`lyapunov_qr` except
+    for the stepper.
+
+    Parameters
+    ----------
+    duffing : Duffing
+        The oscillator.
+    F0 : float
+        Force amplitude, N.
+    omega : float
+        Forcing frequency, rad/s.
+    x0, v0 : float
+        Initial state, m and m/s.
+    n_periods, n_transient, steps_per_period : int
+        As in :func:`lyapunov_qr`.
+    d0 : float
+        Separation kept between the trajectories, in (x m, v m/s) (1e-12 to 1e-4).
+
+    Returns
+    -------
+    LyapunovResult
+        ``exponents = (lambda_1,)``, 1/s.
+
+    Examples
+    --------
+    >>> r = lyapunov_benettin(Duffing(1.0, 0.5, 20.0, 2.0), 5.0, 3.0, n_periods=200)
+    >>> r.exponents[0] < 0                # a stable periodic orbit
+    True
+    """
+    d0 = check_real("d0", d0, low=1e-12, high=1e-4)
+    time, _, running, tail = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, 2, d0)
+    return _lyapunov_result(time, running, tail, "benettin", 1)

@@ -1,0 +1,633 @@
+"""Stepped frequency sweeps of the Duffing oscillator by time integration, and their jumps.
+
+:func:`frequency_sweep` steps the forcing frequency up or down and integrates whole forcing periods
+with a compiled Dormand-Prince 5(4) pair (SciPy's RK45 tableau and error control, numba) until the
+stroboscopic state is steady; :func:`locate_jump` narrows a jump by re-sweeping its bracket.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..model import ParameterError, check_int, check_real
+from .model import (
+    MAX_SCIPY_SWEEP_STEPS,
+    MAX_SWEEP_STEPS,
+    Duffing,
+    _check_damped,
+    _check_duffing,
+    _Counted,
+    _linear_rate,
+    _OverBudget,
+    _rates,
+    _real_array,
+    _x_ref,
+)
+
+# ------------------------------------------------------------------------------ compiled kernel
+
+
+@functools.cache
+def _sweep_kernel():
+    """Compile (once per process, cached on disk) the sweep integrator; numba is imported lazily."""
+    import numba
+
+    # Dormand-Prince 5(4), the tableau and error estimate of SciPy's RK45
+    a21 = 1 / 5
+    a31, a32 = 3 / 40, 9 / 40
+    a41, a42, a43 = 44 / 45, -56 / 15, 32 / 9
+    a51, a52, a53, a54 = 19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729
+    a61, a62, a63, a64, a65 = 9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656
+    b1, b3, b4, b5, b6 = 35 / 384, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84
+    e1, e3, e4, e5, e6, e7 = -71 / 57600, 71 / 16695, -71 / 1920, 17253 / 339200, -22 / 525, 1 / 40
+    c2, c3, c4, c5 = 1 / 5, 3 / 10, 4 / 5, 8 / 9
+
+    @numba.njit(cache=True)
+    def sweep_kernel(
+        m,
+        c,
+        k,
+        k3,
+        F0,
+        omegas,
+        x0,
+        v0,
+        rtol,
+        atol,
+        steady_tol,
+        min_periods,
+        max_periods,
+        blow_up,
+        amp,
+        xmax_out,
+        xmin_out,
+        steady,
+        periods,
+        xs,
+        vs,
+        nsteps,
+        max_steps,
+    ):  # pragma: no cover
+        """Returns ``(status, j)``: status 0 done, 1 ``max_steps`` attempted steps spent (at frequency j)."""
+        x, v = x0, v0
+        attempted = 0
+        for j in range(omegas.shape[0]):
+            w = omegas[j]
+            T = 2.0 * np.pi / w
+            h = T / 40.0
+            hmax = T / 16.0
+            px, pv = x, v
+            d_prev, ok_prev, rho_prev = -1.0, False, 1.0
+            done, escaped = False, False
+            xmax, xmin = -np.inf, np.inf
+            n = 0
+            steps = 0
+            while n < max_periods and not done:
+                tau = 0.0
+                xmax, xmin = x, x
+                a0 = (F0 * np.cos(w * tau) - c * v - k * x - k3 * x * x * x) / m
+                rejected = False
+                while tau < T:
+                    attempted += 1
+                    if attempted > max_steps:
+                        nsteps[j] = steps
+                        periods[j] = n
+                        return 1, j
+                    if h > hmax:
+                        h = hmax
+                    last = tau + h >= T
+                    if last:
+                        h = T - tau
+                    # stages (FSAL: k1 = (v, a0))
+                    k1x, k1v = v, a0
+                    xx, vv = x + h * a21 * k1x, v + h * a21 * k1v
+                    k2x, k2v = vv, (F0 * np.cos(w * (tau + c2 * h)) - c * vv - k * xx - k3 * xx * xx * xx) / m
+                    xx = x + h * (a31 * k1x + a32 * k2x)
+                    vv = v + h * (a31 * k1v + a32 * k2v)
+                    k3x, k3v = vv, (F0 * np.cos(w * (tau + c3 * h)) - c * vv - k * xx - k3 * xx * xx * xx) / m
+                    xx = x + h * (a41 * k1x + a42 * k2x + a43 * k3x)
+                    vv = v + h * (a41 * k1v + a42 * k2v + a43 * k3v)
+                    k4x, k4v = vv, (F0 * np.cos(w * (tau + c4 * h)) - c * vv - k * xx - k3 * xx * xx * xx) / m
+                    xx = x + h * (a51 * k1x + a52 * k2x + a53 * k3x + a54 * k4x)
+                    vv = v + h * (a51 * k1v + a52 * k2v + a53 * k3v + a54 * k4v)
+                    k5x, k5v = vv, (F0 * np.cos(w * (tau + c5 * h)) - c * vv - k * xx - k3 * xx * xx * xx) / m
+                    xx = x + h * (a61 * k1x + a62 * k2x + a63 * k3x + a64 * k4x + a65 * k5x)
+                    vv = v + h * (a61 * k1v + a62 * k2v + a63 * k3v + a64 * k4v + a65 * k5v)
+                    k6x, k6v = vv, (F0 * np.cos(w * (tau + h)) - c * vv - k * xx - k3 * xx * xx * xx) / m
+                    xn = x + h * (b1 * k1x + b3 * k3x + b4 * k4x + b5 * k5x + b6 * k6x)
+                    vn = v + h * (b1 * k1v + b3 * k3v + b4 * k4v + b5 * k5v + b6 * k6v)
+                    t_new = T if last else tau + h
+                    an = (F0 * np.cos(w * t_new) - c * vn - k * xn - k3 * xn * xn * xn) / m
+                    ex = h * (e1 * k1x + e3 * k3x + e4 * k4x + e5 * k5x + e6 * k6x + e7 * vn)
+                    ev = h * (e1 * k1v + e3 * k3v + e4 * k4v + e5 * k5v + e6 * k6v + e7 * an)
+                    sx = atol + rtol * max(abs(x), abs(xn))
+                    sv = atol + rtol * max(abs(v), abs(vn))
+                    err = np.sqrt(0.5 * ((ex / sx) ** 2 + (ev / sv) ** 2))
+                    if not np.isfinite(err):
+                        escaped = True
+                        break
+                    if err < 1.0:
+                        steps += 1
+                        # extremum of x inside the step: quintic Hermite, bisection on its derivative
+                        if (v > 0.0) != (vn > 0.0):
+                            lo, hi = 0.0, 1.0
+                            for _ in range(48):
+                                s = 0.5 * (lo + hi)
+                                d1 = (
+                                    x * (-30 * s**2 + 60 * s**3 - 30 * s**4)
+                                    + h * v * (1 - 18 * s**2 + 32 * s**3 - 15 * s**4)
+                                    + h * h * a0 * (2 * s - 9 * s**2 + 12 * s**3 - 5 * s**4) / 2
+                                    + xn * (30 * s**2 - 60 * s**3 + 30 * s**4)
+                                    + h * vn * (-12 * s**2 + 28 * s**3 - 15 * s**4)
+                                    + h * h * an * (3 * s**2 - 8 * s**3 + 5 * s**4) / 2
+                                )
+                                if (d1 > 0.0) == (v > 0.0):
+                                    lo = s
+                                else:
+                                    hi = s
+                            s = 0.5 * (lo + hi)
+                            xe = (
+                                x * (1 - 10 * s**3 + 15 * s**4 - 6 * s**5)
+                                + h * v * (s - 6 * s**3 + 8 * s**4 - 3 * s**5)
+                                + h * h * a0 * (s**2 - 3 * s**3 + 3 * s**4 - s**5) / 2
+                                + xn * (10 * s**3 - 15 * s**4 + 6 * s**5)
+                                + h * vn * (-4 * s**3 + 7 * s**4 - 3 * s**5)
+                                + h * h * an * (s**3 - 2 * s**4 + s**5) / 2
+                            )
+                            xmax = max(xmax, xe)
+                            xmin = min(xmin, xe)
+                        x, v, a0 = xn, vn, an
+                        xmax = max(xmax, x)
+                        xmin = min(xmin, x)
+                        tau = t_new
+                        if err == 0.0:
+                            fac = 10.0
+                        else:
+                            fac = min(10.0, 0.9 * err ** (-0.2))
+                        if rejected:
+                            fac = min(1.0, fac)
+                        if not last:
+                            h *= fac
+                        rejected = False
+                        if abs(x) > blow_up:
+                            escaped = True
+                            break
+                    else:
+                        h *= max(0.2, 0.9 * err ** (-0.2))
+                        rejected = True
+                if escaped:
+                    break
+                n += 1
+                # steady criterion on the stroboscopic state (x, v/omega)
+                dd = np.sqrt((x - px) ** 2 + ((v - pv) / w) ** 2)
+                px, pv = x, v
+                scale = max(0.5 * (xmax - xmin), atol)
+                if d_prev > 0.0:
+                    rho = dd / d_prev
+                else:
+                    rho = 0.0 if dd == 0.0 else 1.0
+                r = max(rho, rho_prev)
+                ok = False
+                if dd == 0.0:
+                    ok = True
+                elif r < 1.0:
+                    ok = dd * max(1.0, r / (1.0 - r)) <= steady_tol * scale
+                if ok and ok_prev and n >= min_periods:
+                    done = True
+                d_prev, ok_prev, rho_prev = dd, ok, rho
+            nsteps[j] = steps
+            periods[j] = n
+            if escaped:
+                amp[j] = np.nan
+                xmax_out[j] = np.nan
+                xmin_out[j] = np.nan
+                steady[j] = False
+                xs[j] = np.nan
+                vs[j] = np.nan
+                x, v = 0.0, 0.0  # the next frequency starts from rest
+            else:
+                amp[j] = 0.5 * (xmax - xmin)
+                xmax_out[j] = xmax
+                xmin_out[j] = xmin
+                steady[j] = done
+                xs[j] = x
+                vs[j] = v
+        return 0, omegas.shape[0]
+
+    return sweep_kernel
+
+
+# ------------------------------------------------------------------------------- frequency sweeps
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    """Steady responses of a stepped frequency sweep, aligned with the frequencies given."""
+
+    omega: np.ndarray  # forcing frequencies, rad/s (in the order given)
+    amplitude: np.ndarray  # half the peak-to-peak x over the last period, m (nan if the mass escaped)
+    x_max: np.ndarray  # largest x over the last period, m
+    x_min: np.ndarray  # smallest x over the last period, m
+    steady: np.ndarray  # whether the steady criterion was met before max_periods
+    periods: np.ndarray  # forcing periods integrated at each frequency
+    x_end: np.ndarray  # stroboscopic state at the end (phase 0 of the forcing), m
+    v_end: np.ndarray  # ..., m/s
+    direction: str  # "up" or "down"
+    n_steps: np.ndarray  # accepted integrator steps at each frequency
+
+    def jumps(self, threshold: float = 0.25) -> list[tuple[float, float, float, float]]:
+        """Jumps between consecutive steps of the sweep (in sweep order).
+
+        A jump is a change of amplitude larger than ``threshold`` times the larger of the
+        two. Returns ``(omega_before, omega_after, A_before, A_after)`` tuples, rad/s and m.
+        """
+        order = np.argsort(self.omega, kind="stable")
+        if self.direction == "down":
+            order = order[::-1]
+        out = []
+        for i, j in zip(order[:-1], order[1:], strict=True):
+            a, b = self.amplitude[i], self.amplitude[j]
+            if np.isfinite(a) and np.isfinite(b) and abs(b - a) > threshold * max(a, b):
+                out.append((float(self.omega[i]), float(self.omega[j]), float(a), float(b)))
+        return out
+
+    @property
+    def escaped(self) -> np.ndarray:
+        """Whether the mass escaped (softening spring past its barrier) at each frequency: amplitude ``nan`` there."""
+        return ~np.isfinite(self.amplitude)
+
+
+def _check_omegas(omegas) -> np.ndarray:
+    w = _real_array("omegas", omegas, unit="rad/s", max_size=1_000_000).reshape(-1)
+    if np.any(w <= 0):
+        raise ParameterError(
+            f"omegas = {omegas!r:.60} is out of range: allowed non-empty, every omega > 0 rad/s, finite"
+        )
+    return w
+
+
+def _sweep_work(d: Duffing, F0: float, ws: np.ndarray, x0: float, min_periods: int, max_steps: int, name: str) -> None:
+    """Refuse up front a sweep whose first ``min_periods`` periods alone need more than ``max_steps`` steps.
+
+    An explicit Runge-Kutta pair needs ``h lambda`` within its stability interval (about 3.3
+    for Dormand-Prince 5(4)), ``lambda`` the fastest rate of the linearised oscillator, and at
+    least 16 steps per period (its largest step).
+    """
+    lam = _linear_rate(d, max(abs(x0), _x_ref(d, F0) if F0 > 0 else 0.0))
+    periods = 2.0 * np.pi / ws
+    with np.errstate(over="ignore"):
+        need = float(np.sum(min_periods * np.maximum(16.0, periods * lam / 3.3)))
+    if not need <= max_steps:
+        w_min = float(np.min(ws))
+        raise ParameterError(
+            f"{name} needs at least {need:.3g} integrator steps ({min_periods} forcing periods at each of "
+            f"{ws.size} frequencies, the lowest omega = {w_min:.3g} rad/s with period {2 * np.pi / w_min:.3g} s, "
+            f"step <= 3.3/lambda for the fastest rate lambda = {lam:.3g} 1/s: {_rates(d)}), more than "
+            f"max_steps = {max_steps}: allowed fewer frequencies, higher omega or a less stiff oscillator "
+            "(smaller c/m, k/m)"
+        )
+
+
+def frequency_sweep(
+    duffing: Duffing,
+    F0: float,
+    omegas,
+    direction: str,
+    *,
+    x0: float = 0.0,
+    v0: float = 0.0,
+    rtol: float = 1e-8,
+    atol: float | None = None,
+    steady_tol: float = 1e-6,
+    max_periods: int = 5000,
+    integrator: str = "compiled",
+    max_steps: int | None = None,
+) -> SweepResult:
+    """Stepped frequency sweep by time integration, each step from the previous steady state.
+
+    The frequencies are visited in ascending order (``"up"``) or descending (``"down"``);
+    the first starts from ``(x0, v0)`` and each next one from the state the previous one
+    ended in, at phase 0 of ``F0 cos(omega t)``. Whole forcing periods are integrated
+    until the stroboscopic state ``P_n = (x, v/omega)`` is steady: with ``d_n = |P_n -
+    P_{n-1}|`` and ``r`` the larger of the last two ratios ``d_n/d_{n-1}``, the geometric
+    estimate of the remaining drift ``d_n max(1, r/(1-r))`` must stay below ``steady_tol``
+    times the amplitude for two consecutive periods (``r < 1``). The amplitude is half the
+    peak-to-peak displacement over the last period, its extrema located inside the steps
+    by quintic Hermite interpolation. A frequency that does not settle within
+    ``max_periods`` (near a fold, subharmonic or chaotic motion) is flagged ``steady =
+    False``; a mass that escapes (softening spring past its barrier) gives ``nan`` and the
+    next frequency starts from rest.
+
+    Parameters
+    ----------
+    duffing : Duffing
+        The oscillator (c > 0).
+    F0 : float
+        Force amplitude, N (>= 0).
+    omegas : array_like
+        Forcing frequencies, rad/s (> 0), in any order; results are aligned with them.
+    direction : {"up", "down"}
+        Sweep direction.
+    x0, v0 : float
+        Initial displacement (m) and velocity (m/s) at the first frequency.
+    rtol : float
+        Relative tolerance of the integrator (1e-13 to 1e-2).
+    atol : float, optional
+        Absolute tolerance, m and m/s; default ``rtol`` times the static deflection ``F0/k``.
+    steady_tol : float
+        Steady criterion, relative to the amplitude (1e-12 to 1e-1).
+    max_periods : int
+        Most periods integrated per frequency (3 to 10^6).
+    integrator : {"compiled", "scipy"}
+        The compiled Dormand-Prince 5(4) (numba) or ``scipy.integrate.solve_ivp`` with
+        RK45 one period at a time (extrema from its events): the same method and error
+        control, for checking and timing.
+    max_steps : int, optional
+        Work budget: most integrator steps (accepted and rejected, all frequencies together);
+        default ``MAX_SWEEP_STEPS`` (compiled, a few seconds) or ``MAX_SCIPY_SWEEP_STEPS``
+        (scipy). A sweep that clearly needs more (a stiff oscillator, c/m or k/m large
+        against omega, or a very low omega) is refused before it starts; one that spends the
+        budget stops with a :class:`ParameterError` naming the frequency it reached.
+
+    Returns
+    -------
+    SweepResult
+        ``escaped`` flags the frequencies where the mass escaped (amplitude ``nan``).
+
+    Examples
+    --------
+    >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
+    >>> w = np.linspace(4.6, 5.4, 9)
+    >>> up, down = frequency_sweep(d, 5.0, w, "up"), frequency_sweep(d, 5.0, w, "down")
+    >>> np.round(up.amplitude, 2)       # m
+    array([1.53, 1.65, 1.76, 1.86, 1.95, 1.97, 0.74, 0.63, 0.55])
+    >>> np.round(down.amplitude, 2)     # m
+    array([1.53, 1.65, 1.76, 1.86, 1.95, 0.94, 0.74, 0.63, 0.55])
+    >>> bool(up.steady.all() and down.steady.all())
+    True
+    """
+    d = _check_duffing(duffing)
+    _check_damped(d)
+    F0 = check_real("F0", F0, low=0.0, unit="N")
+    w = _check_omegas(omegas)
+    if not isinstance(direction, str) or direction not in ("up", "down"):
+        raise ParameterError(f"direction = {direction!r:.60} is not valid: allowed 'up' or 'down'")
+    x0 = check_real("x0", x0, unit="m")
+    v0 = check_real("v0", v0, unit="m/s")
+    rtol = check_real("rtol", rtol, low=1e-13, high=1e-2)
+    xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
+    atol = rtol * xr if atol is None else check_real("atol", atol, low=0.0, low_open=True, unit="m")
+    steady_tol = check_real("steady_tol", steady_tol, low=1e-12, high=0.1)
+    max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
+    if not isinstance(integrator, str) or integrator not in ("compiled", "scipy"):
+        raise ParameterError(f"integrator = {integrator!r:.60} is not valid: allowed 'compiled' or 'scipy'")
+    limit = MAX_SWEEP_STEPS if integrator == "compiled" else MAX_SCIPY_SWEEP_STEPS
+    max_steps = limit if max_steps is None else check_int("max_steps", max_steps, low=1, high=limit)
+    _sweep_work(d, F0, w, x0, 3, max_steps, "frequency_sweep")
+    order = np.argsort(w, kind="stable")
+    if direction == "down":
+        order = order[::-1]
+    ws = np.ascontiguousarray(w[order])
+    nw = ws.size
+    amp, xmax, xmin = np.empty(nw), np.empty(nw), np.empty(nw)
+    steady, periods, nsteps = np.zeros(nw, dtype=np.bool_), np.zeros(nw, dtype=np.int64), np.zeros(nw, np.int64)
+    xs, vs = np.empty(nw), np.empty(nw)
+    blow_up = 1e3 * max(xr, abs(x0), d.barrier if math.isfinite(d.barrier) else 0.0)
+    args = (d.m, d.c, d.k, d.k3, F0, ws, x0, v0, rtol, atol, steady_tol, 3, max_periods, blow_up)
+    outs = (amp, xmax, xmin, steady, periods, xs, vs, nsteps)
+    if integrator == "compiled":
+        status, j = _sweep_kernel()(*args, *outs, max_steps)
+    else:
+        status, j = _sweep_scipy(*args, *outs, max_steps)
+    if status != 0:
+        raise ParameterError(
+            f"frequency_sweep spent its budget of max_steps = {max_steps} integrator steps at omega = {ws[j]:.6g} "
+            f"rad/s (frequency {j + 1} of {nw} in sweep order, {periods[j]} periods there; {_rates(d)}): allowed "
+            "fewer frequencies, a smaller max_periods, a looser steady_tol or rtol, or a less stiff oscillator"
+        )
+    inv = np.empty_like(order)
+    inv[order] = np.arange(nw)
+    return SweepResult(
+        omega=w.copy(),
+        amplitude=amp[inv],
+        x_max=xmax[inv],
+        x_min=xmin[inv],
+        steady=steady[inv],
+        periods=periods[inv],
+        x_end=xs[inv],
+        v_end=vs[inv],
+        direction=direction,
+        n_steps=nsteps[inv],
+    )
+
+
+def sweep(duffing: Duffing, F0: float, omegas, direction: str) -> np.ndarray:
+    """Steady amplitudes of a stepped frequency sweep by time integration, m.
+
+    :func:`frequency_sweep` with its defaults (see there for the steady criterion);
+    ``amplitude[i]`` belongs to ``omegas[i]`` whatever the direction.
+
+    Parameters
+    ----------
+    duffing : Duffing
+        The oscillator (c > 0).
+    F0 : float
+        Force amplitude of ``F0 cos(omega t)``, N (>= 0).
+    omegas : array_like
+        Forcing frequencies, rad/s (> 0).
+    direction : {"up", "down"}
+        Visit the frequencies in ascending or descending order.
+
+    Returns
+    -------
+    numpy.ndarray
+        Half the peak-to-peak displacement over the last period at each frequency, m.
+
+    Examples
+    --------
+    >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
+    >>> np.round(sweep(d, 5.0, [5.0, 5.1], "up"), 3)      # m: on the upper branch at 5.1 rad/s
+    array([1.951, 1.968])
+    >>> np.round(sweep(d, 5.0, [5.0, 5.1], "down"), 3)    # m: from rest onto the lower one, then up at 5.0
+    array([1.951, 0.938])
+    """
+    return frequency_sweep(duffing, F0, omegas, direction).amplitude
+
+
+def locate_jump(
+    duffing: Duffing,
+    F0: float,
+    result: SweepResult,
+    which: int = 0,
+    levels: int = 2,
+    n: int = 10,
+    max_periods: int = 5000,
+):
+    """Narrow a jump of a sweep down by re-sweeping its bracket on finer and finer grids.
+
+    Starting from the steady state just before the jump, the bracket ``(omega_before,
+    omega_after)`` is swept again in the same direction with ``n`` steps, the new bracket
+    is the step where the amplitude jumps, and so on ``levels`` times: the bracket shrinks
+    by ``n^levels``. Near a fold the response settles slowly (critical slowing down), so
+    ``max_periods`` is raised to 20000 here.
+
+    Parameters
+    ----------
+    duffing : Duffing
+        The oscillator of the sweep.
+    F0 : float
+        Force amplitude of the sweep, N.
+    result : SweepResult
+        A sweep with at least one jump.
+    which : int
+        Which jump, in sweep order (0 first).
+    levels : int
+        Refinements (0 to 8).
+    n : int
+        Steps per refinement (2 to 1000).
+
+    Returns
+    -------
+    tuple of float
+        ``(omega_before, omega_after)``, rad/s: the last frequency on the old branch and the
+        first on the new one; the jump lies between them.
+
+    Examples
+    --------
+    >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
+    >>> up = frequency_sweep(d, 5.0, np.linspace(4.6, 5.4, 9), "up")
+    >>> lo, hi = locate_jump(d, 5.0, up)
+    >>> round(lo, 3), round(hi - lo, 6)       # rad/s, rad/s
+    (5.107, 0.001)
+    """
+    d = _check_duffing(duffing)
+    _check_damped(d)
+    F0 = check_real("F0", F0, low=0.0, unit="N")
+    if not isinstance(result, SweepResult):
+        raise ParameterError(f"result = {result!r:.60} is not a SweepResult: allowed the output of frequency_sweep")
+    max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
+    jumps = result.jumps()
+    which = check_int("which", which, low=0, high=max(len(jumps) - 1, 0))
+    if not jumps:
+        raise ParameterError("result has no jump: allowed a sweep whose amplitude jumps")
+    levels = check_int("levels", levels, low=0, high=8)
+    n = check_int("n", n, low=2, high=1000)
+    w_before, w_after, *_ = jumps[which]
+    i = int(np.flatnonzero(result.omega == w_before)[0])
+    x, v = float(result.x_end[i]), float(result.v_end[i])
+    budget = MAX_SWEEP_STEPS  # shared by every level
+    for _ in range(levels):
+        ws = np.linspace(w_before, w_after, n + 1)
+        if budget < 1:
+            raise ParameterError(
+                f"locate_jump spent its budget of {MAX_SWEEP_STEPS} integrator steps with levels = {levels}, "
+                f"n = {n}: allowed fewer levels or steps per level"
+            )
+        res = frequency_sweep(d, F0, ws, result.direction, x0=x, v0=v, max_periods=max_periods, max_steps=budget)
+        budget -= int(res.n_steps.sum())
+        order = np.argsort(ws) if result.direction == "up" else np.argsort(ws)[::-1]
+        amps = res.amplitude[order]
+        a0 = amps[0]
+        found = False
+        for j in range(1, n + 1):
+            if abs(amps[j] - a0) > 0.25 * max(amps[j], a0) or not np.isfinite(amps[j]):
+                k_prev = order[j - 1]
+                w_before, w_after = float(ws[k_prev]), float(ws[order[j]])
+                x, v = float(res.x_end[k_prev]), float(res.v_end[k_prev])
+                found = True
+                break
+            a0 = amps[j]
+        if not found:  # the finer sweep crossed without jumping: keep the last bracket
+            break
+    return w_before, w_after
+
+
+def _sweep_scipy(
+    m,
+    c,
+    k,
+    k3,
+    F0,
+    omegas,
+    x0,
+    v0,
+    rtol,
+    atol,
+    steady_tol,
+    min_periods,
+    max_periods,
+    blow_up,
+    amp,
+    xmax_out,
+    xmin_out,
+    steady,
+    periods,
+    xs,
+    vs,
+    nsteps,
+    max_steps,
+):
+    """The sweep of the compiled kernel with ``solve_ivp(method="RK45")``, one period per call.
+
+    Returns ``(status, j)`` as the kernel: status 1 when about ``max_steps`` steps (counted as
+    right-hand-side evaluations / 6) are spent, at frequency j.
+    """
+    from scipy.integrate import solve_ivp
+
+    x, v = x0, v0
+    budget = _Counted(None, 6 * max_steps)
+    for j, w in enumerate(omegas):
+        T = 2.0 * math.pi / w
+
+        def rhs(t, y, w=w):
+            budget.calls += 1
+            if budget.calls > budget.limit:
+                raise _OverBudget
+            return (y[1], (F0 * math.cos(w * t) - c * y[1] - k * y[0] - k3 * y[0] ** 3) / m)
+
+        def turning(t, y):
+            return y[1]
+
+        d_prev, ok_prev, rho_prev, done, escaped, n, steps = -1.0, False, 1.0, False, False, 0, 0
+        xmax = xmin = x
+        while n < max_periods and not done:
+            try:
+                with np.errstate(over="ignore", invalid="ignore"):
+                    sol = solve_ivp(
+                        rhs, (0.0, T), (x, v), method="RK45", rtol=rtol, atol=atol, events=turning, max_step=T / 16
+                    )
+            except _OverBudget:
+                nsteps[j], periods[j] = steps, n
+                return 1, j
+            steps += sol.t.size - 1
+            if sol.status != 0 or not np.all(np.isfinite(sol.y[:, -1])) or np.max(np.abs(sol.y[0])) > blow_up:
+                escaped = True
+                break
+            xe = sol.y_events[0][:, 0] if sol.y_events[0].size else np.empty(0)
+            allx = np.concatenate([sol.y[0], xe])
+            xmax, xmin = float(allx.max()), float(allx.min())
+            px, pv = x, v
+            x, v = float(sol.y[0, -1]), float(sol.y[1, -1])
+            n += 1
+            dd = math.hypot(x - px, (v - pv) / w)
+            scale = max(0.5 * (xmax - xmin), atol)
+            rho = dd / d_prev if d_prev > 0 else (0.0 if dd == 0 else 1.0)
+            r = max(rho, rho_prev)
+            ok = dd == 0.0 or (r < 1.0 and dd * max(1.0, r / (1.0 - r)) <= steady_tol * scale)
+            done = ok and ok_prev and n >= min_periods
+            d_prev, ok_prev, rho_prev = dd, ok, rho
+        nsteps[j], periods[j] = steps, n
+        if escaped:
+            amp[j] = xmax_out[j] = xmin_out[j] = xs[j] = vs[j] = math.nan
+            steady[j] = False
+            x, v = 0.0, 0.0
+        else:
+            amp[j], xmax_out[j], xmin_out[j], steady[j], xs[j], vs[j] = 0.5 * (xmax - xmin), xmax, xmin, done, x, v
+    return 0, len(omegas)
+
+
+# ------------------------------------------------------------------- periodic orbits and Floquet
