@@ -250,13 +250,13 @@ def test_rate_change_is_named_where_it_happens(tmp_path):
 
 def test_absurd_file_size_and_missing_file(tmp_path, monkeypatch):
     path = _write(tmp_path, "\n".join(_good_rows()))
-    monkeypatch.setattr(twin, "MAX_BYTES", 100)
+    monkeypatch.setattr(twin.measurements, "MAX_BYTES", 100)
     with pytest.raises(ParameterError, match="bytes: allowed at most 100"):
         load_measurements(path)
     with pytest.raises(ParameterError, match="cannot be read"):
         load_measurements(tmp_path / "absent.csv")
-    monkeypatch.setattr(twin, "N_POINTS_MAX", 30)
-    monkeypatch.setattr(twin, "MAX_BYTES", 10**9)
+    monkeypatch.setattr(twin.measurements, "N_POINTS_MAX", 30)
+    monkeypatch.setattr(twin.measurements, "MAX_BYTES", 10**9)
     with pytest.raises(ParameterError, match="40 data rows: allowed 32 to 30"):
         load_measurements(path)
 
