@@ -1049,6 +1049,9 @@ def _sa_params(osc, law, c_sky, c_min, c_max, damper):
 #: Largest number of fixed RK4 steps of one semi-active run (about 8 s at 400 ns a step).
 RK4_STEPS_MAX = 20_000_000
 
+#: Largest total number of RK4 steps of one sweep (parallel over the frequencies: about 20 s on two cores).
+SWEEP_STEPS_MAX = 100_000_000
+
 _KERNEL = None
 _nb_device = _nb_rhs = _nb_run = None
 _prange = range
@@ -1430,10 +1433,10 @@ def semi_active_sweep(
         # start in the steady state of the linear loop (c_start to the base, sky to the frame)
         h = (osc.k + 1j * osc.c * w) / (osc.k - osc.m * w * w + 1j * (c_start + sky) * w) * Y
         s0s[j, :2] = h.imag, w * h.real
-    if n_steps.sum() > 2 * RK4_STEPS_MAX:
+    if n_steps.sum() > SWEEP_STEPS_MAX:
         raise ParameterError(
             f"omegas has {ws.size} frequencies needing {int(n_steps.sum())} RK4 steps in all: "
-            f"allowed at most {2 * RK4_STEPS_MAX} (fewer frequencies, periods or steps_per_period)"
+            f"allowed at most {SWEEP_STEPS_MAX} (fewer frequencies, periods or steps_per_period)"
         )
     st = _sa_kernel()[1](law_i, p, Y, ws, s0s, dts, n_steps, n_settle)
     if not np.all(np.isfinite(st)):
