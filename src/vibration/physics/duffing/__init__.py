@@ -40,7 +40,15 @@ The package is split by concept: :mod:`.model` (the record, budgets, time respon
 
 from __future__ import annotations
 
-from .chaos import LyapunovResult, lyapunov_benettin, lyapunov_qr, poincare_section
+from .chaos import (
+    LyapunovEstimate,
+    LyapunovResult,
+    lyapunov_benettin,
+    lyapunov_estimate,
+    lyapunov_qr,
+    poincare_section,
+    pooled_exponent,
+)
 from .harmonic_balance import Folds, backbone, folds, hb_amplitudes, linear_trust_amplitude, response_curve
 
 # work budgets, and the input helpers that other physics modules import from here
@@ -57,26 +65,32 @@ from .model import (
     _real_array,  # noqa: F401
     duffing_response,
 )
-from .orbits import PeriodicOrbit, periodic_orbit
+from .orbits import OrbitBranch, OrbitFold, PeriodicOrbit, continue_orbits, periodic_orbit
 from .sweeps import SweepResult, frequency_sweep, locate_jump, sweep
 
 __all__ = [
     "Duffing",
     "Folds",
+    "LyapunovEstimate",
     "LyapunovResult",
+    "OrbitBranch",
+    "OrbitFold",
     "PeriodicOrbit",
     "SweepResult",
     "backbone",
+    "continue_orbits",
     "duffing_response",
     "folds",
     "frequency_sweep",
     "hb_amplitudes",
     "linear_trust_amplitude",
     "lyapunov_benettin",
+    "lyapunov_estimate",
     "locate_jump",
     "lyapunov_qr",
     "periodic_orbit",
     "poincare_section",
+    "pooled_exponent",
     "response_curve",
     "sweep",
 ]

@@ -234,3 +234,244 @@ def _shoot(d: Duffing, F0: float, w: float, x: float, v: float, rtol: float, max
         residual=res,
         iterations=it,
     )
+
+
+# ------------------------------------------------------------------------ continuation and folds
+
+
+@dataclass(frozen=True)
+class OrbitFold:
+    """A fold (saddle-node) of the periodic orbit of the full equation: the branch turns back in omega."""
+
+    omega: float  # fold frequency, rad/s
+    amplitude: float  # half the peak-to-peak displacement of the orbit there, m
+    multiplier: float  # the Floquet multiplier closest to +1 at the located fold (1 at an exact fold)
+    det: float  # det(M - I) at the located fold (0 at an exact fold)
+
+
+@dataclass(frozen=True)
+class OrbitBranch:
+    """Periodic orbits of the forcing period along a branch, by pseudo-arclength continuation in omega."""
+
+    omega: np.ndarray  # forcing frequency of each point, rad/s (in order along the branch)
+    amplitude: np.ndarray  # half the peak-to-peak displacement, m
+    x0: np.ndarray  # displacement at phase 0 of the forcing, m
+    v0: np.ndarray  # velocity at phase 0, m/s
+    max_multiplier: np.ndarray  # largest |Floquet multiplier| at each point
+    folds: tuple[OrbitFold, ...]  # where the branch turns, in order along it
+
+    @property
+    def stable(self) -> np.ndarray:
+        """Both multipliers inside the unit circle at each point."""
+        return self.max_multiplier < 1.0
+
+
+def _orbit_map(d: Duffing, F0: float, z: np.ndarray, rtol: float, budget, events: bool = False):
+    """``G = P(x, v) - (x, v)`` and the monodromy matrix ``M`` at ``z = (x, v, omega)`` (and the amplitude)."""
+    sol = _flow_period(d, F0, float(z[2]), float(z[0]), float(z[1]), rtol, events=events, budget=budget)
+    yT = sol.y[:, -1]
+    G = np.array([yT[0] - z[0], yT[1] - z[1]])
+    M = np.array([[yT[2], yT[4]], [yT[3], yT[5]]])
+    amp = math.nan
+    if events:
+        xe = sol.y_events[0][:, 0] if sol.y_events[0].size else sol.y[0]
+        xa = np.concatenate([xe, sol.y[0]])
+        amp = 0.5 * float(xa.max() - xa.min())
+    return G, M, amp
+
+
+def continue_orbits(
+    duffing: Duffing,
+    F0: float,
+    omega_start: float,
+    omega_end: float,
+    amplitude_guess: float | None = None,
+    *,
+    step: float = 0.05,
+    max_points: int = 400,
+    rtol: float = 1e-10,
+) -> OrbitBranch:
+    """Follow the periodic orbit of the full equation from ``omega_start`` until omega leaves the range.
+
+    Pseudo-arclength continuation (Keller) of the shooting equations ``P(x0, v0; omega) =
+    (x0, v0)`` in the scaled unknowns ``(x0/a, v0/(a omega_start), omega/|omega_end -
+    omega_start|)``: an Euler predictor along the tangent, Newton correction on the hyperplane
+    normal to it (the monodromy matrix ``M`` from the variational equations, ``dP/domega`` by a
+    forward difference), the step halved when Newton fails and lengthened when it converges fast.
+    The tangent's omega component is proportional to ``det(M - I)``, so the branch turns in
+    omega exactly where a Floquet multiplier passes +1: each sign change is a fold, located by
+    the secant (Illinois) method on ``det(M - I)`` along the branch.
+
+    Parameters
+    ----------
+    duffing : Duffing
+        The oscillator (c > 0).
+    F0 : float
+        Force amplitude, N (> 0).
+    omega_start, omega_end : float
+        Start of the branch and the frequency it is followed to, rad/s (> 0, different); the
+        branch stops when omega leaves the interval between them.
+    amplitude_guess : float, optional
+        One-harmonic amplitude of the starting orbit, m (default as :func:`periodic_orbit`).
+    step : float
+        Largest arclength step in the scaled unknowns (1e-4 to 0.5).
+    max_points : int
+        Most points along the branch (10 to 5000).
+    rtol : float
+        Relative tolerance of DOP853 (1e-12 to 1e-7).
+
+    Returns
+    -------
+    OrbitBranch
+
+    Examples
+    --------
+    >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
+    >>> b = continue_orbits(d, 5.0, 4.9, 5.25)
+    >>> [round(f.omega, 4) for f in b.folds]           # rad/s: the branch turns twice
+    [5.1079, 5.0447]
+    """
+    d = _check_duffing(duffing)
+    if d.c <= 0.0:
+        raise ParameterError(f"c = {d.c!r} N s/m is out of range: allowed c > 0 N s/m (continuation needs damping)")
+    F0 = check_real("F0", F0, low=0.0, low_open=True, unit="N")
+    w0 = check_real("omega_start", omega_start, low=0.0, low_open=True, unit="rad/s")
+    w1 = check_real("omega_end", omega_end, low=0.0, low_open=True, unit="rad/s")
+    if w0 == w1:
+        raise ParameterError(f"omega_end = {w1!r} rad/s equals omega_start: allowed a different frequency")
+    step = check_real("step", step, low=1e-4, high=0.5)
+    max_points = check_int("max_points", max_points, low=10, high=5000)
+    rtol = check_real("rtol", rtol, low=1e-12, high=1e-7)
+    orb = periodic_orbit(d, F0, w0, amplitude_guess, rtol=rtol)
+    budget = _Counted(None, 400 * MAX_RHS_EVALUATIONS)
+    a = max(orb.amplitude, 1e-300)
+    scale = np.array([a, a * w0, abs(w1 - w0)])  # physical = scale * scaled
+    lo, hi = min(w0, w1), max(w0, w1)
+
+    def jac(z, G, M):
+        """The 2 x 3 Jacobian of the scaled residual at z (physical), from M and a difference in omega."""
+        dw = 1e-7 * z[2]
+        G2, _, _ = _orbit_map(d, F0, z + np.array([0.0, 0.0, dw]), rtol, budget)
+        J = np.column_stack([M - np.eye(2), (G2 - G) / dw]) * scale  # d G / d scaled
+        return J / scale[:2, None]  # rows scaled as the unknowns
+
+    def tangent(J, prev):
+        t = np.cross(J[0], J[1])
+        t /= np.linalg.norm(t)
+        return t if prev is None or np.dot(t, prev) >= 0 else -t
+
+    def correct(z0, t0, h):
+        """Newton on G = 0 and t0 . (Z - Z0 - h t0) = 0; returns (z, G, M, J) or None."""
+        zp = z0 + h * t0 * scale
+        z = zp.copy()
+        J = None
+        for it in range(8):
+            G, M, _ = _orbit_map(d, F0, z, rtol, budget)
+            if not (np.all(np.isfinite(G)) and np.all(np.isfinite(M))):
+                return None
+            if it == 0 or J is None:
+                J = jac(z, G, M)
+            else:
+                J[:, :2] = (M - np.eye(2)) * scale[:2] / scale[:2, None]
+            res = np.concatenate([G / scale[:2], [np.dot(t0, (z - zp) / scale)]])
+            if np.max(np.abs(res[:2])) < 1e-10 and abs(res[2]) < 1e-10:
+                return z, G, M, jac(z, G, M), it
+            try:
+                dz = np.linalg.solve(np.vstack([J, t0]), -res)
+            except np.linalg.LinAlgError:
+                return None
+            z = z + dz * scale
+            if not (lo - abs(w1 - w0) < z[2] and z[2] > 0):
+                return None
+        return None
+
+    z = np.array([orb.x0, orb.v0, w0])
+    G, M, amp = _orbit_map(d, F0, z, rtol, budget, events=True)
+    J = jac(z, G, M)
+    t = tangent(J, np.array([0.0, 0.0, 1.0 if w1 > w0 else -1.0]))
+    pts = [(z.copy(), amp, M.copy())]
+    folds = []
+    h = 0.2 * step
+    try:
+        while len(pts) < max_points:
+            out = correct(z, t, h)
+            if out is None:
+                h *= 0.5
+                if h < 1e-7:
+                    raise ParameterError(
+                        f"continue_orbits could not follow the branch past omega = {z[2]:.6g} rad/s (Newton "
+                        "fails for every step): allowed a smaller step or another starting frequency"
+                    )
+                continue
+            zn, Gn, Mn, Jn, its = out
+            tn = tangent(Jn, t)
+            if np.sign(tn[2]) != np.sign(t[2]) and tn[2] != 0.0:
+                folds.append(_locate_fold(d, F0, z, t, h, correct, rtol, budget))
+            _, _, amp = _orbit_map(d, F0, zn, rtol, budget, events=True)
+            pts.append((zn.copy(), amp, Mn.copy()))
+            z, t = zn, tn
+            h = min(step, h * (1.5 if its <= 3 else 1.0))
+            if not lo <= z[2] <= hi:
+                break
+    except _OverBudget:
+        raise ParameterError(
+            f"continue_orbits spent its budget of {budget.limit} right-hand-side evaluations at omega = "
+            f"{z[2]:.6g} rad/s ({_rates(d)}): allowed a narrower frequency range or a larger step"
+        ) from None
+    zs = np.array([p[0] for p in pts])
+    mus = np.array([max(abs(m) for m in np.linalg.eigvals(p[2])) for p in pts])
+    return OrbitBranch(
+        omega=zs[:, 2],
+        amplitude=np.array([p[1] for p in pts]),
+        x0=zs[:, 0],
+        v0=zs[:, 1],
+        max_multiplier=mus,
+        folds=tuple(folds),
+    )
+
+
+def _locate_fold(d, F0, z, t, h, correct, rtol, budget) -> OrbitFold:
+    """The fold between ``z`` and the point one step ``h`` along ``t``: det(M - I) = 0 by the Illinois method."""
+
+    def f(s):
+        out = correct(z, t, s)
+        if out is None:
+            return math.nan, None
+        zn, _, Mn, _, _ = out
+        return float(np.linalg.det(Mn - np.eye(2))), out
+
+    fa, _ = f(0.0)
+    fb, outb = f(h)
+    sa, sb = 0.0, h
+    side = 0
+    best = outb
+    for _ in range(40):
+        if not (math.isfinite(fa) and math.isfinite(fb)) or fa == fb:
+            break
+        s = sb - fb * (sb - sa) / (fb - fa)
+        fs, out = f(s)
+        if out is None:
+            break
+        best = out
+        if abs(fs) < 1e-12 or abs(sb - sa) < 1e-13:
+            break
+        if (fs > 0) == (fb > 0):
+            sb, fb = s, fs
+            if side == -1:
+                fa *= 0.5
+            side = -1
+        else:
+            sa, fa = s, fs
+            if side == 1:
+                fb *= 0.5
+            side = 1
+    zf, _, Mf, _, _ = best
+    _, _, amp = _orbit_map(d, F0, zf, rtol, budget, events=True)
+    mu = np.linalg.eigvals(Mf)
+    closest = mu[np.argmin(np.abs(mu - 1.0))]
+    return OrbitFold(
+        omega=float(zf[2]),
+        amplitude=amp,
+        multiplier=float(closest.real),
+        det=float(np.linalg.det(Mf - np.eye(2))),
+    )
