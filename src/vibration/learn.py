@@ -62,6 +62,8 @@ from .physics.learning import (
     train,
     zoh,
 )
+from .physics.learning.disturbance import best_fixed_gain, cost_hessian, exosystem_optimum
+from .physics.learning.studies import identify_then_design, robustness_study, seed_study
 from .physics.model import ParameterError
 
 __all__ = [
@@ -73,14 +75,20 @@ __all__ = [
     "PassiveOptimum",
     "Rollouts",
     "TrainingResult",
+    "best_fixed_gain",
     "best_passive_damping",
+    "cost_hessian",
     "episode_costs",
+    "exosystem_optimum",
+    "identify_then_design",
     "expected_cost",
     "lqr_reference",
     "peak_force",
     "resonance_task",
+    "robustness_study",
     "rollout",
     "sample_initial_states",
+    "seed_study",
     "semi_active_task",
     "train",
     "zoh",

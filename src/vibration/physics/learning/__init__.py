@@ -47,13 +47,14 @@ weights ``Q = dt diag(q_x, q_v)``, ``R = dt r`` (the same stage cost as the envi
 :func:`expected_cost` evaluates any linear force-mode law exactly (covariance recursion from the
 uniform initial distribution plus the deterministic forced response), and certifies with
 :func:`peak_force` that the bound ``u_max`` never binds. :func:`train` learns the two gains from
-episodes only (model-free): basic random search with antithetic directions and top-``b``
-selection (ARS V1-t, Mania et al. 2018) or CMA-ES (Hansen's ``cma`` package), every candidate of
+episodes only (model-free): augmented random search with antithetic directions, top-``b``
+selection and steps scaled by the spread of the returns (ARS V1-t, Mania et al. 2018) or CMA-ES (Hansen's ``cma`` package), every candidate of
 an iteration scored on the same freshly drawn initial states (common random numbers).
 """
 
 from __future__ import annotations
 
+from . import disturbance, studies  # noqa: F401 - the disturbed task's references, studies
 from .comparisons import (  # noqa: F401 - reachable as vibration.physics.learning.NAME
     Comparison,
     compare_controllers,

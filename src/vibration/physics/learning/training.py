@@ -133,8 +133,8 @@ def train(
     vector of the iteration on those same states (common random numbers), by running the
     environment's dynamics; the learner never sees the model. Methods:
 
-    * ``"ars"``: basic random search, Mania, Guy and Recht (2018), "Simple random search provides a
-      competitive approach to reinforcement learning", algorithm V1-t: ``n_directions``
+    * ``"ars"``: augmented random search (ARS), Mania, Guy and Recht (2018), "Simple random search
+      provides a competitive approach to reinforcement learning", algorithm V1-t: ``n_directions``
       antithetic Gaussian perturbations of size ``noise`` (gain units), the ``top`` best kept,
       step ``step / (top sigma_R) sum (R+ - R-) delta`` with ``sigma_R`` the standard deviation of
       the kept returns.
