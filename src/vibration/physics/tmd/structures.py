@@ -1,0 +1,211 @@
+"""Models built from MDOF records: modal damping, the shear building, absorbers on a structure."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..checks import check_array
+from ..model import ParameterError, check_real
+from ._limits import N_DOF_MAX, ZETA_MAX, ZETA_P_OPT_MAX
+from .mdof import MDOF, _matrix
+from .tuning import TMDTuning, den_hartog, h2_tuning, hinf_tuning
+
+
+def modal_damping_matrix(M, K, zeta) -> np.ndarray:
+    """Classical damping matrix C = M Φ diag(2 ζ_i ω_i) Φᵀ M with given modal damping ratios.
+
+    Parameters
+    ----------
+    M, K : array_like
+        Mass (kg) and stiffness (N/m) matrices, symmetric positive definite.
+    zeta : float or array_like
+        Damping ratio of every mode (or one per mode, ascending frequency), 1 (0 to 10).
+
+    Returns
+    -------
+    numpy.ndarray
+        C, N s/m.
+
+    Examples
+    --------
+    >>> C = modal_damping_matrix([[1.0]], [[20.0]], 0.0559)
+    >>> round(float(C[0, 0]), 3)
+    0.5
+    """
+    model = MDOF(M, np.zeros_like(_matrix("M", M, None)), K)
+    z = check_array("zeta", zeta, low=0.0, high=ZETA_MAX, ndim=(0, 1), max_size=N_DOF_MAX)
+    if z.size not in (1, model.n):
+        raise ParameterError(f"zeta has {z.size} values: allowed 1 or one per mode ({model.n})")
+    z = np.broadcast_to(z, (model.n,))
+    w, phi = model.natural_frequencies, model.modes
+    Mphi = model.M @ phi
+    C = Mphi @ np.diag(2.0 * z * w) @ Mphi.T
+    return 0.5 * (C + C.T)
+
+
+def shear_building(masses, stiffnesses, zeta=0.05) -> MDOF:
+    """Shear building: floor masses on storeys of given lateral stiffness, classical modal damping.
+
+    Degree of freedom i is floor i + 1 counted from the ground (the last is the roof);
+    storey i joins floor i to the floor below (the ground for i = 0).
+
+    Parameters
+    ----------
+    masses : array_like
+        Floor masses, kg (> 0), ground floor first.
+    stiffnesses : array_like
+        Storey stiffnesses, N/m (> 0), same length.
+    zeta : float or array_like
+        Modal damping ratio of every mode (or one per mode), 1.
+
+    Returns
+    -------
+    MDOF
+
+    Examples
+    --------
+    >>> b = shear_building([1.0, 1.0], [1.0, 1.0], zeta=0.0)
+    >>> b.K.tolist()
+    [[2.0, -1.0], [-1.0, 1.0]]
+    """
+    m = np.atleast_1d(check_array("masses", masses, low=0.0, low_open=True, max_size=N_DOF_MAX, unit="kg"))
+    k = np.atleast_1d(check_array("stiffnesses", stiffnesses, low=0.0, low_open=True, max_size=N_DOF_MAX, unit="N/m"))
+    if k.shape != m.shape:
+        raise ParameterError(
+            f"masses has {m.size} values and stiffnesses {k.size}: "
+            f"allowed two 1-D arrays of equal length 1..{N_DOF_MAX}"
+        )
+    n = m.size
+    K = np.zeros((n, n))
+    for i in range(n):
+        K[i, i] += k[i]
+        if i + 1 < n:
+            K[i, i] += k[i + 1]
+            K[i, i + 1] = K[i + 1, i] = -k[i + 1]
+    M = np.diag(m)
+    return MDOF(M, modal_damping_matrix(M, K, zeta), K)
+
+
+def add_absorber(model: MDOF, dof: int, m_a, k_a, c_a) -> MDOF:
+    """The model with an absorber (mass, spring, dashpot) attached to degree of freedom ``dof``.
+
+    The absorber is the new last degree of freedom.
+
+    Parameters
+    ----------
+    model : MDOF
+    dof : int
+        Index of the degree of freedom carrying it (negative counts from the end).
+    m_a, k_a, c_a : float
+        Absorber mass (kg, > 0), stiffness (N/m, > 0), damping (N s/m, >= 0).
+
+    Returns
+    -------
+    MDOF
+
+    Examples
+    --------
+    >>> s = add_absorber(MDOF([[1.0]], [[0.0]], [[20.0]]), 0, 0.05, 0.9, 0.01)
+    >>> s.n, s.is_classically_damped
+    (2, False)
+    """
+    if not isinstance(model, MDOF):
+        raise ParameterError(f"model = {model!r} is not an MDOF: allowed MDOF(M, C, K)")
+    n = model.n
+    if isinstance(dof, bool) or not isinstance(dof, int | np.integer) or not -n <= dof < n:
+        raise ParameterError(f"dof = {dof!r} is out of range: allowed an integer -{n} <= dof < {n}")
+    j = int(dof) % n
+    m_a = check_real("m_a", m_a, low=0.0, low_open=True, unit="kg")
+    k_a = check_real("k_a", k_a, low=0.0, low_open=True, unit="N/m")
+    c_a = check_real("c_a", c_a, low=0.0, unit="N s/m")
+    M, C, K = (np.zeros((n + 1, n + 1)) for _ in range(3))
+    M[:n, :n], C[:n, :n], K[:n, :n] = model.M, model.C, model.K
+    M[n, n] = m_a
+    for A, v in ((C, c_a), (K, k_a)):
+        A[j, j] += v
+        A[n, n] += v
+        A[j, n] -= v
+        A[n, j] -= v
+    return MDOF(M, C, K)
+
+
+def tmd_system(m, c, k, tuning: TMDTuning) -> MDOF:
+    """Two-degree-of-freedom model: the primary (m kg, c N s/m, k N/m) and the absorber of ``tuning``.
+
+    Degree of freedom 0 is the primary, 1 the absorber.
+
+    Examples
+    --------
+    >>> s = tmd_system(1.0, 0.5, 20.0, den_hartog(0.05))
+    >>> s.n, round(float(s.M[1, 1]), 3)
+    (2, 0.05)
+    """
+    if not isinstance(tuning, TMDTuning):
+        raise ParameterError(f"tuning = {tuning!r} is not a TMDTuning: allowed den_hartog(...), hinf_tuning(...)")
+    m = check_real("m", m, low=0.0, low_open=True, unit="kg")
+    c = check_real("c", c, low=0.0, unit="N s/m")
+    k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
+    return add_absorber(MDOF([[m]], [[c]], [[k]]), 0, *tuning.absorber(m, k))
+
+
+@dataclass(frozen=True)
+class ModeAbsorber:
+    """An absorber tuned to one mode of an MDOF structure through its equivalent single-degree-of-freedom system."""
+
+    tuning: TMDTuning  # tuning on the equivalent primary (mass ratio to the modal mass)
+    modal_mass: float  # generalised mass of the mode normalised to 1 at the carrying degree of freedom, kg
+    omega: float  # natural frequency of the mode, rad/s
+    zeta: float  # damping ratio of the mode, 1
+    m_a: float  # absorber mass, kg
+    k_a: float  # absorber stiffness, N/m
+    c_a: float  # absorber damping, N s/m
+
+
+def first_mode_absorber(model: MDOF, mu, dof: int = -1, rule: str = "H∞") -> ModeAbsorber:
+    """Absorber at ``dof`` tuned to the first mode (equivalent SDOF: modal mass, frequency, damping).
+
+    The first mode φ is scaled to 1 at ``dof``; the equivalent primary has mass
+    M1 = φᵀ M φ, stiffness ω1² M1 and the mode's damping ratio, and the absorber
+    mass is μ M1. The rule ("H∞": :func:`hinf_tuning` on the damped equivalent
+    primary, "Den Hartog", or "H2": :func:`h2_tuning`) gives f and ζ_a.
+
+    Parameters
+    ----------
+    model : MDOF
+        Classically damped structure.
+    mu : float
+        Absorber mass over the first modal mass, 1 (0 < mu <= 10).
+    dof : int
+        Degree of freedom carrying the absorber (default: the last, the roof).
+    rule : {"H∞", "Den Hartog", "H2"}
+
+    Returns
+    -------
+    ModeAbsorber
+
+    Examples
+    --------
+    >>> a = first_mode_absorber(MDOF([[1.0]], [[0.5]], [[20.0]]), 0.05)
+    >>> round(a.modal_mass, 3), round(a.zeta, 4), round(a.tuning.f, 4)
+    (1.0, 0.0559, 0.9331)
+    """
+    if not isinstance(model, MDOF):
+        raise ParameterError(f"model = {model!r} is not an MDOF: allowed MDOF(M, C, K)")
+    n = model.n
+    if isinstance(dof, bool) or not isinstance(dof, int | np.integer) or not -n <= dof < n:
+        raise ParameterError(f"dof = {dof!r} is out of range: allowed an integer -{n} <= dof < {n}")
+    rules = {"H∞": hinf_tuning, "Den Hartog": den_hartog, "H2": h2_tuning}
+    if rule not in rules:
+        raise ParameterError(f"rule = {rule!r} is not known: allowed 'H∞', 'Den Hartog', 'H2'")
+    phi = model.modes[:, 0]
+    if phi[dof] == 0.0:
+        raise ParameterError(f"dof = {dof}: the first mode does not move there, allowed a moving degree of freedom")
+    phi = phi / phi[dof]
+    m1 = float(phi @ model.M @ phi)
+    w1 = float(model.natural_frequencies[0])
+    z1 = float(model.modal_damping_ratios[0])
+    tuning = rules[rule](mu, zeta_p=min(z1, ZETA_P_OPT_MAX))
+    m_a, k_a, c_a = tuning.absorber(m1, w1 * w1 * m1)
+    return ModeAbsorber(tuning, m1, w1, z1, m_a, k_a, c_a)
