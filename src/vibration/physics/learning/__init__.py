@@ -48,8 +48,9 @@ weights ``Q = dt diag(q_x, q_v)``, ``R = dt r`` (the same stage cost as the envi
 uniform initial distribution plus the deterministic forced response), and certifies with
 :func:`peak_force` that the bound ``u_max`` never binds. :func:`train` learns the two gains from
 episodes only (model-free): augmented random search with antithetic directions, top-``b``
-selection and steps scaled by the spread of the returns (ARS V1-t, Mania et al. 2018) or CMA-ES (Hansen's ``cma`` package), every candidate of
-an iteration scored on the same freshly drawn initial states (common random numbers).
+selection and steps scaled by the spread of the returns (ARS V1-t, Mania et al. 2018) or CMA-ES
+(Hansen's ``cma`` package), every candidate of an iteration scored on the same freshly drawn
+initial states (common random numbers).
 """
 
 from __future__ import annotations
