@@ -657,10 +657,19 @@ def main(argv: list[str] | None = None) -> int:
         "--no-cache", action="store_true", help="execute every chapter, even those whose inputs did not change"
     )
     parser.add_argument("--list", action="store_true", help="list chapters and their parameters")
+    parser.add_argument(
+        "--new-chapter", metavar="NN_topic", help="write a new chapter from the template (package, notebook, test)"
+    )
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
     args = parser.parse_args(_protect_negative_values(sys.argv[1:] if argv is None else list(argv)))
     previous = signal.signal(signal.SIGTERM, _terminate)
     try:
+        if args.new_chapter:
+            from .template import new_chapter
+
+            for path in new_chapter(args.new_chapter, project_root()):
+                print(f"wrote {path.relative_to(project_root())}")
+            return 0
         chapters = select(discover(), args.chapters)
         if args.list:
             for ch in chapters:
