@@ -1,0 +1,387 @@
+"""PID position control with an actuator limit and three integrator treatments, integrated piecewise
+between switching events (with the sliding mode of clamping), and the exact unlimited loop."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..checks import check_array
+from ..model import Oscillator, ParameterError, SineForce, check_real
+from ..stability import _check_osc
+from ._common import (
+    EXPM_SAMPLES_MAX,
+    MAX_NFEV,
+    MAX_SEGMENTS,
+    RTOL_MAX,
+    RTOL_MIN,
+    _counted,
+    _grid,
+    _limit,
+    _over_budget,
+    _OverBudget,
+    _work_check,
+)
+
+ANTI_WINDUP = ("none", "clamping", "back-calculation")
+
+
+def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) -> tuple[np.ndarray, int]:
+    """Integrate the limited PID loop piece by piece between its switching events (DOP853 on each piece).
+
+    The pieces: ``L`` (linear, ``|u_d| < u_max``), ``S`` (saturated at ``s u_max``, ``s = +-1``;
+    with clamping the integrator is frozen while ``s e > 0``) and, with clamping, the sliding
+    mode ``Z`` on ``u_d = s u_max``: there the linear side pushes ``u_d`` into the limit and
+    the frozen side pulls it back, so the state sticks on the surface; Filippov's solution keeps
+    ``u_d = s u_max`` with the integrator rate ``I' = (kp v + kd a) / ki``. Each piece is smooth, so
+    DOP853 keeps its order; the pieces end at located events. Returns the states ``(3, n)`` on the
+    grid and the number of right-hand-side evaluations.
+    """
+    from scipy.integrate import solve_ivp
+
+    m, c, k, F0, wf = p["m"], p["c"], p["k"], p["F0"], p["wf"]
+    kp, ki, kd, umax, xr, mode, gbc = p["kp"], p["ki"], p["kd"], p["umax"], p["x_ref"], p["mode"], p["gain_bc"]
+    sin = math.sin
+
+    def acc(t, x, v, u):
+        return (F0 * sin(wf * t) - c * v - k * x + u) / m
+
+    def ud_of(x, v, i):
+        return kp * (xr - x) + ki * i - kd * v
+
+    def rhs_lin(t, y):
+        x, v, i = y
+        e = xr - x
+        return (v, acc(t, x, v, kp * e + ki * i - kd * v), e)
+
+    def make_sat(s, frozen):
+        u = s * umax
+
+        def rhs(t, y):
+            x, v, i = y
+            e = xr - x
+            if frozen:
+                di = 0.0
+            elif mode == 2:
+                di = e + (u - (kp * e + ki * i - kd * v)) * gbc
+            else:
+                di = e
+            return (v, acc(t, x, v, u), di)
+
+        return rhs
+
+    def make_slide(s):
+        u = s * umax
+
+        def rhs(t, y):
+            x, v, _ = y
+            a = acc(t, x, v, u)
+            return (v, a, (kp * v + kd * a) / ki)
+
+        return rhs
+
+    def ev(f, direction):
+        f.terminal, f.direction = True, direction
+        return f
+
+    def events(kind, s, frozen):
+        if kind == "L":
+            return [
+                ev(lambda t, y: ud_of(*y) - umax, 1.0),
+                ev(lambda t, y: ud_of(*y) + umax, -1.0),
+            ]
+        if kind == "S":
+            out = [ev(lambda t, y: s * ud_of(*y) - umax, -1.0)]
+            if mode == 1:  # the integrator law switches where e changes sign
+                out.append(ev(lambda t, y: xr - y[0], -s if frozen else s))
+            return out
+
+        def d_rate(t, y):  # rate of u_d with the integrator frozen, on the surface
+            return -kp * y[1] - kd * acc(t, y[0], y[1], s * umax)
+
+        return [
+            ev(lambda t, y: s * d_rate(t, y), 1.0),  # the frozen side no longer pulls back: into S
+            ev(lambda t, y: s * (d_rate(t, y) + ki * (xr - y[0])), -1.0),  # the linear side no longer pushes: into L
+        ]
+
+    def classify(t, y):
+        x, v, i = y
+        e = xr - x
+        ud = ud_of(x, v, i)
+        tol = 1e-9 * (umax + abs(kp * e) + abs(ki * i) + abs(kd * v))
+        for s in (1.0, -1.0):
+            gap = s * ud - umax
+            se = s * e if abs(e) > 1e-12 * (abs(xr) + abs(x)) else -s * v
+            if gap > tol:
+                return "S", s, mode == 1 and se > 0.0
+            if gap >= -tol:  # on the surface u_d = s u_max: the rates decide
+                d = -kp * v - kd * acc(t, x, v, s * umax)
+                r_lin = d + ki * e
+                if mode == 1 and se > 0.0:
+                    if s * r_lin <= 0.0:
+                        return "L", s, False
+                    return ("S", s, True) if s * d > 0.0 else ("Z", s, False)
+                return ("S", s, False) if s * r_lin > 0.0 else ("L", s, False)
+        return "L", 1.0, False
+
+    n = grid.size
+    out = np.empty((3, n))
+    filled, t0, y0 = 0, 0.0, np.zeros(3)
+    budget = [MAX_NFEV]
+    segments = 0
+    what = "PID loop"
+    nxt = None
+    while True:
+        if not math.isfinite(umax):
+            kind, s, frozen = "L", 1.0, False
+        else:
+            kind, s, frozen = nxt if nxt is not None else classify(t0, y0)
+        if kind == "Z":  # put the state exactly on the surface
+            y0 = y0.copy()
+            y0[2] = (s * umax - kp * (xr - y0[0]) + kd * y0[1]) / ki
+        f = rhs_lin if kind == "L" else make_sat(s, frozen) if kind == "S" else make_slide(s)
+        evs = events(kind, s, frozen) if math.isfinite(umax) else None
+        segments += 1
+        if segments > MAX_SEGMENTS:
+            raise ParameterError(
+                f"u_max = {umax!r} N: the limited PID loop switched more than {MAX_SEGMENTS} times by t = {t0:.6g} s "
+                "(chattering against the limit); allowed at most that many pieces: shorten t_end"
+            )
+        try:
+            with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused below
+                sol = solve_ivp(
+                    _counted(f, budget), (t0, t_end), y0, method="DOP853", t_eval=grid[filled:], rtol=rtol,
+                    atol=atol, events=evs,
+                )  # fmt: skip
+        except _OverBudget:
+            raise _over_budget(t0, t_end, what) from None
+        if sol.status < 0:  # an overflow makes DOP853 fail
+            break
+        m_new = len(sol.t)  # a list (empty) when the piece ends before the next sample
+        if m_new:
+            ys = sol.y
+            if kind == "Z":
+                ys = ys.copy()
+                ys[2] = (s * umax - kp * (xr - ys[0]) + kd * ys[1]) / ki
+            out[:, filled : filled + m_new] = ys
+            filled += m_new
+        if sol.status == 0 or filled >= n:
+            break
+        hit = next(j for j, te in enumerate(sol.t_events) if te.size)
+        t0, y0 = float(sol.t_events[hit][0]), np.array(sol.y_events[hit][0], dtype=float)
+        nxt = None
+        if kind == "Z":  # leaving the sliding mode: to the frozen side or to the linear side
+            nxt = ("S", s, True) if hit == 0 else ("L", s, False)
+        elif kind == "S" and hit == 1:  # e changed sign: the integrator law switches
+            nxt = ("S", s, not frozen)
+    if not np.all(np.isfinite(out[:, :filled])) or filled < n:
+        raise ParameterError(
+            f"t_end = {t_end!r} s: the PID loop's response overflowed (an unstable loop grows beyond floating point); "
+            "allowed inputs that keep it finite"
+        )
+    return out, MAX_NFEV - budget[0]
+
+
+@dataclass(frozen=True)
+class PIDResponse:
+    """PID loop response: ``u = sat(kp e + ki I - kd v)``, ``e = x_ref - x``, ``I' = e`` (+ anti-windup)."""
+
+    t: np.ndarray  # time, s
+    x: np.ndarray  # displacement, m
+    v: np.ndarray  # velocity, m/s
+    integral: np.ndarray  # integrator state I = int e dt (with anti-windup), m s
+    u: np.ndarray  # applied force, N
+    u_demand: np.ndarray  # unlimited PID output, N
+    anti_windup: str  # "none", "clamping" or "back-calculation"
+    u_max: float  # force limit, N (inf: none)
+    nfev: int  # right-hand-side evaluations
+
+    @property
+    def saturated_fraction(self) -> float:
+        """Fraction of the samples at which the actuator is at its limit, 1."""
+        return float(np.mean(np.abs(self.u_demand) > self.u_max))
+
+
+def pid_response(
+    osc: Oscillator,
+    force: SineForce | None,
+    kp: float,
+    ki: float,
+    kd: float,
+    *,
+    u_max: float | None = None,
+    anti_windup: str = "none",
+    t_track: float | None = None,
+    x_ref: float = 0.0,
+    t_end: float = 50.0,
+    n_points: int = 5001,
+    rtol: float = 1e-10,
+    atol: float = 1e-12,
+) -> PIDResponse:
+    """PID position control with an actuator force limit, integrated with DOP853.
+
+    ``u_d = kp e + ki I - kd v`` with ``e = x_ref - x`` (derivative on the measurement, so
+    a set-point step gives no derivative kick), ``u = clip(u_d, -u_max, u_max)``, and the
+    integrator ``I`` (m s) follows
+
+    * ``"none"``: ``I' = e`` (winds up while the actuator is saturated);
+    * ``"clamping"`` (conditional integration): ``I' = 0`` while saturated and ``e``
+      pushes further into the limit, else ``e``;
+    * ``"back-calculation"``: ``I' = e + (u - u_d) / (ki t_track)`` with tracking time
+      ``t_track`` (default ``sqrt(kd / ki)``, the geometric mean of the integral and
+      derivative times: Astrom and Hagglund, Advanced PID Control, 2006, sec. 3.5).
+
+    Parameters
+    ----------
+    osc : Oscillator
+        Plant: m (kg), c (N s/m), k (N/m).
+    force : SineForce or None
+        Disturbance force on the mass (N, rad/s).
+    kp, ki, kd : float
+        Gains: N/m, N/(m s) (> 0), N s/m.
+    u_max : float, optional
+        Actuator limit, N (> 0); none by default.
+    anti_windup : str
+        One of ``"none"``, ``"clamping"``, ``"back-calculation"``.
+    t_track : float, optional
+        Tracking time constant of back-calculation, s (> 0).
+    x_ref : float
+        Set point from t = 0 on, m (the mass starts at rest at x = 0).
+    t_end, n_points : float, int
+        Window (s) and uniform samples.
+    rtol, atol : float
+        Solver tolerances.
+
+    Examples
+    --------
+    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> r = pid_response(osc, None, 80.0, 100.0, 10.0, x_ref=0.1, t_end=20.0, n_points=201)
+    >>> round(float(r.x[-1]), 6)                        # m: integral action removes the offset
+    0.1
+    """
+    _check_osc(osc)
+    if force is not None and not isinstance(force, SineForce):
+        raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
+    kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
+    ki = check_real("ki", ki, low=0.0, low_open=True, unit="N/(m s)")
+    kd = check_real("kd", kd, unit="N s/m")
+    umax = _limit(u_max)
+    if anti_windup not in ANTI_WINDUP:
+        raise ParameterError(f"anti_windup = {anti_windup!r} is not supported: allowed one of {', '.join(ANTI_WINDUP)}")
+    if t_track is None:
+        tt = math.sqrt(abs(kd)) / math.sqrt(ki) if kd != 0.0 else 1.0 / math.sqrt(ki)
+    else:
+        tt = check_real("t_track", t_track, low=0.0, low_open=True, unit="s")
+    if not (tt > 0.0 and math.isfinite(1.0 / (ki * tt))):
+        raise ParameterError(
+            f"t_track = {tt!r} s with ki = {ki!r} N/(m s): the back-calculation gain 1/(ki t_track) is not finite; "
+            "allowed ki t_track > 0 and finite"
+        )
+    x_ref = check_real("x_ref", x_ref, unit="m")
+    grid = _grid(t_end, n_points)
+    rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
+    atol = check_real("atol", atol, low=0.0, low_open=True)
+    F0, wf = (force.F0, force.omega) if force is not None else (0.0, 0.0)
+    mode = ANTI_WINDUP.index(anti_windup)
+    p = dict(m=osc.m, c=osc.c, k=osc.k, F0=F0, wf=wf, kp=kp, ki=ki, kd=kd, umax=umax, x_ref=x_ref, mode=mode,
+             gain_bc=1.0 / (ki * tt))  # fmt: skip
+    with np.errstate(over="ignore", invalid="ignore"):
+        A = np.array([[0.0, 1.0, 0.0], [-(osc.k + kp) / osc.m, -(osc.c + kd) / osc.m, ki / osc.m], [-1.0, 0.0, 0.0]])
+    if not np.all(np.isfinite(A)):
+        raise ParameterError(
+            f"kp = {kp!r}, ki = {ki!r}, kd = {kd!r} over m = {osc.m!r} kg overflow: allowed finite gains/m"
+        )
+    rate = max(float(np.max(np.abs(np.linalg.eigvals(A)))), osc.natural_frequency + abs(osc.c) / osc.m, wf)
+    _work_check(float(grid[-1]), rate, rtol, "PID loop")
+    y, nfev = _pid_run(p, grid, rtol, atol, float(grid[-1]))
+    x, v, integ = y
+    with np.errstate(over="ignore", invalid="ignore"):
+        ud = kp * (x_ref - x) + ki * integ - kd * v
+    if not np.all(np.isfinite(ud)):
+        raise ParameterError(
+            f"x_ref = {x_ref!r} m, kp = {kp!r}, ki = {ki!r}, kd = {kd!r}: the PID demand overflows; "
+            "allowed inputs that keep it finite"
+        )
+    return PIDResponse(
+        t=grid,
+        x=x,
+        v=v,
+        integral=integ,
+        u=np.clip(ud, -umax, umax),
+        u_demand=ud,
+        anti_windup=anti_windup,
+        u_max=umax,
+        nfev=int(nfev),
+    )
+
+
+def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, ki: float, kd: float, t, x_ref=0.0):
+    """Exact response of the unlimited PID loop (matrix exponential plus particular solution).
+
+    The loop ``y = [x, v, I]``, ``y' = A y + b_F F0 sin(omega t) + b_r x_ref`` is linear; its
+    solution is ``y_p(t) + expm(A t) (y(0) - y_p(0))`` with the particular solution
+    ``y_p = Im(H e^{i omega t}) - A^{-1} b_r x_ref``, ``H = (i omega I - A)^{-1} b_F F0``.
+    Returns ``(x, v, I)`` at the times ``t`` (s): m, m/s, m s. Used to check
+    :func:`pid_response`.
+
+    Examples
+    --------
+    >>> x, v, i = pid_linear_response(Oscillator(1.0, 0.5, 20.0), None, 80.0, 100.0, 10.0, [0.0, 60.0], 0.1)
+    >>> np.round(x, 9)
+    array([0. , 0.1])
+    """
+    from scipy.linalg import expm
+
+    _check_osc(osc)
+    if force is not None and not isinstance(force, SineForce):
+        raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
+    kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
+    ki = check_real("ki", ki, low=0.0, low_open=True, unit="N/(m s)")
+    kd = check_real("kd", kd, unit="N s/m")
+    x_ref = check_real("x_ref", x_ref, unit="m")
+    t = np.atleast_1d(check_array("t", t, low=0.0, unit="s"))
+    m, c, k = osc.m, osc.c, osc.k
+    A = np.array([[0.0, 1.0, 0.0], [-(k + kp) / m, -(c + kd) / m, ki / m], [-1.0, 0.0, 0.0]])
+    if not np.all(np.isfinite(A)):
+        raise ParameterError(
+            f"kp = {kp!r}, ki = {ki!r}, kd = {kd!r} over m = {m!r} kg overflow: allowed finite gains/m"
+        )
+    bF = np.array([0.0, 1.0 / m, 0.0])
+    br = np.array([0.0, kp / m, 1.0])
+    F0, w = (force.F0, force.omega) if force is not None else (0.0, 0.0)
+    with np.errstate(all="ignore"):  # an overflow is refused below
+        try:
+            H = np.linalg.solve(1j * w * np.eye(3) - A, bF * F0)
+            ystat = -np.linalg.solve(A, br * x_ref)
+        except np.linalg.LinAlgError:
+            raise ParameterError(
+                f"force.omega = {w!r} rad/s is a pole of the loop (kp = {kp!r}, ki = {ki!r}, kd = {kd!r}): "
+                "no steady state; allowed a forcing frequency off the loop's undamped poles"
+            ) from None
+        yp = np.imag(H[:, None] * np.exp(1j * w * t)[None, :]) + ystat[:, None]
+        d0 = -(np.imag(H) + ystat)  # y(0) - y_p(0), y(0) = 0
+        lam, V = np.linalg.eig(A)
+        try:
+            coef = np.linalg.solve(V, d0)
+        except np.linalg.LinAlgError:  # exactly defective: the expm fallback below handles it
+            coef = np.zeros(3)
+        with np.errstate(over="ignore", invalid="ignore"):
+            free = np.real(V @ (coef[:, None] * np.exp(lam[:, None] * t[None, :])))
+        if np.linalg.cond(V) > 1e8:  # defective or nearly so: fall back on expm per sample
+            if t.size > EXPM_SAMPLES_MAX:
+                raise ParameterError(
+                    f"t has {t.size} samples: this loop (kp = {kp!r}, ki = {ki!r}, kd = {kd!r}) has a (nearly) "
+                    f"repeated pole, so each sample needs its own matrix exponential; "
+                    f"allowed at most {EXPM_SAMPLES_MAX} samples"
+                )
+            with np.errstate(over="ignore", invalid="ignore"):
+                free = np.stack([expm(A * ti) @ d0 for ti in t], axis=1)
+        y = yp + free
+    if not np.all(np.isfinite(y)):
+        raise ParameterError(
+            f"t reaches {float(t.max())!r} s: the loop's response overflows there (an unstable loop, poles "
+            f"{[f'{z:.6g}' for z in lam]} 1/s); allowed times at which it stays finite"
+        )
+    return y[0], y[1], y[2]
