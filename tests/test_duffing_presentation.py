@@ -35,7 +35,7 @@ def test_figures_keep_legends_off_the_data(study):
 
 def test_tables_have_names_units_and_no_nan(study):
     for make in (pres.hb_table, pres.stability_table, pres.fold_table, pres.history_table, pres.lyapunov_table,
-                 pres.checks_table):  # fmt: skip
+                 pres.lyapunov_runs_table, pres.lyapunov_convergence_table, pres.checks_table):  # fmt: skip
         t = make(study)
         assert t.name.startswith("tab-duffing-")
         text = repr(t)
@@ -48,6 +48,20 @@ def test_sentences_follow_the_results(study):
     for r in pres.fold_comparison(study):
         assert f"{r['hb']:.5g}" in note and f"{r['time']:.5g}" in note
     assert "chaotic" in pres.lyapunov_sentence(study)
+    for r in pres.fold_comparison(study):
+        assert f"{r['orbit']:.6g}" in note and r["inside"] is True
+    pooled, se, _, _ = study.pooled
+    assert f"{pres._pm(pooled, se)}" in pres.lyapunov_sentence(study)
+    assert "share no trajectory" in pres.lyapunov_sentence(study) and "by construction" in pres.lyapunov_sentence(study)
+
+
+def test_published_comparison_keeps_to_its_scope(study):
+    import dataclasses
+
+    text = pres.published_sentence(study)
+    assert "0.0999" in text and "standard errors" in text
+    other = dataclasses.replace(study, F0_ueda=5.0)
+    assert "no published value to compare with" in pres.published_sentence(other)
     assert "beyond it" in pres.trust_sentence(study)  # 2.237 m > 1.77 m at k3 = 2 N/m^3
     assert "whichever way" in pres.paper_sentence(study)
 

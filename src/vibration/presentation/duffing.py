@@ -361,7 +361,7 @@ def sweep_figure(study: DuffingStudy):
         _plot_curve(ax, case.curve, "#bbbbbb", "harmonic balance")
         if case.branch is not None:
             b = case.branch
-            _plot_curve(ax, (b.omega, b.amplitude, b.stable), "k", "periodic orbit")
+            ax.plot(b.omega, b.amplitude, color="k", lw=0.7, label="periodic orbit (continuation)")
             ax.plot([f.omega for f in b.folds], [f.amplitude for f in b.folds], "s", ms=4.5, mfc="white", color="k",
                     label="folds of the orbit")  # fmt: skip
         ax.plot(case.up.omega, case.up.amplitude, "^", ms=3.2, color=col, label="sweep up")
@@ -377,7 +377,7 @@ def sweep_figure(study: DuffingStudy):
         ax.set_title(f"{case.label}, $k_3$ = {case.duffing.k3:g} N/m$^3$")
         ax.set_xlim(case.up.omega.min(), case.up.omega.max())
     axes[0].set_ylabel(r"steady amplitude $A$ (m)")
-    axes[0].set_ylim(0.0, 1.4 * max(np.nanmax(c.curve[1]) for c in study.cases))
+    axes[0].set_ylim(0.0, 1.75 * max(np.nanmax(c.curve[1]) for c in study.cases))
     for ax in axes:
         place_legend(ax)
     return fig
