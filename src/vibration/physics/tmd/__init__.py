@@ -2,8 +2,10 @@
 
 A package by concept: :mod:`.magnification` (the two-mass absorber's frequency response, exact peak,
 H2 integral, fixed points), :mod:`.tuning` (Den Hartog, H∞ and H2 tunings, mistuning), :mod:`.mdof`
-(the MDOF record, modes, frequency and time responses) and :mod:`.structures` (modal damping, the
-shear building, absorbers on a structure). Two parts share it.
+(the MDOF record, modes, frequency and time responses), :mod:`.structures` (modal damping, the
+shear building, absorbers on a structure, ground acceleration) and :mod:`.robust` (the worst peak over
+an error band of the primary's stiffness, the min-max design, every design scored on every criterion).
+Two parts share it.
 
 **The tuned mass damper (TMD) on a single-degree-of-freedom primary.** A primary
 mass m_p on a spring k_p and dashpot c_p carries an absorber mass m_a on a spring
@@ -94,15 +96,20 @@ from .magnification import (  # noqa: F401
     _peak,
     _stationary,
     h2_norm,
+    stroke_peak,
     tmd_fixed_points,
     tmd_magnification,
     tmd_peak,
+    tmd_stroke,
 )
 from .mdof import MDOF, DampingNotClassical, MDOFResponse, _finite_response, _matrix, _positive_definite  # noqa: F401
+from .robust import BAND_MAX, DesignScore, bare_peak, robust_tuning, score_design, worst_peak  # noqa: F401
 from .structures import (  # noqa: F401
     ModeAbsorber,
     add_absorber,
     first_mode_absorber,
+    frf_peak,
+    ground_acceleration_load,
     modal_damping_matrix,
     shear_building,
     tmd_system,
@@ -122,19 +129,28 @@ from .tuning import (  # noqa: F401
 __all__ = [
     "MDOF",
     "DampingNotClassical",
+    "DesignScore",
     "MDOFResponse",
     "TMDTuning",
     "add_absorber",
+    "bare_peak",
     "den_hartog",
     "first_mode_absorber",
+    "frf_peak",
+    "ground_acceleration_load",
     "h2_norm",
     "h2_tuning",
     "hinf_tuning",
     "mistuned_peak",
     "modal_damping_matrix",
+    "robust_tuning",
+    "score_design",
     "shear_building",
+    "stroke_peak",
     "tmd_fixed_points",
     "tmd_magnification",
     "tmd_peak",
+    "tmd_stroke",
     "tmd_system",
+    "worst_peak",
 ]

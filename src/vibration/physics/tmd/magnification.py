@@ -207,3 +207,94 @@ def tmd_fixed_points(mu, f) -> tuple[np.ndarray, np.ndarray]:
     small = c / (a * big)  # product of the roots, no cancellation
     r = np.sqrt(np.array([small, big]))
     return r, np.abs(1.0 / (1.0 - (1.0 + mu) * r * r))
+
+
+# ----------------------------------------------------------------------------- the absorber's stroke
+def _stroke_candidates(mu: float, f: float, za: float, zp: float) -> np.ndarray:
+    """Real positive s = r² where |Z|² = s² / |den|² is stationary: the roots of 2 Q(s) − s Q'(s), Q = |den|²."""
+    P = np.polynomial.polynomial
+    den = _stationary(mu, f, za, zp)[1]  # |den|² in ascending powers of s (degree 4)
+    stat = P.polysub(2.0 * den, P.polymulx(P.polyder(den)))
+    roots = np.roots(np.trim_zeros(stat[::-1], "f"))
+    keep = (roots.real > 0.0) & (np.abs(roots.imag) <= 1e-6 * np.abs(roots))
+    s = np.sort(roots.real[keep])
+    dstat = P.polyder(stat)
+    for _ in range(2):  # Newton polish of the companion-matrix roots
+        d = P.polyval(s, dstat)
+        step = np.divide(P.polyval(s, stat), d, out=np.zeros_like(s), where=d != 0.0)
+        s = np.where(np.abs(step) < 1e-3 * s, s - step, s)
+    return s
+
+
+def _stroke2(mu, f, za, zp, r):
+    """|Z(r)|² with Z = (X_a − X_p) / (F0 / k_p) = r² / den, factored form."""
+    den = _factors(mu, f, za, zp, r)[1]
+    return r**4 / (den.real**2 + den.imag**2)
+
+
+@_no_nan
+def tmd_stroke(mu, f, zeta_a, r, zeta_p=0.0) -> np.ndarray:
+    """Absorber stroke (its displacement relative to the primary) |X_a − X_p| / (F0 / k_p) at ratios r = ω/ω_p.
+
+    From the absorber's equation, (X_a − X_p) / X_p = r² / (f² − r² + 2i ζ_a f r), so the stroke
+    per static deflection is r² / |den| with the denominator of :func:`tmd_magnification`.
+
+    Parameters
+    ----------
+    mu, f, zeta_a, r, zeta_p : float or array_like
+        As in :func:`tmd_magnification` (1; ζ_a relative to the absorber's own frequency).
+
+    Returns
+    -------
+    numpy.ndarray
+        |X_a − X_p| / (F0 / k_p), 1, shape of ``r``; ``inf`` at an undamped resonance.
+
+    Examples
+    --------
+    >>> float(tmd_stroke(0.05, 1.0, 0.1, 0.0))                      # static: the absorber moves with the primary
+    0.0
+    >>> round(float(tmd_stroke(0.05, 1.0, 0.0, 1.0)), 6)            # undamped, tuned: k_a Z = F0, Z k_p/F0 = 1/(μ f²)
+    20.0
+    """
+    mu, f = _mu(mu), _f(f)
+    za, zp = _zeta("zeta_a", zeta_a), _zeta("zeta_p", zeta_p)
+    r = _ratios(r)
+    den = _factors(mu, f, za, zp, r)[1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        z = (r * r) / np.abs(den)
+    return np.where(np.abs(den) == 0.0, np.inf, z)
+
+
+@_no_nan
+def stroke_peak(mu, f, zeta_a, zeta_p=0.0) -> tuple[float, float]:
+    """Largest stroke max_r |X_a − X_p| / (F0 / k_p) and the ratio r = ω/ω_p where it is reached.
+
+    Exact up to rounding: |Z|² = s² / Q(s) with s = r², so the maximum is at a real positive root
+    of 2 Q − s Q' (degree 4); it tends to 0 at r = 0 and as r → ∞.
+
+    Parameters
+    ----------
+    mu, f, zeta_a, zeta_p : float
+        As in :func:`tmd_magnification`.
+
+    Returns
+    -------
+    (float, float)
+        The peak stroke per static deflection (1; ``inf`` when both dampings are zero) and its r (1).
+
+    Examples
+    --------
+    >>> z, r = stroke_peak(0.05, 0.9524, 0.1339)
+    >>> round(z, 3), round(r, 4)
+    (21.673, 0.9232)
+    """
+    mu, f = _mu(mu), _f(f)
+    za, zp = _zeta("zeta_a", zeta_a), _zeta("zeta_p", zeta_p)
+    if za == 0.0 and zp == 0.0:
+        return math.inf, math.nan
+    s = _stroke_candidates(mu, f, za, zp)
+    if s.size == 0:
+        return 0.0, math.nan
+    g = _stroke2(mu, f, za, zp, np.sqrt(s))
+    i = int(np.argmax(g))
+    return math.sqrt(float(g[i])), math.sqrt(float(s[i]))

@@ -9,7 +9,7 @@ import numpy as np
 from scipy.optimize import fsolve, minimize
 
 from ..checks import check_array
-from ..model import ParameterError, check_real
+from ..model import ParameterError, check_int, check_real
 from ._limits import F_MAX, MISTUNED_MAX, ZETA_MAX, ZETA_P_OPT_MAX, _f, _mu, _no_nan, _zeta
 from .magnification import _outer_peaks, _peak, h2_norm
 
@@ -25,6 +25,7 @@ class TMDTuning:
     zeta_p: float  # primary damping ratio for which peak was evaluated, 1
     peak: float  # max_r |X_p| / (F0 / k_p) on that primary, 1
     r_peak: float  # forcing ratio ω/ω_p of the peak (one of two at an H∞ optimum), 1
+    converged: bool = True  # the numerical optimiser met its tolerances within its iteration limit (closed forms: True)
 
     def _finite_fields(self) -> list[float]:
         """The numbers a nan check covers (see ``_no_nan``)."""
@@ -55,9 +56,17 @@ class TMDTuning:
         return m_a, m_a * w_a * w_a, 2.0 * self.zeta_a * m_a * w_a
 
 
-def _record(rule, mu, f, za, zp) -> TMDTuning:
+def _record(rule, mu, f, za, zp, converged: bool = True) -> TMDTuning:
     peak, r_peak = _peak(mu, f, za, zp)
-    return TMDTuning(rule, mu, f, za, zp, peak, r_peak)
+    return TMDTuning(rule, mu, f, za, zp, peak, r_peak, bool(converged))
+
+
+#: Largest Nelder-Mead iteration limit a caller may ask for.
+MAXITER_MAX = 100_000
+
+
+def _maxiter(maxiter, default: int) -> int:
+    return default if maxiter is None else check_int("maxiter", maxiter, low=1, high=MAXITER_MAX)
 
 
 def den_hartog(mu, zeta_p=0.0) -> TMDTuning:
@@ -100,14 +109,15 @@ def _hinf_closed(mu: float) -> tuple[float, float, float]:
     return f, za, 1.0 / math.sqrt(inv2)
 
 
-def _hinf_numerical(mu: float, zp: float, f0: float, z0: float) -> tuple[float, float]:
+def _hinf_numerical(mu: float, zp: float, f0: float, z0: float, maxiter: int = 400) -> tuple[float, float, bool]:
     """Min over (f, ζ_a) of the peak: Nelder-Mead, then the equal-peak optimality conditions.
 
     At a two-peak optimum the low and high peaks are equal and their gradients
     in (f, ln ζ_a) are opposite: G_low = G_high and det[∇G_low, ∇G_high] = 0.
     Those two smooth equations are solved by ``scipy.optimize.fsolve`` from the
     Nelder-Mead point (central differences, step 1e-6); the solution is kept
-    only when the gradients are indeed opposite and the peak is not higher.
+    only when the gradients are indeed opposite and the peak is not higher. Converged: Nelder-Mead met
+    its tolerances within ``maxiter`` iterations, or the equal-peak conditions were solved.
     """
 
     def cost(x):
@@ -116,8 +126,10 @@ def _hinf_numerical(mu: float, zp: float, f0: float, z0: float) -> tuple[float, 
             return math.inf
         return math.log(_peak(mu, f, math.exp(lz), zp)[0])
 
-    nm = minimize(cost, [f0, math.log(z0)], method="Nelder-Mead", options={"xatol": 1e-9, "fatol": 1e-13})
-    best = nm.x
+    nm = minimize(
+        cost, [f0, math.log(z0)], method="Nelder-Mead", options={"xatol": 1e-9, "fatol": 1e-13, "maxiter": maxiter}
+    )
+    best, converged = nm.x, bool(nm.success)
     h = 1e-6
 
     def logs(x):
@@ -141,8 +153,8 @@ def _hinf_numerical(mu: float, zp: float, f0: float, z0: float) -> tuple[float, 
         g = grads(sol)
         opposite = float(np.dot(g[0], g[1])) < 0.0
         if opposite and cost(sol) <= cost(best) + 1e-12:
-            best = sol
-    return float(best[0]), math.exp(float(best[1]))
+            best, converged = sol, True
+    return float(best[0]), math.exp(float(best[1])), converged
 
 
 def _closed_form(method, zp: float) -> bool:
@@ -155,7 +167,7 @@ def _closed_form(method, zp: float) -> bool:
 
 
 @_no_nan
-def hinf_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
+def hinf_tuning(mu, zeta_p=0.0, method="auto", maxiter=None) -> TMDTuning:
     """The H∞ optimum: (f, ζ_a) minimising the primary's largest magnification.
 
     For an undamped primary the closed form of Nishihara and Asami (2002,
@@ -173,11 +185,14 @@ def hinf_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
         Primary damping ratio, 1 (0 to 0.5).
     method : {"auto", "closed form", "numerical"}
         "auto": closed form when zeta_p is 0, numerical otherwise.
+    maxiter : int, optional
+        Nelder-Mead's iteration limit (1 to 100 000; default 400, scipy's for two variables).
 
     Returns
     -------
     TMDTuning
-        With ``.peak`` the minimised largest magnification.
+        With ``.peak`` the minimised largest magnification; ``.converged`` is False when
+        Nelder-Mead stopped at ``maxiter`` and the equal-peak conditions were not solved.
 
     Examples
     --------
@@ -190,13 +205,14 @@ def hinf_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     if _closed_form(method, zp):
         f, za, peak = _hinf_closed(mu)
         return TMDTuning("H∞ closed form", mu, f, za, 0.0, peak, _peak(mu, f, za, 0.0)[1])
+    maxiter = _maxiter(maxiter, 400)
     f0, z0 = 1.0 / (1.0 + mu), math.sqrt(3.0 * mu / (8.0 * (1.0 + mu)))
-    f, za = _hinf_numerical(mu, zp, f0, z0)
-    return _record("H∞ numerical", mu, f, za, zp)
+    f, za, converged = _hinf_numerical(mu, zp, f0, z0, maxiter)
+    return _record("H∞ numerical", mu, f, za, zp, converged)
 
 
 @_no_nan
-def h2_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
+def h2_tuning(mu, zeta_p=0.0, method="auto", maxiter=None) -> TMDTuning:
     """The H2 optimum: (f, ζ_a) minimising ∫_0^∞ |H(r)|² dr (white-noise force).
 
     For an undamped primary Warburton's closed form (1982, Earthquake Eng.
@@ -214,11 +230,14 @@ def h2_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
         Primary damping ratio, 1 (0 to 0.5).
     method : {"auto", "closed form", "numerical"}
         "auto": closed form when zeta_p is 0, numerical otherwise.
+    maxiter : int, optional
+        Nelder-Mead's iteration limit (1 to 100 000; default 2000).
 
     Returns
     -------
     TMDTuning
-        ``.peak`` is the largest magnification this tuning gives (not the criterion).
+        ``.peak`` is the largest magnification this tuning gives (not the criterion); ``.converged``
+        is False when Nelder-Mead stopped at ``maxiter`` before its tolerances.
 
     Examples
     --------
@@ -229,6 +248,7 @@ def h2_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
     mu = _mu(mu)
     zp = _zeta("zeta_p", zeta_p, ZETA_P_OPT_MAX)
     closed = _closed_form(method, zp)
+    maxiter = _maxiter(maxiter, 2000)
     f = math.sqrt(1.0 + mu / 2.0) / (1.0 + mu)
     za = math.sqrt(mu * (1.0 + 0.75 * mu) / (4.0 * (1.0 + mu) * (1.0 + mu / 2.0)))
     if closed:
@@ -241,9 +261,9 @@ def h2_tuning(mu, zeta_p=0.0, method="auto") -> TMDTuning:
         return math.log(h2_norm(mu, ff, math.exp(lz), zp))
 
     res = minimize(
-        cost, [f, math.log(za)], method="Nelder-Mead", options={"xatol": 1e-9, "fatol": 1e-14, "maxiter": 2000}
+        cost, [f, math.log(za)], method="Nelder-Mead", options={"xatol": 1e-9, "fatol": 1e-14, "maxiter": maxiter}
     )
-    return _record("H2 numerical", mu, float(res.x[0]), math.exp(float(res.x[1])), zp)
+    return _record("H2 numerical", mu, float(res.x[0]), math.exp(float(res.x[1])), zp, res.success)
 
 
 @_no_nan
