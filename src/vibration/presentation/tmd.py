@@ -27,6 +27,7 @@ from ..physics.tmd import (
     ModeAbsorber,
     TMDTuning,
     add_absorber,
+    bare_peak,
     den_hartog,
     first_mode_absorber,
     frf_peak,
@@ -254,9 +255,7 @@ def tmd_chapter(
     X = model.frf([omega_res], [F0, 0.0])[0]
     eps = np.linspace(-mistuning, mistuning, 41)
     robust = {r: mistuned_peak(tunings[mu][r], eps, zeta_p) for r in RULES}
-    g = np.sqrt(1.0 + eps)
-    zs = zeta_p / g
-    robust_none = np.where(zs < 2**-0.5, 1.0 / (2.0 * zs * np.sqrt(np.maximum(1.0 - zs * zs, 0.0))), 1.0) / (1 + eps)
+    robust_none = bare_peak(zeta_p, eps)
     r_force = omega_res / math.sqrt(k / m)
     robust_design = robust_tuning(mu, zeta_p, mistuning)
     design_tunings = dict(
@@ -610,6 +609,12 @@ def _pct(a: float, b: float) -> str:
     return f"{100.0 * (1.0 - a / b):.1f} %"
 
 
+def _change(before: float, after: float, unit: str) -> str:
+    """ "falls from 2 to 1 m (50 % lower)", or "rises ..." when it grows, from the numbers themselves."""
+    verb = "falls" if after <= before else "rises"
+    return f"{verb} from {before:.4g} to {after:.4g} {unit} ({_rel(after, before)})"
+
+
 def tuning_sentence(ch: TMDChapter) -> str:
     """The rules compared at the notebook's mass ratio."""
     r = ch.tunings[ch.mu]
@@ -630,10 +635,9 @@ def response_sentence(ch: TMDChapter) -> str:
     """The measured reduction at the paper's resonance."""
     pk0, pk1 = float(np.max(np.abs(ch.x_without))), float(np.max(np.abs(ch.x_with)))
     return (
-        f"At ω = {ch.omega_res:g} rad/s the steady amplitude of the primary falls from {ch.amp_without:.4g} m "
-        f"to {ch.amp_with:.4g} m ({_pct(ch.amp_with, ch.amp_without)} lower) with an absorber of {ch.mu:g} times "
-        f"its mass, which itself swings {ch.amp_absorber:.4g} m; the largest |x| in the {ch.t_end:g} s window "
-        f"falls from {pk0:.4g} m to {pk1:.4g} m."
+        f"At ω = {ch.omega_res:g} rad/s the steady amplitude of the primary "
+        f"{_change(ch.amp_without, ch.amp_with, 'm')} with an absorber of {ch.mu:g} times its mass, which itself "
+        f"swings {ch.amp_absorber:.4g} m; the largest |x| in the {ch.t_end:g} s window {_change(pk0, pk1, 'm')}."
     )
 
 
@@ -788,7 +792,7 @@ def robustness_sentence(ch: TMDChapter) -> str:
     text += (
         f"Over the whole ±{e:g} % band its worst peak is {h.worst_peak:.4g} (at k_p "
         f"{f'{100 * h.eps_worst:+.3g}'.replace('-', '−')} %), "
-        f"against {float(np.max(ch.robust_none)):.4g} without an absorber. The optimum of that criterion, the "
+        f"against {_bare_words(float(np.max(ch.robust_none)))} without an absorber. The optimum of that criterion, the "
         f"robust min-max design (f = {rb.tuning.f:.4f}, ζ_a = {rb.tuning.zeta_a:.4f}), holds the worst peak to "
         f"{rb.worst_peak:.4g} ({_rel(rb.worst_peak, h.worst_peak)}) at the price of a nominal peak of "
         f"{rb.nominal_peak:.4g} instead of {h.nominal_peak:.4g} ({_rel(rb.nominal_peak, h.nominal_peak)})."
@@ -796,6 +800,10 @@ def robustness_sentence(ch: TMDChapter) -> str:
     if best != DESIGNS[3] and d[best].worst_peak < rb.worst_peak * (1 - 1e-9):
         text += f" The min-max search fell short: {_the(best)} has a lower worst peak ({d[best].worst_peak:.4g})."
     return text
+
+
+def _bare_words(peak: float) -> str:
+    return f"{peak:.4g}" if math.isfinite(peak) else "an unbounded peak"
 
 
 def building_load_table(ch: TMDChapter) -> Table:
@@ -842,12 +850,12 @@ def building_sentence(ch: TMDChapter) -> str:
     return (
         f"A roof absorber of {a.m_a:.4g} kg ({ch.mu_building:g} of the first modal mass {a.modal_mass:.4g} kg) "
         f"tuned by the numerical H∞ rule for the mode's {a.zeta:.3g} damping (f = {a.tuning.f:.4f}, "
-        f"ζ_a = {a.tuning.zeta_a:.4f}; k_a = {a.k_a:.4g} N/m, c_a = {a.c_a:.4g} N s/m) lowers the largest roof "
-        f"receptance near the first mode from {force.scale * force.peak_without:.4g} to "
-        f"{force.scale * force.peak_with:.4g} {force.unit} ({100 * force.reduction:.3g} % lower). Under ground "
-        f"acceleration the roof's largest displacement relative to the ground falls from "
-        f"{ground.scale * ground.peak_without:.4g} to {ground.scale * ground.peak_with:.4g} {ground.unit} "
-        f"({100 * ground.reduction:.3g} % lower); the first mode carries {100 * share:.3g} % of the building's mass "
+        f"ζ_a = {a.tuning.zeta_a:.4f}; k_a = {a.k_a:.4g} N/m, c_a = {a.c_a:.4g} N s/m): the largest roof "
+        f"receptance near the first mode "
+        f"{_change(force.scale * force.peak_without, force.scale * force.peak_with, force.unit)}. Under ground "
+        f"acceleration the roof's largest displacement relative to the ground "
+        f"{_change(ground.scale * ground.peak_without, ground.scale * ground.peak_with, ground.unit)}; "
+        f"the first mode carries {100 * share:.3g} % of the building's mass "
         "as effective modal mass under ground motion. The building's damping is classical; with the absorber it is "
         "not, and the complex poles take over from modal damping ratios."
     )
@@ -862,8 +870,13 @@ def summary_sentence(ch: TMDChapter) -> str:
     text = (
         f"For the paper's oscillator (ζ_p = {ch.zeta_p:.4f}) an absorber of μ = {ch.mu:g} tuned by the H∞ "
         f"optimum for the actual damping (f = {h.tuning.f:.4f}, ζ_a = {h.tuning.zeta_a:.4f}) caps the "
-        f"magnification at {h.nominal_peak:.4g}, {_rel(h.nominal_peak, closed[alt])} than the best closed-form "
-        f"rule on this primary ({_the(alt)}, {closed[alt]:.4g})"
+        f"magnification at {h.nominal_peak:.4g}, "
+        + (
+            f"the peak of the best closed-form rule on this primary ({_the(alt)}), which is exact here"
+            if math.isclose(h.nominal_peak, closed[alt], rel_tol=1e-6)
+            else f"{_rel(h.nominal_peak, closed[alt])} than the best closed-form rule on this primary "
+            f"({_the(alt)}, {closed[alt]:.4g})"
+        )
     )
     if math.isfinite(h.rms_ratio):
         text += f"; under white noise its rms displacement is {_rel(h.rms_ratio, h2.rms_ratio)} than the H2 optimum's"
@@ -873,8 +886,8 @@ def summary_sentence(ch: TMDChapter) -> str:
             f"{_rel(h.worst_peak, rb.worst_peak)} than the min-max optimum's {rb.worst_peak:.4g}"
         )
     return text + (
-        f". At ω = {ch.omega_res:g} rad/s it cuts the steady amplitude from {ch.amp_without:.4g} m to "
-        f"{ch.amp_with:.4g} m ({_pct(ch.amp_with, ch.amp_without)} lower), with an absorber stroke of "
+        f". At ω = {ch.omega_res:g} rad/s the steady amplitude {_change(ch.amp_without, ch.amp_with, 'm')}, "
+        "with an absorber stroke of "
         f"{ch.F0 / ch.k * h.stroke_force:.4g} m."
     )
 
