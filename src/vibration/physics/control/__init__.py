@@ -56,6 +56,15 @@ from .active import (
     simulate_controlled,
     stabilising_velocity_gain,
 )
+from .loops import (
+    LoopCosts,
+    PIDPoles,
+    force_floor,
+    hold_force,
+    largest_holdable_reference,
+    loop_costs,
+    pid_poles,
+)
 from .pid import ANTI_WINDUP, PIDResponse, pid_linear_response, pid_response
 from .semi_active import (
     SEMI_ACTIVE_LAWS,
@@ -64,15 +73,27 @@ from .semi_active import (
     MRDamper,
     SemiActiveResponse,
     SemiActiveSweep,
+    SkyhookPower,
     passive_transmissibility,
     semi_active_controller,
     semi_active_response,
     semi_active_sweep,
+    skyhook_power,
     skyhook_transmissibility,
 )
-from .shaping import Shaper, residual_amplitude, shaped_move, shaper_residual, zv_shaper, zvd_shaper
+from .shaping import Shaper, insensitivity_band, residual_amplitude, shaped_move, shaper_residual, zv_shaper, zvd_shaper
 
 __all__ = [
+    "LoopCosts",
+    "PIDPoles",
+    "SkyhookPower",
+    "force_floor",
+    "hold_force",
+    "insensitivity_band",
+    "largest_holdable_reference",
+    "loop_costs",
+    "pid_poles",
+    "skyhook_power",
     "SPENCER_1997",
     "SPENCER_1997_STROKE",
     "ControlledResponse",

@@ -11,7 +11,7 @@ import numpy as np
 
 from ..model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real
 from ..stability import _check_osc, transmissibility
-from ._common import _omegas
+from ._common import _finite, _omegas
 from ._kernels import RK4_STEPS_MAX, SWEEP_STEPS_MAX, _sa_kernel
 
 SEMI_ACTIVE_LAWS = ("passive", "skyhook", "on-off", "clipped", "mr")
@@ -522,3 +522,55 @@ def semi_active_controller(
         return -c_min * vr
 
     return controller
+
+
+@dataclass(frozen=True)
+class SkyhookPower:
+    """Steady mean powers of the ideal skyhook force ``f = -c_sky v`` under base motion ``Y sin(omega t)``, W."""
+
+    removed: float  # mean c_sky v^2: what the skyhook force takes out of the mass (its work on the mass, negated)
+    net: float  # mean f (v - v_b): net power an actuator between body and base delivers (negative: it absorbs)
+    supplied: float  # mean of the positive part of f (v - v_b): what the actuator must supply, W
+    gross: float  # mean |f (v - v_b)|: the power it exchanges in both directions, W
+
+
+def skyhook_power(osc: Oscillator, c_sky: float, Y: float, omega: float) -> SkyhookPower:
+    """Mean steady powers (W) of the ideal skyhook realised by an actuator between the mass and the base.
+
+    With ``x = Im(H Y e^{i omega t})``, ``H = (k + i c omega) / (k - m omega^2 + i (c + c_sky) omega)``,
+    the actuator's power ``p = f (v - v_b) = a + b cos(2 omega t + phi)`` has the mean
+    ``a = -c_sky (<v^2> - <v v_b>)`` and the swing ``b``; the mean of its positive part is
+    ``(a theta + b sin theta) / pi`` with ``cos theta = -a / b`` (``a`` if ``|a| >= b`` and ``a > 0``,
+    0 if ``a <= -b``), and the gross exchange ``mean |p| = 2 mean(p+) - a``. The skyhook itself,
+    a damper to the inertial frame, removes ``c_sky <v^2>``.
+
+    Examples
+    --------
+    >>> p = skyhook_power(Oscillator(1.0, 0.5, 20.0), 8.0, 0.25, 20.0**0.5)
+    >>> round(p.removed, 4), round(p.net, 4), round(p.supplied, 4), round(p.gross, 4)
+    (1.4014, -1.1073, 0.4242, 1.9556)
+    """
+    _check_osc(osc)
+    c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
+    Y = check_real("Y", Y, low=0.0, unit="m")
+    w = check_real("omega", omega, low=0.0, unit="rad/s")
+    m, c, k = osc.m, osc.c, osc.k
+    den = complex(k - m * w * w, (c + c_sky) * w)
+    if den == 0:
+        raise ParameterError(f"omega = {w!r} rad/s: undamped resonance, no steady state; allowed c + c_sky > 0")
+    H = complex(k, c * w) / den
+    V = 1j * w * H * Y  # complex velocity amplitude of the mass, m/s
+    Vb = 1j * w * Y  # of the base
+    F = -c_sky * V  # of the force
+    P_rel = F * np.conj(V - Vb)  # p = Re(F e^{iwt}) Re(Vr e^{iwt}) = Re(F conj(Vr))/2 + Re(F Vr e^{2iwt})/2
+    a = float(0.5 * P_rel.real)
+    b = float(0.5 * abs(F * (V - Vb)))
+    if b <= abs(a):
+        pos = max(a, 0.0)
+    else:
+        theta = math.acos(-a / b)
+        pos = (a * theta + b * math.sin(theta)) / math.pi
+    removed = float(0.5 * c_sky * abs(V) ** 2)
+    out = SkyhookPower(removed=removed, net=a, supplied=pos, gross=2.0 * pos - a)
+    _finite("Y, omega", [out.removed, out.net, out.gross], "the skyhook power")
+    return out

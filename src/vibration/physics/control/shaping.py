@@ -193,3 +193,63 @@ def residual_amplitude(osc: Oscillator, t, x, v, target: float) -> np.ndarray:
     with np.errstate(over="ignore", invalid="ignore"):
         out = np.hypot(d, (vv + sigma * d) / wd)
     return _finite("x, v", out, "the ringing amplitude")
+
+
+def insensitivity_band(shaper: Shaper, osc: Oscillator, level: float = 0.05) -> tuple[float, float]:
+    """Band of natural-frequency ratios ``q = omega_real / omega_model`` around 1 where ``V <= level``, 1.
+
+    The real oscillator is ``osc`` with ``k`` scaled by ``q^2`` (same m and c). The edges are the
+    roots of ``V(q) = level`` nearest to 1 on each side, bracketed on a grid of step 0.001 in q
+    that walks out from 1 and solved by Brent's method to 1e-12 in q (not read off the grid).
+
+    Parameters
+    ----------
+    shaper : Shaper
+        ZV or ZVD shaper (designed on ``osc`` or not).
+    osc : Oscillator
+        The model; the real oscillators scale its k.
+    level : float
+        Largest tolerated residual vibration ratio, 1 (0 < level < 1).
+
+    Returns
+    -------
+    (float, float)
+        Lower and upper edge, 1 (nan where V stays below ``level`` down to q = 0.05 or up to q = 20).
+
+    Examples
+    --------
+    >>> osc = Oscillator(1.0, 0.0, 20.0)                       # undamped: V = |cos(pi q / 2)| for ZV
+    >>> lo, hi = insensitivity_band(zv_shaper(osc), osc)
+    >>> round(lo, 6), round(float(2 * np.arccos(0.05) / np.pi), 6)
+    (0.968156, 0.968156)
+    """
+    from scipy.optimize import brentq
+
+    if not isinstance(shaper, Shaper):
+        raise ParameterError(f"shaper = {shaper!r} is not a Shaper: allowed zv_shaper(osc) or zvd_shaper(osc)")
+    _underdamped(osc)
+    level = check_real("level", level, low=0.0, high=1.0, low_open=True)
+    m, c, k = osc.m, osc.c, osc.k
+
+    def g(q: float) -> float:
+        return shaper_residual(shaper, Oscillator(m, c, k * q * q)) - level
+
+    if not g(1.0) < 0.0:
+        raise ParameterError(
+            f"level = {level!r}: the shaper's residual at the model frequency is {g(1.0) + level:.3g}; "
+            "allowed a level above it"
+        )
+    edges = []
+    for stop, step in ((0.05, -1e-3), (20.0, 1e-3)):
+        q0, q1, out = 1.0, 1.0 + step, math.nan
+        while (q1 - stop) * step <= 0.0:
+            try:
+                g1 = g(q1)
+            except ParameterError:  # the real oscillator stops being underdamped: V undefined beyond
+                break
+            if g1 >= 0.0:
+                out = brentq(g, q0, q1, xtol=1e-12, rtol=1e-14)
+                break
+            q0, q1 = q1, q1 + step
+        edges.append(out)
+    return edges[0], edges[1]
