@@ -3,7 +3,8 @@
 Modules, by concept: :mod:`.measurements` (the record, its file format and input checks),
 :mod:`.sampled` (exact discretisation, sampled response, synthetic records),
 :mod:`.identification` (least squares with intervals, frequency-domain estimates),
-:mod:`.tracking` (Kalman tracking of k, CUSUM change detection) and :mod:`.experiments`
+:mod:`.tracking` (Kalman tracking of k, CUSUM change detection), :mod:`.validation` (residual
+tests, records that break the assumptions, first-order coverage) and :mod:`.experiments`
 (Monte Carlo studies). Their public names are re-exported here.
 
 The twin is the linear oscillator ``m x'' + c x' + k x = F(t)`` fed with a measured
@@ -65,12 +66,15 @@ from __future__ import annotations
 import numpy as np  # noqa: F401 - the examples above use np
 
 from .experiments import (  # noqa: F401 - constants and helpers kept reachable as twin.NAME
+    ASSUMPTION_CASES,
     MAX_EXPERIMENT_SAMPLES,
     THRESHOLDS,
+    AssumptionStudy,
     CoverageExperiment,
     DetectionExperiment,
     EstimateGrid,
     FaultScenario,
+    assumption_study,
     detection_experiment,
     detection_study,
     estimate_grid,
@@ -131,8 +135,17 @@ from .tracking import (  # noqa: F401 - constants and helpers kept reachable as 
     detect_change,
     track_stiffness,
 )
+from .validation import (  # noqa: F401 - constants and helpers kept reachable as twin.NAME
+    WHITENESS_LAGS,
+    binomial_halfwidth,
+    cubic_response,
+    input_correlation,
+    ljung_box,
+    predicted_coverage,
+)
 
 __all__ = [
+    "AssumptionStudy",
     "ChangeDetection",
     "Discretization",
     "EstimateGrid",
@@ -145,6 +158,12 @@ __all__ = [
     "SampledResponse",
     "StiffnessTrack",
     "detect_change",
+    "assumption_study",
+    "binomial_halfwidth",
+    "cubic_response",
+    "input_correlation",
+    "ljung_box",
+    "predicted_coverage",
     "CoverageExperiment",
     "DetectionExperiment",
     "detection_experiment",

@@ -12,13 +12,25 @@ from .identification import identify
 from .measurements import MIN_SAMPLES, _check_osc, _check_seed, _check_sensor, _grid_size, _signal, _work
 from .sampled import random_force, stiffness_profile, synthetic_measurements
 from .tracking import CALIBRATION, CUSUM_DRIFT, detect_change
+from .validation import (
+    WHITENESS_LAGS,
+    _ar1,
+    binomial_halfwidth,
+    cubic_response,
+    input_correlation,
+    ljung_box,
+    predicted_coverage,
+)
 
 __all__ = [
+    "ASSUMPTION_CASES",
+    "AssumptionStudy",
     "CoverageExperiment",
     "DetectionExperiment",
     "EstimateGrid",
     "FaultScenario",
     "THRESHOLDS",
+    "assumption_study",
     "detection_experiment",
     "detection_study",
     "estimate_grid",
@@ -37,7 +49,7 @@ MAX_EXPERIMENT_SAMPLES = 20_000_000
 
 @dataclass(frozen=True)
 class CoverageExperiment:
-    """Repeated identification of one oscillator from noisy records (seeded)."""
+    """Repeated identification of one oscillator from noisy records (seeded), with the residual tests of each run."""
 
     truth: np.ndarray  # (3,) m (kg), c (N s/m), k (N/m)
     estimates: np.ndarray  # (R, 3)
@@ -47,6 +59,10 @@ class CoverageExperiment:
     duration: float  # record length, s
     dt: float  # sampling step, s
     sensor: str  # "x" or "a"
+    whiteness_p: np.ndarray | None = field(default=None, repr=False)  # (R,) Ljung-Box p-value of each residual
+    input_p: np.ndarray | None = field(default=None, repr=False)  # (R,) p-value of the residual-force correlation
+    case: str = "as assumed"  # which assumption the records break
+    alpha: float = 0.05  # level of the residual tests, 1
 
     @property
     def runs(self) -> int:
@@ -68,6 +84,21 @@ class CoverageExperiment:
         return np.full(3, 1.96 * math.sqrt(0.95 * 0.05 / self.runs))
 
     @property
+    def coverage_uncertainty(self) -> np.ndarray:
+        """(3,) half-width of the Wilson 95 % interval of each measured coverage, 1."""
+        return binomial_halfwidth(self.covered.sum(axis=0), self.runs)
+
+    def flagged(self, which: str = "whiteness") -> float:
+        """Share of runs whose residual test (``"whiteness"`` or ``"input"``) rejects at ``alpha``, 1 (nan: not run)."""
+        p = self.whiteness_p if which == "whiteness" else self.input_p
+        return math.nan if p is None else float(np.mean(p < self.alpha))
+
+    def flagged_uncertainty(self, which: str = "whiteness") -> float:
+        """Wilson 95 % half-width of :meth:`flagged`, 1."""
+        share = self.flagged(which)
+        return math.nan if math.isnan(share) else float(binomial_halfwidth(round(share * self.runs), self.runs))
+
+    @property
     def rel_rmse(self) -> np.ndarray:
         """(3,) root-mean-square relative error of m, c, k, 1."""
         return np.sqrt(np.mean(((self.estimates - self.truth) / self.truth) ** 2, axis=0))
@@ -83,6 +114,31 @@ class CoverageExperiment:
         return np.sqrt(np.mean((self.stderr / self.truth) ** 2, axis=0))
 
 
+def _noise_rng(seed: int, stream: int, run: int) -> np.random.Generator:
+    """Independent generator per (experiment seed, stream, run): a SeedSequence of the three integers."""
+    return np.random.default_rng([seed, stream, run])
+
+
+def _monte_carlo(truth, t, force, clean, sd, runs, seed, stream, sensor, *, force_sd=0.0, colour=0.0, lags):
+    """Identify ``runs`` noisy copies of one record; each run draws its own noise (see :func:`_noise_rng`)."""
+    est = np.empty((runs, 3))
+    se = np.empty((runs, 3))
+    ci = np.empty((runs, 3, 2))
+    white = np.empty(runs)
+    inp = np.empty(runs)
+    for i in range(runs):
+        rng = _noise_rng(seed, stream, i)
+        y = clean + sd * _ar1(t.size, colour, rng)
+        f = force + force_sd * rng.standard_normal(t.size) if force_sd > 0.0 else force
+        fit = identify(t, f, **{sensor: y}, search="local")
+        est[i] = (fit.m, fit.c, fit.k)
+        se[i] = fit.stderr
+        ci[i] = fit.ci95
+        white[i] = ljung_box(fit.residual, lags)[1]
+        inp[i] = input_correlation(fit.residual, f, lags)[1]
+    return est, se, ci, white, inp
+
+
 def identification_experiment(
     osc: Oscillator,
     *,
@@ -94,13 +150,17 @@ def identification_experiment(
     sensor: str = "x",
     band: tuple[float, float] = (0.1, 2.0),
     rms: float = 2.0,
+    stream: int = 0,
+    lags: int = WHITENESS_LAGS,
 ) -> CoverageExperiment:
     """Identify ``osc`` from ``runs`` records that differ only in their noise (seeded).
 
     One band-limited random force (seed ``seed``) drives the oscillator from
-    rest; every run adds fresh white Gaussian noise (seeds ``seed + 1 + i``) of
-    standard deviation ``noise`` times the rms of the noise-free response, and
-    :func:`identify` (``search="local"``) estimates m, c, k and their intervals.
+    rest; every run adds fresh white Gaussian noise of standard deviation ``noise`` times the rms
+    of the noise-free response, drawn from its own generator (seeded by ``(seed, stream, run)``,
+    so experiments with different ``stream`` share no draws), and :func:`identify`
+    (``search="local"``) estimates m, c, k and their intervals; the residual of each fit goes
+    through the Ljung-Box and input-correlation tests.
 
     Parameters
     ----------
@@ -115,13 +175,17 @@ def identification_experiment(
     runs : int
         Realisations (2 to 10000).
     seed : int
-        Seed of the force; the noise seeds follow it.
+        Seed of the force and of the noise.
     sensor : {"x", "a"}
         Displacement or acceleration.
     band : (float, float)
         Force band, Hz.
     rms : float
         Force rms, N.
+    stream : int
+        Noise stream, 1 (>= 0): experiments sharing ``seed`` draw independent noise when it differs.
+    lags : int
+        Lags of the residual tests, samples.
 
     Examples
     --------
@@ -135,24 +199,146 @@ def identification_experiment(
     noise = check_real("noise", noise, low=0.0, low_open=True, high=10.0)
     runs = check_int("runs", runs, low=2, high=10_000)
     seed = _check_seed(seed)
+    stream = check_int("stream", stream, low=0, high=2**31)
     sensor = _check_sensor(sensor)
     n = _grid_size(duration, dt)
+    lags = check_int("lags", lags, low=1, high=n // 4)
     _work("runs", runs, runs * n, MAX_EXPERIMENT_SAMPLES, f"samples to identify ({runs} runs x {n} samples)")
     t = np.arange(n) * dt
     force = random_force(t, band=band, rms=rms, seed=seed)
-    clean = synthetic_measurements(osc, t, force, sensor=sensor)
-    sd = noise * float(np.sqrt(np.mean(clean.response**2)))
-    est = np.empty((runs, 3))
-    se = np.empty((runs, 3))
-    ci = np.empty((runs, 3, 2))
-    for i in range(runs):
-        y = clean.response + sd * np.random.default_rng(seed + 1 + i).standard_normal(t.size)
-        fit = identify(t, force, **{sensor: y}, search="local")
-        est[i] = (fit.m, fit.c, fit.k)
-        se[i] = fit.stderr
-        ci[i] = fit.ci95
+    clean = synthetic_measurements(osc, t, force, sensor=sensor).response
+    sd = noise * float(np.sqrt(np.mean(clean**2)))
+    est, se, ci, white, inp = _monte_carlo(
+        np.array([osc.m, osc.c, osc.k]), t, force, clean, sd, runs, seed, stream, sensor, lags=lags
+    )
     truth = np.array([osc.m, osc.c, osc.k])
-    return CoverageExperiment(truth, est, se, ci, noise, float(t[-1]), dt, sensor)
+    return CoverageExperiment(truth, est, se, ci, noise, float(t[-1]), dt, sensor, white, inp)
+
+
+# --------------------------------------------------------------------------- violated assumptions
+
+#: The records of :func:`assumption_study`: label -> (force noise, response noise, colour, cubic), each a
+#: multiplier of the study's arguments of the same name (1: use it, 0: leave it out).
+ASSUMPTION_CASES = {
+    "noise on the force": (1.0, 0.0, 0.0, 0.0),
+    "noise on both channels": (1.0, 1.0, 0.0, 0.0),
+    "coloured sensor noise": (0.0, 1.0, 1.0, 0.0),
+    "unmodelled cubic spring": (0.0, 1.0, 0.0, 1.0),
+}
+
+
+@dataclass(frozen=True)
+class AssumptionStudy:
+    """Coverage and residual tests when the records break one assumption at a time (one experiment per case)."""
+
+    experiments: dict  # label -> CoverageExperiment (the as-assumed case first)
+    predicted: dict  # label -> (3,) first-order coverage of m, c, k, or None where no prediction applies
+    force_noise: float  # force-noise standard deviation / rms force, 1
+    noise: float  # response-noise standard deviation / rms response, 1
+    colour: float  # lag-one correlation of the coloured sensor noise, 1
+    cubic: float  # k3 x_rms^2 / k of the cubic spring, 1
+    k3: float  # the cubic coefficient that gives it, N/m^3
+    lags: int  # lags of the residual tests, samples
+
+
+def assumption_study(
+    osc: Oscillator,
+    reference: CoverageExperiment,
+    *,
+    force_noise: float = 0.05,
+    colour: float = 0.9,
+    cubic: float = 0.05,
+    runs: int = 60,
+    seed: int = 0,
+    band: tuple[float, float] = (0.1, 2.0),
+    rms: float = 2.0,
+) -> AssumptionStudy:
+    """Coverage of the intervals, and how often the residual tests flag the record, under violated assumptions.
+
+    Each case of :data:`ASSUMPTION_CASES` uses the design of ``reference`` (its record length,
+    step, noise level and sensor; the force of seed ``seed``) and breaks one assumption: white
+    noise of ``force_noise`` times the rms force on the measured force (alone, then with the
+    response noise), AR(1) sensor noise of lag-one correlation ``colour`` (same marginal standard
+    deviation), or a cubic spring ``k3 x^3`` with ``k3 x_rms^2 = cubic k`` (x_rms of the linear
+    response). Every case draws its own noise (stream 1000 + case). The as-assumed case is
+    ``reference`` itself; the white and coloured cases also get the first-order coverage of
+    :func:`predicted_coverage`.
+
+    Parameters
+    ----------
+    osc : Oscillator
+        The truth: m (kg), c (N s/m), k (N/m).
+    reference : CoverageExperiment
+        The as-assumed experiment (:func:`identification_experiment`, displacement sensor).
+    force_noise : float
+        Force-noise standard deviation over the rms force, 1 (0 < value <= 1).
+    colour : float
+        Lag-one correlation of the coloured noise, 1 (0 < value <= 0.99).
+    cubic : float
+        Cubic force over linear force at the rms displacement, 1 (0 < value <= 1).
+    runs : int
+        Realisations per violated case (2 to 10000).
+    seed : int
+        Seed of the force (as the reference's) and of the noise.
+    band, rms
+        Force band (Hz) and rms (N), as the reference's.
+
+    Examples
+    --------
+    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> ref = identification_experiment(osc, duration=20.0, runs=4)
+    >>> st = assumption_study(osc, ref, runs=3)
+    >>> list(st.experiments)[:2], st.experiments["coloured sensor noise"].flagged()
+    (['as assumed', 'noise on the force'], 1.0)
+    """
+    _check_osc(osc)
+    if not isinstance(reference, CoverageExperiment) or reference.sensor != "x":
+        raise ParameterError(f"reference = {reference!r:.60}: allowed a displacement CoverageExperiment")
+    force_noise = check_real("force_noise", force_noise, low=0.0, low_open=True, high=1.0)
+    colour = check_real("colour", colour, low=0.0, low_open=True, high=0.99)
+    cubic = check_real("cubic", cubic, low=0.0, low_open=True, high=1.0)
+    runs = check_int("runs", runs, low=2, high=10_000)
+    seed = _check_seed(seed)
+    dt = reference.dt
+    n = _grid_size(reference.duration, dt)
+    _work("runs", runs, len(ASSUMPTION_CASES) * runs * n, MAX_EXPERIMENT_SAMPLES, "samples to identify")
+    t = np.arange(n) * dt
+    force = random_force(t, band=band, rms=rms, seed=seed)
+    linear = synthetic_measurements(osc, t, force).x
+    x_rms = float(np.sqrt(np.mean(linear**2)))
+    k3 = cubic * osc.k / x_rms**2
+    f_rms = float(np.sqrt(np.mean(force**2)))
+    truth = np.array([osc.m, osc.c, osc.k])
+    lags = WHITENESS_LAGS
+    experiments = {"as assumed": reference}
+    predicted = {"as assumed": predicted_coverage(osc, t, force, 0.0)}
+    clean_cubic = None
+    for j, (label, (uf, uy, uc, uk)) in enumerate(ASSUMPTION_CASES.items()):
+        if uk:
+            clean_cubic = cubic_response(osc, k3, t, force) if clean_cubic is None else clean_cubic
+            clean = clean_cubic
+        else:
+            clean = linear
+        sd = uy * reference.noise * float(np.sqrt(np.mean(clean**2)))
+        est, se, ci, white, inp = _monte_carlo(
+            truth,
+            t,
+            force,
+            clean,
+            sd,
+            runs,
+            seed,
+            1000 + j,
+            "x",
+            force_sd=uf * force_noise * f_rms,
+            colour=uc * colour,
+            lags=lags,
+        )
+        experiments[label] = CoverageExperiment(
+            truth, est, se, ci, reference.noise * uy, float(t[-1]), dt, "x", white, inp, label
+        )
+        predicted[label] = predicted_coverage(osc, t, force, colour) if uc else None
+    return AssumptionStudy(experiments, predicted, force_noise, reference.noise, colour, cubic, k3, lags)
 
 
 @dataclass(frozen=True)
@@ -312,6 +498,9 @@ def identification_sweep(
     """Error scaling: :func:`identification_experiment` over noise levels (at ``duration``) and record lengths
     (at ``noise``).
 
+    Every point draws its own noise (stream ``1 + index`` of the point), so the fitted scaling exponents are
+    measured, not fixed by rescaling one draw.
+
     Parameters
     ----------
     osc : Oscillator
@@ -329,9 +518,9 @@ def identification_sweep(
 
     Examples
     --------
-    >>> by_noise, by_length = identification_sweep(Oscillator(1.0, 0.5, 20.0), noises=(0.01, 0.1),
+    >>> by_noise, by_length = identification_sweep(Oscillator(1.0, 0.5, 20.0), noises=(0.01, 0.3),
     ...                                            durations=(20.0, 40.0), runs=5)
-    >>> float(by_noise[1].rel_rmse[2] / by_noise[0].rel_rmse[2]) > 5      # error grows with the noise
+    >>> float(by_noise[1].rel_rmse[2] / by_noise[0].rel_rmse[2]) > 10     # error grows with the noise (30x)
     True
     """
     noises, durations = _signal("noises", noises), _signal("durations", durations)
@@ -340,10 +529,14 @@ def identification_sweep(
     total = runs * (noises.size * (duration / dt + 1) + float(np.sum(durations / dt + 1)))
     _work("runs", runs, total, MAX_EXPERIMENT_SAMPLES, "samples to identify over both sweeps")
     by_noise = [
-        identification_experiment(osc, duration=duration, noise=s, runs=runs, seed=seed, **kwargs) for s in noises
+        identification_experiment(osc, duration=duration, noise=s, runs=runs, seed=seed, stream=1 + i, **kwargs)
+        for i, s in enumerate(noises)
     ]
     by_length = [
-        identification_experiment(osc, duration=d, noise=noise, runs=runs, seed=seed, **kwargs) for d in durations
+        identification_experiment(
+            osc, duration=d, noise=noise, runs=runs, seed=seed, stream=1 + noises.size + j, **kwargs
+        )
+        for j, d in enumerate(durations)
     ]
     return by_noise, by_length
 
@@ -481,12 +674,14 @@ def detection_study(
     runs: int = 100,
     seed: int = 0,
     thresholds=THRESHOLDS,
+    band: tuple[float, float] = (0.1, 2.0),
+    rms: float = 2.0,
 ) -> dict[str, DetectionExperiment]:
     """Two seeded detection experiments on ``t_monitor``-long records: a sudden drop alone and a slow decline alone.
 
     Both faults start at 40 % of the window (after the 25 % calibration). The noise is
     ``noise`` times the rms of the healthy noise-free response (1); the force is a fresh
-    band-limited random force (seed ``seed``).
+    band-limited random force (seed ``seed``, band ``band`` in Hz, rms ``rms`` in N).
 
     Examples
     --------
@@ -507,7 +702,7 @@ def detection_study(
     _work("runs", runs, 4 * runs * n, MAX_EXPERIMENT_SAMPLES, f"samples to monitor (2 faults x 2 x {runs} runs x {n})")
     t = np.arange(n) * dt
     start = 0.4 * t_monitor
-    force = random_force(t, seed=seed)
+    force = random_force(t, band=band, rms=rms, seed=seed)
     clean = synthetic_measurements(osc, t, force).x
     sd = noise * float(np.sqrt(np.mean(clean**2)))
     profiles = {
