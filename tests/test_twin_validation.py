@@ -171,3 +171,35 @@ def test_coloured_noise_coverage_matches_the_sandwich_prediction():
     # binomial 3 sigma, plus 0.05 for the first-order approximation (s^2 and the delta method)
     tol = 3 * np.sqrt(pred * (1 - pred) / ex.runs) + 0.05
     assert np.all(np.abs(ex.coverage - pred) < tol), (ex.coverage, pred)
+
+
+# ----------------------------------------------------------------------------- CUSUM tuning and false alarms
+
+
+@pytest.mark.parametrize("drift", [0.386, 1.0, 3.0])
+def test_cusum_ratio_is_the_gaussian_likelihood_ratio(drift):
+    """The increment u - 1 - drift is proportional to the one-sample log-likelihood ratio of variance rho."""
+    rho = twin.cusum_variance_ratio(drift)
+    u = np.linspace(0.0, 20.0, 41)
+    llr = 0.5 * (-np.log(rho) + (1 - 1 / rho) * u)  # log N(0, rho) / N(0, 1) at r^2 = u
+    np.testing.assert_allclose(llr, 0.5 * (1 - 1 / rho) * (u - 1 - drift), rtol=1e-10, atol=1e-12)
+
+
+def test_cusum_nu_one_is_not_a_doubling():
+    assert twin.cusum_variance_ratio(1.0) == pytest.approx(4.9215536, rel=1e-6)
+    assert twin.cusum_variance_ratio(2 * math.log(2) - 1) == pytest.approx(2.0, rel=1e-10)
+
+
+def test_false_alarm_upper_bound_is_the_exact_poisson_bound():
+    from scipy.stats import poisson
+
+    t = np.arange(0.0, 120.0, 0.02)
+    force = twin.random_force(t, seed=3)
+    ks = twin.stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=60.0, drop=0.1)
+    ex = twin.detection_experiment(OSC, t, force, ks, 60.0, noise=2e-3, runs=4, reference=OSC, thresholds=[1.0, 40])
+    hours = ex.monitored_hours
+    alarms = np.round(ex.false_alarm_rate * hours).astype(int)
+    for k, upper in zip(alarms, ex.false_alarm_rate_upper, strict=True):
+        # the bound is the rate at which k or fewer alarms have probability 5 %
+        assert poisson.cdf(k, upper * hours) == pytest.approx(0.05, rel=1e-8)
+    assert ex.healthy_max >= 0.0

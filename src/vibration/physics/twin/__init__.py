@@ -132,6 +132,7 @@ from .tracking import (  # noqa: F401 - constants and helpers kept reachable as 
     ChangeDetection,
     StiffnessTrack,
     _cusum,
+    cusum_variance_ratio,
     detect_change,
     track_stiffness,
 )
@@ -158,6 +159,7 @@ __all__ = [
     "SampledResponse",
     "StiffnessTrack",
     "detect_change",
+    "cusum_variance_ratio",
     "assumption_study",
     "binomial_halfwidth",
     "cubic_response",

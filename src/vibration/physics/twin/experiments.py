@@ -370,6 +370,29 @@ class DetectionExperiment:
         return alarms / (self.runs * self.monitored / 3600.0)
 
     @property
+    def false_alarm_rate_upper(self) -> np.ndarray:
+        """(T,) one-sided 95 % upper confidence bound of :attr:`false_alarm_rate` (Poisson, exact), 1/h.
+
+        With k alarms in H hours of healthy monitoring: ``chi2.ppf(0.95, 2 k + 2) / (2 H)``; 0 alarms give
+        ``-ln(0.05) / H``, about 3 / H.
+        """
+        from scipy.stats import chi2
+
+        alarms = (self.healthy_peak[:, None] > self.thresholds[None, :]).sum(axis=0)
+        hours = self.runs * self.monitored / 3600.0
+        return chi2.ppf(0.95, 2 * alarms + 2) / (2.0 * hours)
+
+    @property
+    def monitored_hours(self) -> float:
+        """Healthy monitoring over all healthy records, h."""
+        return self.runs * self.monitored / 3600.0
+
+    @property
+    def healthy_max(self) -> float:
+        """Largest CUSUM value reached on any healthy record, 1 (the threshold's margin is threshold / this)."""
+        return float(np.max(self.healthy_peak))
+
+    @property
     def detection_probability(self) -> np.ndarray:
         """(T,) fraction of faulty records alarmed at or after the fault start."""
         late = np.nan_to_num(self.first_crossing, nan=-np.inf) >= self.change_time

@@ -14,6 +14,7 @@ from .sampled import _foh, _run
 
 __all__ = [
     "ChangeDetection",
+    "cusum_variance_ratio",
     "StiffnessTrack",
     "detect_change",
     "track_stiffness",
@@ -213,6 +214,29 @@ class ChangeDetection:
     calibration_end: float = math.nan  # end of the calibration window, s
 
 
+def cusum_variance_ratio(drift: float) -> float:
+    """The residual-variance ratio rho the CUSUM of :func:`detect_change` is the optimal (likelihood-ratio) test for.
+
+    For Gaussian residuals whose variance goes from sigma^2 to rho sigma^2, the log-likelihood ratio of
+    one sample is ``((1 - 1/rho) u - ln rho) / 2`` with ``u = r^2 / sigma^2``: proportional to
+    ``u - ln rho / (1 - 1/rho)``. The detector's increment ``u - 1 - drift`` is that with
+    ``ln rho / (1 - 1/rho) = 1 + drift``; this solves it for rho (> 1).
+
+    Examples
+    --------
+    >>> round(cusum_variance_ratio(1.0), 3), round(cusum_variance_ratio(2 * math.log(2) - 1), 6)
+    (4.922, 2.0)
+    """
+    from scipy.optimize import brentq
+
+    drift = check_real("drift", drift, low=0.0, low_open=True, high=100.0)
+
+    def f(rho):
+        return math.log(rho) / (1.0 - 1.0 / rho) - 1.0 - drift
+
+    return float(brentq(f, 1.0 + 1e-12, 1e60, xtol=1e-14, rtol=1e-14))
+
+
 def _cusum(z):
     s = np.cumsum(z)
     return s - np.minimum(np.minimum.accumulate(s), 0.0)
@@ -237,10 +261,10 @@ def detect_change(
     as healthy). Under no change ``r`` is white with variance ``sigma^2``; a change
     of m, c or k adds the response difference to it. The one-sided CUSUM
     ``g[n] = max(0, g[n-1] + r[n]^2 / sigma^2 - 1 - drift)`` starts at the end of
-    the calibration window; the alarm is the first ``g > threshold``. ``drift = 1``
-    reacts to a doubling of the residual power; the threshold sets the false
-    alarm rate (about one per ``exp(threshold / 2)``-ish samples for white
-    Gaussian noise; measured in the chapter).
+    the calibration window; the alarm is the first ``g > threshold``. The drift
+    tunes it to a residual-variance ratio rho with ``ln rho / (1 - 1/rho) = 1 + drift``
+    (:func:`cusum_variance_ratio`; ``drift = 1``: rho = 4.92, not a doubling); the
+    threshold sets the false alarm rate (measured in the chapter).
 
     Parameters
     ----------
