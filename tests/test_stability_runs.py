@@ -85,7 +85,7 @@ def _sentence(texts: list[str], start: str) -> str:
 @pytest.mark.parametrize("key", list(RUNS))
 def test_run_has_no_error_and_its_sentences_follow_its_tables(runs, key):
     tables, texts = _outputs(runs[key])
-    assert len(tables) == 8, sorted(tables)
+    assert len(tables) == 9, sorted(tables)
     for plain in tables.values():
         assert not re.search(r"\b(nan|inf)\b", plain), plain
 

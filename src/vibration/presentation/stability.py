@@ -40,6 +40,8 @@ from ..physics.stability import (
     step_metrics,
     step_response,
     transmissibility,
+    white_noise_force_optimum,
+    white_noise_force_variance,
     white_noise_monte_carlo,
     white_noise_variance,
     white_noise_velocity_variance,
@@ -366,7 +368,10 @@ def stability_sentence(st: StabilityStudy) -> str:
         )
     else:
         tail = " The flutter model is set to c = 0 here: it is the undamped case, marginally stable, with no growth."
-    return f"{head} {claim}{tail} Instability needs c ≤ 0."
+    return (
+        f"{head} {claim}{tail} With a positive stiffness k, instability needs c ≤ 0 "
+        "(with k ≤ 0 the equilibrium is unstable whatever c)."
+    )
 
 
 def pole_figure(st: StabilityStudy):
@@ -799,7 +804,8 @@ def random_table(st: StabilityStudy) -> Table:
             Column("vz", "deviation (std. errors)", 2),
         ],
         caption=f"Displacement and velocity variance under a white-noise force, S0 = {st.S0:g} N² s/rad "
-        f"(two-sided); Monte Carlo with {st.n_paths} seeded paths per damping.",
+        f"(two-sided); Monte Carlo with {st.n_paths} paths per damping, independent draws for each damping "
+        f"(seeds {st.seed}, {st.seed} + 1, ... in the order of the table), so the deviations are independent.",
         name="tab-stability-random",
     )
 
@@ -818,8 +824,9 @@ def random_sentence(st: StabilityStudy) -> str:
         ]
         agree = "agrees with" if max(zs) < 4.0 else "does not agree with"
         text += (
-            f" By damping: {_list(rms)}; the largest is the {largest} damping's. Here more damping helps at every "
-            f"level of the load. The simulation {agree} the closed form (largest deviation {fmt(max(zs), 2)} "
+            f" By damping: {_list(rms)}; the largest is the {largest} damping's. For the displacement, more "
+            "damping helps at every level of the load; for the force passed to the support it does not (below). "
+            f"The simulation {agree} the closed form (largest deviation {fmt(max(zs), 2)} "
             "standard errors)."
         )
     if bad:
@@ -828,6 +835,54 @@ def random_sentence(st: StabilityStudy) -> str:
             "without bound, like t for c = 0 and exponentially for c < 0."
         )
     return text
+
+
+def random_force_rows(st: StabilityStudy) -> list[dict]:
+    c_opt, v_opt = white_noise_force_optimum(st.m, st.k, st.S0)
+    rows = []
+    for n, c in st.by_value():
+        if c > 0.0:
+            v = white_noise_force_variance(st.osc(c), st.S0)
+            rows.append({"case": n, "c": c, "var": v, "ratio": v / v_opt})
+        else:
+            rows.append({"case": n, "c": c, "var": WHY_NO_VARIANCE, "ratio": WHY_NO_VARIANCE})
+    rows.append({"case": "least force variance, c = √(km)", "c": c_opt, "var": v_opt, "ratio": 1.0})
+    return rows
+
+
+def random_force_table(st: StabilityStudy) -> Table:
+    """Variance of the force passed to the support under white noise, by damping, and its optimum."""
+    return Table(
+        random_force_rows(st),
+        [
+            Column("case", "damping"),
+            Column("c", "c (N s/m)", 3),
+            Column("var", "var F_T (N²)", 3),
+            Column("ratio", "over the least", 3),
+        ],
+        caption=(
+            f"Force passed to the support, F_T = k x + c v, under a white-noise force of S0 = {st.S0:g} N² s/rad: "
+            "its stationary variance πS0(k/c + c/m) (x and v are uncorrelated in the stationary state), and the "
+            "least over all dampings, 2πS0√(k/m) at c = √(km)."
+        ),
+        name="tab-stability-random-force",
+    )
+
+
+def force_tradeoff_text(st: StabilityStudy) -> str:
+    c_opt, v_opt = white_noise_force_optimum(st.m, st.k, st.S0)
+    pos = st.positive()
+    if not pos:
+        return (
+            f"The force passed to the support under random load is least at c = √(km) = {fmt(c_opt, 3)} N s/m "
+            f"({fmt(v_opt, 3)} N²)."
+        )
+    vals = [f"{fmt(white_noise_force_variance(st.osc(c), st.S0), 3)} N² ({n}, {_c_text(c)})" for n, c in pos]
+    return (
+        "The force passed to the support is a trade-off even under the paper's own load: its variance "
+        f"πS0(k/c + c/m) is least at c = √(km) = {fmt(c_opt, 3)} N s/m ({fmt(v_opt, 3)} N² at S0 = {st.S0:g} "
+        f"N² s/rad), against {_list(vals)}."
+    )
 
 
 # ----------------------------------------------------------------------------- cost
@@ -865,6 +920,8 @@ def cost_table(st: StabilityStudy) -> Table:
             row = {"case": n, "c": c, "w": label}
             if c < 0.0:
                 row.update({"x": WHY_NO_STEADY, "f": WHY_NO_STEADY, "p": WHY_NO_STEADY})
+            elif c == 0.0 and w == st.omega_n:  # undamped resonance: no damper, no steady amplitude
+                row.update({"x": WHY_UNDAMPED_PEAK, "f": 0.0, "p": 0.0})
             else:
                 d = damper_load(osc, st.F0, w)
                 x = float(d.amplitude)
@@ -1140,19 +1197,21 @@ def summary_text(st: StabilityStudy) -> str:
     if not bad:
         first = (
             f"* All three of this run's dampings are asymptotically stable; the lightest ({_c_text(pos[0][1])}) "
-            f"decays with τ = {fmt(st.osc(pos[0][1]).time_constant, 3)} s. Instability needs c ≤ 0: linear growth "
+            f"decays with τ = {fmt(st.osc(pos[0][1]).time_constant, 3)} s. With k > 0, instability needs c ≤ 0: "
+            "linear growth "
             "at exact undamped resonance, exponential growth with c < 0."
         )
     else:
         first = (
             "* Not all of this run's dampings are asymptotically stable: "
             + _list([f"{_c_text(c)} is {st.design[n].stability}" for n, c in bad])
-            + ". Instability needs c ≤ 0: linear growth at exact undamped resonance, exponential growth with c < 0."
+            + ". With k > 0, instability needs c ≤ 0: linear growth at exact undamped resonance, exponential "
+            "growth with c < 0."
         )
     lines = [
         first,
-        "* Under a force on the mass more damping lowers the response at every frequency and the random "
-        "response too (σ_x ∝ 1/√c): no trade-off there.",
+        "* Under a force on the mass more damping lowers the displacement at every frequency and under random "
+        "load (σ_x ∝ 1/√c). " + force_tradeoff_text(st),
     ]
     if len({c for _n, c in pos}) >= 2:
         (nl, cl), (nh, ch) = pos[0], pos[-1]

@@ -293,3 +293,37 @@ def white_noise_monte_carlo(
         burn_in=burn,
         seed=seed,
     )
+
+
+def white_noise_force_variance(osc: Oscillator, S0: float) -> float:
+    """Stationary variance of the force ``k x + c v`` passed to the support under a white force, N^2.
+
+    ``x`` and ``v`` are uncorrelated in the stationary state, so the variance is
+    ``k^2 var x + c^2 var v = pi S0 (k / c + c / m)``: it grows without bound as ``c -> 0`` and
+    as ``c -> inf``, and is least at ``c = sqrt(k m)`` (:func:`white_noise_force_optimum`).
+
+    Examples
+    --------
+    >>> round(white_noise_force_variance(Oscillator(1.0, 0.5, 20.0), 0.1), 4)     # N^2
+    12.7235
+    """
+    _check_osc(osc)
+    S0 = _check_S0(S0)
+    _check_stable(osc, "a stationary force variance")
+    return math.pi * S0 * (osc.k / osc.c + osc.c / osc.m)
+
+
+def white_noise_force_optimum(m: float, k: float, S0: float) -> tuple[float, float]:
+    """Damping (N s/m) that minimises the transmitted-force variance, ``sqrt(k m)``, and that variance, N^2.
+
+    Examples
+    --------
+    >>> c, var = white_noise_force_optimum(1.0, 20.0, 0.1)
+    >>> round(c, 4), round(var, 4)
+    (4.4721, 2.8099)
+    """
+    m = check_real("m", m, low=0.0, low_open=True, unit="kg")
+    k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
+    S0 = _check_S0(S0)
+    c = math.sqrt(k * m)
+    return c, 2.0 * math.pi * S0 * math.sqrt(k / m)
