@@ -460,7 +460,10 @@ def _driven(params: Params, build_up: float) -> list[DrivenRun]:
             n_e = max(n_min, min(params.n_early, n_whole // 2))
             n_l = max(n_min, min(params.n_late, n_whole - n_e))
             early = _window(t, y, u, omega, float(t[0]), n_e)
-            late = _window(t, y, u, omega, float(t[-1]) - n_l * T + 1e-9, n_l)
+            # the late window ends half a sample step after the last sample, so that no sample sits on a
+            # boundary, where the last bit of T would decide whether it counts (and differ between machines)
+            half_step = 0.5 * float(np.median(np.diff(t)))
+            late = _window(t, y, u, omega, float(t[-1]) + half_step - n_l * T, n_l)
             z = (late.wheel_amp - early.wheel_amp) / math.hypot(late.wheel_amp_se, early.wheel_amp_se)
             steady = abs(z) <= params.z_steady and build_up <= float(t[-1] - t[0])
             out.append(
