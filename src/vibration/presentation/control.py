@@ -660,9 +660,13 @@ def comparison_sentence(a: ActiveStudy) -> str:
             f"X = {X['PD2']:.3g} m against the PID's {X['PID']:.3g} m: here the integral term helps"
         )
     if X["PD2"] < X["PD"]:
+        stiff = f"k + K_p = {a.osc.k + kp:.4g} N/m against {a.pd.k:.4g} N/m"
         integ += (
-            f". The PID's advantage over the PD (X = {X['PD']:.3g} m) is its stiffness, k + K_p = "
-            f"{a.osc.k + kp:.4g} N/m against {a.pd.k:.4g} N/m, not its integral action"
+            f". The PID's advantage over the PD (X = {X['PD']:.3g} m) is its stiffness, {stiff}, "
+            "not its integral action"
+            if X["PD2"] < X["PID"]
+            else f". Most of the PID's advantage over the PD (X = {X['PD']:.3g} m) is its stiffness, {stiff}; "
+            "the integrator adds the rest"
         )
     c = a.costs
     cost = (
@@ -677,7 +681,7 @@ def comparison_sentence(a: ActiveStudy) -> str:
     rows = {r["law"]: r for r in cost_rows(a)}
     ratio = max(r["u_rms"] / r["floor"] for r in rows.values() if math.isfinite(r["u_rms"]) and r["floor"] > 0)
     force = (
-        f" No design wastes force: each uses at most {ratio:.3g} times the least RMS force that can hold its "
+        f" Each design uses at most {ratio:.3g} times the least RMS force that can hold its "
         "amplitude ({numref}`tab-control-costs`)."
     )
     return poles + integ + cost + force
