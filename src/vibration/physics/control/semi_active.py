@@ -223,6 +223,10 @@ class SemiActiveResponse:
     dt: float  # RK4 step, s
 
 
+#: Times a sweep frequency whose RK4 run overflowed is run again with a quarter of the step.
+REFINE = 2
+
+
 def _sa_rate_check(p: np.ndarray, dt: float, w: float, spp: int) -> None:
     """Refuse an RK4 step longer than the plant's fastest time scale (RK4 would be inaccurate or diverge)."""
     m, c, k, c_sky, c_max = p[0], p[1], p[2], p[3], p[5]
@@ -334,6 +338,11 @@ def semi_active_response(
             "(shorten t_end or lower steps_per_period)"
         )
     rec, _ = _sa_kernel()[0](law_i, p, Y, w, np.zeros(5), dt, n_steps, stride, n_steps + 1)
+    for _ in range(REFINE):  # the MR damper's state may need a shorter step (see semi_active_sweep)
+        if np.all(np.isfinite(rec)) or 4 * n_steps > RK4_STEPS_MAX:
+            break
+        n_steps, stride, dt = 4 * n_steps, 4 * stride, dt / 4.0
+        rec, _ = _sa_kernel()[0](law_i, p, Y, w, np.zeros(5), dt, n_steps, stride, n_steps + 1)
     if not np.all(np.isfinite(rec)):
         raise ParameterError(
             f"dt_max = {dt_max!r} s, steps_per_period = {spp}: the RK4 run overflowed (step {dt:.3g} s too long "
@@ -451,11 +460,25 @@ def semi_active_sweep(
             f"allowed at most {SWEEP_STEPS_MAX} (fewer frequencies, periods or steps_per_period)"
         )
     st = _sa_kernel()[1](law_i, p, Y, ws, s0s, dts, n_steps, n_settle)
+    # The MR damper's internal (Bouc-Wen) state stiffens with the stroke velocity, so a fast or stiff plant
+    # can need a shorter step than dt_max: the frequencies whose run overflowed are run again with a quarter
+    # of the step, at most REFINE times, inside the same budget of RK4 steps.
+    spent = int(n_steps.sum())
+    for _ in range(REFINE):
+        bad = ~np.all(np.isfinite(st), axis=1)
+        if not bad.any():
+            break
+        more = 4 * int(n_steps[bad].sum())
+        if spent + more > SWEEP_STEPS_MAX:
+            break
+        spent += more
+        dts[bad], n_steps[bad], n_settle[bad] = dts[bad] / 4.0, 4 * n_steps[bad], 4 * n_settle[bad]
+        st[bad] = _sa_kernel()[1](law_i, p, Y, ws[bad], s0s[bad], dts[bad], n_steps[bad], n_settle[bad])
     if not np.all(np.isfinite(st)):
         bad = ws[~np.all(np.isfinite(st), axis=1)][0]
         raise ParameterError(
-            f"omegas contains {bad!r} rad/s: the RK4 run overflowed (step {dts[ws == bad][0]:.3g} s too long for "
-            f"the device; allowed a smaller dt_max = {dt_max!r} s or more steps_per_period = {spp})"
+            f"omegas contains {bad!r} rad/s: the RK4 run overflowed even at a step of {dts[ws == bad][0]:.3g} s "
+            f"(too long for the device; allowed a smaller dt_max = {dt_max!r} s or more steps_per_period = {spp})"
         )
     n, span = st[:, 6], periods * 2.0 * np.pi / ws
     out = np.stack(
