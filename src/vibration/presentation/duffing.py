@@ -914,9 +914,17 @@ _counter = itertools.count(1)
 
 
 def _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max) -> dict:
+    """The slider panel's values; a range left as None covers the chapter's case (twice its value, at least the
+    paper's range), so that a run with other parameters still shows its resonance and its force."""
     m = check_real("m", m, low=0.0, low_open=True, unit="kg")
     c = check_real("c", c, low=0.0, low_open=True, unit="N s/m")
     k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
+    if omega_max is None:
+        omega_max = max(8.0, 2.0 * math.sqrt(k / m))
+    if k3_range is None:
+        k3_range = max(5.0, 2.0 * abs(check_real("k3", k3, unit="N/m^3")))
+    if F0_max is None:
+        F0_max = max(20.0, 2.0 * check_real("F0", F0, low=0.0, low_open=True, unit="N"))
     k3_range = check_real("k3_range", k3_range, low=0.0, low_open=True, unit="N/m^3")
     k3 = check_real("k3", k3, low=-k3_range, high=k3_range, unit="N/m^3")
     F0_max = check_real("F0_max", F0_max, low=0.0, low_open=True, unit="N")
@@ -931,9 +939,9 @@ def hb_panel_html(
     k: float = 20.0,
     k3: float = 2.0,
     F0: float = 5.0,
-    omega_max: float = 8.0,
-    k3_range: float = 5.0,
-    F0_max: float = 20.0,
+    omega_max: float | None = None,
+    k3_range: float | None = None,
+    F0_max: float | None = None,
 ) -> str:
     """Kernel-free slider panel: k3 and F0 move the harmonic-balance curve (all branches).
 
@@ -952,12 +960,12 @@ def hb_panel_html(
         Starting cubic stiffness, N/m^3, within ``±k3_range``.
     F0 : float
         Starting force amplitude, N, in ``(0, F0_max]``.
-    omega_max : float
-        Right end of the frequency axis, rad/s.
-    k3_range : float
-        The k3 slider spans ``-k3_range`` to ``k3_range`` N/m^3.
-    F0_max : float
-        The F0 slider spans ``F0_max / 200`` to ``F0_max`` N.
+    omega_max : float, optional
+        Right end of the frequency axis, rad/s (default: 8 or twice the natural frequency, the larger).
+    k3_range : float, optional
+        The k3 slider spans ``-k3_range`` to ``k3_range`` N/m^3 (default: 5 or twice |k3|, the larger).
+    F0_max : float, optional
+        The F0 slider spans ``F0_max / 200`` to ``F0_max`` N (default: 20 or twice F0, the larger).
 
     Returns
     -------
@@ -971,6 +979,7 @@ def hb_panel_html(
     (True, False)
     """
     params = _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max)
+    k3_range, F0_max = params["k3_range"], params["F0_max"]
     digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode()).hexdigest()[:8]
     pid = f"vib-duffing-{digest}-{next(_counter)}"
     e = html.escape
@@ -1009,11 +1018,12 @@ class HBExplorer:
     kernel-free panel of :func:`hb_panel_html` at the same parameters.
     """
 
-    def __init__(self, m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=8.0, k3_range=5.0, F0_max=20.0):
+    def __init__(self, m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=None, k3_range=None, F0_max=None):
         import ipywidgets as widgets
         import matplotlib.pyplot as plt
 
         self.params = _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max)
+        k3_range, F0_max = self.params["k3_range"], self.params["F0_max"]
         self.k3_slider = widgets.FloatSlider(value=k3, min=-k3_range, max=k3_range, step=k3_range / 500,
                                              description="k3 (N/m³)", continuous_update=False)  # fmt: skip
         self.F0_slider = widgets.FloatSlider(value=F0, min=F0_max / 200, max=F0_max, step=F0_max / 200,
@@ -1063,7 +1073,7 @@ class HBExplorer:
         return data
 
 
-def hb_explorer(m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=8.0, k3_range=5.0, F0_max=20.0) -> HBExplorer:
+def hb_explorer(m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=None, k3_range=None, F0_max=None) -> HBExplorer:
     """JupyterLab explorer of the harmonic-balance curve (k3 in N/m^3 and F0 in N sliders).
 
     Parameters are those of :func:`hb_panel_html` (kg, N s/m, N/m, N/m^3, N, rad/s).
