@@ -629,6 +629,15 @@ def costs_table(a: ActiveStudy) -> Table:
     )
 
 
+def _delay_text(x: float) -> str:
+    """A delay margin in words; none when the loop gain never reaches 1 (no crossover: no delay destabilises)."""
+    return f"{x:.3g} s" if math.isfinite(x) else "any delay (its loop gain never reaches 1)"
+
+
+def _crossing_text(x: float) -> str:
+    return f"{x:.3g} rad/s" if math.isfinite(x) else "absent (loop gain below 1 at every frequency)"
+
+
 def comparison_sentence(a: ActiveStudy) -> str:
     """The PID against the PD with its own K_p and K_d, how its gains were chosen, and what stiffness costs."""
     X = a.amplitude
@@ -669,11 +678,12 @@ def comparison_sentence(a: ActiveStudy) -> str:
             "the integrator adds the rest"
         )
     c = a.costs
+    delay, crossing = _delay_text, _crossing_text
     cost = (
         ". Stiffness is paid for in robustness and noise: the PID tolerates a loop delay of "
-        f"{c['PID'].delay_margin:.3g} s before it goes unstable, the PD {c['PD'].delay_margin:.3g} s and the LQR "
-        f"{c['LQR'].delay_margin:.3g} s; "
-        f"its crossover is {c['PID'].crossover:.3g} rad/s against {c['PD'].crossover:.3g} rad/s, and sensor noise "
+        f"{delay(c['PID'].delay_margin)} before it goes unstable, the PD {delay(c['PD'].delay_margin)} and the LQR "
+        f"{delay(c['LQR'].delay_margin)}; "
+        f"its crossover is {crossing(c['PID'].crossover)} against {crossing(c['PD'].crossover)}, and sensor noise "
         f"reaches the mass through a noise bandwidth of {c['PID'].noise_bandwidth:.3g} rad/s against "
         f"{c['PD'].noise_bandwidth:.3g} rad/s, with {c['PID'].hf_noise_gain / max(c['PD'].hf_noise_gain, 1e-300):.3g} "
         "times the PD's high-frequency noise gain K_d."
@@ -1317,8 +1327,8 @@ def summary(a: ActiveStudy, s: SemiActiveStudy, sh: ShapingStudy) -> str:
         f"(F0/√2 = {a.force.F0 / math.sqrt(2.0):.3g} N as the amplitude goes to zero)."
     )  # fmt: skip
     lines.append(
-        f"- **What stiffness costs**: delay margin {c['PID'].delay_margin:.3g} s (PID) against "
-        f"{c['PD'].delay_margin:.3g} s (PD) and {c['LQR'].delay_margin:.3g} s (LQR); noise bandwidth "
+        f"- **What stiffness costs**: delay margin {_delay_text(c['PID'].delay_margin)} (PID) against "
+        f"{_delay_text(c['PD'].delay_margin)} (PD) and {_delay_text(c['LQR'].delay_margin)} (LQR); noise bandwidth "
         f"{c['PID'].noise_bandwidth:.3g} rad/s against "
         f"{c['PD'].noise_bandwidth:.3g} rad/s."
     )
@@ -1331,8 +1341,12 @@ def summary(a: ActiveStudy, s: SemiActiveStudy, sh: ShapingStudy) -> str:
     )
     lines.append(
         f"- **PID move to {a.move_ref:g} m with a ±{a.u_max:g} N limit**: {feas}; clamping still cuts the overshoot "
-        f"from {rows_m['none']['over']:.3g} m to {rows_m['clamping']['over']:.3g} m. The largest set point the limit "
-        f"can hold is {h['x_max']:.3g} m."
+        f"from {rows_m['none']['over']:.3g} m to {rows_m['clamping']['over']:.3g} m. "
+        + (
+            f"The largest set point the limit can hold is {h['x_max']:.3g} m."
+            if math.isfinite(h["x_max"]) and h["x_max"] > 0.0
+            else f"No set point can be held: the disturbance alone needs F0 = {a.force.F0:.3g} N."
+        )
     )
     lines.append(
         f"- **Galloping / stall-flutter model** (c = {a.flutter.c:g} N s/m): any velocity gain above "

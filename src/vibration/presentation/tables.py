@@ -289,10 +289,10 @@ def bound(value: float, tol: float) -> str | Missing:
     a rounding-level difference of 3e-15 on one CPU may be 1.2e-14 on another.
 
     >>> bound(3e-15, 1e-12), bound(2.5e-9, 1e-12), bound(float("nan"), 1e-12)
-    ('< 1e-12', '2.5e-09 (above 1e-12)', Missing(reason='not computed (nan)'))
+    ('< 1e-12', '2.5e-09 (above 1e-12)', Missing(reason='not computed for this case'))
     """
     if not math.isfinite(value):
-        return Missing("not computed (nan)") if math.isnan(value) else Missing("infinite")
+        return Missing("not computed for this case") if math.isnan(value) else Missing("infinite")
     if abs(value) < tol:
         return f"< {fmt(tol)}"
     return f"{abs(value):.2g} (above {fmt(tol)})"
