@@ -147,10 +147,10 @@ def decay_table(st: RealOscillatorStudy) -> Table:
                     "delta": c.friction,
                     "delta_se": c.stderr["friction"],
                     "offset": c.offset,
-                    "rms": c.residual_rms,
                     "floor": c.residual_rms / QUANT_FLOOR,
                     "dw": c.durbin_watson,
-                    **{f"bic_{law}": d.fits[law].bic for law in LAWS},
+                    "dbic_viscous": d.fits["viscous"].bic - d.fits["coulomb"].bic,
+                    "dbic_combined": d.fits["combined"].bic - d.fits["coulomb"].bic,
                     "chosen": LAW_TEXT[d.chosen],
                 }
             )
@@ -163,19 +163,19 @@ def decay_table(st: RealOscillatorStudy) -> Table:
         Column("delta", "Δ (rad)", 3),
         Column("delta_se", "s(Δ) (rad)", 2),
         Column("offset", "c (rad)", 2),
-        Column("rms", "rms residual (rad)", 2),
         Column("floor", "rms / floor", 2),
-        Column("dw", "Durbin–Watson", 2),
-        Column("bic_viscous", "BIC viscous", 4),
-        Column("bic_coulomb", "BIC Coulomb", 4),
-        Column("bic_combined", "BIC combined", 4),
+        Column("dw", "DW", 2),
+        Column("dbic_viscous", "ΔBIC viscous", 4),
+        Column("dbic_combined", "ΔBIC combined", 4),
         Column("chosen", "law chosen"),
     ]
     return Table(
         rows,
         cols,
-        "Free decays: the combined viscous + Coulomb fit to each whole trace, its residuals against the encoder's "
-        "rounding floor (step/√12), and the Bayesian information criterion of each law (lowest chosen).",
+        "Free decays: the combined viscous + Coulomb fit to each whole trace, its rms residual over the encoder's "
+        "rounding floor (step/√12), its Durbin–Watson statistic (DW), and the Bayesian information criterion of "
+        "the viscous and of the combined law less that of the Coulomb law (ΔBIC; the lowest BIC is chosen, so a "
+        "positive ΔBIC means Coulomb beats that law).",
         "tab-real-decays",
         notes=(
             "Standard errors s(·) are the larger of the least-squares and the Newey–West (correlated residuals) "

@@ -16,12 +16,8 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from ...physics.model import Oscillator
-from ...physics.stability import (
-    _default_dt,
-    settling_optimal_zeta,
-    step_metrics,
-    white_noise_monte_carlo,
-)
+from ...physics.stability import settling_optimal_zeta, step_metrics, white_noise_monte_carlo
+from ...physics.stability.random_load import _default_dt
 from ..bench import median_time, table
 
 
