@@ -16,6 +16,7 @@ from vibration.publishing import report
 
 #: Far from the paper's (m = 1 kg, k = 20 N/m, F0 = 5 N, ω = 3 and 4.47 rad/s, c = 0.1, 0.5, 15 N s/m).
 FAR = {
+    "light and moderate damping, forced below resonance": {"c_high": "3", "c_low": "0.02", "omega_res": "2.5"},
     "soft, light damping, low resonance": {
         "k": "6.25", "c_low": "0.02", "c_nominal": "0.2", "c_high": "3", "omega_res": "2.5", "omega_ref": "1.5",
     },
@@ -40,6 +41,7 @@ def _texts(nb: dict):
                 yield i, "".join(out.get("text", []))
 
 
+@pytest.mark.far
 @pytest.mark.slow
 @pytest.mark.notebooks
 @pytest.mark.parametrize("case", list(FAR))

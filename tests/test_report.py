@@ -73,6 +73,7 @@ def test_physical_parameters_are_declared_by_every_chapter_that_uses_them(chapte
         ("dt", "0.5", r"f_max = 2.0 Hz is not below the Nyquist frequency 1/\(2 dt\) = 1 Hz of dt = 0.5 s"),
         ("t_record", "0.001", r"t_record = 0.001 s holds 0.05 samples of dt = 0.02 s: allowed at least 200"),
         ("n_sweep", "5", r"n_sweep = 5 is out of range: allowed integer 10 <= n_sweep <= 400"),
+        ("pid_ki", "1e5", r"t_end = 50.0 s spans .* time scales of the PID loop"),
     ],
 )
 def test_bad_parameters_are_refused_before_any_kernel(chapters, no_kernel, name, value, pattern, capsys):

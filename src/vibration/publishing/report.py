@@ -290,6 +290,16 @@ def _check_chapter_together(p: dict) -> None:
     m, k, t_end = get("m"), get("k"), get("t_end")
     if None in (m, k, t_end):
         return
+    if all(n in p for n in ("pid_kp", "pid_ki", "pid_kd", "c_nominal")):  # chapter 7's PID loop, before a kernel
+        from ..physics.control import pid_work_check
+        from ..physics.model import Oscillator
+
+        try:
+            pid_work_check(Oscillator(m, p["c_nominal"], k), p["pid_kp"], p["pid_ki"], p["pid_kd"], t_end,
+                           get("omega_res") or 0.0)  # fmt: skip
+        except ParameterError as exc:
+            gains = f"pid_kp = {p['pid_kp']!r}, pid_ki = {p['pid_ki']!r}, pid_kd = {p['pid_kd']!r}"
+            raise ParameterError(f"{gains} with m = {m!r} kg, k = {k!r} N/m: {exc}") from None
     fastest = max([math.sqrt(k / m)] + [w for w in map(get, ("omega_ref", "omega_res", "omega_max")) if w])
     periods = fastest * t_end / (2 * math.pi)
     if periods > MAX_PERIODS:

@@ -65,7 +65,7 @@ from .loops import (
     loop_costs,
     pid_poles,
 )
-from .pid import ANTI_WINDUP, PIDResponse, pid_linear_response, pid_response
+from .pid import ANTI_WINDUP, PIDResponse, pid_linear_response, pid_response, pid_work_check
 from .semi_active import (
     SEMI_ACTIVE_LAWS,
     SPENCER_1997,
@@ -110,6 +110,7 @@ __all__ = [
     "pd_oscillator",
     "pid_linear_response",
     "pid_response",
+    "pid_work_check",
     "residual_amplitude",
     "response_metrics",
     "semi_active_controller",

@@ -204,6 +204,30 @@ class PIDResponse:
         return float(np.mean(np.abs(self.u_demand) > self.u_max))
 
 
+def pid_work_check(osc: Oscillator, kp: float, ki: float, kd: float, t_end: float, omega: float = 0.0,
+                   rtol: float = 1e-10) -> None:  # fmt: skip
+    """Refuse, before any integration, a PID loop whose window spans too many of its fastest time scales.
+
+    The rate is the largest of the closed loop's eigenvalue moduli, the plant's ``omega_n + |c|/m`` and the
+    forcing frequency ``omega`` (rad/s); the report runner calls this on a chapter's parameters before any
+    kernel starts, so that a run it accepts finishes within the budget.
+
+    >>> pid_work_check(Oscillator(1.0, 0.5, 20.0), 133.6, 512.0, 18.7, 50.0, 4.47)  # the chapter's loop: fine
+    >>> pid_work_check(Oscillator(1.0, 0.5, 20.0), 133.6, 1e5, 18.7, 1000.0)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    vibration.physics.model.ParameterError: t_end = 1000.0 s spans ... time scales of the PID loop ...
+    """
+    with np.errstate(over="ignore", invalid="ignore"):
+        A = np.array([[0.0, 1.0, 0.0], [-(osc.k + kp) / osc.m, -(osc.c + kd) / osc.m, ki / osc.m], [-1.0, 0.0, 0.0]])
+    if not np.all(np.isfinite(A)):
+        raise ParameterError(
+            f"kp = {kp!r}, ki = {ki!r}, kd = {kd!r} over m = {osc.m!r} kg overflow: allowed finite gains/m"
+        )
+    rate = max(float(np.max(np.abs(np.linalg.eigvals(A)))), osc.natural_frequency + abs(osc.c) / osc.m, omega)
+    _work_check(t_end, rate, rtol, "PID loop")
+
+
 def pid_response(
     osc: Oscillator,
     force: SineForce | None,
@@ -287,14 +311,7 @@ def pid_response(
     mode = ANTI_WINDUP.index(anti_windup)
     p = dict(m=osc.m, c=osc.c, k=osc.k, F0=F0, wf=wf, kp=kp, ki=ki, kd=kd, umax=umax, x_ref=x_ref, mode=mode,
              gain_bc=1.0 / (ki * tt))  # fmt: skip
-    with np.errstate(over="ignore", invalid="ignore"):
-        A = np.array([[0.0, 1.0, 0.0], [-(osc.k + kp) / osc.m, -(osc.c + kd) / osc.m, ki / osc.m], [-1.0, 0.0, 0.0]])
-    if not np.all(np.isfinite(A)):
-        raise ParameterError(
-            f"kp = {kp!r}, ki = {ki!r}, kd = {kd!r} over m = {osc.m!r} kg overflow: allowed finite gains/m"
-        )
-    rate = max(float(np.max(np.abs(np.linalg.eigvals(A)))), osc.natural_frequency + abs(osc.c) / osc.m, wf)
-    _work_check(float(grid[-1]), rate, rtol, "PID loop")
+    pid_work_check(osc, kp, ki, kd, float(grid[-1]), wf, rtol)
     y, nfev = _pid_run(p, grid, rtol, atol, float(grid[-1]))
     x, v, integ = y
     with np.errstate(over="ignore", invalid="ignore"):
