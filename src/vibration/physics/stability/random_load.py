@@ -179,10 +179,12 @@ def simulate_white_noise(
             f"n_paths * (t_end/dt + 1) = {n * n_paths} is out of range: allowed <= {SAMPLES_MAX} samples (memory)"
         )
     phi, qd = _transition(osc, S0, dt)
-    lower = np.linalg.cholesky(qd) if S0 > 0.0 else np.zeros((2, 2))
+    lower = _covariance_factor(qd) if S0 > 0.0 else np.zeros((2, 2))
     rng = np.random.default_rng(seed)
     xi = rng.standard_normal((2, n_paths, n))  # the last draw is not used
     w1 = lower[0, 0] * xi[0]
+    if lower[0, 1] != 0.0:  # only the eigenvalue factor of a rounding-level singular covariance has this term
+        w1 = w1 + lower[0, 1] * xi[1]
     w2 = lower[1, 0] * xi[0] + lower[1, 1] * xi[1]
     # X_j = Phi X_{j-1} + w_{j-1}, X_0 = 0, as a filter (the leading 0 of b is the delay);
     # (zI - Phi)^-1 = adj / det: x = ((z - Phi22) W1 + Phi12 W2) / det, v = (Phi21 W1 + (z - Phi11) W2) / det
@@ -282,11 +284,18 @@ def white_noise_monte_carlo(
         mv.append(np.mean(v[:, keep] ** 2, axis=1))
         done += size
     px, pv = np.concatenate(mx), np.concatenate(mv)
+    with np.errstate(over="ignore", invalid="ignore"):
+        stats = [float(px.mean()), float(px.std(ddof=1)), float(pv.mean()), float(pv.std(ddof=1))]
+    if not all(math.isfinite(x) for x in stats):
+        raise ParameterError(
+            f"duration = {duration!r} s, dt = {dt!r} s, S0 = {S0!r}: the sample variances overflow the float range; "
+            "allowed a shorter step or a smaller load"
+        )
     return MonteCarlo(
-        variance=float(px.mean()),
-        standard_error=float(px.std(ddof=1) / math.sqrt(px.size)),
-        velocity_variance=float(pv.mean()),
-        velocity_standard_error=float(pv.std(ddof=1) / math.sqrt(pv.size)),
+        variance=stats[0],
+        standard_error=stats[1] / math.sqrt(px.size),
+        velocity_variance=stats[2],
+        velocity_standard_error=stats[3] / math.sqrt(pv.size),
         n_paths=n_paths,
         n_samples=int(np.count_nonzero(keep)),
         dt=dt,
@@ -327,3 +336,18 @@ def white_noise_force_optimum(m: float, k: float, S0: float) -> tuple[float, flo
     S0 = _check_S0(S0)
     c = math.sqrt(k * m)
     return c, 2.0 * math.pi * S0 * math.sqrt(k / m)
+
+
+def _covariance_factor(qd: np.ndarray) -> np.ndarray:
+    """L with L L^T = qd: Cholesky, or for a covariance that rounding left singular or slightly indefinite
+    (a very stiff or very damped step), the symmetric square root with its negative eigenvalues set to 0."""
+    try:
+        return np.linalg.cholesky(qd)
+    except np.linalg.LinAlgError:
+        w, v = np.linalg.eigh(0.5 * (qd + qd.T))
+        if not np.all(np.isfinite(w)) or w.max() <= 0.0:
+            raise ParameterError(
+                f"the step covariance of the white-noise load is not a covariance (eigenvalues {w.tolist()}): "
+                "allowed a dt or an oscillator for which it is positive semi-definite"
+            ) from None
+        return v * np.sqrt(np.clip(w, 0.0, None))
