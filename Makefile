@@ -16,7 +16,7 @@ PORTABLE := NUMBA_CPU_NAME=generic NPY_DISABLE_CPU_FEATURES="X86_V3 X86_V4 AVX51
 # pytest workers, one per core (--dist loadfile keeps a notebook's cells, and a module's fixtures, in one worker)
 JOBS ?= 2
 
-.PHONY: help setup report test test-far test-fast bench lint format notebooks lab browser clean
+.PHONY: help setup report test test-slow test-fast bench lint format notebooks lab browser clean
 
 help: ## list the targets
 	@awk 'BEGIN {FS = ":.*## "} /^[a-zA-Z_-]+:.*## / {printf "  make %-11s %s\n", $$1, $$2}' $(MAKEFILE_LIST)
@@ -40,17 +40,17 @@ browser: ## install Debian's Chromium for the browser tests if it is missing
 report: $(STAMP) browser ## run every chapter with papermill, build the book: build/report/index.html and report.pdf
 	$(PY) -m vibration.report --out $(BUILD)
 
-test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval and browser tests
+test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval and browser tests (all but those marked slow)
 	$(PY) -m ruff check src tests notebooks
 	$(VENV)/bin/lint-imports
 	@mkdir -p $(BUILD); rc=0; \
-	$(PORTABLE) $(PY) -m pytest -n $(JOBS) --dist loadfile -m "not far" --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg tests src notebooks || rc=$$?; \
+	$(PORTABLE) $(PY) -m pytest -n $(JOBS) --dist loadfile -m "not slow" --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg tests src notebooks || rc=$$?; \
 	echo $$rc > $(BUILD)/pytest.rc; \
 	if [ $$rc -eq 5 ]; then echo "error: pytest collected no tests (exit code 5)" >&2; fi; \
 	exit $$rc
 
-test-far: $(STAMP) ## every chapter under parameter sets far from the paper's, each cell within 60 s (about 3 min)
-	$(PY) -m pytest -m far tests/test_far_parameters.py
+test-slow: $(STAMP) browser ## the tests marked slow: the report under far parameters, runner signals, JupyterLab (CI runs them too)
+	$(PORTABLE) $(PY) -m pytest -m slow tests src  # one at a time: several run kernels or the report on both cores
 
 test-fast: $(STAMP) ## unit, property and doctests only (no kernels, no browser)
 	$(PY) -m pytest -n $(JOBS) -m "not browser and not notebooks"

@@ -59,7 +59,6 @@ def test_sanitizer_masks_machine_dependent_cells_only():
     assert _sanitize("RK45 1436 0.012") != _sanitize("RK45 1437 0.012")
 
 
-@pytest.mark.slow
 def test_machine_dependent_ladder_cells_stay_near_the_reference():
     """LSODA's evaluations within 25 % and its errors within a factor 5 of the committed reference.
 

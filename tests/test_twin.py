@@ -507,3 +507,12 @@ def test_detect_change_bad_input(kwargs, name):
     meas = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, random_force(t), noise=1e-3)
     with pytest.raises(ParameterError, match=name):
         detect_change(**meas, **kwargs)
+
+
+def test_random_force_refuses_a_band_beyond_the_nyquist_frequency():
+    from vibration.physics.model import ParameterError
+
+    t = np.arange(0.0, 10.0, 0.02)  # Nyquist 25 Hz
+    with pytest.raises(ParameterError, match=r"band = \(0.1, 30.0\) Hz reaches the Nyquist frequency 25 Hz"):
+        vibration.random_force(t, band=(0.1, 30.0))
+    assert np.all(np.isfinite(vibration.random_force(t, band=(0.1, 24.0))))

@@ -291,6 +291,12 @@ def random_force(t, band: tuple[float, float] = (0.1, 2.0), rms: float = 2.0, se
     if t.size < 2 or not t[-1] > t[0]:
         raise ParameterError(f"t = {t!r:.60} spans no time: allowed at least 2 samples, t[-1] > t[0]")
     lo, hi = _check_band(band)
+    nyquist = 0.5 / float(np.median(np.diff(t)))
+    if not hi < nyquist:
+        raise ParameterError(
+            f"band = {band!r} Hz reaches the Nyquist frequency {nyquist:.4g} Hz of t's sampling: allowed an upper "
+            f"edge below {nyquist:.4g} Hz (above it the samples alias the band onto lower frequencies)"
+        )
     rms = check_real("rms", rms, low=0.0, low_open=True, unit="N")
     seed = _check_seed(seed)
     span = float(t[-1] - t[0])
