@@ -13,8 +13,6 @@ import json
 import re
 from pathlib import Path
 
-import pytest
-
 from vibration.presentation.solvers import MACHINE_DEPENDENT, ladder_table, solver_study
 from vibration.presentation.tables import Approx
 
