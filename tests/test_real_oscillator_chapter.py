@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 import vibration
-from vibration.chapters.real_oscillator import figures, text
+from vibration.chapters.real_oscillator import figures, text, verdicts
 from vibration.chapters.real_oscillator.params import SCHEMA, Params
 from vibration.chapters.real_oscillator.study import QUANT_FLOOR, QUANT_STEP, pool, real_oscillator_study
 from vibration.presentation.style import legend_overlap
@@ -26,9 +26,9 @@ TABLES = (
     text.model_table,
     text.prediction_table,
     text.prediction_pooled_table,
-    text.claims_table,
-    text.coverage_table,
-    text.two_sample_table,
+    verdicts.claims_table,
+    verdicts.coverage_table,
+    verdicts.two_sample_table,
 )
 SENTENCES = (
     text.provenance_text,
@@ -42,7 +42,7 @@ SENTENCES = (
     text.prediction_sentence,
     text.failure_sentence,
     text.resonance_sentence,
-    text.twin_sentence,
+    verdicts.twin_sentence,
     text.summary_text,
 )
 
@@ -175,7 +175,7 @@ def test_sentences_follow_the_numbers(study):
 
 
 def test_claim_verdicts_follow_the_numbers(study):
-    rows = text.claims_table(study).rows
+    rows = verdicts.claims_table(study).rows
     amp = study.peak_ratio / study.low_ratio
     about = abs(math.log(amp / text.PAPER_AMPLIFICATION)) <= math.log(text.ABOUT_FACTOR)
     assert rows[0]["verdict"].startswith("supported") == about
@@ -191,7 +191,7 @@ def test_twin_coverage_and_two_sample(study):
     for t in study.tests:
         assert 0 <= t.p <= 1 and t.runs_needed >= 2 and t.n_off == t.n_on == 10
     z = study.tests[0]
-    assert (z.p < 0.05) == ("is told apart" in text.twin_sentence(study))
+    assert (z.p < 0.05) == ("is told apart" in verdicts.twin_sentence(study))
 
 
 def test_parameters_cell_equals_schema():
