@@ -59,7 +59,7 @@ def white_noise_variance(osc: Oscillator, S0: float) -> float:
     _check_osc(osc)
     S0 = _check_S0(S0)
     _check_stable(osc, "a stationary random response")
-    return math.pi * S0 / osc.k / osc.c
+    return _finite_variance(math.pi * S0 / osc.k / osc.c, S0, "displacement")
 
 
 def white_noise_velocity_variance(osc: Oscillator, S0: float) -> float:
@@ -75,7 +75,19 @@ def white_noise_velocity_variance(osc: Oscillator, S0: float) -> float:
     _check_osc(osc)
     S0 = _check_S0(S0)
     _check_stable(osc, "a stationary random response")
-    return math.pi * S0 / osc.m / osc.c
+    return _finite_variance(math.pi * S0 / osc.m / osc.c, S0, "velocity")
+
+
+def _finite_variance(value: float, S0: float, what: str) -> float:
+    if not math.isfinite(value):
+        raise ParameterError(
+            f"S0 = {S0!r} N^2 s/rad: the {what} variance overflows the float range; allowed a smaller S0"
+        )
+    return value
+
+
+#: Largest dt over the oscillator's own time step that the exact doublings of _transition cover (2^60).
+MAX_DOUBLING_RATIO = 2.0**60
 
 
 def _transition(osc: Oscillator, S0: float, dt: float):
@@ -91,7 +103,14 @@ def _transition(osc: Oscillator, S0: float, dt: float):
     """
     a = np.array([[0.0, 1.0], [-osc.k / osc.m, -osc.c / osc.m]])
     bqb = np.array([[0.0, 0.0], [0.0, 2.0 * math.pi * S0 / osc.m**2]])
-    j = max(0, math.ceil(math.log2(dt / _default_dt(osc)))) if osc.c > 0.0 else 0
+    base = float(_default_dt(osc))
+    ratio = dt / base  # Python floats: an overflow gives inf, caught here
+    if not ratio <= MAX_DOUBLING_RATIO:
+        raise ParameterError(
+            f"dt = {dt!r} s is {ratio:.3g} times the oscillator's time step {base:.3g} s: allowed at most "
+            f"{MAX_DOUBLING_RATIO:.3g} times (dt <= {MAX_DOUBLING_RATIO * base:.3g} s)"
+        )
+    j = max(0, math.ceil(math.log2(ratio))) if osc.c > 0.0 else 0
     h = math.ldexp(dt, -j)
     big = np.zeros((4, 4))
     big[:2, :2] = -a
