@@ -178,14 +178,34 @@ def test_failed_chapter_leaves_previous_tree_untouched(tmp_path, monkeypatch):
     shutil.rmtree(root)
 
 
-def test_every_declared_parameter_has_a_range(chapters):
+def test_every_notebook_declares_its_schema(chapters):
+    """Each chapter's parameters cell names the schema's parameters, in its order, at its defaults and types."""
+    import ast
+
     schemas = report.chapter_schemas()
-    declared = {name for ch in chapters if ch.name not in schemas for name in ch.params}
-    assert declared - set(report.PARAMETER_RULES) == set(), "parameters the runner cannot range-check"
-    assert set(report.PARAMETER_RULES) - declared == set(), "ranges of parameters no chapter declares"
-    for ch in chapters:  # every default is inside its own range
+    assert {ch.name for ch in chapters} <= set(schemas), "a chapter without a parameter schema"
+    for ch in chapters:
+        schema = schemas[ch.name]
+        assert tuple(ch.params) == schema.names(), ch.name
+        for name, info in ch.params.items():
+            param = schema[name]
+            default = ast.literal_eval(info["default"])
+            assert default == param.default and type(default) is type(param.default), (ch.name, name)
         values = report.check_parameters([ch], [(n, info["default"]) for n, info in ch.params.items()])
         assert set(values) == set(ch.params)
+
+
+def test_a_shared_parameter_is_declared_once():
+    """Chapters that use m, k, F0, ... take the shared declaration: one range, one unit, one symbol."""
+    import dataclasses
+
+    from vibration.presentation.parameters import SHARED
+
+    for schema in report.chapter_schemas().values():
+        for param in schema.params:
+            if param.name in SHARED:
+                ours = dataclasses.replace(param, meaning=SHARED[param.name].meaning, default=SHARED[param.name].default)
+                assert ours == SHARED[param.name], (schema.notebook, param.name)
 
 
 @pytest.mark.slow

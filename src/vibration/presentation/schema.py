@@ -16,6 +16,7 @@ vibration.physics.model.ParameterError: t_skip = 30.0 s is out of range: allowed
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
@@ -72,6 +73,53 @@ class Schema:
     def defaults(self) -> dict:
         """Every parameter at its default."""
         return {p.name: p.default for p in self.params}
+
+    def names(self) -> tuple[str, ...]:
+        """The parameters' names, in declaration order."""
+        return tuple(p.name for p in self.params)
+
+    def record_type(self, name: str = "Params") -> type:
+        """A frozen dataclass with one field per parameter (defaults from here), checked on construction.
+
+        The chapter's ``Params = SCHEMA.record_type()`` writes each parameter once: ``Params(**values)``
+        checks every value and the rules that tie them together; ``Params.from_values(mapping)`` takes
+        a mapping (missing names keep their defaults).
+
+        >>> S = Schema("x", (Param("n", "n", 3, "", 1, 9, "count"), Param("c", "c", 0.5, "N s/m", 0.0, 9.0, "d")))
+        >>> P = S.record_type()
+        >>> P(), P.from_values({"n": 4}).n
+        (Params(n=3, c=0.5), 4)
+        >>> P(n=10)
+        Traceback (most recent call last):
+        ...
+        vibration.physics.model.ParameterError: n = 10 is out of range: allowed integer 1 <= n <= 9
+        """
+        schema = self
+
+        def post_init(rec) -> None:
+            checked = schema.check({f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)})
+            for key, value in checked.items():  # store the converted value (an int given for a float, ...)
+                object.__setattr__(rec, key, value)
+
+        def from_values(cls, values: Mapping | None = None):
+            return cls(**(schema.defaults() | dict(values or {})))
+
+        def as_dict(rec) -> dict:
+            return {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
+
+        types = {str: str, int: int, float: float, bool: bool}
+        return dataclasses.make_dataclass(
+            name,
+            [(p.name, types[type(p.default)], field(default=p.default)) for p in self.params],
+            namespace={
+                "__post_init__": post_init,
+                "from_values": classmethod(from_values),
+                "as_dict": as_dict,
+                "SCHEMA": self,
+                "__doc__": f"The validated parameters of {self.notebook} (defaults and ranges: its SCHEMA).",
+            },
+            frozen=True,
+        )
 
     def check(self, values: Mapping) -> dict:
         """``values`` (some or all parameters) checked one by one and together with the defaults of the rest."""

@@ -31,105 +31,10 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..physics.model import N_POINTS_MAX, ParameterError, check_int, check_real
+from ..physics.model import ParameterError
 from ..presentation.tables import TABLES_ENV
 
 KERNEL = "vibration"
-
-#: Allowed ranges of the chapters' parameters: name -> (low, low_open, high, unit).
-#: A notebook may declare other names; those are only type-checked here.
-PARAMETER_RULES: dict[str, tuple[float | None, bool, float | None, str]] = {
-    "m": (1e-3, False, 1e3, "kg"),
-    "k": (1e-3, False, 1e6, "N/m"),
-    "F0": (0.0, True, 1e4, "N"),
-    "t_end": (0.0, True, 1e3, "s"),
-    "omega_ref": (0.0, True, 1e3, "rad/s"),
-    "omega_res": (0.0, True, 1e3, "rad/s"),
-    "c_low": (-1e4, False, 1e4, "N s/m"),
-    "c_nominal": (-1e4, False, 1e4, "N s/m"),
-    "c_high": (-1e4, False, 1e4, "N s/m"),
-    "n_points": (2, False, 200_001, ""),
-    "n_omega": (2, False, 2000, ""),
-    "n_damping": (2, False, 2000, ""),
-    "omega_max": (0.0, True, 1e3, "rad/s"),
-    "c_min": (1e-3, False, 1e4, "N s/m"),
-    "c_max": (1e-3, False, 1e4, "N s/m"),
-    # chapter 06, stability and damping as a design choice
-    "c_unstable": (-1e4, False, 0.0, "N s/m"),
-    "t_growth": (0.0, True, 2000.0, "s"),
-    "isolation_ratio": (1.4142135623730951, True, 100.0, ""),
-    "S0": (0.0, True, 1e6, "N² s/rad"),
-    "n_paths": (2, False, 5000, ""),
-    "seed": (0, False, 2**31 - 1, ""),
-    # chapter 09, Duffing oscillator
-    "k3_hard": (0.0, True, 1e3, "N/m³"),
-    "k3_soft": (-1e3, False, 0.0, "N/m³"),
-    "omega_sweep_min": (0.0, True, 1e3, "rad/s"),
-    "omega_sweep_max": (0.0, True, 1e3, "rad/s"),
-    "n_sweep": (10, False, 400, ""),
-    "c_ueda": (0.0, True, 10.0, "N s/m"),
-    "F0_ueda": (0.0, True, 100.0, "N"),
-    "F0_ueda_periodic": (0.0, True, 100.0, "N"),
-    "n_lyapunov": (100, False, 100_000, ""),
-    # chapter 10, digital twin
-    "F_rms": (0.0, True, 1e4, "N"),
-    "f_max": (0.2, False, 1e3, "Hz"),
-    "t_record": (0.0, True, 1e4, "s"),
-    "noise": (0.0, True, 10.0, ""),
-    "runs": (10, False, 500, ""),  # about 65 ms per identification: 500 runs take ~35 s
-    "sweep_runs": (5, False, 100, ""),
-    "assumption_runs": (10, False, 100, ""),
-    "force_noise": (0.0, True, 1.0, ""),
-    "colour": (0.0, True, 0.99, ""),
-    "cubic": (0.0, True, 1.0, ""),
-    "t_monitor": (0.0, True, 1e4, "s"),
-    "decline_rate": (0.0, False, 1.0, "1/s"),
-    "drop": (0.0, False, 0.9, ""),
-    "detect_runs": (5, False, 300, ""),
-    "threshold": (0.0, True, 1e6, ""),
-    # chapter 11, learning controller (dt also chapter 10's sampling step)
-    "dt": (0.0, True, 1.0, "s"),
-    "n_steps": (1, False, 3000, ""),
-    "r_weight": (0.0, True, 1e6, "1/N²"),
-    "u_max": (0.0, True, 1e4, "N"),
-    "c_semi_min": (0.0, False, 1e4, "N s/m"),
-    "c_semi_max": (0.0, True, 1e4, "N s/m"),
-    "n_eval": (2, False, 20_000, ""),
-    "n_seeds": (10, False, 30, ""),
-    # chapter 07, control ("u_max" is also chapter 11's actuator bound; "n_sweep" also chapter 9's)
-    "kp": (0.0, False, 1e4, "N/m"),
-    "kd": (0.0, False, 1e3, "N s/m"),
-    "pid_kp": (0.0, True, 1e4, "N/m"),
-    "pid_ki": (0.0, True, 1e5, "N/(m s)"),
-    "pid_kd": (0.0, False, 1e3, "N s/m"),
-    "x_ref": (-10.0, False, 10.0, "m"),
-    "q_x": (0.0, False, 1e8, "1/m²"),
-    "q_v": (0.0, False, 1e8, "s²/m²"),
-    "r_lqr": (1e-9, False, 1e4, "1/N²"),
-    "c_flutter": (-1e3, False, 0.0, "N s/m"),
-    "c_sky": (0.0, False, 1e3, "N s/m"),
-    "c_sa_min": (0.0, False, 1e3, "N s/m"),
-    "c_sa_max": (0.0, False, 1e4, "N s/m"),
-    "f_mr": (0.0, True, 1e3, "N"),
-    "move": (-10.0, False, 10.0, "m"),
-    "freq_error": (-0.9, False, 2.0, ""),
-    # chapter 08, tuned mass dampers
-    "mu": (0.0, True, 1.0, ""),
-    "mistuning": (0.0, False, 0.5, ""),
-    "n_storeys": (1, False, 30, ""),
-    "storey_mass": (1e-3, False, 1e9, "kg"),
-    "storey_stiffness": (1e-3, False, 1e12, "N/m"),
-    "zeta_building": (0.0, False, 0.99, ""),
-    "mu_building": (0.0, True, 1.0, ""),
-}
-#: Most forcing or natural periods the window may hold (the paper's holds 36).
-MAX_PERIODS = 1000
-#: Largest growth exponent (-c / 2m) t_end of negative damping (e^50 ~ 5e21 stays finite in every table).
-MAX_GROWTH = 50.0
-#: Largest (c / m) t_end, the stiffness the paper's explicit RK45 is asked to cross (the paper's: 750).
-MAX_STIFFNESS = 1e6
-assert PARAMETER_RULES["n_points"][2] <= N_POINTS_MAX
-
 
 def chapter_schemas() -> dict:
     """The parameter schemas of the chapter packages (``vibration.chapters.<name>.params.SCHEMA``), by notebook."""
@@ -220,12 +125,20 @@ def _convert(name: str, text: str, type_name: str):
 
 
 def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> dict[str, object]:
-    """Validate ``-p NAME VALUE`` pairs against the chapters' declarations and the rules.
+    """Validate ``-p NAME VALUE`` pairs against the schemas of the chapters that declare them.
 
-    Returns the typed values. Raises :class:`ParameterError` naming the
+    Each chapter's schema (its package's ``params.SCHEMA``) is the one source of a parameter's type
+    and range and of the rules that tie several together; a value shared by several chapters must
+    suit each of them. Returns the typed values. Raises :class:`ParameterError` naming the
     parameter, its value and what is allowed.
     """
     schemas = chapter_schemas()
+    missing = [ch.name for ch in chapters if ch.name not in schemas]
+    if missing:
+        raise ParameterError(
+            f"chapter {missing[0]} has no parameter schema: allowed chapters with a package "
+            f"vibration.chapters.<topic> holding params.SCHEMA (python -m vibration.report --new-chapter writes one)"
+        )
     declared: dict[str, str] = {}
     for ch in chapters:
         for name, info in ch.params.items():
@@ -238,104 +151,13 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
                 f"parameter {name!r} (value {text!r}) is not declared by any chapter run: allowed {allowed}"
             )
         value = _convert(name, text, declared[name])
-        for schema in (schemas[ch.name] for ch in chapters if ch.name in schemas and name in ch.params):
-            schema.check({name: value})  # the chapter package's own range: one source per chapter
-        if name in PARAMETER_RULES:
-            low, low_open, high, unit = PARAMETER_RULES[name]
-            if declared[name] == "int":
-                check_int(name, value, low=int(low), high=int(high))
-            else:
-                check_real(name, value, low=low, low_open=low_open, high=high, unit=unit)
+        for ch in chapters:
+            if name in ch.params:
+                value = schemas[ch.name][name].check(value)  # each chapter's own range
         values[name] = value
-    _check_together(chapters, values)
-    for ch in chapters:
-        if ch.name in schemas:  # the chapter's rules that tie several of its parameters together
-            schemas[ch.name].check({k: v for k, v in values.items() if k in ch.params})
+    for ch in chapters:  # the chapter's rules that tie several of its parameters together
+        schemas[ch.name].check({k: v for k, v in values.items() if k in ch.params})
     return values
-
-
-#: Pairs of parameters that bound a range: (lower, upper, unit); the upper must exceed the lower.
-ORDERED = (
-    ("c_min", "c_max", "N s/m"),
-    ("c_sa_min", "c_sa_max", "N s/m"),
-    ("c_semi_min", "c_semi_max", "N s/m"),
-    ("omega_sweep_min", "omega_sweep_max", "rad/s"),
-)
-#: Fewest samples an identification record may hold (t_record / dt).
-MIN_RECORD_SAMPLES = 200
-
-
-def _check_together(chapters: list[Chapter], values: dict) -> None:
-    """Limits that involve several parameters, on the values each chapter would use (its defaults and ``-p``)."""
-    for ch in chapters:
-        _check_chapter_together({**_defaults(ch), **{k: v for k, v in values.items() if k in ch.params}})
-
-
-def _check_chapter_together(p: dict) -> None:
-    get = p.get
-    for low, high, unit in ORDERED:
-        if low in p and high in p and not p[high] > p[low]:
-            raise ParameterError(f"{high} = {p[high]!r} {unit} must exceed {low} = {p[low]!r} {unit}")
-    f_max, dt, t_record = get("f_max"), get("dt"), get("t_record")
-    if f_max is not None and dt is not None and not f_max < 0.5 / dt:
-        raise ParameterError(
-            f"f_max = {f_max!r} Hz is not below the Nyquist frequency 1/(2 dt) = {0.5 / dt:.4g} Hz of dt = {dt!r} s: "
-            f"allowed f_max < {0.5 / dt:.4g} Hz"
-        )
-    if t_record is not None and dt is not None and t_record / dt < MIN_RECORD_SAMPLES:
-        raise ParameterError(
-            f"t_record = {t_record!r} s holds {t_record / dt:.3g} samples of dt = {dt!r} s: allowed at least "
-            f"{MIN_RECORD_SAMPLES} samples (t_record >= {MIN_RECORD_SAMPLES * dt:.4g} s)"
-        )
-    m, k, t_end = get("m"), get("k"), get("t_end")
-    if None in (m, k, t_end):
-        return
-    if all(n in p for n in ("pid_kp", "pid_ki", "pid_kd", "c_nominal")):  # chapter 7's PID loop, before a kernel
-        from ..physics.control import pid_work_check
-        from ..physics.model import Oscillator
-
-        try:
-            pid_work_check(Oscillator(m, p["c_nominal"], k), p["pid_kp"], p["pid_ki"], p["pid_kd"], t_end,
-                           get("omega_res") or 0.0)  # fmt: skip
-        except ParameterError as exc:
-            gains = f"pid_kp = {p['pid_kp']!r}, pid_ki = {p['pid_ki']!r}, pid_kd = {p['pid_kd']!r}"
-            raise ParameterError(f"{gains} with m = {m!r} kg, k = {k!r} N/m: {exc}") from None
-    fastest = max([math.sqrt(k / m)] + [w for w in map(get, ("omega_ref", "omega_res", "omega_max")) if w])
-    periods = fastest * t_end / (2 * math.pi)
-    if periods > MAX_PERIODS:
-        raise ParameterError(
-            f"t_end = {t_end!r} s holds {periods:.0f} periods of the fastest frequency ({fastest:.4g} rad/s, "
-            f"from m = {m!r} kg, k = {k!r} N/m and the forcing): allowed at most {MAX_PERIODS}"
-        )
-    dampings = [x for x in map(get, ("c_low", "c_nominal", "c_high")) if x is not None]
-    for name in ("c_low", "c_nominal", "c_high"):
-        c = get(name)
-        if c is not None and c < 0 and -c / (2 * m) * t_end > MAX_GROWTH:
-            raise ParameterError(
-                f"{name} = {c!r} N s/m with m = {m!r} kg over t_end = {t_end!r} s: the negative damping grows the "
-                f"response like exp({-c / (2 * m) * t_end:.3g}): allowed (-c/2m) t_end at most {MAX_GROWTH:g}"
-            )
-    c = max([abs(x) for x in dampings] or [0.0])  # the ones RK45 meets
-    if c / m * t_end > MAX_STIFFNESS:
-        raise ParameterError(
-            f"c = {c!r} N s/m with m = {m!r} kg over t_end = {t_end!r} s: (c/m) t_end = {c / m * t_end:.3g} "
-            f"is out of range: allowed at most {MAX_STIFFNESS:g} (the paper's explicit RK45 would crawl)"
-        )
-
-
-def _defaults(ch: Chapter) -> dict:
-    """The chapter's numeric defaults, as papermill read them from its parameters cell."""
-    import ast
-
-    out = {}
-    for name, info in ch.params.items():
-        try:
-            value = ast.literal_eval(info.get("default", ""))
-        except (ValueError, SyntaxError):
-            continue
-        if isinstance(value, int | float) and not isinstance(value, bool):
-            out[name] = value
-    return out
 
 
 def kernel_name() -> str:

@@ -37,8 +37,6 @@ _PARAMS = '''"""The chapter's parameters, declared once: the runner, the noteboo
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from vibration.presentation.schema import Param, Schema
 
 SCHEMA = Schema(
@@ -50,16 +48,7 @@ SCHEMA = Schema(
 )
 
 
-@dataclass(frozen=True)
-class Params:
-    """The validated parameter values."""
-
-    {prefix}zeta: float = 0.05  # damping ratio, 1
-    {prefix}n_grid: int = 2001  # frequency ratios on the grid, 1
-
-    @classmethod
-    def from_values(cls, values: dict) -> Params:
-        return cls(**SCHEMA.check(values))
+Params = SCHEMA.record_type()
 '''
 
 _STUDY = '''"""The chapter's computation: pure functions returning one frozen record."""

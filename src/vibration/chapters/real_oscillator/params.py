@@ -16,9 +16,6 @@ vibration.physics.model.ParameterError: n_early = 5 is out of range: allowed n_e
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from dataclasses import dataclass, fields
-
 from vibration.physics.model import ParameterError
 from vibration.presentation.schema import Param, Schema
 
@@ -71,23 +68,4 @@ SCHEMA = Schema(
 )
 
 
-@dataclass(frozen=True)
-class Params:
-    """The validated parameters of the study (defaults: :data:`SCHEMA`'s)."""
-
-    n_late: int = 6  # whole drive periods in the late window
-    n_early: int = 2  # whole drive periods in the early window
-    n_calibration: int = 3  # lowest-frequency driven runs that calibrate the drive gain
-    z_steady: float = 3.0  # standard errors allowed between early and late amplitude
-    brake: str = "on"  # free decays with ("on") or without ("off") the magnetic brake predict the driven runs
-    decay_runs: str = "all"  # free-decay runs used: "all", "1-5" or "6-10"
-    spread_ratio_max: float = 2.0  # largest scatter / standard-error ratio counted as covered
-
-    def __post_init__(self) -> None:
-        values = {f.name: getattr(self, f.name) for f in fields(self)}
-        SCHEMA.check(values)
-
-    @classmethod
-    def from_values(cls, values: Mapping | None = None) -> Params:
-        """Schema defaults updated by ``values``, checked one by one and together."""
-        return cls(**(SCHEMA.defaults() | SCHEMA.check(dict(values or {}))))
+Params = SCHEMA.record_type()

@@ -1,0 +1,5 @@
+"""Chapter 7, control."""
+
+from vibration.chapters.control.params import SCHEMA, Params
+
+__all__ = ["SCHEMA", "Params"]

@@ -1,0 +1,50 @@
+"""Chapter 10, a digital twin: its parameters, declared once.
+
+The runner range-checks ``-p`` values with :data:`SCHEMA`, a test checks the notebook's parameters
+cell against it, and the chapter's computation takes a :class:`Params` record built from it.
+"""
+
+from __future__ import annotations
+
+from vibration.presentation.parameters import sampling, shared
+from vibration.presentation.schema import Param, Schema
+
+SCHEMA = Schema(
+    "10_digital_twin",
+    (
+        shared("m", meaning="mass of the simulated asset"),
+        shared("k", meaning="healthy spring stiffness"),
+        shared("c_nominal", meaning="damping coefficient of the asset"),
+        Param("F_rms", "F_rms", 2.0, "N", 0.0, 10000.0, "rms of the random test force", low_open=True),
+        Param("f_max", "f_max", 2.0, "Hz", 0.2, 1000.0, "upper edge of the test force band"),
+        Param("dt", "Δt", 0.02, "s", 0.0, 1.0, "sampling step of the sensors", low_open=True),
+        Param("t_record", "T_rec", 60.0, "s", 0.0, 10000.0, "length of one identification test", low_open=True),
+        Param("noise", "ε_x", 0.05, "", 0.0, 10.0, "sensor noise standard deviation over rms response", low_open=True),
+        Param("runs", "N_MC", 200, "", 10, 500, "Monte Carlo realisations for the interval coverage"),
+        Param("sweep_runs", "N_sw", 30, "", 5, 100, "realisations per point of the error-scaling sweeps"),
+        Param("assumption_runs", "N_as", 40, "", 10, 100, "realisations per case with a broken assumption"),
+        Param("force_noise", "ε_F", 0.05, "", 0.0, 1.0, "force-noise standard deviation over rms force", low_open=True),
+        Param("colour", "ρ", 0.9, "", 0.0, 0.99, "lag-one correlation of the coloured sensor noise", low_open=True),
+        Param(
+            "cubic",
+            "κ",
+            0.05,
+            "",
+            0.0,
+            1.0,
+            "unmodelled cubic spring force over kx at the rms displacement",
+            low_open=True,
+        ),
+        Param("t_monitor", "T_mon", 240.0, "s", 0.0, 10000.0, "length of a monitored record", low_open=True),
+        Param(
+            "decline_rate", "r_k", 0.0005, "1/s", 0.0, 1.0, "fatigue-like stiffness loss per second as a fraction of k"
+        ),
+        Param("drop", "Δk/k", 0.1, "", 0.0, 0.9, "sudden stiffness loss as a fraction of k"),
+        Param("detect_runs", "N_det", 100, "", 5, 300, "healthy and faulty records per detection experiment"),
+        Param("threshold", "h", 40.0, "", 0.0, 1000000.0, "CUSUM alarm threshold", low_open=True),
+        Param("seed", "s", 13, "", 0, 2147483647, "seed of the forces and of the noise"),
+    ),
+    together=(sampling,),
+)
+
+Params = SCHEMA.record_type()

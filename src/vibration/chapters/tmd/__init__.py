@@ -1,0 +1,5 @@
+"""Chapter 8, tuned mass dampers."""
+
+from vibration.chapters.tmd.params import SCHEMA, Params
+
+__all__ = ["SCHEMA", "Params"]
