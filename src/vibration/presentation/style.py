@@ -53,6 +53,78 @@ RC = {
 }
 
 
+#: The Okabe–Ito palette (colour-blind safe), by name.
+OKABE_ITO = {
+    "black": "#000000",
+    "orange": "#E69F00",
+    "sky blue": "#56B4E9",
+    "bluish green": "#009E73",
+    "yellow": "#F0E442",
+    "blue": "#0072B2",
+    "vermillion": "#D55E00",
+    "reddish purple": "#CC79A7",
+    "grey": "#7F7F7F",
+}
+
+#: One colour, line style and marker per case for the whole book: a case keeps its look in every
+#: chapter. The paper's three dampings (light, nominal, heavy) and its reference run come first;
+#: the passive plant of Part II is the nominal damping, so it is drawn as the nominal case; a closed
+#: form or exact optimum is black; designs of Part II take the rest of the palette.
+CASES: dict[str, dict] = {
+    "c_low": {"color": OKABE_ITO["vermillion"], "linestyle": "-", "marker": "v"},
+    "c_nominal": {"color": OKABE_ITO["blue"], "linestyle": "-", "marker": "o"},
+    "c_high": {"color": OKABE_ITO["bluish green"], "linestyle": "-", "marker": "^"},
+    "reference": {"color": OKABE_ITO["orange"], "linestyle": "-", "marker": "s"},
+    "passive": {"color": OKABE_ITO["blue"], "linestyle": "-", "marker": "o"},
+    "exact": {"color": OKABE_ITO["black"], "linestyle": "--", "marker": ""},
+    "optimum": {"color": OKABE_ITO["black"], "linestyle": ":", "marker": "*"},
+    "measured": {"color": OKABE_ITO["black"], "linestyle": "", "marker": "."},
+    "best passive": {"color": OKABE_ITO["sky blue"], "linestyle": "--", "marker": "D"},
+    "PD": {"color": OKABE_ITO["sky blue"], "linestyle": "-.", "marker": "D"},
+    "PID": {"color": OKABE_ITO["reddish purple"], "linestyle": "-", "marker": "P"},
+    "LQR": {"color": OKABE_ITO["orange"], "linestyle": "--", "marker": "X"},
+    "skyhook": {"color": OKABE_ITO["bluish green"], "linestyle": "--", "marker": "h"},
+    "semi-active": {"color": OKABE_ITO["reddish purple"], "linestyle": "--", "marker": "p"},
+    "learned": {"color": OKABE_ITO["vermillion"], "linestyle": "--", "marker": "*"},
+    "Den Hartog": {"color": OKABE_ITO["orange"], "linestyle": "-", "marker": "s"},
+    "H∞": {"color": OKABE_ITO["reddish purple"], "linestyle": "-", "marker": "P"},
+    "H2": {"color": OKABE_ITO["sky blue"], "linestyle": "-.", "marker": "D"},
+    "robust": {"color": OKABE_ITO["bluish green"], "linestyle": "--", "marker": "^"},
+    "hardening": {"color": OKABE_ITO["vermillion"], "linestyle": "-", "marker": "v"},
+    "softening": {"color": OKABE_ITO["sky blue"], "linestyle": "-", "marker": "^"},
+    "linear": {"color": OKABE_ITO["blue"], "linestyle": "-", "marker": "o"},
+    "threshold": {"color": OKABE_ITO["grey"], "linestyle": ":", "marker": ""},
+}
+
+
+def case_style(name: str, marker: bool = False) -> dict:
+    """Matplotlib keywords (``color``, ``linestyle`` and, when ``marker``, ``marker``) of a case of :data:`CASES`.
+
+    >>> case_style("c_low")
+    {'color': '#D55E00', 'linestyle': '-'}
+    """
+    try:
+        style = CASES[name]
+    except KeyError:
+        raise KeyError(f"{name!r} is not a case of the book's visual language: allowed {', '.join(CASES)}") from None
+    out = {"color": style["color"], "linestyle": style["linestyle"]}
+    if marker:
+        out["marker"] = style["marker"]
+    return out
+
+
+def damping_case(c: float, c_low: float, c_nominal: float, c_high: float) -> str:
+    """Which of the paper's damping cases ``c`` is (``"c_low"``, ``"c_nominal"``, ``"c_high"``); nominal first.
+
+    >>> damping_case(15.0, 0.1, 0.5, 15.0)
+    'c_high'
+    """
+    for name, value in (("c_nominal", c_nominal), ("c_low", c_low), ("c_high", c_high)):
+        if c == value:
+            return name
+    raise ValueError(f"c = {c!r} N s/m is none of the paper's dampings {c_low!r}, {c_nominal!r}, {c_high!r}")
+
+
 def use() -> None:
     """Apply the report style: matplotlib's defaults, then :data:`RC` (nothing leaks in from an earlier style)."""
     mpl.rcdefaults()
