@@ -102,7 +102,7 @@ class Schema:
                 object.__setattr__(rec, key, value)
 
         def from_values(cls, values: Mapping | None = None):
-            return cls(**(schema.defaults() | dict(values or {})))
+            return cls(**(schema.defaults() | schema.check(dict(values or {}))))
 
         def as_dict(rec) -> dict:
             return {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
