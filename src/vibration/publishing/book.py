@@ -234,6 +234,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
             continue
         if cell.cell_type == "code":
             _drop_widget_views(cell)
+            _caption_from_output(cell)
             if "show-input" not in tags and not {"hide-input", "remove-input", "remove-cell"} & set(tags):
                 cell.metadata.setdefault("tags", []).append("hide-input")
         cells.append(cell)
@@ -254,6 +255,24 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
         )
     nb.cells = cells
     return nb
+
+
+def _caption_from_output(cell) -> None:
+    """A figure's caption, label and alt text, carried by its output (a ``Captioned`` figure), become the
+    cell's myst-nb figure options; the output's text form (the caption again) is dropped."""
+    from ..presentation.captions import METADATA_KEY
+
+    for out in cell.get("outputs", []):
+        facts = out.get("metadata", {}).get(METADATA_KEY)
+        if facts:
+            mystnb = cell.metadata.setdefault("mystnb", {})
+            mystnb["figure"] = {"caption": facts["caption"], "name": facts["name"]}
+            image = {"alt": facts["alt"]}
+            width = out["metadata"].get("image/png", {}).get("width")
+            if width:  # the HiDPI PNG shown at its CSS size (the column scales it down further, never up)
+                image["width"] = f"{width}px"
+            mystnb["image"] = image
+            out.get("data", {}).pop("text/plain", None)
 
 
 def _drop_widget_views(cell) -> None:

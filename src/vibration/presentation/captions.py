@@ -1,0 +1,212 @@
+"""Figures that carry their own caption and alt text, checked against what is drawn.
+
+A chapter's figure function returns :class:`Captioned`: the matplotlib figure, a caption built by
+code from the figure and the study's numbers, the figure's label and a one-sentence alt text.
+:func:`check_caption` refuses a caption that contradicts its figure: position words (left,
+middle, right, top, bottom) that do not match the panel layout or leave a panel out, line
+styles, colours or logarithmic axes that are not drawn. The figure shows as a HiDPI PNG at the
+book's column width; the caption, label and alt text travel in the output's metadata, where
+the book build picks them up (:data:`METADATA_KEY`), and as the text a regression test compares.
+
+Examples
+--------
+>>> from vibration.presentation.style import figure
+>>> fig, (a, b) = figure(1, 2)
+>>> _ = a.plot([0, 1], [0, 1], "k--"); _ = b.plot([0, 1], [1, 0])
+>>> panel_words(fig)
+['left', 'right']
+>>> check_caption(fig, "Left: the exact line (dashed). Right: its mirror.")
+>>> check_caption(fig, "Left, middle and right: three views.")
+Traceback (most recent call last):
+...
+ValueError: caption names 'middle' but the figure's panels are left, right
+>>> check_caption(fig, "The line (dotted).")
+Traceback (most recent call last):
+...
+ValueError: caption says 'dotted' but no dotted line is drawn
+>>> import matplotlib.pyplot as plt; plt.close(fig)
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+import re
+
+import numpy as np
+from matplotlib.colors import to_hex
+
+from . import style
+
+#: Key of the output metadata that carries ``{"caption", "name", "alt"}`` to the book build.
+METADATA_KEY = "vibration/figure"
+
+#: PNG pixels per CSS pixel (a HiDPI image shown at the column width stays sharp).
+PIXEL_RATIO = 2
+
+_POSITION = ("left", "middle", "right", "top", "bottom", "centre", "center", "above", "below", "upper", "lower")
+_LINESTYLE = {"dashed": "--", "dotted": ":", "dash-dotted": "-."}
+_COLOURS = {
+    "black": ("#000000",),
+    "grey": ("#7f7f7f", "#808080", "#888888", "#999999", "#666666", "#aaaaaa", "#bbbbbb", "#cccccc"),
+    "gray": ("#7f7f7f", "#808080", "#888888", "#999999", "#666666", "#aaaaaa", "#bbbbbb", "#cccccc"),
+    "orange": (style.OKABE_ITO["orange"], "#ff7f0e"),
+    "sky blue": (style.OKABE_ITO["sky blue"],),
+    "green": (style.OKABE_ITO["bluish green"], "#2ca02c"),
+    "blue": (style.OKABE_ITO["blue"], style.OKABE_ITO["sky blue"], "#1f77b4"),
+    "red": (style.OKABE_ITO["vermillion"], "#d62728"),
+    "vermillion": (style.OKABE_ITO["vermillion"],),
+    "purple": (style.OKABE_ITO["reddish purple"], "#9467bd"),
+    "yellow": (style.OKABE_ITO["yellow"],),
+}
+
+
+def _panels(fig) -> list:
+    """The figure's data axes (colour bars and invisible axes left out)."""
+    return [ax for ax in fig.axes if ax.get_visible() and ax.get_label() != "<colorbar>" and ax.axison]
+
+
+def _bands(intervals: list[tuple[float, float]]) -> list[int]:
+    """Index of the band (column or row) of each interval: intervals that overlap by half the shorter share one."""
+    order = sorted(range(len(intervals)), key=lambda i: intervals[i][0])
+    band_of = [0] * len(intervals)
+    bands: list[tuple[float, float]] = []
+    for i in order:
+        lo, hi = intervals[i]
+        for j, (blo, bhi) in enumerate(bands):
+            if min(hi, bhi) - max(lo, blo) > 0.5 * min(hi - lo, bhi - blo):
+                band_of[i] = j
+                bands[j] = (min(lo, blo), max(hi, bhi))
+                break
+        else:
+            band_of[i] = len(bands)
+            bands.append((lo, hi))
+    rank = sorted(range(len(bands)), key=lambda j: bands[j][0])
+    return [rank.index(b) for b in band_of]
+
+
+def panel_words(fig) -> list[str]:
+    """Position words of each panel, in ``fig.axes`` order: ``[]`` for one panel, else e.g. ``["left", "right"]``.
+
+    One row: left, (middle,) right; one column: top, (middle,) bottom; a grid: "top left", ...;
+    more than three in a line: "panel 1", "panel 2", ...
+    """
+    if fig.get_layout_engine() is not None:
+        fig.get_layout_engine().execute(fig)
+    axes = _panels(fig)
+    if len(axes) <= 1:
+        return []
+    boxes = [ax.get_position() for ax in axes]
+    col = _bands([(b.x0, b.x1) for b in boxes])
+    row = _bands([(b.y0, b.y1) for b in boxes])
+    n_cols, n_rows = max(col) + 1, max(row) + 1
+    row = [n_rows - 1 - r for r in row]  # rows from the top
+    if n_cols > 3 or n_rows > 3:
+        return [f"panel {i + 1}" for i in range(len(axes))]
+
+    def name(index: int, n: int, words: tuple[str, str, str]) -> str:
+        return "" if n == 1 else words[0] if index == 0 else words[2] if index == n - 1 else words[1]
+
+    out = []
+    for c, r in zip(col, row, strict=True):
+        words = [name(r, n_rows, ("top", "middle", "bottom")), name(c, n_cols, ("left", "middle", "right"))]
+        out.append(" ".join(w for w in words if w))
+    return out
+
+
+def _drawn_linestyles(fig) -> set[str]:
+    found = set()
+    for ax in _panels(fig):
+        for line in ax.get_lines():
+            if line.get_visible() and len(line.get_xdata()) > 1:
+                found.add({"--": "--", "dashed": "--", ":": ":", "dotted": ":", "-.": "-.", "dashdot": "-."}.get(
+                    line.get_linestyle(), line.get_linestyle()))  # fmt: skip
+        for coll in ax.collections:  # vlines/hlines and LineCollections
+            for ls in getattr(coll, "get_linestyles", list)() or []:
+                offset, dashes = ls if isinstance(ls, tuple) else (None, None)
+                if dashes:
+                    on = dashes[0]
+                    found.add(":" if on < 2.0 else "-." if len(dashes) > 2 else "--")
+    return found
+
+
+def _drawn_colours(fig) -> set[str]:
+    found = set()
+    for ax in _panels(fig):
+        for line in ax.get_lines():
+            found.add(to_hex(line.get_color()).lower())
+            found.add(to_hex(line.get_markerfacecolor()).lower() if line.get_marker() not in (None, "", "None") else "")
+        for coll in ax.collections:
+            for arr in (coll.get_edgecolor(), coll.get_facecolor()):
+                for rgba in np.atleast_2d(arr):
+                    if len(rgba) == 4 and rgba[3] > 0:
+                        found.add(to_hex(rgba).lower())
+        for patch in ax.patches:
+            found.add(to_hex(patch.get_facecolor()).lower())
+    return found - {""}
+
+
+def check_caption(fig, caption: str) -> None:
+    """Raise ``ValueError`` where ``caption`` contradicts ``fig`` (layout, line styles, colours, log axes)."""
+    text = caption.lower()
+    words = panel_words(fig)
+    present = {w for phrase in words for w in phrase.split()}
+    named = {w for w in _POSITION if re.search(rf"\b{w}\b", text)}
+    layout = {"left", "right", "middle", "top", "bottom"}
+    for w in sorted(named & layout):
+        if w not in present:
+            raise ValueError(f"caption names {w!r} but the figure's panels are {', '.join(words) or 'one panel'}")
+    if named & {"left", "right"} and not {"left", "right"} <= named and {"left", "right"} <= present:
+        raise ValueError(f"caption names only one side of the panels {', '.join(words)}")
+    if "middle" in present and named & {"left", "right"} and "middle" not in named and "centre" not in named:
+        raise ValueError(f"caption leaves out the middle panel of {', '.join(words)}")
+    if named & {"top", "bottom"} and {"top", "bottom"} <= present and not {"top", "bottom"} <= named:
+        raise ValueError(f"caption names only one of the panels {', '.join(words)}")
+    styles = _drawn_linestyles(fig)
+    for word, ls in _LINESTYLE.items():
+        pattern = rf"\b{word}\b" if word != "dashed" else r"(?<!dash-)\bdashed\b"
+        if re.search(pattern, text) and ls not in styles:
+            raise ValueError(f"caption says {word!r} but no {word} line is drawn")
+    colours = _drawn_colours(fig)
+    for word, hexes in _COLOURS.items():
+        if re.search(rf"(?<![-\w]){word}\b", text) and not colours & {h.lower() for h in hexes}:
+            raise ValueError(f"caption says {word!r} but nothing {word} is drawn")
+    if re.search(r"\blog(arithmic)?\b", text):
+        if not any("log" in (ax.get_xscale(), ax.get_yscale())[i] for ax in _panels(fig) for i in (0, 1)):
+            raise ValueError("caption says logarithmic but no axis is logarithmic")
+
+
+class Captioned:
+    """A figure with its caption, label and alt text (shown as a HiDPI PNG; see the module's notes)."""
+
+    def __init__(self, fig, caption: str, name: str, alt: str) -> None:
+        import matplotlib.pyplot as plt
+
+        if not caption.strip() or not alt.strip():
+            raise ValueError(f"figure {name!r}: caption and alt text must not be empty")
+        if re.search(r"\.(png|svg|pdf)\b|/", alt):
+            raise ValueError(f"figure {name!r}: alt text must describe the figure, not name a file: {alt!r}")
+        check_caption(fig, caption)
+        self.fig, self.caption, self.name, self.alt = fig, caption, name, alt
+        plt.close(fig)
+
+    def png(self) -> bytes:
+        """The figure as PNG at :data:`PIXEL_RATIO` times the style's resolution."""
+        buf = io.BytesIO()
+        self.fig.savefig(buf, format="png", dpi=style.DPI * PIXEL_RATIO)
+        return buf.getvalue()
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        width, height = self.fig.get_size_inches() * style.DPI
+        data = {
+            "image/png": base64.b64encode(self.png()).decode("ascii"),
+            "text/plain": f"Figure {self.name}: {self.caption}",
+        }
+        meta = {
+            "image/png": {"width": int(round(width)), "height": int(round(height))},
+            METADATA_KEY: {"caption": self.caption, "name": self.name, "alt": self.alt},
+        }
+        return data, meta
+
+    def __repr__(self) -> str:
+        return f"Figure {self.name}: {self.caption}"

@@ -1,0 +1,77 @@
+"""Captions checked against their figures; the book takes caption, label and alt text from the output."""
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+
+from vibration.presentation.captions import METADATA_KEY, Captioned, check_caption, panel_words
+from vibration.presentation.style import case_style, figure
+
+
+def _three():
+    fig, axes = figure(1, 3)
+    for ax in axes:
+        ax.plot([0, 1], [0, 1], **case_style("c_nominal"))
+    return fig
+
+
+def test_panel_words_follow_the_layout():
+    fig = _three()
+    assert panel_words(fig) == ["left", "middle", "right"]
+    plt.close(fig)
+    fig, axes = figure(2, 2)
+    assert panel_words(fig) == ["top left", "top right", "bottom left", "bottom right"]
+    plt.close(fig)
+    fig, axes = figure(2, 1)
+    im = axes[0].imshow(np.eye(3))
+    fig.colorbar(im, ax=axes[0])
+    assert panel_words(fig) == ["top", "bottom"], "a colour bar is not a panel"
+    plt.close(fig)
+
+
+@pytest.mark.parametrize(
+    "caption, problem",
+    [
+        ("Left: one. Right: another.", "middle"),  # the 'Left/Right' for three panels of Fig 11.1
+        ("Top: the response.", "top"),
+        ("The exact curve is dotted.", "dotted"),
+        ("The red curve is light damping.", "red"),
+        ("Magnification on a logarithmic axis.", "logarithmic"),
+    ],
+)
+def test_a_caption_that_contradicts_its_figure_is_refused(caption, problem):
+    fig = _three()
+    with pytest.raises(ValueError, match=problem):
+        check_caption(fig, caption)
+    plt.close(fig)
+
+
+def test_a_true_caption_passes_and_travels_in_the_metadata():
+    fig, ax = figure()
+    ax.plot([1, 2], [1, 4], **case_style("exact"))
+    ax.axhline(2.0, **case_style("threshold"))
+    ax.set_yscale("log")
+    caption = "The exact curve (black, dashed) above a dotted threshold, logarithmic axis."
+    cap = Captioned(fig, caption, "fig-x", "A line.")
+    data, meta = cap._repr_mimebundle_()
+    assert data["image/png"] and meta[METADATA_KEY] == {
+        "caption": cap.caption,
+        "name": "fig-x",
+        "alt": "A line.",
+    }
+    w, h = meta["image/png"]["width"], meta["image/png"]["height"]
+    import base64
+    import struct
+
+    png = base64.b64decode(data["image/png"])
+    pw, ph = struct.unpack(">II", png[16:24])
+    assert (pw, ph) == pytest.approx((2 * w, 2 * h), abs=2), "a HiDPI image shown at the column width"
+    assert plt.fignum_exists(fig.number) is False, "the pyplot figure is closed (no second inline copy)"
+
+
+def test_alt_text_is_a_description_not_a_file():
+    fig, ax = figure()
+    ax.plot([0, 1], [0, 1])
+    with pytest.raises(ValueError, match="alt text"):
+        Captioned(fig, "A line.", "fig-y", "figures/fig-y.png")
+    plt.close(fig)
