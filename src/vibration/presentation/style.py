@@ -24,9 +24,10 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.transforms import Bbox
 
-#: Width of the text column of the book at 1280 px, inches at the figure dpi.
-WIDTH_IN = 7.2
-DPI = 110
+#: Width of the text column of the book at 1280 px (672 CSS px), inches at the figure dpi: a figure is
+#: drawn at the size it is shown, so 9.5 pt text reads as 9.5 pt (PNGs carry twice the pixels).
+WIDTH_IN = 7.0
+DPI = 96
 
 #: The report's rcParams (applied inside :func:`figure` with ``rc_context``-free global update).
 RC = {
