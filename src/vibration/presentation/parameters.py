@@ -43,7 +43,7 @@ SHARED: dict[str, Param] = {
         Param("c_low", "c_low", 0.1, "N s/m", -1e4, 1e4, "low damping coefficient (0: undamped, < 0: self-excited)"),
         Param("c_nominal", "c_nom", 0.5, "N s/m", -1e4, 1e4, "nominal damping coefficient"),
         Param("c_high", "c_high", 15.0, "N s/m", -1e4, 1e4, "high damping coefficient"),
-        Param("n_points", "N", 5001, "", 2, min(200_001, N_POINTS_MAX), "output samples on [0, t_end]"),
+        Param("n_points", "N", 5001, "", 2, min(200_001, N_POINTS_MAX), "output samples over the window"),
     )
 }
 

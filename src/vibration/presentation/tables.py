@@ -308,3 +308,13 @@ def table(rows: Iterable[dict], columns: Sequence[Column | tuple], caption: str,
     """Shorthand: columns may be ``(key, header, digits)`` tuples."""
     cols = [c if isinstance(c, Column) else Column(*c) for c in columns]
     return Table(list(rows), cols, caption, name, tuple(notes))
+
+
+def symbol_html(text: str) -> str:
+    """A symbol or header as HTML: ``ω_res`` -> ``ω<sub>res</sub>`` (the public form of the table helper's rule)."""
+    return _sub_html(text)
+
+
+def symbol_myst(text: str) -> str:
+    """A symbol or header as MyST: ``ω_res`` -> ``ω{sub}`res```, everything else escaped."""
+    return _sub_myst(text)

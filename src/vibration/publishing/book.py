@@ -336,6 +336,20 @@ suppress_warnings = ["mystnb.unknown_mime_type", "myst.header", "toc.not_include
 """
 
 
+def write_appendices(src: Path) -> None:
+    """The generated appendices: table of symbols, using the package, references."""
+    from .appendices import APPENDICES, references_markdown, symbols_markdown, usage_markdown
+    from .report import chapter_packages, chapter_schemas
+
+    text = {
+        "symbols": symbols_markdown(chapter_schemas()),
+        "using": usage_markdown(list(chapter_packages().values())),
+        "references": references_markdown(),
+    }
+    for name, _ in APPENDICES:
+        (src / f"{name}.md").write_text(text[name], encoding="utf-8")
+
+
 def _toctree(pages: list[ChapterPage]) -> str:
     blocks = []
     for caption, lo, hi in PARTS:
@@ -344,6 +358,10 @@ def _toctree(pages: list[ChapterPage]) -> str:
             continue
         entries = "\n".join(p.name for p in members)
         blocks.append(f"```{{toctree}}\n:caption: {caption}\n:maxdepth: 1\n:hidden:\n\n{entries}\n```")
+    from .appendices import APPENDICES
+
+    entries = "\n".join(name for name, _ in APPENDICES)
+    blocks.append(f"```{{toctree}}\n:caption: Appendices\n:maxdepth: 1\n:hidden:\n\n{entries}\n```")
     return "\n\n".join(blocks)
 
 
@@ -358,6 +376,9 @@ def contents_markdown(pages: list[ChapterPage]) -> str:
         for p in members:
             lines.append(f"- [{p.title}]({p.name}.ipynb): {p.summary}")
         lines.append("")
+    from .appendices import APPENDICES
+
+    lines += ["**Appendices**", ""] + [f"- [{title}]({name}.md)" for name, title in APPENDICES]
     return "\n".join(lines)
 
 
@@ -388,6 +409,7 @@ def write_source(pages: list[ChapterPage], src: Path) -> None:
     nb.cells.append(nbformat.v4.new_markdown_cell(contents_markdown(chapters)))
     nb.cells.append(nbformat.v4.new_markdown_cell(_toctree(chapters)))
     nbformat.write(nb, src / "index.ipynb")
+    write_appendices(src)
     for p in chapters:
         nbformat.write(prepare(p, changes), src / f"{p.name}.ipynb")
 
@@ -419,13 +441,32 @@ def sphinx_build(src: Path, out: Path, builder: str) -> None:
         raise RuntimeError(f"Sphinx ({builder}) failed: {warnings.getvalue().strip()[-2000:]}")
 
 
-def print_pdf(html_path: Path, pdf_path: Path, title: str = BOOK_TITLE) -> int:
-    """Chromium's print of ``html_path`` to ``pdf_path`` (A4, page numbers); returns the page count."""
+def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), title: str = BOOK_TITLE):
+    """The print edition of ``html_path`` in ``pdf_path`` (A4, title page, contents with page numbers,
+    bookmarks, page numbers; see :mod:`vibration.publishing.print_edition`); returns its :class:`Edition`."""
     from playwright.sync_api import sync_playwright
-    from pypdf import PdfReader
+
+    from .print_edition import print_book
 
     if not Path(CHROMIUM).exists():
         raise RuntimeError(f"{CHROMIUM} is missing: the PDF needs Debian's chromium (make browser installs it)")
+    chapters = [p for p in pages if p.number is not None]  # the front page's heading comes first in the print
+    parts = []
+    for caption, lo, hi in PARTS:
+        first = next((i for i, p in enumerate(chapters) if lo <= p.number <= hi), None)
+        if first is not None:
+            parts.append((caption, first))
+    options = {
+        "format": "A4",
+        "print_background": True,
+        "display_header_footer": True,
+        "header_template": (
+            f'<div style="font-size:7px;width:100%;text-align:center;color:#666">{html.escape(title)}</div>'
+        ),
+        "footer_template": '<div style="font-size:8px;width:100%;text-align:center;color:#444">'
+        '<span class="pageNumber"></span> / <span class="totalPages"></span></div>',
+        "margin": {"top": "16mm", "bottom": "16mm", "left": "14mm", "right": "14mm"},
+    }
     with sync_playwright() as pw:
         browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
         try:
@@ -434,21 +475,9 @@ def print_pdf(html_path: Path, pdf_path: Path, title: str = BOOK_TITLE) -> int:
             page.goto(html_path.resolve().as_uri())
             page.wait_for_load_state("load")
             page.emulate_media(media="print")
-            page.pdf(
-                path=str(pdf_path),
-                format="A4",
-                print_background=True,
-                display_header_footer=True,
-                header_template=(
-                    f'<div style="font-size:7px;width:100%;text-align:center;color:#666">{html.escape(title)}</div>'
-                ),
-                footer_template='<div style="font-size:8px;width:100%;text-align:center;color:#444">'
-                '<span class="pageNumber"></span> / <span class="totalPages"></span></div>',
-                margin={"top": "16mm", "bottom": "16mm", "left": "14mm", "right": "14mm"},
-            )
+            return print_book(page, pdf_path, title, parts, options)
         finally:
             browser.close()
-    return len(PdfReader(str(pdf_path)).pages)
 
 
 def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True) -> dict:
@@ -467,7 +496,8 @@ def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True) -> 
         t1 = time.perf_counter()
         single = work / "book-single"
         sphinx_build(src, single, "singlehtml")
-        info["pdf_pages"] = print_pdf(single / "index.html", out / "report.pdf")
+        edition = print_pdf(single / "index.html", out / "report.pdf", pages)
+        info["pdf_pages"] = edition.page_count
         info["pdf_s"] = time.perf_counter() - t1
     shutil.rmtree(out / ".doctrees", ignore_errors=True)
     shutil.rmtree(out.parent / "jupyter_execute", ignore_errors=True)  # myst-nb's scratch folder

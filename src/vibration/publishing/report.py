@@ -36,8 +36,9 @@ from ..presentation.tables import TABLES_ENV
 
 KERNEL = "vibration"
 
-def chapter_schemas() -> dict:
-    """The parameter schemas of the chapter packages (``vibration.chapters.<name>.params.SCHEMA``), by notebook."""
+
+def chapter_packages() -> dict[str, str]:
+    """Notebook stem -> chapter package name (``vibration.chapters.<name>``), in report order."""
     import importlib
     import pkgutil
 
@@ -47,8 +48,17 @@ def chapter_schemas() -> dict:
     for info in pkgutil.iter_modules(chapters.__path__):
         if info.ispkg:
             schema = importlib.import_module(f"{chapters.__name__}.{info.name}.params").SCHEMA
-            out[schema.notebook] = schema
-    return out
+            out[schema.notebook] = info.name
+    return dict(sorted(out.items()))
+
+
+def chapter_schemas() -> dict:
+    """The parameter schemas of the chapter packages (``vibration.chapters.<name>.params.SCHEMA``), by notebook."""
+    import importlib
+
+    return {
+        nb: importlib.import_module(f"vibration.chapters.{pkg}.params").SCHEMA for nb, pkg in chapter_packages().items()
+    }
 
 
 def project_root() -> Path:
