@@ -13,7 +13,8 @@ import json
 import re
 from pathlib import Path
 
-from vibration.presentation.solvers import MACHINE_DEPENDENT, ladder_table, solver_study
+from vibration.chapters.solver_accuracy.study import MACHINE_DEPENDENT, solver_accuracy_study
+from vibration.chapters.solver_accuracy.text import ladder_table
 from vibration.presentation.tables import Approx
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -65,7 +66,7 @@ def test_machine_dependent_ladder_cells_stay_near_the_reference():
     """
     ref = _reference_ladder()
     assert ref, "no machine-dependent rows in the committed ladder"
-    table = ladder_table(solver_study(1.0, 20.0, 5.0, 50.0, 4.47, 0.5, 5001))
+    table = ladder_table(solver_accuracy_study())
     seen = 0
     for row, cells in zip(table.rows, table.cells(), strict=True):
         if row["method"] not in MACHINE_DEPENDENT:
