@@ -1,24 +1,16 @@
-"""Sentences from results: every statement of a number, a regime, a comparison or a verdict.
+r"""Sentences shared by the Part I chapters: numbers, typeset symbols, parameters and regimes.
 
-Each function takes the results a chapter already computed and returns Markdown, shown in
-the notebook with ``display(Markdown(text))``; a papermill run with other parameters
-therefore says what its own tables say. Prose about the paper is quoted from it and says so.
-
-Word conventions (a test reads the executed chapters and checks them against their tables):
-
-* a case is named in bold, ``**low damping**``, as in the tables' "case" column;
-* its regime word is the table's ("underdamped", "undamped", "unstable", ...);
-* "settles after T s" when the 2 % settling time is inside the window, "has not settled by
-  t = T s" otherwise;
-* "the largest response is the **case**" names the case with the largest peak |x|;
-* "inside" / "outside the half-power band" as the half-power table says.
+Each function returns Markdown, shown in a notebook with ``display(Markdown(...))``; a run
+with other parameters therefore says what its own tables say. Symbols are typeset for the
+reader (:func:`tex`: ``c_low`` reads $c_\mathrm{low}$, ``omega_n`` reads $\omega_n$), never
+written as code names.
 
 Examples
 --------
->>> from vibration.presentation.findings import reproduce, scenarios_from
->>> rep = reproduce(scenarios_from(1.0, 20.0, 5.0, 50.0, 3.0, 4.47, 0.1, 0.5, 5.0), n_points=1001)
->>> print(largest_sentence(rep))
-The largest response is the **low damping** case: peak |x| = 10.25 m in the window.
+>>> tex("ω_res"), tex("F_0"), tex("m")
+('$\\omega_\\mathrm{res}$', '$F_0$', '$m$')
+>>> print(regime_clause(Oscillator(1.0, 15.0, 20.0)))
+overdamped (ζ = 1.68 > 1: the free motion does not oscillate)
 """
 
 from __future__ import annotations
@@ -27,24 +19,28 @@ import math
 
 from ..physics.model import Oscillator, SineForce
 from ..physics.paper import paper_defaults
-from .findings import Reproduction, case_name
+from .parameters import SHARED
 from .tables import fmt
 
-#: Relative error of RK45 (against the window's peak) below which the summary calls it negligible.
-SMALL_ERROR = 0.05
+#: Greek letters of the symbols in schemas and sentences, as TeX commands.
+GREEK = {"ω": r"\omega", "ζ": r"\zeta", "σ": r"\sigma", "τ": r"\tau", "φ": r"\varphi", "Δ": r"\Delta", "μ": r"\mu"}
 
-#: Meaning and unit of the paper's parameters, for the sentence that lists what a run changed.
-PARAMETER_TEXT = {
-    "m": ("m", "kg"),
-    "k": ("k", "N/m"),
-    "F0": ("F0", "N"),
-    "t_end": ("t_end", "s"),
-    "omega_ref": ("ω_ref", "rad/s"),
-    "omega_res": ("ω_res", "rad/s"),
-    "c_low": ("c_low", "N s/m"),
-    "c_nominal": ("c_nominal", "N s/m"),
-    "c_high": ("c_high", "N s/m"),
-}
+
+def tex(symbol: str) -> str:
+    """A schema symbol (``"ω_res"``, ``"c_low"``, ``"F_0"``) as inline Markdown maths.
+
+    A one-character or numeric subscript stays italic (ω_n, F_0); a word becomes upright (ω_res).
+    """
+    base, _, sub = symbol.partition("_")
+    body = "".join(GREEK.get(ch, ch) for ch in base)
+    if sub:
+        sub = sub if len(sub) == 1 or sub.isdigit() else rf"\mathrm{{{sub}}}"
+        body += f"_{sub}" if len(sub) == 1 else f"_{{{sub}}}" if sub.isdigit() else f"_{sub}"
+    return f"${body}$"
+
+
+#: Symbol (typeset) and unit of the paper's parameters, for the sentence that lists what a run changed.
+PARAMETER_TEXT = {name: (tex(p.symbol), p.unit) for name, p in SHARED.items()}
 
 
 def g(value: float, digits: int = 4) -> str:
@@ -58,16 +54,51 @@ def g(value: float, digits: int = 4) -> str:
     return fmt(float(value), digits)
 
 
+def sig(value: float, digits: int = 4) -> str:
+    """Like :func:`g`, with a typographic minus and ×10ⁿ instead of e-notation (for prose).
+
+    Examples
+    --------
+    >>> sig(2.43e-5, 3), sig(-1.5e6), sig(-0.25)
+    ('2.43 × 10⁻⁵', '−1.5 × 10⁶', '−0.25')
+    """
+    text = fmt(float(value), digits)
+    mant, _, exp = text.partition("e")
+    mant = "−" + mant[1:] if mant.startswith("-") else mant
+    return f"{mant} × 10{str(int(exp)).translate(_SUPERSCRIPT)}" if exp else mant
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def fixed(value: float, digits: int = 4) -> str:
+    """A table cell with exactly ``digits`` significant figures, trailing zeros kept (one precision per column).
+
+    Examples
+    --------
+    >>> fixed(9.9996), fixed(2.23703819), fixed(15.0, 3), fixed(2.43e-5, 3), fixed(float("inf"))
+    ('10.00', '2.237', '15.0', '2.43 × 10⁻⁵', '∞')
+    """
+    v = float(value)
+    if not math.isfinite(v):
+        return g(v)
+    text = f"{v:#.{digits}g}"
+    if "e" in text:
+        return sig(v, digits)
+    text = text.rstrip(".")
+    return "−" + text[1:] if text.startswith("-") else text
+
+
 def parameters_sentence(**values: float) -> str:
     """Which of the paper's parameters this run changed (keyword arguments: name = value).
 
     Examples
     --------
-    >>> parameters_sentence(m=1.0, c_high=15.0)
-    "This run uses the paper's parameters (m = 1 kg, c_high = 15 N s/m)."
-    >>> parameters_sentence(m=1.0, c_high=5.0)
-    "This run changes the paper's parameters: c_high = 5 N s/m (the paper's: 15 N s/m). Every number, regime \
-and verdict below is computed with the run's values; quotations keep the paper's."
+    >>> print(parameters_sentence(m=1.0, c_high=15.0))
+    This run uses the paper's parameters ($m$ = 1 kg, $c_\\mathrm{high}$ = 15 N s/m).
+    >>> print(parameters_sentence(m=1.0, c_high=5.0))
+    This run changes the paper's parameters: $c_\\mathrm{high}$ = 5 N s/m (the paper's: 15 N s/m). Every number, \
+regime and verdict below is computed with the run's values; quotations keep the paper's.
     """
     paper = paper_defaults()
     changed, same = [], []
@@ -91,10 +122,8 @@ def regime_clause(osc: Oscillator, force: SineForce | None = None, t_end: float 
 
     Examples
     --------
-    >>> regime_clause(Oscillator(1.0, 15.0, 20.0))
-    'overdamped (ζ = 1.68 > 1: the free motion does not oscillate)'
-    >>> regime_clause(Oscillator(1.0, -0.1, 20.0))
-    'unstable (negative damping, ζ = -0.0112: the free vibration grows as exp(0.05 t/s))'
+    >>> print(regime_clause(Oscillator(1.0, -0.1, 20.0)))
+    unstable (negative damping, ζ = −0.0112: the free vibration grows as $e^{0.05\\,t/\\mathrm{s}}$)
     """
     zeta = osc.damping_ratio
     reg = osc.regime
@@ -106,127 +135,23 @@ def regime_clause(osc: Oscillator, force: SineForce | None = None, t_end: float 
         return "critically damped (ζ = 1)"
     if reg == "unstable":
         return (
-            f"unstable (negative damping, ζ = {g(zeta, 3)}: the free vibration grows as "
-            f"exp({g(-osc.decay_rate, 3)} t/s))"
+            f"unstable (negative damping, ζ = {sig(zeta, 3)}: the free vibration grows as "
+            f"$e^{{{fmt(-osc.decay_rate, 3)}\\,t/\\mathrm{{s}}}}$)"
         )
     # undamped
     text = "undamped (c = 0: the free vibration never decays"
     if force is not None and force.omega > 0:
         wn, w = osc.natural_frequency, force.omega
         if w == wn:
-            text += "; at exact resonance the forced response grows without bound, as t cos(ω_n t)"
+            text += r"; at exact resonance the forced response grows without bound, as $t\cos\omega_n t$"
         else:
             beat = 2 * math.pi / abs(wn - w)
-            text += f"; forced at ω/ω_n = {g(w / wn, 5)} the response beats with period {g(beat, 3)} s"
+            text += rf"; forced at $\omega/\omega_n$ = {g(w / wn, 5)} the response beats with period {g(beat, 3)} s"
             if t_end is not None and beat > 4 * t_end:
-                text += f", so over {g(t_end)} s it grows almost linearly, like the t cos(ω_n t) of exact resonance"
+                text += (
+                    f", so over {g(t_end)} s it grows almost linearly, like the $t\\cos\\omega_n t$ of exact resonance"
+                )
     return text + ")"
-
-
-def settle_clause(f: dict, t_end: float) -> str:
-    """ "it settles after T s" or "it has not settled by t = T s", from one findings row.
-
-    Examples
-    --------
-    >>> settle_clause({"t_settle_2pct_s": 78.23, "steady_in_window": False, "c_Ns_m": 0.1}, 50.0)
-    'it has not settled by t = 50 s (its 2 % settling time is 78.2 s)'
-    """
-    ts = f["t_settle_2pct_s"]
-    if f["steady_in_window"]:
-        return f"it settles after {g(ts, 3)} s, inside the {g(t_end)} s window"
-    if f["c_Ns_m"] <= 0:
-        why = "it has no steady state to settle to" if f["c_Ns_m"] < 0 else "its free vibration never decays"
-        return f"it has not settled by t = {g(t_end)} s and never will: {why}"
-    return f"it has not settled by t = {g(t_end)} s (its 2 % settling time is {g(ts, 3)} s)"
-
-
-def case_sentence(rep: Reproduction, sid: str) -> str:
-    """One scenario in a sentence: damping, regime, peak, settling.
-
-    Examples
-    --------
-    >>> from vibration.presentation.findings import reproduce, scenarios_from
-    >>> rep = reproduce(scenarios_from(1.0, 20.0, 5.0, 50.0, 3.0, 4.47, 0.1, 0.5, 15.0), n_points=1001)
-    >>> print(case_sentence(rep, "damping_high"))
-    **high damping** (c = 15 N s/m, ω = 4.47 rad/s): overdamped (ζ = 1.68 > 1: the free motion does not \
-oscillate); peak |x| = 0.1045 m in the window, steady amplitude x_ss = 0.07457 m; it settles after 2.72 s, \
-inside the 50 s window.
-    """
-    sc, f = rep.scenarios[sid], rep.by_id[sid]
-    osc, force = sc.oscillator, sc.force
-    if osc.c < 0:
-        amp = "no steady amplitude (it is never reached)"
-    else:
-        amp = f"steady amplitude x_ss = {g(f['x_ss_m'])} m"
-    return (
-        f"**{case_name(sid)}** (c = {g(osc.c)} N s/m, ω = {g(force.omega)} rad/s): "
-        f"{regime_clause(osc, force, sc.t_end)}; peak |x| = {g(f['peak_x_exact_m'])} m in the window, {amp}; "
-        f"{settle_clause(f, sc.t_end)}."
-    )
-
-
-def largest_sentence(rep: Reproduction, ids=("damping_low", "damping_nominal", "damping_high")) -> str:
-    """Which of the cases ``ids`` has the largest peak |x| in the window."""
-    best = max(ids, key=lambda s: rep.by_id[s]["peak_x_exact_m"])
-    return (
-        f"The largest response is the **{case_name(best)}** case: peak |x| = "
-        f"{g(rep.by_id[best]['peak_x_exact_m'])} m in the window."
-    )
-
-
-def resonance_text(rep: Reproduction) -> str:
-    """What Figure 1 shows: the resonance case against the reference case, from the run's numbers."""
-    res, ref = rep.by_id["resonance"], rep.by_id["reference"]
-    sc = rep.scenarios["resonance"]
-    wn = sc.oscillator.natural_frequency
-    lines = [
-        f"The resonance case forces the oscillator at ω = {g(sc.force.omega)} rad/s, ω/ω_n = "
-        f"{g(sc.force.omega / wn, 5)} of its natural frequency ω_n = √(k/m) = {g(wn)} rad/s.",
-        "",
-        "- " + case_sentence(rep, "resonance"),
-        "- " + case_sentence(rep, "reference"),
-    ]
-    if res["c_Ns_m"] >= 0 and ref["c_Ns_m"] >= 0 and ref["x_ss_m"] > 0 and math.isfinite(res["x_ss_m"]):
-        ratio = res["x_ss_m"] / ref["x_ss_m"]
-        lines += [
-            "",
-            f"The steady amplitude at resonance is {g(ratio, 3)} times the reference one "
-            f"({g(res['x_ss_m'])} m against {g(ref['x_ss_m'])} m); the window peaks are "
-            f"{g(res['peak_x_exact_m'])} m and {g(ref['peak_x_exact_m'])} m.",
-        ]
-    return "\n".join(lines)
-
-
-def damping_text(rep: Reproduction) -> str:
-    """What Figure 2 shows: the three dampings at the resonant frequency, case by case."""
-    ids = ("damping_low", "damping_nominal", "damping_high")
-    lines = ["- " + case_sentence(rep, sid) for sid in ids]
-    return "\n".join(lines) + "\n\n" + largest_sentence(rep, ids)
-
-
-def reproduction_summary(rep: Reproduction) -> str:
-    """The bullets of chapter 1's summary."""
-    worst = max(rep.findings, key=lambda f: f["max_err_x_rk45_m"] / max(f["peak_x_exact_m"], 1e-300))
-    rel = worst["max_err_x_rk45_m"] / max(worst["peak_x_exact_m"], 1e-300)
-    text = (
-        f"The paper's method (RK45 at SciPy's defaults) stays within {g(100 * rel, 2)} % of each case's "
-        f"peak of the exact displacement (worst: **{case_name(worst['scenario'])}**, "
-        f"{g(worst['max_err_x_rk45_m'], 3)} m); "
-    )
-    if rel < SMALL_ERROR:
-        text += "differences between the paper's text and these tables are therefore not numerical."
-    else:
-        text += (
-            f"that is more than {g(100 * SMALL_ERROR)} %, so with these parameters the default tolerances "
-            "matter (chapter 3 measures them)."
-        )
-    bullets = [text + " Chapter 2 audits each claim."]
-    t_end = rep.scenarios["damping_low"].t_end
-    for sid in ("damping_low", "damping_nominal", "damping_high"):
-        f = rep.by_id[sid]
-        bullets.append(f"**{case_name(sid)}** is {f['regime']}; {settle_clause(f, t_end)}.")
-    bullets.append(largest_sentence(rep))
-    return "\n".join("- " + b for b in bullets)
 
 
 def explorer_start(c: float) -> tuple[float, str]:

@@ -1,4 +1,6 @@
-"""Figures of Part I. Every function returns a matplotlib Figure in the report style
+"""Figures of Part I chapters 3 and 4 (chapter 1 draws its own in its package).
+
+Every function returns a matplotlib Figure in the report style
 (:func:`vibration.presentation.style.figure`), with mathtext symbols and units on the axes
 and legends placed where they cover no data (outside the axes or in a measured free corner).
 """
@@ -9,7 +11,6 @@ import math
 
 import numpy as np
 from matplotlib.colors import LogNorm
-from matplotlib.lines import Line2D
 from matplotlib.ticker import LogFormatterSciNotation, LogLocator
 
 from ..physics.exact import Response
@@ -30,55 +31,6 @@ def _legend_above(ax, handles=None, ncol: int = 3):
     return ax.legend(
         loc="lower left", bbox_to_anchor=(0.0, 1.02, 1.0, 0.1), ncol=ncol, borderaxespad=0.0, frameon=False, **kw
     )
-
-
-def response_figure(runs: list[tuple[str, Response, Response]], title: str = ""):
-    """Displacement, velocity and the paper's error against the exact solution.
-
-    Parameters
-    ----------
-    runs : list of (label, paper_response, exact_response)
-        Responses on the same times (s; m; m/s).
-    title : str
-        Figure title (mathtext allowed).
-    """
-    fig, axes = figure(3, 1, height=6.6, sharex=True)
-    colors = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"]
-    handles = []
-    for (label, paper, exact), col in zip(runs, colors, strict=False):
-        axes[0].plot(paper.t, paper.x, color=col, lw=1.0)
-        axes[0].plot(exact.t, exact.x, color="k", lw=0.6, ls="--")
-        axes[1].plot(paper.t, paper.v, color=col, lw=1.0)
-        axes[1].plot(exact.t, exact.v, color="k", lw=0.6, ls="--")
-        err = np.abs(paper.x - exact.x)
-        axes[2].semilogy(paper.t, np.where(err > 0, err, np.nan), color=col, lw=0.8)
-        handles.append(Line2D([], [], color=col, lw=1.2, label=f"{label}: RK45 (paper's method)"))
-    handles.append(Line2D([], [], color="k", lw=0.6, ls="--", label="exact closed form"))
-    axes[0].set_ylabel(r"displacement $x$ (m)")
-    axes[1].set_ylabel(r"velocity $v$ (m/s)")
-    axes[2].set_ylabel(r"$|x_\mathrm{RK45} - x|$ (m)")
-    axes[2].set_xlabel(r"time $t$ (s)")
-    _legend_above(axes[0], handles, ncol=2)
-    if title:
-        fig.suptitle(title)
-    return fig
-
-
-def resonance_figure(rep):
-    """The paper's Figure 1 redrawn: the resonance case by RK45 and exactly (a :class:`Reproduction`)."""
-    sc = rep.scenarios["resonance"]
-    return response_figure(
-        [(f"$c$ = {sc.oscillator.c:g} N s/m", rep.paper["resonance"], rep.exact["resonance"])],
-        rf"Resonance case: $\omega$ = {sc.force.omega:g} rad/s, $c$ = {sc.oscillator.c:g} N s/m",
-    )
-
-
-def damping_figure(rep):
-    """The paper's Figure 2 redrawn: three dampings at the resonant frequency (a :class:`Reproduction`)."""
-    ids = ("damping_low", "damping_nominal", "damping_high")
-    runs = [(f"$c$ = {rep.scenarios[s].oscillator.c:g} N s/m", rep.paper[s], rep.exact[s]) for s in ids]
-    w = rep.scenarios["damping_low"].force.omega
-    return response_figure(runs, rf"Three dampings at $\omega$ = {w:g} rad/s")
 
 
 def frequency_response_figure(curves, omegas, marks=(), omega_n: float | None = None):
