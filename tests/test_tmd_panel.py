@@ -19,7 +19,7 @@ from conftest import SCREENSHOTS, open_offline
 
 import vibration
 from vibration import den_hartog, h2_tuning, hinf_tuning, tmd_fixed_points, tmd_magnification, tmd_peak
-from vibration.presentation import tmd as pres
+from vibration.chapters.tmd import panel as pres
 from vibration.publishing.mathml import external_urls
 
 RTOL_CLOSED = 1e-12
