@@ -283,3 +283,34 @@ def test_lint_imports_fails_on_a_forbidden_import(tmp_path):
     )
     assert proc.returncode != 0, proc.stdout
     assert "BROKEN" in proc.stdout and "vibration.physics.model" in proc.stdout, proc.stdout
+
+
+@pytest.mark.browser
+def test_the_print_edition_has_a_title_page_contents_and_bookmarks(site):
+    """Title page first, a contents whose page numbers open their chapters, one bookmark per chapter and appendix."""
+    from pypdf import PdfReader
+
+    reader = PdfReader(str(site / "report.pdf"))
+    texts = [" ".join((page.extract_text() or "").replace("\u2019", "'").split()) for page in reader.pages]
+    assert texts[0].startswith(BOOK_TITLE), texts[0][:200]
+    contents = next(i for i, t in enumerate(texts) if t.startswith("Contents"))
+    entries = re.findall(
+        r"(\d+\. [^\d]{8,}?|Table of symbols|Using the package|References) (\d+)(?= |$)", texts[contents]
+    )
+    assert len(entries) >= len(CHAPTERS) + 3, entries
+    for title, page in entries:
+        opened = texts[int(page) - 1]
+        head = " ".join(title.split()[:3])
+        assert head in opened[:400], (title, page, opened[:200])
+
+    def titles(items):
+        for item in items:
+            if isinstance(item, list):
+                yield from titles(item)
+            else:
+                yield item.title
+
+    marks = list(titles(reader.outline))
+    for title, _ in entries:
+        assert any(" ".join(title.split()[:3]) in " ".join(m.replace("\u2019", "'").split()) for m in marks), title
+    assert {"Title page", "Contents", "References"} <= set(marks)

@@ -60,6 +60,13 @@ class Parameter:
     meaning: str
     unit: str  # "" when dimensionless or a count
     paper: bool  # the default is the paper's value
+    symbol: str = ""  # how the book writes it ("ω_res"); the name when empty
+
+    @property
+    def symbol_html(self) -> str:
+        from ..presentation.tables import symbol_html
+
+        return symbol_html(self.symbol or self.name)
 
     @property
     def changed(self) -> bool:
@@ -151,7 +158,7 @@ def _unit_text(value, unit: str) -> str:
 
 def _items(params: list[Parameter]) -> str:
     return "".join(
-        f"<li><code>{html.escape(p.name)}</code> ({html.escape(p.meaning)}) = "
+        f"<li>{p.symbol_html} ({html.escape(p.meaning)}, <code>-p {html.escape(p.name)}</code>) = "
         f"<strong>{html.escape(_unit_text(p.value, p.unit))}</strong>; "
         f"{'the paper' if p.paper else 'default'}: {html.escape(_unit_text(p.default, p.unit))}</li>"
         for p in params
@@ -200,14 +207,15 @@ def parameters_table(params: list[Parameter]) -> str:
     """HTML table of the chapter's parameters: name, value, unit, meaning (changed ones marked)."""
     changed_attr = ' class="vib-changed"'
     rows = "".join(
-        f"<tr{changed_attr if p.changed else ''}><td><code>{html.escape(p.name)}</code></td>"
+        f"<tr{changed_attr if p.changed else ''}><td>{p.symbol_html}</td>"
         f"<td>{html.escape(_value_text(p.value))}</td>"
-        f"<td>{html.escape(p.unit)}</td><td>{html.escape(p.meaning)}</td></tr>"
+        f"<td>{html.escape(p.unit)}</td><td>{html.escape(p.meaning)}</td><td><code>{html.escape(p.name)}</code></td></tr>"
         for p in params
     )
     return (
-        '<div class="vib-parameters"><table><caption>Parameters of this run (change them with <code>-p NAME '
-        "VALUE</code>)</caption><thead><tr><th>name</th><th>value</th><th>unit</th><th>meaning</th></tr></thead>"
+        '<div class="vib-parameters"><table><caption>Parameters of this run (the book\'s <a href="symbols.html">'
+        "table of symbols</a> lists them all)</caption><thead><tr><th>symbol</th><th>value</th><th>unit</th>"
+        "<th>meaning</th><th>set with <code>-p</code></th></tr></thead>"
         f"<tbody>{rows}</tbody></table></div>"
     )
 

@@ -22,7 +22,7 @@ SUBTITLE = "A reproducible study of the forced mass–spring–damper: the paper
 _PRINT_CSS = """
 @media print {
   .vib-title-page { break-after: page; display: flex; flex-direction: column; justify-content: center;
-    min-height: 240mm; text-align: center; }
+    min-height: 200mm; text-align: center; }
   .vib-title-page h1.vib-book-title { font-size: 2.4em; margin-bottom: 0.6em; border: none; }
   .vib-title-page p { font-size: 1.1em; color: #333; max-width: 34em; margin: 0.4em auto; }
   .vib-contents { break-after: page; }
@@ -33,21 +33,26 @@ _PRINT_CSS = """
   .vib-contents li .vib-dots { flex: 1; border-bottom: 1px dotted #888; margin: 0 0.4em; }
   input, select, button, .vib-reset, .vro-reset, .jupyter-widgets, .widget-output { display: none !important; }
   .vib-print-note { display: block !important; font-size: 0.85em; color: #555; font-style: italic; }
+  .vib-page-mark { display: block !important; color: #fff; font-size: 1px; line-height: 1px; height: 1px; }
 }
+.vib-page-mark { display: none; }
 .vib-print-note { display: none; }
 """
 
 _SETUP_JS = """
 ([css, title, subtitle, note, parts]) => {
   const style = document.createElement('style'); style.textContent = css; document.head.appendChild(style);
-  const body = document.querySelector('#jb-print-docs-body') || document.querySelector('article') || document.body;
-  const heads = [...body.querySelectorAll('section > h1')].filter(h => h.closest('.vib-title-page') === null);
+  // the front page's title, then each document's first heading (Sphinx's single page demotes them)
+  const first = document.querySelector('article h1') || document.querySelector('h1');
+  const docs = [...document.querySelectorAll('span[id^="document-"] + section')]
+    .map(s => s.querySelector('h1, h2, h3'));
+  const heads = [first, ...docs].filter(h => h);
   const front = document.createElement('div');
   front.innerHTML = `<div class="vib-title-page"><h1 class="vib-book-title">${title}</h1><p>${subtitle}</p></div>
     <nav class="vib-contents"><h2>Contents</h2><ol></ol></nav>`;
   const list = front.querySelector('ol');
   heads.forEach((h, i) => {
-    const text = h.textContent.replace(/[#¶]\\s*$/, '').trim();
+    const text = i === 0 ? 'Overview and findings' : h.textContent.replace(/[#¶]\\s*$/, '').trim();
     const part = parts.find(p => p[1] === i);
     if (part) { const li = document.createElement('li'); li.className = 'vib-part'; li.textContent = part[0];
                 list.appendChild(li); }
@@ -56,13 +61,19 @@ _SETUP_JS = """
     li.querySelector('.vib-entry').textContent = text;
     list.appendChild(li);
   });
-  body.insertBefore(front, body.firstChild);
+  const anchor = first.closest('section') || first;
+  anchor.parentNode.insertBefore(front, anchor);
+  heads.forEach((h, i) => {  // an invisible mark on the page each document opens, found in the PDF's text
+    const mark = document.createElement('span');
+    mark.className = 'vib-page-mark'; mark.setAttribute('aria-hidden', 'true');
+    mark.textContent = `vibdoc${i}mark`; h.parentNode.insertBefore(mark, h);
+  });
   document.querySelectorAll('.vib-panel, .vro-panel, [class$="-panel"]').forEach(p => {
     if (p.querySelector('input, select, button')) {
       const n = document.createElement('p'); n.className = 'vib-print-note'; n.textContent = note; p.appendChild(n);
     }
   });
-  return heads.map(h => h.textContent.replace(/[#¶]\\s*$/, '').trim());
+  return heads.map((h, i) => i === 0 ? 'Overview and findings' : h.textContent.replace(/[#¶]\\s*$/, '').trim());
 }
 """
 
@@ -82,27 +93,18 @@ class Edition:
     page_count: int
 
 
-def _squash(text: str) -> str:
-    """Text without spaces, ligatures undone, for finding a heading on a page whatever the line breaks."""
-    for lig, plain in (("ﬁ", "fi"), ("ﬂ", "fl"), ("ﬀ", "ff"), ("ﬃ", "ffi"), ("ﬄ", "ffl")):
-        text = text.replace(lig, plain)
-    return re.sub(r"[\s\-‐]+", "", text).lower()
-
-
-def chapter_pages(pdf: Path, titles: list[str], after: int) -> list[int]:
-    """1-based page on which each title first appears, searching in order from page ``after + 1``."""
+def chapter_pages(pdf: Path, count: int) -> list[int]:
+    """1-based page on which each of ``count`` documents opens, from the invisible marks the print carries."""
     from pypdf import PdfReader
 
-    texts = [_squash(p.extract_text() or "") for p in PdfReader(str(pdf)).pages]
-    out, start = [], after
-    for title in titles:
-        key = _squash(title)[:40]
-        hit = next((i for i in range(start, len(texts)) if key in texts[i]), None)
-        if hit is None:
-            raise RuntimeError(f"the print edition lost the chapter {title!r}: its title is on no page after {start}")
-        out.append(hit + 1)
-        start = hit
-    return out
+    found: dict[int, int] = {}
+    for number, page in enumerate(PdfReader(str(pdf)).pages, start=1):
+        for m in re.finditer(r"vibdoc(\d+)mark", (page.extract_text() or "").replace(" ", "")):
+            found.setdefault(int(m.group(1)), number)
+    missing = [i for i in range(count) if i not in found]
+    if missing:
+        raise RuntimeError(f"the print edition lost the start of documents {missing}: no page carries their mark")
+    return [found[i] for i in range(count)]
 
 
 def print_book(page, pdf_path: Path, title: str, parts: list[tuple[str, int]], pdf_options: dict) -> Edition:
@@ -113,19 +115,38 @@ def print_book(page, pdf_path: Path, title: str, parts: list[tuple[str, int]], p
     from pypdf import PdfReader
 
     titles = page.evaluate(_SETUP_JS, [_PRINT_CSS, html.escape(title), html.escape(SUBTITLE), NOTE, parts])
-    options = {**pdf_options, "path": str(pdf_path), "outline": True, "tagged": True}
+    options = {**pdf_options, "path": str(pdf_path), "tagged": True}
     page.pdf(**options)
-    front_pages = _front_pages(pdf_path, titles)
-    pages = chapter_pages(pdf_path, titles, front_pages)
+    pages = chapter_pages(pdf_path, len(titles))
     page.evaluate(_FILL_JS, [str(p) for p in pages])
     page.pdf(**options)
-    check = chapter_pages(pdf_path, titles, front_pages)
+    check = chapter_pages(pdf_path, len(titles))
     if check != pages:
         raise RuntimeError(f"the print edition's pages moved between passes: {pages} then {check}")
+    add_bookmarks(pdf_path, titles, pages, parts)
     return Edition(tuple(titles), tuple(pages), len(PdfReader(str(pdf_path)).pages))
 
 
-def _front_pages(pdf: Path, titles: list[str]) -> int:
-    """Pages taken by the title page and the contents: the contents ends on the first page after the
-    title page that names the last chapter."""
-    return chapter_pages(pdf, titles[-1:], 1)[0]
+def add_bookmarks(pdf: Path, titles: list[str], pages: list[int], parts: list[tuple[str, int]]) -> None:
+    """PDF bookmarks: the title page, the contents, each part with its chapters, the appendices."""
+    from pypdf import PdfReader, PdfWriter
+
+    writer = PdfWriter(clone_from=PdfReader(str(pdf)))
+    writer.add_outline_item("Title page", 0)
+    writer.add_outline_item("Contents", 1)
+    starts = {index: caption for caption, index in parts}
+    parent = None
+    for i, (title, page) in enumerate(zip(titles, pages, strict=True)):
+        if i in starts:
+            parent = writer.add_outline_item(starts[i], page - 1)
+        elif parent is not None and i > max(starts, default=0) and not _is_chapter(title):
+            parent = None  # the appendices after the last part stand on their own
+        writer.add_outline_item(title, page - 1, parent=parent)
+    writer.page_mode = "/UseOutlines"
+    with open(pdf, "wb") as fh:
+        writer.write(fh)
+
+
+def _is_chapter(title: str) -> bool:
+    """Whether a heading is a numbered chapter ("12. The real oscillator ...")."""
+    return bool(re.match(r"^\d+\.\s", title))

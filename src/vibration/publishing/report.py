@@ -298,6 +298,7 @@ def chapter_parameters(ch: Chapter, values: dict) -> list:
     from .book import Parameter, differs, split_help
 
     paper = paper_defaults()
+    schema = chapter_schemas().get(ch.name)
     out = []
     for name, info in ch.params.items():
         try:
@@ -305,8 +306,12 @@ def chapter_parameters(ch: Chapter, values: dict) -> list:
         except (ValueError, SyntaxError):
             default = info.get("default")
         meaning, unit = split_help(info.get("help", ""))
+        symbol = ""
+        if schema is not None and name in schema.names():  # the schema is the source; the cell's comment a fallback
+            param = schema[name]
+            meaning, unit, symbol = param.meaning or meaning, param.unit, param.symbol
         is_paper = name in paper and not differs(default, paper[name])
-        out.append(Parameter(name, values.get(name, default), default, meaning, unit, is_paper))
+        out.append(Parameter(name, values.get(name, default), default, meaning, unit, is_paper, symbol))
     return out
 
 
