@@ -363,5 +363,5 @@ def sliders_text(st: TMDStudy) -> str:
         "kernel these are live widgets computed by the package; in the rendered book, without a kernel, the same "
         f"controls compute the closed forms in your browser. Both start at μ = {mu:g}{moved} with the H∞ tuning "
         f"$f$ = {sig(t.f)}, $\\zeta_a$ = {sig(t.zeta_a)} on an undamped primary ($\\zeta_p$ = 0), where P and Q are "
-        f"exact; set $\\zeta_p$ to {sig(st.zeta_p, 3)} for the paper's primary, where they are only approximate."
+        f"exact; set $\\zeta_p$ to {sig(st.zeta_p, 3)} for this run's primary, where they are only approximate."
     )

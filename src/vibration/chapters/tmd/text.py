@@ -123,7 +123,7 @@ def tuning_sentence(st: TMDStudy) -> str:
         f"At μ = {st.mu:g} on an undamped primary, the closed-form H∞ optimum ({F} = {sig(hinf.f)}, "
         f"{ZA} = {sig(hinf.zeta_a)}) holds the peak magnification to {sig(hinf.peak, 5)}, against "
         f"{sig(dh.peak, 5)} for Den Hartog's rule ({_rel(dh.peak, hinf.peak)}) and {sig(h2.peak, 5)} for "
-        f"Warburton's H2 tuning ({_rel(h2.peak, hinf.peak)}). On the paper's primary ({ZP} = "
+        f"Warburton's H2 tuning ({_rel(h2.peak, hinf.peak)}). On the actual primary ({ZP} = "
         f"{sig(st.zeta_p, 3)}) the H∞ optimum moves to {F} = {sig(num.f)}, {ZA} = {sig(num.zeta_a)} and a peak "
         f"of {sig(num.peak)}; there Den Hartog's tuning gives {sig(pa[RULES[0]])} and the closed-form H∞ tuning "
         f"{sig(pa[RULES[1]])}."
