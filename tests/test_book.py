@@ -314,3 +314,50 @@ def test_the_print_edition_has_a_title_page_contents_and_bookmarks(site):
     for title, _ in entries:
         assert any(" ".join(title.split()[:3]) in " ".join(m.replace("\u2019", "'").split()) for m in marks), title
     assert {"Title page", "Contents", "References"} <= set(marks)
+
+
+# ------------------------------------------------------------------ proofreading the reader's text
+
+
+def _reader_pages(site: Path) -> list[Path]:
+    return [p for p in _pages(site) if p.name not in ("genindex.html", "search.html")]
+
+
+def test_the_reader_text_has_no_code_notation(site):
+    """No underscored code names, e-notation, ^ powers or sqrt( outside code and maths (issue 22)."""
+    from vibration.publishing.proofread import code_notation
+
+    found = {p.name: code_notation(p.read_text(encoding="utf-8")) for p in _reader_pages(site)}
+    assert {k: v[:10] for k, v in found.items() if v} == {}
+
+
+def test_no_paragraph_repeats_on_a_page(site):
+    """A paragraph, list item or caption appears once per page, also when only its rounding differs."""
+    from vibration.publishing.proofread import repeated_paragraphs
+
+    found = {p.name: repeated_paragraphs(p.read_text(encoding="utf-8")) for p in _reader_pages(site)}
+    assert {k: [t[:80] for t in v] for k, v in found.items() if v} == {}
+
+
+def test_every_figure_has_alt_text_that_describes_it(site):
+    from vibration.publishing.proofread import figures_without_alt
+
+    found = {p.name: figures_without_alt(p.read_text(encoding="utf-8")) for p in _reader_pages(site)}
+    assert {k: v for k, v in found.items() if v} == {}
+
+
+def test_every_cited_work_is_in_the_references(site):
+    """Each "Surname (year)" or "Surname et al. year" in the text names a work of the bibliography."""
+    from vibration.presentation.references import find
+    from vibration.publishing.proofread import _article
+
+    pattern = re.compile(r"\b([A-Z][a-z]+)(?:,? (?:and|&) [A-Z][a-z]+| et al\.)?,? \(?((?:19|20)\d\d)\b(?![\d.])")
+    missing = set()
+    for page in _reader_pages(site):
+        text = _article(page.read_text(encoding="utf-8")).get_text(" ")
+        for surname, year in pattern.findall(text):
+            if surname not in {"December", "January", "Part", "Table", "Figure", "Chapter"} and not find(
+                surname, int(year)
+            ):
+                missing.add((page.name, surname, year))
+    assert missing == set()

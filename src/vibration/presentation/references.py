@@ -10,6 +10,8 @@ Examples
 'nishihara-asami-2002'
 >>> find("Nobody", 1900) is None
 True
+>>> find("Hartog", 1931).surnames
+('Den', 'Hartog')
 """
 
 from __future__ import annotations
@@ -33,8 +35,9 @@ class Reference:
         """Surnames of the authors, for matching citations in the text."""
         out = []
         for person in self.authors.replace(" and ", ", ").split(", "):
-            word = person.strip().split(" ")[0] if person.strip() else ""
-            if word and not (len(word) <= 3 and word.endswith(".")):
+            for word in person.split():  # the words before the initials: "Den Hartog J. P." -> Den, Hartog
+                if word.endswith(".") or word.startswith("("):
+                    break
                 out.append(word)
         return tuple(out)
 
