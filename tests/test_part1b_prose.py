@@ -43,6 +43,17 @@ def _outside_math_and_code(text: str) -> str:
     return re.sub(r"(\{\w+\})?`[^`]*`", " ", text)
 
 
+#: Code names a table's caption, header or cell must not show (there a ``_`` becomes a subscript, so t_end and
+#: x_ss render as symbols; these would not).
+TABLE_CODE_NAMES = ("omega_", "zeta_", "K_v*", "F0", "n_points", "n_omega", "n_damping", "c_sky", "c_nominal")
+
+
+def _table_words(text: str) -> list[str]:
+    out = [f"code name: {n}" for n in TABLE_CODE_NAMES if re.search(rf"(?<![\w\\]){re.escape(n)}", text)]
+    out += [p for p in prose_problems(text) if not p.startswith(("code name", "raw subscript"))]
+    return out
+
+
 def prose_problems(text: str) -> list[str]:
     """What a reader should not see in ``text`` (Markdown prose or a caption): empty if it is clean.
 
@@ -73,18 +84,16 @@ def prose_problems(text: str) -> list[str]:
 
 def header_problems(table: Table) -> list[str]:
     """Code names in a table's caption, headers or text cells, and non-finite numbers in its cells."""
-    out = [f"caption {p}" for p in prose_problems(table.caption)]
+    out = [f"caption {p}" for p in _table_words(table.caption)]
     for c in table.columns:
-        for name in CODE_NAMES:
-            if re.search(rf"(?<![\w\\]){re.escape(name)}(?!\w)", c.header):
-                out.append(f"header {c.header!r}: code name {name}")
+        out += [f"header {c.header!r}: {p}" for p in _table_words(c.header)]
     for row in table.rows:
         for c in table.columns:
             v = row[c.key]
             if isinstance(v, float) and not math.isfinite(v):
                 out.append(f"cell {c.header!r} is {v}")
-            if isinstance(v, str):
-                out += [f"cell {v!r}: {p}" for p in prose_problems(v)]
+            if isinstance(v, str):  # number cells (bounds like "< 1e-10" included) print as the table helper does
+                out += [f"cell {v!r}: {p}" for p in _table_words(v) if not p.startswith("e-notation")]
     return out
 
 
@@ -129,6 +138,15 @@ def test_prose_checks_can_fail():
     assert prose_problems("ω_res = 4.47 rad/s") == ["raw subscript: ω_res"]
     assert prose_problems("1.2e5 N") == ["e-notation: 1.2e5"]
     assert prose_problems("$x_\\mathrm{ss}$ and {numref}`fig-a_b`") == []
+
+
+def test_table_checks_allow_rendered_subscripts_only():
+    from vibration.presentation.tables import Column
+
+    ok = Table([{"a": 1.0}], [Column("a", "x_ss (m)")], caption="At t_end = 5 s and ω_res.", name="tab-x")
+    assert header_problems(ok) == []
+    bad = Table([{"a": float("nan")}], [Column("a", "omega_res (rad/s)")], caption="F0 = 1e-5 N", name="tab-y")
+    assert len(header_problems(bad)) == 4
 
 
 def test_repetition_check_sees_a_repeat_with_other_rounding():

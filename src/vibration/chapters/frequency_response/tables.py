@@ -1,0 +1,255 @@
+"""Chapter 4's tables, each a function of one :class:`FrequencyStudy`.
+
+A quantity that does not exist for a damping (no peak when ζ ≥ 1/√2, no steady state when c ≤ 0)
+is a :class:`~vibration.presentation.tables.Missing` cell with its reason as a footnote; differences
+at rounding level print as bounds.
+
+Examples
+--------
+>>> from vibration.chapters.frequency_response.study import frequency_response_study
+>>> st = frequency_response_study(n_points=2001, n_omega=20, n_damping=10)
+>>> print(repr(dampings_table(st)).splitlines()[-2])
+high damping     15         1.68    overdamped   0.298  —a              —a      0.4317    0.2983
+>>> print(repr(band_table(st)).splitlines()[3])
+low damping      4.421        4.521        0.1                0.1          yes
+"""
+
+from __future__ import annotations
+
+import math
+
+from vibration.chapters.frequency_response.study import TOL_CLOSED, ZETA_DECREMENT_MAX, DampingCase, FrequencyStudy
+from vibration.presentation.findings import NO_STEADY, at_least
+from vibration.presentation.narrative import g
+from vibration.presentation.tables import Column, Missing, Table
+
+NO_PEAK = "no resonant peak when ζ ≥ 1/√2: the magnification falls from 1 at ω = 0"
+NO_BAND_UNDAMPED = "no half-power band when c = 0: the peak is infinite"
+NO_LOWER = "no lower half-power point when ζ ≥ 0.383: the magnification stays above peak/√2 down to ω = 0"
+NO_DECAY = "no decay and no finite peak to measure when c ≤ 0"
+
+
+def _steady(c: DampingCase, value):
+    return value if c.steady else Missing(NO_STEADY)
+
+
+def _peak(c: DampingCase, value):
+    if not c.steady:
+        return Missing(NO_STEADY)
+    return value if value is not None else Missing(NO_PEAK)
+
+
+def _band(c: DampingCase, value):
+    if not c.steady:
+        return Missing(NO_STEADY)
+    if c.c == 0:
+        return Missing(NO_BAND_UNDAMPED)
+    if c.hi is None:
+        return Missing(NO_PEAK)
+    return value if value is not None else Missing(NO_LOWER)
+
+
+def dampings_table(study: FrequencyStudy) -> Table:
+    """Per damping: ζ, regime, Q, the resonant peak and the magnification at the two forcing frequencies."""
+    rows = [
+        {
+            "case": c.name,
+            "c": c.c,
+            "zeta": c.zeta,
+            "regime": c.regime,
+            "Q": _steady(c, c.osc.quality_factor),
+            "wp": _peak(c, c.omega_peak),
+            "Mp": _peak(c, c.M_peak),
+            "Mref": _steady(c, c.M_ref),
+            "Mres": _steady(c, c.M_res),
+        }
+        for c in study.cases
+    ]
+    p = study.params
+    return Table(
+        rows,
+        [
+            Column("case", "case"),
+            Column("c", "c (N s/m)", 3),
+            Column("zeta", "ζ", 3),
+            Column("regime", "regime"),
+            Column("Q", "Q", 3),
+            Column("wp", "ω_peak (rad/s)", 4),
+            Column("Mp", "M_peak", 4),
+            Column("Mref", "M(ω_ref)", 4),
+            Column("Mres", "M(ω_res)", 4),
+        ],
+        caption=(
+            "The three dampings: damping ratio ζ, regime, quality factor Q = 1/(2ζ), the peak of the "
+            f"magnification M = |X|/(F_0/k) and its value at ω_ref = {g(p.omega_ref)} rad/s and "
+            f"ω_res = {g(p.omega_res)} rad/s."
+        ),
+        name="tab-frequency-dampings",
+    )
+
+
+def band_table(study: FrequencyStudy) -> Table:
+    """Per damping: the exact half-power band of the displacement and whether ω_res lies in it."""
+    rows = []
+    for c in study.cases:
+        lo, hi = _band(c, c.lo), _band(c, c.hi)
+        if isinstance(hi, Missing):
+            width = hi
+        elif isinstance(lo, Missing):
+            width = Missing(NO_LOWER)
+        else:
+            width = hi - lo
+        rows.append(
+            {
+                "case": c.name,
+                "lo": lo,
+                "hi": hi,
+                "width": width,
+                "cm": c.c / c.osc.m if c.c >= 0 else Missing(NO_STEADY),
+                "inside": c.inside if c.inside is not None else hi,
+            }
+        )
+    return Table(
+        rows,
+        [
+            Column("case", "case"),
+            Column("lo", "ω_1 (rad/s)", 4),
+            Column("hi", "ω_2 (rad/s)", 4),
+            Column("width", "ω_2 − ω_1 (rad/s)", 3),
+            Column("cm", "c/m (rad/s)", 3),
+            Column("inside", f"ω_res = {g(study.params.omega_res)} rad/s in band"),
+        ],
+        caption=(
+            "Exact half-power band of the displacement: the frequencies ω_1 < ω_2 where the magnification is "
+            "its peak over √2, its width beside the light-damping estimate c/m, and whether the paper's "
+            "resonant forcing frequency ω_res lies inside it."
+        ),
+        name="tab-frequency-band",
+    )
+
+
+def estimates_table(study: FrequencyStudy) -> Table:
+    """The damping ratio three ways: from the parameters, the half-power points, the log decrement."""
+    rows = []
+    for c in study.cases:
+        z = c.zeta
+        if z <= 0:
+            hp = ld = Missing(NO_DECAY)
+        else:
+            hp = c.zeta_hp if c.zeta_hp is not None else Missing(NO_PEAK if z >= 2**-0.5 else NO_LOWER)
+            ld = (
+                c.zeta_ld
+                if c.zeta_ld is not None
+                else Missing(
+                    "no oscillation to measure when ζ ≥ 1"
+                    if z >= 1
+                    else f"fitted only for ζ < {g(ZETA_DECREMENT_MAX)} (faster decays leave too few clean peaks)"
+                )
+            )
+        rows.append({"case": c.name, "zeta": z, "hp": hp, "ld": ld})
+    return Table(
+        rows,
+        [
+            Column("case", "case"),
+            Column("zeta", "ζ = c/(2√(km))", 4),
+            Column("hp", "ζ from half-power points", 4),
+            Column("ld", "ζ from log decrement", 4),
+        ],
+        caption=(
+            "The damping ratio three independent ways: from the parameters, from the exact half-power relation "
+            "on the computed magnification curve, and from the logarithmic decrement of a free decay integrated "
+            "by DOP853. Their differences are in the checks table."
+        ),
+        name="tab-frequency-estimates",
+    )
+
+
+def decomposition_table(study: FrequencyStudy) -> Table:
+    """The resonance case: steady amplitude and phase, transient at the start and the end, settling time."""
+    d = study.decomposition
+    ts = d.t_s if math.isfinite(d.t_s) else Missing("the transient never decays when c ≤ 0")
+    row = {"X": d.X, "phase": d.phase, "x0": d.x_h0, "x_end": d.x_h_end, "ts": ts}
+    return Table(
+        [row],
+        [
+            Column("X", "X (m)", 4),
+            Column("phase", "φ (rad)", 4),
+            Column("x0", "x_h(0) (m)", 4),
+            Column("x_end", "x_h(t_end) (m)", 3),
+            Column("ts", "t_s (s)", 3),
+        ],
+        caption=(
+            f"The resonance case (c = {g(study.resonance.oscillator.c)} N s/m) from rest: steady amplitude X and "
+            "phase lag φ, the transient x_h = x − x_ss at t = 0 and at the end of the window, "
+            f"t_end = {g(study.params.t_end)} s, and the 2 % settling time t_s."
+        ),
+        name="tab-frequency-decomposition",
+    )
+
+
+def energy_table(study: FrequencyStudy) -> Table:
+    """Work, dissipation, stored energy at the end of the window and the worst residual, exact and by RK45."""
+    rows = []
+    for i, (name, eb) in enumerate(study.energy):
+        rel = study.energy_residual(i)
+        rows.append(
+            {
+                "response": name,
+                "W": float(eb.work[-1]),
+                "D": float(eb.dissipated[-1]),
+                "E": float(eb.stored[-1]),
+                "res": at_least(rel, TOL_CLOSED) if name == "exact" else rel,
+            }
+        )
+    return Table(
+        rows,
+        [
+            Column("response", "response"),
+            Column("W", "W (J)", 5),
+            Column("D", "D (J)", 5),
+            Column("E", "ΔE (J)", 5),
+            Column("res", "max |W − D − ΔE| / max W", 3),
+        ],
+        caption=(
+            f"Energy of the resonance case at t_end = {g(study.params.t_end)} s: work of the force W, energy "
+            "dissipated by the damper D, change of stored energy ΔE, and the worst residual of W = D + ΔE over the "
+            "window (quadrature level on the exact response, printed as a bound)."
+        ),
+        name="tab-frequency-energy",
+    )
+
+
+def checks_table(study: FrequencyStudy) -> Table:
+    """Differences at rounding level, printed as bounds: the self-checks of the chapter."""
+    rows = [{"check": c.check, "value": at_least(c.value, c.tol), "ok": c.ok} for c in study.checks]
+    return Table(
+        rows,
+        [Column("check", "check"), Column("value", "relative difference", 3), Column("ok", "within bound")],
+        caption="Self-checks of the chapter: independent routes to the same quantity, with their relative differences.",
+        name="tab-frequency-checks",
+    )
+
+
+def design_table(study: FrequencyStudy) -> Table:
+    """The grid's largest peak and the three dampings at ω_res."""
+    dm = study.design
+    w, c, peak = dm.largest
+    rows = [{"point": "largest on the grid", "omega": w, "c": c, "peak": peak}]
+    rows += [
+        {"point": f"{case.name} at the resonant forcing", "omega": study.params.omega_res, "c": case.c, "peak": p}
+        for case, p in zip(study.cases, dm.at_res, strict=True)
+    ]
+    return Table(
+        rows,
+        [
+            Column("point", "point"),
+            Column("omega", "ω (rad/s)", 4),
+            Column("c", "c (N s/m)", 3),
+            Column("peak", "peak |x| (m)", 4),
+        ],
+        caption=(
+            f"Largest |x| in the window [0, {g(study.params.t_end)}] s from rest: the largest on the "
+            f"{dm.dampings.size} × {dm.omegas.size} grid, and the paper's three dampings at ω_res."
+        ),
+        name="tab-frequency-design",
+    )
