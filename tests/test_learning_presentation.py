@@ -7,6 +7,7 @@ import json
 import math
 import re
 from pathlib import Path
+from types import SimpleNamespace
 
 import matplotlib
 
@@ -239,6 +240,9 @@ def test_no_sentence_appears_twice(study):
 def test_captions_name_the_layout_and_the_coinciding_curves(study):
     curves = figures.learning_figure(study)
     assert curves.caption.startswith("Left:") and "Right:" in curves.caption and "5 % band" not in curves.caption
+    for res in study.learners:  # a learning curve is said to meet the optimum line exactly when it ends within 1 %
+        ends = res.curve_cost[-1] <= (1 + figures.COINCIDE) * study.ref.expected_cost
+        assert (f"the {tables.SHORT_NAMES[res.method]} curve coincides with it" in curves.caption) == ends
     surface = figures.surface_figure(study)
     assert "Left: ARS" in surface.caption and "Right: CMA-ES" in surface.caption
     episodes = figures.episode_figure(study)
@@ -262,3 +266,8 @@ def test_coinciding_and_groups():
     pairs = figures.coinciding(curves)
     assert ("a", "b") in pairs and ("a", "c") not in pairs
     assert figures.groups(list(curves), pairs) == [["a", "b", "d"]]
+    st = SimpleNamespace(ref=SimpleNamespace(expected_cost=1.0))
+    run = SimpleNamespace(curve_cost=np.array([3, 1.005, 1.02, 1.001, 1.0]), curve_episodes=np.arange(5) * 10)
+    assert figures.settled_within(st, run) == 30.0  # back within 1 % for good from the fourth point
+    run = SimpleNamespace(curve_cost=np.array([1.0, 1.5]), curve_episodes=np.arange(2))
+    assert math.isnan(figures.settled_within(st, run))

@@ -121,7 +121,6 @@ def learning_figure(st: LearningStudy) -> Captioned:
         ax1.plot(e, np.maximum(excess, DRAW_FLOOR), label=SHORT_NAMES[res.method], **LEARNER_STYLE[res.method])
     ax0.axhline(j_star, lw=1.0, label="LQR optimum $J^*$", **case_style("optimum"))
     ax0.set_xscale("log")
-    ax0.set_yscale("log")
     ax0.set_xlabel("training episodes")
     ax0.set_ylabel("expected cost $J$ (s)")
     place_legend(ax0)
@@ -140,16 +139,41 @@ def learning_figure(st: LearningStudy) -> Captioned:
     floor = f"; values below {num(DRAW_FLOOR, 1)} would be drawn at {num(DRAW_FLOOR, 1)}"
     parts = [
         f"exact expected cost $J$ of each learner's current gains against the training episodes used, ARS "
-        f"({_look(ars)}) and CMA-ES ({_look(cma)}), with the LQR optimum $J^*$ (black, dotted).",
-        f"the excess over the optimum, $J/J^* - 1$, with the {targets} targets (grey, dotted){floor}.",
+        f"({_look(ars)}) and CMA-ES ({_look(cma)}), with the LQR optimum $J^*$ (black, dotted); "
+        f"{_meets(st)}; logarithmic episode axis.",
+        f"the excess over the optimum, $J/J^* - 1$, with the {targets} targets (grey, dotted){floor}; both axes "
+        "logarithmic.",
     ]
-    caption = _panels(fig, parts) + " Both axes of both panels are logarithmic."
+    caption = _panels(fig, parts)
     final = ", ".join(f"{SHORT_NAMES[r.method]} at {_ratio_words(st, r)}" for r in st.learners)
+    onto = "falling onto" if all(settled_within(st, r) == settled_within(st, r) for r in st.learners) else "approaching"
     alt = (
-        f"Learning curves of ARS and CMA-ES, expected cost against training episodes, falling onto the LQR optimum "
+        f"Learning curves of ARS and CMA-ES, expected cost against training episodes, {onto} the LQR optimum "
         f"line; final cost over the optimum: {final}."
     )
     return Captioned(fig, caption, "fig-learning-curves", alt)
+
+
+def settled_within(st: LearningStudy, res, tol: float = COINCIDE) -> float:
+    """Training episodes from which a learner's curve stays within ``tol`` of ``J*`` to the end (nan: never)."""
+    ok = res.curve_cost <= (1.0 + tol) * st.ref.expected_cost
+    if not ok[-1]:
+        return float("nan")
+    first = len(ok) - int(np.argmin(ok[::-1])) if not ok.all() else 0
+    return float(res.curve_episodes[first])
+
+
+def _meets(st: LearningStudy) -> str:
+    """Which curves coincide with the optimum line, measured: "the ARS curve meets it to within 1 % from 192 ..."."""
+    parts = []
+    for res in st.learners:
+        e = settled_within(st, res)
+        name = SHORT_NAMES[res.method]
+        if e == e:
+            parts.append(f"the {name} curve coincides with it to within {pct(COINCIDE, 2)} from {int(e)} episodes on")
+        else:
+            parts.append(f"the {name} curve ends above it by more than {pct(COINCIDE, 2)}")
+    return "; ".join(parts)
 
 
 def _ratio_words(st: LearningStudy, res) -> str:
