@@ -236,7 +236,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
         cell.metadata.pop("execution", None)
         tags = _tags(cell)
         if cell.cell_type == "code" and ("parameters" in tags or "injected-parameters" in tags):
-            if not params_done and page.parameters:
+            if not params_done and page.parameters and page.number != FRONT:  # the front page: findings first
                 cells.append(nbformat.v4.new_markdown_cell(parameters_table(page.parameters)))
                 params_done = True
             continue
@@ -255,6 +255,8 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
             if rest.strip():
                 cells.insert(1, nbformat.v4.new_markdown_cell(rest))
         cells.insert(at, nbformat.v4.new_markdown_cell(banner))
+    if page.number == FRONT and page.parameters:
+        cells.append(nbformat.v4.new_markdown_cell("## Parameters of this run\n\n" + parameters_table(page.parameters)))
     if page.elapsed_s is not None:
         cells.append(
             nbformat.v4.new_markdown_cell(
@@ -263,6 +265,37 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
         )
     nb.cells = cells
     return nb
+
+
+KEY_RESULTS = "> **Key results**"
+
+
+def key_results(nb) -> str:
+    """The chapter's key-results box (a Markdown output starting with :data:`KEY_RESULTS`), or ``""``."""
+    for cell in nb.cells:
+        for out in cell.get("outputs", []) if cell.cell_type == "code" else []:
+            text = out.get("data", {}).get("text/markdown", "")
+            text = "".join(text) if isinstance(text, list) else text
+            if text.lstrip().startswith(KEY_RESULTS):
+                return text.strip()
+    return ""
+
+
+def findings_markdown(pages: list[ChapterPage]) -> str:
+    """The front page's findings of every part: each chapter's key results, as this run computed them."""
+    lines = ["## What each part finds", "", "Each chapter opens with its key results; here they are together, "
+             "computed by this run.", ""]  # fmt: skip
+    for caption, lo, hi in PARTS:
+        members = [(p, key_results(p.notebook)) for p in pages if p.number is not None and lo <= p.number <= hi]
+        members = [(p, box) for p, box in members if box]
+        if not members:
+            continue
+        lines += [f"### {caption}", ""]
+        for p, box in members:
+            bullets = [ln[1:].strip() for ln in box.splitlines()[1:] if ln.strip(" >")]
+            lines += [f"**[{p.title}]({p.name}.ipynb)**", ""] + [b if b.startswith(("*", "-")) else f"* {b}"
+                                                                  for b in bullets] + [""]  # fmt: skip
+    return "\n".join(lines)
 
 
 def _caption_from_output(cell) -> None:
@@ -414,7 +447,11 @@ def write_source(pages: list[ChapterPage], src: Path) -> None:
         banner = banner_html([], changes)
         if banner:
             nb.cells.append(nbformat.v4.new_markdown_cell(banner))
-    nb.cells.append(nbformat.v4.new_markdown_cell(contents_markdown(chapters)))
+    findings = findings_markdown(chapters)
+    at = next((i for i, c in enumerate(nb.cells) if c.cell_type == "markdown" and "Parameters of this run" in c.source),
+              len(nb.cells))  # fmt: skip
+    nb.cells.insert(at, nbformat.v4.new_markdown_cell(findings))
+    nb.cells.insert(at + 1, nbformat.v4.new_markdown_cell(contents_markdown(chapters)))
     nb.cells.append(nbformat.v4.new_markdown_cell(_toctree(chapters)))
     nbformat.write(nb, src / "index.ipynb")
     write_appendices(src)
