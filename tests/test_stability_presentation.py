@@ -53,7 +53,7 @@ def test_tables_have_names_units_and_no_nan(study):
     high = [r for r in step.rows if r["case"].startswith("high")][0]
     assert isinstance(high["tp"], Missing)
     checks = repr(tables.checks_table(study))
-    assert "(above" not in checks and checks.count("< 1e-") == 4  # every self-check within its bound
+    assert "(above" not in checks and checks.count("< 10⁻") == 4  # every self-check within its bound
 
 
 def test_figures_keep_legends_off_the_data(study):

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+from vibration.chapters.stability.words import num
 from vibration.publishing.report import execute_notebooks
 
 pytestmark = [pytest.mark.notebooks, pytest.mark.slow]
@@ -78,6 +79,11 @@ def _num(text: str) -> float | None:
         return None  # "—" (missing) or words
 
 
+def _c(cell: str) -> str:
+    """A damping from a table cell ("−0.100") as the sentences write it ("$c$ = −0.1 N s/m")."""
+    return f"$c$ = {num(float(cell.replace('−', '-')), 4)} N s/m"
+
+
 def _sentence(texts: list[str], start: str) -> str:
     return next(t for t in texts if t.startswith(start))
 
@@ -100,7 +106,7 @@ def test_run_has_no_error_and_its_sentences_follow_its_tables(runs, key):
             clause = re.search(rf"([^;]*) (is|are) {verdict} ", stab)
             assert clause, (verdict, stab)
             for c in cs:
-                assert f"c = {c.replace('−', '-')} N s/m" in clause.group(1), (c, verdict, stab)
+                assert _c(c) in clause.group(1), (c, verdict, stab)
 
     # the run's dampings that are not stable show "—" for settling, variance and resonant peak
     labels = _rows(tables["tab-stability-labels"])
@@ -120,7 +126,7 @@ def test_run_has_no_error_and_its_sentences_follow_its_tables(runs, key):
         assert "no stationary response" in sentence
     for r in _rows(tables["tab-stability-random"]):
         if _num(r["σ_x (m)"]) is None:
-            assert f"c = {r['c (N s/m)'].replace('−', '-')} N s/m" in sentence.split("With ")[-1]
+            assert _c(r["c (N s/m)"]) in sentence.split("With ")[-1]
 
     # step: the damping that settles first in the table is the one the sentence names
     step = [r for r in _rows(tables["tab-stability-step"]) if not r["damping"].startswith("settling-optimal")]
@@ -133,24 +139,23 @@ def test_run_has_no_error_and_its_sentences_follow_its_tables(runs, key):
     for r in step:
         name = r["damping"].split()[0]
         if _num(r["t_s, 2 % (s)"]) is None:
-            assert re.search(rf"{name} \(c = [^)]*\) [^;]*never settles", sentence), (name, sentence)
+            assert re.search(rf"{name} \(\$c\$ = [^)]*\) [^;]*never settles", sentence), (name, sentence)
 
-    # labels: the sentence's bullets carry the table's verdicts
-    bullets = _sentence(texts, "* “")
+    # labels: one paragraph that judges every label, without repeating the table's rows
+    judged = _sentence(texts, "On this run's numbers")
     for r in labels:
-        label, c = r["paper's label"], r["c (N s/m)"].replace("−", "-")
-        assert f"{label} (c = {c} N s/m): {r['verdict']}" in bullets
+        assert r["paper's label"] in judged and r["verdict"] not in judged
 
 
 def test_negative_damping_is_called_unstable_and_missing(runs):
     tables, texts = _outputs(runs["c_low=-0.1"])
     rows = {r["paper's label"]: r for r in _rows(tables["tab-stability-labels"])}
     assert rows["“comfort”"]["resonant peak"].startswith("—")
-    assert "c = -0.1 N s/m is unstable" in _sentence(texts, "* Not all of this run's dampings")
+    assert "$c$ = −0.1 N s/m is unstable" in _sentence(texts, "Of this run's dampings")
     tables, texts = _outputs(runs["c_low=0"])
-    assert "c = 0 N s/m is marginally stable" in _sentence(texts, "Of this run's dampings")
+    assert "$c$ = 0 N s/m is marginally stable" in _sentence(texts, "Of this run's dampings")
     # c_high = 0.3 < c_nominal = 0.5: "heaviest" is the nominal one, by value
     tables, texts = _outputs(runs["c_high=0.3"])
-    assert "the heaviest (nominal, c = 0.5 N s/m)" in _sentence(texts, "Under base motion")
+    assert "the heaviest (nominal, $c$ = 0.5 N s/m)" in _sentence(texts, "Under base motion")
     tables, texts = _outputs(runs["c_nominal=0.05, c_unstable=0"])
     assert "no exponential growth" in _sentence(texts, "Over ")
