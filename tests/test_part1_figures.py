@@ -9,9 +9,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import pytest
 
+from vibration.chapters.overview import overview_study
+from vibration.chapters.overview.figures import headline_figure
 from vibration.chapters.reproduction import figures as reproduction_figures
 from vibration.chapters.reproduction import reproduction_study
-from vibration.presentation.front import headline, headline_figure
 from vibration.presentation.style import WIDTH_IN, legend_overlap
 
 PAPER = {"m": 1.0, "k": 20.0, "F0": 5.0, "t_end": 50.0, "omega_ref": 3.0, "omega_res": 4.47}
@@ -32,7 +33,7 @@ def _figures(key: str):
         "ch1 resonance": reproduction_figures.resonance_figure(rep).fig,
         "ch1 damping": reproduction_figures.damping_figure(rep).fig,
         "ch1 error": reproduction_figures.error_figure(rep).fig,
-        "front": headline_figure(headline(*args), n_points=2001),
+        "front": headline_figure(overview_study(**{n: v for n, v in zip(names, args, strict=True)})).fig,
     }
     return figs
 
