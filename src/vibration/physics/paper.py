@@ -11,12 +11,18 @@ from .model import Oscillator, SineForce, check_real
 
 
 def data_dir() -> Path:
-    """Folder holding ``scenarios.csv`` and ``claims.csv``.
+    """Folder holding ``scenarios.csv``, ``claims.csv`` and the lab data.
 
-    ``$VIBRATION_DATA`` if set, else the project's ``data/`` next to ``src/``.
+    ``$VIBRATION_DATA`` if set, else the package's data: ``vibration/_data``, which in the source
+    tree links to the project's ``data/`` and in an installed wheel holds a copy of it.
     """
+    from importlib.resources import as_file, files
+
     env = os.environ.get("VIBRATION_DATA")
-    return Path(env) if env else Path(__file__).resolve().parents[3] / "data"
+    if env:
+        return Path(env)
+    with as_file(files("vibration").joinpath("_data")) as path:  # a real folder for a regular install
+        return Path(path)
 
 
 @dataclass(frozen=True)

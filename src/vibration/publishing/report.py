@@ -62,9 +62,21 @@ def chapter_schemas() -> dict:
 
 
 def project_root() -> Path:
-    """The project folder (holding ``notebooks/``): ``$VIBRATION_ROOT`` or the source checkout."""
+    """The project folder (holding ``notebooks/``): ``$VIBRATION_ROOT``, the source checkout this package
+    runs from, or the working directory; an installed package without the notebooks says what to set."""
     env = os.environ.get("VIBRATION_ROOT")
-    return Path(env) if env else Path(__file__).resolve().parents[3]
+    if env:
+        return Path(env)
+    here = Path(__file__).resolve()
+    for candidate in (*here.parents, Path.cwd()):
+        if (candidate / "notebooks").is_dir() and (candidate / "src" / "vibration").is_dir():
+            return candidate
+    if (Path.cwd() / "notebooks").is_dir():
+        return Path.cwd()
+    raise ParameterError(
+        "no notebooks/ folder found next to the package or in the working directory: set $VIBRATION_ROOT "
+        "to the project folder (the one holding notebooks/)"
+    )
 
 
 @dataclass(frozen=True)
