@@ -11,8 +11,11 @@ import pytest
 from conftest import open_offline
 
 from vibration import Oscillator, ParameterError
+from vibration.chapters.digital_twin import figures, tables, text
+from vibration.chapters.digital_twin.panel import twin_panel_html
+from vibration.chapters.digital_twin.study import digital_twin_study
 from vibration.physics import twin
-from vibration.presentation import twin as show
+from vibration.presentation.captions import check_caption
 from vibration.presentation.style import legend_overlap
 from vibration.publishing.mathml import external_urls
 
@@ -20,70 +23,54 @@ matplotlib.use("Agg")
 
 SCREENSHOTS = Path(__file__).resolve().parents[1] / "build" / "screenshots"
 OSC = Oscillator(1.0, 0.5, 20.0)
+#: A short chapter run: every part of the study, few runs.
+SMALL = dict(t_record=30.0, runs=20, sweep_runs=5, assumption_runs=20, t_monitor=120.0, detect_runs=5)
 
 
 @pytest.fixture(scope="module")
 def small():
-    """A short chapter run: fit, FRF estimates, small Monte Carlo and detection experiments."""
-    test = twin.simulated_test(OSC, 40.0, 0.02, 0.05, seed=1)
-    fit = twin.identify(**test)
-    frf = twin.frf_estimate(**test)
-    hp, cf = twin.frequency_estimates(frf)
-    main = twin.identification_experiment(OSC, duration=20.0, runs=12, seed=2)
-    by_noise, by_length = twin.identification_sweep(OSC, noises=(0.01, 0.1), durations=(20.0, 40.0), runs=6)
-    sc = twin.fault_scenario(20.0, 120.0, 0.02, 0.001, 0.1)
-    rec = twin.synthetic_measurements(OSC, sc.t, twin.random_force(sc.t, seed=3), noise=0.01, stiffness=sc.k)
-    track = twin.track_stiffness(**rec, reference=fit)
-    det = twin.detect_change(**rec, reference=fit)
-    study = twin.detection_study(OSC, fit, 100.0, 0.02, 0.02, 0.001, 0.1, runs=4, thresholds=(10.0, 40.0, 160.0))
-    return locals()
+    return digital_twin_study(**SMALL)
 
 
-def test_figures_have_free_legends(small):
-    figs = [
-        show.identification_figure(small["test"], small["fit"], small["frf"]),
-        show.scaling_figure(small["by_noise"], small["by_length"]),
-        show.tracking_figure(small["track"], small["sc"].k, small["det"]),
-        show.tradeoff_figure(small["study"]),
-    ]
-    for fig in figs:
-        for ax in fig.axes:
+def test_figures_have_free_legends_and_true_captions(small):
+    for make in (figures.identification_figure, figures.scaling_figure, figures.tracking_figure,
+                 figures.tradeoff_figure):  # fmt: skip
+        cap = make(small)
+        check_caption(cap.fig, cap.caption)
+        assert cap.name.startswith("fig-twin-") and "/" not in cap.alt
+        for ax in cap.fig.axes:
             if ax.get_legend() is not None:
                 assert legend_overlap(ax) == 0.0, ax.get_title()
-        matplotlib.pyplot.close(fig)
 
 
 def test_tables_and_sentences_follow_the_results(small):
-    fit = small["fit"]
-    tab = show.identification_table(fit, OSC, small["hp"], small["cf"], frf_record=160.0)
-    text = repr(tab)
-    assert "tab-twin-identified" in text and "k (N/m)" in text and not re.search(r"\bnan\b", text)
-    assert f"{fit.k:.5g}" in text
-    cov = repr(show.coverage_table([small["main"], *small["by_noise"]]))
-    assert "coverage k" in cov and "12" in cov
-    det = repr(show.detection_table(small["study"], 40.0))
+    fit = small.fit
+    tab = repr(tables.identification_table(small))
+    assert "tab-twin-identified" in tab and "k (N/m)" in tab and not re.search(r"\bnan\b", tab)
+    assert f"{fit.k:.5g}" in tab
+    cov = repr(tables.coverage_table(small))
+    assert "coverage k" in cov and f"{small.coverage.runs}" in cov
+    det = repr(tables.detection_table(small))
     assert "sudden drop" in det and "slow decline" in det
-    s = show.identification_sentence(fit, OSC)
+    s = text.identification_sentence(small)
     assert f"{fit.k:.5g}" in s and "standard errors" in s
-    note = show.closing_note(small["main"], small["by_noise"], small["by_length"], small["study"], 40.0)
-    assert "95 % intervals" in note and "mean delay" in note
-    checks = repr(show.twin_checks_table({"a": (1e-12, 1e-10), "b": (2.0, 1.0)}))
-    assert "< 1e-10" in checks and "yes" in checks and "no" in checks
+    checks = repr(tables.checks_table(small))
+    assert "measured difference" in checks and "yes" in checks
 
 
 def test_panel_fragment_is_self_contained():
     g = twin.estimate_grid(OSC, noises=(0.01, 0.1), durations=(20.0, 40.0))
-    frag = show.twin_panel_html(g)
+    frag = twin_panel_html(g)
     assert frag.startswith('<div class="twin-panel"') and frag.rstrip().endswith("</div>")
     assert external_urls(frag) == [] and "http" not in frag
     with pytest.raises(ParameterError, match="panel_id"):
-        show.twin_panel_html(g, panel_id="x</script>")
+        twin_panel_html(g, panel_id="x</script>")
 
 
 @pytest.mark.browser
 def test_panel_in_chromium_matches_the_grid(browser, tmp_path):
     g = twin.estimate_grid(OSC, noises=(0.005, 0.02, 0.1, 0.4), durations=(10.0, 20.0, 40.0))
-    frag = show.twin_panel_html(g)
+    frag = twin_panel_html(g)
     path = tmp_path / "twin.html"
     path.write_text(
         f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>twin</title></head><body>{frag}'

@@ -20,9 +20,9 @@ SCHEMA = Schema(
         Param("dt", "Δt", 0.02, "s", 0.0, 1.0, "sampling step of the sensors", low_open=True),
         Param("t_record", "T_rec", 60.0, "s", 0.0, 10000.0, "length of one identification test", low_open=True),
         Param("noise", "ε_x", 0.05, "", 0.0, 10.0, "sensor noise standard deviation over rms response", low_open=True),
-        Param("runs", "N_MC", 200, "", 10, 500, "Monte Carlo realisations for the interval coverage"),
+        Param("runs", "N_MC", 500, "", 10, 2000, "Monte Carlo realisations for the interval coverage"),
         Param("sweep_runs", "N_sw", 30, "", 5, 100, "realisations per point of the error-scaling sweeps"),
-        Param("assumption_runs", "N_as", 40, "", 10, 100, "realisations per case with a broken assumption"),
+        Param("assumption_runs", "N_as", 1200, "", 10, 5000, "realisations per case with a broken assumption"),
         Param("force_noise", "ε_F", 0.05, "", 0.0, 1.0, "force-noise standard deviation over rms force", low_open=True),
         Param("colour", "ρ", 0.9, "", 0.0, 0.99, "lag-one correlation of the coloured sensor noise", low_open=True),
         Param(

@@ -1,0 +1,190 @@
+"""Kernel-free slider panel of the digital-twin chapter, and its live JupyterLab explorer.
+
+The panel (:func:`twin_panel_html`) shows *precomputed* identifications on a grid of noise levels and record
+lengths (:func:`vibration.physics.twin.estimate_grid`), embedded as JSON and drawn by ``panel/twin.js``; the
+JupyterLab explorer (:class:`TwinExplorer`) re-identifies live.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import html
+import itertools
+import json
+import re
+from importlib.resources import files
+
+import numpy as np
+
+from vibration.chapters.digital_twin.study import DigitalTwinStudy
+from vibration.physics.model import Oscillator, ParameterError
+from vibration.physics.twin import EstimateGrid, Identification, identify, random_force, synthetic_measurements
+
+NAMES = ("m", "c", "k")
+UNITS = ("kg", "N s/m", "N/m")
+
+_counter = itertools.count(1)
+
+
+def _asset(name: str) -> str:
+    return files("vibration.chapters.digital_twin").joinpath("panel", name).read_text(encoding="utf-8")
+
+
+def _grid_payload(grid: EstimateGrid) -> dict:
+    return {
+        "names": list(NAMES),
+        "units": list(UNITS),
+        "truth": grid.truth.tolist(),
+        "noises": grid.noises.tolist(),
+        "durations": grid.durations.tolist(),
+        "estimates": grid.estimates.tolist(),
+        "ci95": grid.ci95.tolist(),
+    }
+
+
+def twin_panel_html(grid: EstimateGrid, *, panel_id: str | None = None) -> str:
+    """Self-contained HTML (no kernel, no network): noise and record-length sliders over precomputed fits.
+
+    Parameters
+    ----------
+    grid : EstimateGrid
+        One identification per (noise, record length), from
+        :func:`vibration.physics.twin.estimate_grid`.
+    panel_id : str, optional
+        Element id prefix (a letter, then letters, digits, ``_`` or ``-``).
+
+    Examples
+    --------
+    >>> from vibration.physics.twin import EstimateGrid
+    >>> g = EstimateGrid(np.array([1.0, 0.5, 20.0]), np.array([0.01]), np.array([10.0]),
+    ...                  np.ones((1, 1, 3)), np.ones((1, 1, 3, 2)))
+    >>> frag = twin_panel_html(g)
+    >>> frag.startswith('<div class="twin-panel"'), "http" in frag
+    (True, False)
+    """
+    if panel_id is not None and not re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", panel_id):
+        raise ParameterError(f"panel_id = {panel_id!r}: allowed a letter followed by letters, digits, _ or -")
+    payload = _grid_payload(grid)
+    text = json.dumps(payload, sort_keys=True)
+    pid = panel_id or f"twin-{hashlib.sha1(text.encode()).hexdigest()[:8]}-{next(_counter)}"
+    e = html.escape
+    ni, nj = grid.noises.size, grid.durations.size
+    i0, j0 = ni // 2, nj // 2
+    rows = "\n".join(
+        f'<tr><th scope="row">{n} ({u})</th><td class="twin-true"></td><td class="twin-est"></td>'
+        f'<td class="twin-lo"></td><td class="twin-hi"></td><td class="twin-in"></td></tr>'
+        for n, u in zip(NAMES, UNITS, strict=True)
+    )
+    return f"""<div class="twin-panel" id="{e(pid)}" data-grid="{e(text)}">
+<style>
+{_asset("twin.css")}</style>
+<h3 class="twin-title">Noise and record length against the estimates (precomputed)</h3>
+<p class="twin-sub">Each position of the sliders shows one identification computed when the report was built \
+(same force and noise draw throughout; only the slider's quantity changes). Bars: 95 % intervals of the \
+relative error; dashed line: the truth.</p>
+<noscript>This panel needs JavaScript to draw its plot.</noscript>
+<div class="twin-controls">
+<label for="{e(pid)}-noise">noise std. / rms response</label>
+<input type="range" class="twin-noise" id="{e(pid)}-noise" min="0" max="{ni - 1}" step="1" value="{i0}">
+<output class="twin-noise-out" for="{e(pid)}-noise"></output>
+<label for="{e(pid)}-len">record length T</label>
+<input type="range" class="twin-len" id="{e(pid)}-len" min="0" max="{nj - 1}" step="1" value="{j0}">
+<output class="twin-len-out" for="{e(pid)}-len"></output>
+</div>
+<svg class="twin-plot" viewBox="0 0 640 200" role="img" \
+aria-label="relative error of m, c and k in percent with 95 % intervals"></svg>
+<table class="twin-readout">
+<thead><tr><th>parameter</th><th>true</th><th>estimate</th><th>95 % low</th><th>95 % high</th>\
+<th>covers truth</th></tr></thead>
+<tbody>
+{rows}
+</tbody></table>
+<script>
+{_asset("twin.js")}</script>
+<script>window.vibrationTwin.mount(document.getElementById({json.dumps(pid)}));</script>
+</div>
+"""
+
+
+class TwinExplorer:
+    """JupyterLab explorer: noise and record-length sliders re-identifying a seeded record live.
+
+    Its ``_repr_mimebundle_`` returns the widget view and, for renderers without a
+    kernel (the book), :func:`twin_panel_html` over ``grid``.
+    """
+
+    def __init__(
+        self,
+        osc: Oscillator,
+        grid: EstimateGrid,
+        *,
+        dt: float = 0.02,
+        seed: int = 0,
+        band: tuple[float, float] = (0.1, 2.0),
+        rms: float = 2.0,
+    ):
+        import ipywidgets as widgets
+
+        self.osc, self.grid, self.dt, self.seed = osc, grid, dt, seed
+        t = np.arange(int(round(float(np.max(grid.durations)) / dt)) + 1) * dt
+        self._t = t
+        self._force = random_force(t, band=band, rms=rms, seed=seed)
+        self._clean = synthetic_measurements(osc, t, self._force).x
+        self._draw = np.random.default_rng(seed + 1).standard_normal(t.size)
+        self.noise_slider = widgets.SelectionSlider(
+            options=[(f"{v:g}", float(v)) for v in grid.noises],
+            value=float(grid.noises[grid.noises.size // 2]),
+            description="noise / rms",
+            continuous_update=False,
+        )
+        self.length_slider = widgets.SelectionSlider(
+            options=[(f"{v:g} s", float(v)) for v in grid.durations],
+            value=float(grid.durations[grid.durations.size // 2]),
+            description="T",
+            continuous_update=False,
+        )
+        self.readout = widgets.HTML()
+        self.noise_slider.observe(lambda _: self.update(), "value")
+        self.length_slider.observe(lambda _: self.update(), "value")
+        self.box = widgets.VBox([self.noise_slider, self.length_slider, self.readout])
+        self.fit: Identification | None = None
+        self.update()
+
+    def update(self) -> None:
+        """Identify the record at the current slider values and refresh the readout."""
+        n = int(round(self.length_slider.value / self.dt)) + 1
+        clean = self._clean[:n]
+        y = clean + self.noise_slider.value * float(np.sqrt(np.mean(clean**2))) * self._draw[:n]
+        fit = identify(self._t[:n], self._force[:n], x=y, search="local")
+        self.fit = fit
+        truth = (self.osc.m, self.osc.c, self.osc.k)
+        cells = []
+        for i, (name, unit) in enumerate(zip(NAMES, UNITS, strict=True)):
+            est, (lo, hi) = (fit.m, fit.c, fit.k)[i], fit.ci95[i]
+            inside = "yes" if lo <= truth[i] <= hi else "no"
+            cells.append(
+                f"<tr><th>{name} ({unit})</th><td>{truth[i]:.4g}</td><td>{est:.5g}</td>"
+                f"<td>{lo:.5g}</td><td>{hi:.5g}</td><td>{inside}</td></tr>"
+            )
+        self.readout.value = (
+            "<table><tr><th>parameter</th><th>true</th><th>estimate</th><th>95 % low</th><th>95 % high</th>"
+            "<th>covers truth</th></tr>" + "".join(cells) + "</table>"
+        )
+
+    def _repr_mimebundle_(self, **kwargs):
+        data = self.box._repr_mimebundle_(**kwargs) or {}
+        data["text/html"] = twin_panel_html(self.grid)
+        data["text/plain"] = (
+            f"TwinExplorer(noise={self.noise_slider.value:g} of rms, T={self.length_slider.value:g} s, "
+            f"m={self.osc.m:g} kg, c={self.osc.c:g} N s/m, k={self.osc.k:g} N/m)"
+        )
+        return data
+
+
+def twin_explorer(st: DigitalTwinStudy) -> TwinExplorer:
+    """The JupyterLab explorer (live) with the precomputed kernel-free panel for the book; see :class:`TwinExplorer`.
+
+    It uses the study's asset, grid, sampling step, seed, force band and rms force.
+    """
+    p = st.params
+    return TwinExplorer(st.asset, st.grid, dt=p.dt, seed=p.seed, band=st.band, rms=p.F_rms)
