@@ -161,7 +161,7 @@ def test_no_paragraph_sentence_table_or_caption_appears_twice(study):
 def test_notebook_cells_are_single_calls_and_figures_carry_no_static_caption():
     nb = nbformat.read(str(NOTEBOOK), as_version=4)
     first = nb.cells[0].source
-    assert first.startswith("# 6. ") and "**The question.**" in first
+    assert first.startswith("# 6. ") and "**Overview: the question.**" in first
     codes = [c for c in nb.cells if c.cell_type == "code"]
     assert "key_results(study)" in codes[2].source  # the key results right after the imports
     for cell in codes[3:-1]:
