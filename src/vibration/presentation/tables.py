@@ -97,6 +97,8 @@ def fmt(value, digits: int = 4) -> str:
     --------
     >>> fmt(2.23703819), fmt(0.000123456), fmt(True), fmt(None), fmt(float("nan")), fmt("overdamped")
     ('2.237', '0.0001235', 'yes', '—', '—', 'overdamped')
+    >>> fmt(1.273e5, 4), fmt(-2.5e-9, 2), fmt(1e-12), fmt(31540.0, 3)
+    ('1.273×10⁵', '−2.5×10⁻⁹', '10⁻¹²', '3.15×10⁴')
     """
     if value is None or isinstance(value, Missing):
         return DASH
@@ -113,11 +115,16 @@ def fmt(value, digits: int = 4) -> str:
         if math.isinf(v):
             return "∞" if v > 0 else "−∞"
         text = f"{v:.{digits}g}"
-        if "e" in text:
+        if "e" in text:  # the book's number format: a power of ten, never e-notation
             mant, exp = text.split("e")
-            text = f"{mant}e{int(exp)}"
+            power = "10" + str(int(exp)).translate(_SUPERSCRIPT)
+            text = power if mant in ("1", "-1") else f"{mant}×{power}"
+            text = ("−" + text) if mant == "-1" else text.replace("-", "−", 1) if text.startswith("-") else text
         return text
     return str(value)
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 #: A subscript in a header or caption: word characters (and ∞), so "|x − x_exact| (m)", "M(ω_ref)",
@@ -289,19 +296,22 @@ def bound(value: float, tol: float) -> str | Missing:
     a rounding-level difference of 3e-15 on one CPU may be 1.2e-14 on another.
 
     >>> bound(3e-15, 1e-12), bound(2.5e-9, 1e-12), bound(float("nan"), 1e-12)
-    ('< 1e-12', '2.5e-09 (above 1e-12)', Missing(reason='not computed for this case'))
+    ('< 10⁻¹²', '2.5×10⁻⁹ (above 10⁻¹²)', Missing(reason='not computed for this case'))
     """
     if not math.isfinite(value):
         return Missing("not computed for this case") if math.isnan(value) else Missing("infinite")
     if abs(value) < tol:
         return f"< {fmt(tol)}"
-    return f"{abs(value):.2g} (above {fmt(tol)})"
+    return f"{fmt(abs(value), 2)} (above {fmt(tol)})"
 
 
 def _csv_cell(value) -> str:
     if isinstance(value, Missing):
         return ""
-    return fmt(value.value if isinstance(value, Approx) else value, 10)
+    value = value.value if isinstance(value, Approx) else value
+    if isinstance(value, float | np.floating) and math.isfinite(value):
+        return f"{float(value):.10g}"  # machine-readable: e-notation, not the book's ×10ⁿ
+    return fmt(value, 10)
 
 
 def table(rows: Iterable[dict], columns: Sequence[Column | tuple], caption: str, name: str, notes=()) -> Table:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -16,7 +17,6 @@ RK4_STEPS_MAX = 20_000_000
 #: Largest total number of RK4 steps of one sweep (parallel over the frequencies: about 20 s on two cores).
 SWEEP_STEPS_MAX = 100_000_000
 
-_KERNEL = None
 _nb_device = _nb_rhs = _nb_run = None
 _prange = range
 
@@ -145,16 +145,15 @@ def _sa_sweep(law, p, Y, ws, s0s, dts, n_steps, n_settle):  # pragma: no cover -
     return out
 
 
+@functools.cache
 def _sa_kernel():
-    """Compile (once per process, cached on disk) the fixed-step RK4 of the semi-active loop."""
-    global _KERNEL, _nb_device, _nb_rhs, _nb_run, _prange
-    if _KERNEL is not None:
-        return _KERNEL
+    """Compile (once per process, cached on disk) the fixed-step RK4 of the semi-active loop; numba is imported
+    lazily. The compiled functions are bound to module globals, where numba resolves the calls between them."""
+    global _nb_device, _nb_rhs, _nb_run, _prange
     import numba
 
     _prange = numba.prange
     _nb_device = numba.njit(cache=True)(_sa_device)
     _nb_rhs = numba.njit(cache=True)(_sa_rhs)
     _nb_run = numba.njit(cache=True)(_sa_run)
-    _KERNEL = (_nb_run, numba.njit(cache=True, parallel=True)(_sa_sweep))
-    return _KERNEL
+    return _nb_run, numba.njit(cache=True, parallel=True)(_sa_sweep)
