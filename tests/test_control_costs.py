@@ -13,6 +13,7 @@ import pytest
 from scipy.integrate import quad
 
 from vibration import Oscillator, ParameterError, SineForce, pd_oscillator, steady_state
+from vibration.chapters.control.study import loop_amplitude
 from vibration.physics.control import (
     force_floor,
     hold_force,
@@ -26,7 +27,6 @@ from vibration.physics.control import (
     zv_shaper,
     zvd_shaper,
 )
-from vibration.presentation.control import loop_amplitude
 
 OSC = Oscillator(1.0, 0.5, 20.0)
 FORCE = SineForce(5.0, 4.47)

@@ -10,8 +10,9 @@ from conftest import SCREENSHOTS, open_offline
 
 import vibration
 from vibration import Oscillator, ParameterError, SineForce, exact_response
+from vibration.chapters.control.panel import control_panel, control_panel_html
+from vibration.chapters.control.study import control_study
 from vibration.physics.control import lqr_closed_form, shaped_move, shaper_residual
-from vibration.presentation.control import control_panel, control_panel_html
 from vibration.publishing.mathml import external_urls
 
 #: Tolerances of the JavaScript against Python: gains, transmissibility, residual (relative); x samples
@@ -23,11 +24,26 @@ RTOL_X = 1e-9
 def test_panel_is_self_contained_and_validated():
     frag = control_panel_html()
     assert frag.startswith('<div class="vc-panel"') and external_urls(frag) == [] and "http" not in frag
-    assert "text/html" in control_panel(1.0, 0.5, 20.0, 5.0, 4.47)._repr_mimebundle_()
+    panel = control_panel(m=2.0)
+    assert panel._repr_html_().count('class="vc-panel"') == 1 and "m = 2 kg" in panel._repr_html_()
+    assert repr(panel).startswith("ControlPanel(")  # one stable line for nbval, no memory address
     with pytest.raises(ParameterError, match="c_sky"):
         control_panel_html(c_sky=-1.0)
     with pytest.raises(ParameterError, match="freq_error"):
-        control_panel_html(freq_error=0.9)
+        control_panel_html(freq_error=3.0)
+
+
+def test_panel_sliders_reach_the_chapters_values():
+    """A start value beyond the default slider range widens the slider instead of being clipped."""
+    frag = control_panel_html(c_sky=200.0, freq_error=1.5, r_lqr=1e-9)
+    assert 'class="vc-csky" min="0" max="200"' in frag
+    assert 'class="vc-err" min="-50" max="150"' in frag and 'value="150"' in frag
+    assert 'class="vc-logr" min="-9"' in frag
+
+
+def test_panel_takes_the_study():
+    st = control_study(t_end=5.0, n_points=101, n_sweep=10, k=30.0)
+    assert "k = 30 N/m" in control_panel(st)._repr_html_()
 
 
 @pytest.mark.browser
@@ -72,11 +88,11 @@ def test_panel_javascript_matches_python(browser, tmp_path: Path):
                     assert abs(res[2] - shaper_residual(sh, Oscillator(m, c, ka))) < 1e-10
                     _, x, _, _ = shaped_move(Oscillator(m, c, ka), sh, 0.1, 15.0, 301)
                     assert np.max(np.abs(np.array(res[3]) - x)) < RTOL_X * 0.2
-        before = page.eval_on_selector("svg.vc-sky polyline.vc-lqr", "e => e.getAttribute('points')")
+        before = page.eval_on_selector("svg.vc-sky polyline.vc-skyhook", "e => e.getAttribute('points')")
         page.eval_on_selector(
             "input.vc-csky", "e => { e.value = '30'; e.dispatchEvent(new Event('input', {bubbles: true})); }"
         )
-        after = page.eval_on_selector("svg.vc-sky polyline.vc-lqr", "e => e.getAttribute('points')")
+        after = page.eval_on_selector("svg.vc-sky polyline.vc-skyhook", "e => e.getAttribute('points')")
         assert after != before
         assert "30 N s/m" in page.inner_text("output.vc-csky-out")
         SCREENSHOTS.mkdir(parents=True, exist_ok=True) if isinstance(SCREENSHOTS, Path) else None

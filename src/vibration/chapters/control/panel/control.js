@@ -1,4 +1,6 @@
 /* Kernel-free control panel (chapter 7): LQR weight, ideal skyhook gain, input shaper and frequency error.
+ * Colours and line styles follow the book's cases (panel/control.css): passive plant blue, LQR orange dashed,
+ * ideal skyhook bluish green dashed, unshaped step grey, shaped command bluish green.
  * Closed forms only, mirrored from vibration.physics.control and vibration.physics.exact; the functions are
  * exposed as window.vibrationControl so the tests compare them with Python. Units: SI (kg, N s/m, N/m, N,
  * rad/s, s, m). */
@@ -158,7 +160,16 @@
     });
   }
 
-  function fmt(v, d) { return String(Number(Number(v).toPrecision(d || 4))); }
+  /* A number to d significant figures, powers of ten as ×10ⁿ (never e-notation), a typeset minus sign. */
+  function fmt(v, d) {
+    var s = String(Number(Number(v).toPrecision(d || 4)));
+    var m = s.match(/^(-?[0-9.]+)e([+-][0-9]+)$/);
+    if (m) {
+      var sup = { "0": "⁰", "1": "¹", "2": "²", "3": "³", "4": "⁴", "5": "⁵", "6": "⁶", "7": "⁷", "8": "⁸", "9": "⁹", "-": "⁻" };
+      s = m[1] + "×10" + String(parseInt(m[2], 10)).split("").map(function (c) { return sup[c]; }).join("");
+    }
+    return s.replace(/^-/, "−");
+  }
 
   function mount(root) {
     var p = JSON.parse(root.getAttribute("data-params"));
@@ -174,19 +185,21 @@
       var re = p.k + K[0] - p.m * p.omega * p.omega, im = (p.c + K[1]) * p.omega;
       var X = p.F0 / Math.hypot(re, im), U = X * Math.hypot(K[0], p.omega * K[1]);
       q(".vc-r-out").textContent = "r = " + fmt(r, 3) + " 1/N²";
-      q(".vc-active-read").textContent = "K_x = " + fmt(K[0]) + " N/m, K_v = " + fmt(K[1]) + " N s/m; steady amplitude "
-        + fmt(X) + " m (passive " + fmt(p.F0 / Math.hypot(p.k - p.m * p.omega * p.omega, p.c * p.omega)) + " m), steady force amplitude " + fmt(U) + " N";
+      q(".vc-active-read").innerHTML = "K<sub>x</sub> = " + fmt(K[0]) + " N/m, K<sub>v</sub> = " + fmt(K[1])
+        + " N s/m; steady amplitude " + fmt(X) + " m (passive "
+        + fmt(p.F0 / Math.hypot(p.k - p.m * p.omega * p.omega, p.c * p.omega)) + " m), steady force amplitude "
+        + fmt(U) + " N";
     }
     var ws = geomspace(0.3, 4, 300).map(function (v) { return v * Math.sqrt(p.k / p.m); });
     var ratios = ws.map(function (w) { return w / Math.sqrt(p.k / p.m); });
     function updateSky() {
       var cs = parseFloat(q(".vc-csky").value);
       var Ts = skyhook(p.m, p.c, p.k, cs, ws), Tp = skyhook(p.m, p.c, p.k, 0, ws);
-      plot(q("svg.vc-sky"), [{ x: ratios, y: Tp, cls: "vc-passive" }, { x: ratios, y: Ts, cls: "vc-lqr" }],
-        { xlabel: "ω/ω_n", ylabel: "|X/Y|", logx: true, logy: true });
+      plot(q("svg.vc-sky"), [{ x: ratios, y: Tp, cls: "vc-passive" }, { x: ratios, y: Ts, cls: "vc-skyhook" }],
+        { xlabel: "ω/ωₙ", ylabel: "|X/Y|", logx: true, logy: true });
       var wn = Math.sqrt(p.k / p.m);
-      q(".vc-csky-out").textContent = "c_sky = " + fmt(cs, 3) + " N s/m";
-      q(".vc-sky-read").textContent = "at resonance |X/Y| = " + fmt(skyhook(p.m, p.c, p.k, cs, [wn])[0]) + " (passive "
+      q(".vc-csky-out").innerHTML = "c<sub>sky</sub> = " + fmt(cs, 3) + " N s/m";
+      q(".vc-sky-read").textContent = "at ω = ωₙ: |X/Y| = " + fmt(skyhook(p.m, p.c, p.k, cs, [wn])[0]) + " (passive "
         + fmt(skyhook(p.m, p.c, p.k, 0, [wn])[0]) + ", every passive damper > 1)";
     }
     var tm = linspace(0, 10, 801);
@@ -194,7 +207,7 @@
       var kind = q(".vc-kind").value, err = parseFloat(q(".vc-err").value) / 100;
       var sh = shaper(kind, p.m, p.c, p.k), ka = p.k * (1 + err) * (1 + err);
       var x0 = shapedMove(shaper("none"), p.m, p.c, ka, p.move, tm), x = shapedMove(sh, p.m, p.c, ka, p.move, tm);
-      plot(q("svg.vc-shape"), [{ x: tm, y: x0, cls: "vc-passive" }, { x: tm, y: x, cls: "vc-lqr" }],
+      plot(q("svg.vc-shape"), [{ x: tm, y: x0, cls: "vc-unshaped" }, { x: tm, y: x, cls: "vc-shaped" }],
         { xlabel: "t (s)", ylabel: "x (m)" });
       q(".vc-err-out").textContent = (err >= 0 ? "+" : "") + fmt(100 * err, 3) + " %";
       q(".vc-shape-read").textContent = kind === "none" ? "unshaped step: residual vibration 100 %" :

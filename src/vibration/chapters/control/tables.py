@@ -1,0 +1,417 @@
+"""The chapter's tables, each a function of the :class:`~vibration.chapters.control.study.ControlStudy`.
+
+Every number is pre-formatted with :func:`~vibration.chapters.control.notation.cell`, so a column
+keeps one number of significant figures; quantities that do not exist read "—" with a footnote.
+"""
+
+from __future__ import annotations
+
+import math
+
+from vibration.chapters.control.notation import LABELS, cell, num, signed_pct
+from vibration.chapters.control.study import (
+    DESIGNS,
+    MOVE_SCHEMES,
+    SHAPER_LEVEL,
+    STEADY_PERIODS,
+    ControlStudy,
+)
+from vibration.physics.control import Metrics
+from vibration.presentation.tables import Column, Missing, Table
+
+NO_INTEGRATOR = Missing("no integral term")
+NO_CROSSOVER = Missing("the loop gain never reaches 1: no crossover, and no delay destabilises the loop")
+FIRST_ROW = Missing("first row")
+NO_SHAPER = Missing("no shaper: the unshaped step is the reference")
+
+
+def within(value: float, tol: float) -> str | Missing:
+    """A check against its stated tolerance: "< tol" when it holds, else the value and the tolerance (×10ⁿ).
+
+    The printed tolerance, not the value's order of magnitude, is what reproduces on every machine.
+    """
+    if not math.isfinite(value):
+        return Missing("not computed for this case") if math.isnan(value) else Missing("infinite")
+    if abs(value) < tol:
+        return f"< {num(tol)}"
+    return f"{num(abs(value), 2)} (above {num(tol)})"
+
+
+def _metric_rows(metrics: dict[str, Metrics], reference: str) -> list[dict]:
+    ref = metrics[reference].rms_x_ss
+    rows = []
+    for name, mt in metrics.items():
+        rows.append(
+            {
+                "controller": LABELS[name],
+                "peak_x": cell(mt.peak_x),
+                "rms_x": cell(mt.rms_x),
+                "peak_x_ss": cell(mt.peak_x_ss),
+                "rms_x_ss": cell(mt.rms_x_ss),
+                "reduction": cell(ref / mt.rms_x_ss) if mt.rms_x_ss > 0 else "∞",
+                "peak_u": cell(mt.peak_u),
+                "rms_u": cell(mt.rms_u),
+                "energy": cell(mt.energy),
+            }
+        )
+    return rows
+
+
+_METRIC_COLUMNS = [
+    Column("controller", "controller"),
+    Column("peak_x", "max|x| (m)"),
+    Column("rms_x", "x_rms (m)"),
+    Column("peak_x_ss", "max|x|, steady (m)"),
+    Column("rms_x_ss", "x_rms, steady (m)"),
+    Column("reduction", "RMS reduction, steady"),
+    Column("peak_u", "max|u| (N)"),
+    Column("rms_u", "u_rms (N)"),
+    Column("energy", "E (J)"),
+]
+
+
+def _at(study: ControlStudy) -> str:
+    a = study.active
+    return f"ω = {num(a.force.omega)} rad/s (ω/ω_n = {cell(a.forcing_ratio)})"
+
+
+def gains_table(study: ControlStudy) -> Table:
+    """Gains, closed-loop natural frequency, damping ratio, pole and steady amplitude of PD and LQR."""
+    rows = []
+    for name, cl in study.active.loops.items():
+        rows.append(
+            {
+                "law": LABELS[name],
+                "kx": cell(cl.kx, 4),
+                "kv": cell(cl.kv, 4),
+                "wn": cell(cl.osc.natural_frequency, 4),
+                "zeta": cell(cl.osc.damping_ratio, 3),
+                "re": cell(cl.pole.real, 4),
+                "im": cell(abs(cl.pole.imag), 4),
+                "X": cell(cl.amplitude, 4),
+            }
+        )
+    return Table(
+        rows,
+        [
+            Column("law", "law"),
+            Column("kx", "K_x (N/m)"),
+            Column("kv", "K_v (N s/m)"),
+            Column("wn", "ω_n,cl (rad/s)"),
+            Column("zeta", "ζ_cl"),
+            Column("re", "Re s (1/s)"),
+            Column("im", "|Im s| (rad/s)"),
+            Column("X", "X_ss (m)"),
+        ],
+        caption=(
+            "The closed loop of u = −K_x x − K_v v is the oscillator (m, c + K_v, k + K_x): its natural frequency "
+            f"ω_n,cl, damping ratio ζ_cl, pole pair s and steady amplitude X_ss at the forcing {_at(study)}."
+        ),
+        name="tab-control-gains",
+    )
+
+
+def costs_table(study: ControlStudy) -> Table:
+    """The active designs on equal footing: amplitude, force against its floor, margins and noise."""
+    a = study.active
+    rows = []
+    for name in DESIGNS:
+        d = a.designs[name]
+        lc = d.costs
+        rows.append(
+            {
+                "law": LABELS[name],
+                "kx": cell(d.kx, 4),
+                "ki": cell(d.ki, 4) if d.ki > 0 else NO_INTEGRATOR,
+                "kv": cell(d.kv, 4),
+                "X": cell(d.amplitude),
+                "u_rms": cell(d.u_rms),
+                "floor": cell(d.floor),
+                "L": cell(lc.loop_gain),
+                "wc": cell(lc.crossover) if math.isfinite(lc.crossover) else NO_CROSSOVER,
+                "pm": cell(math.degrees(lc.phase_margin)) if math.isfinite(lc.crossover) else NO_CROSSOVER,
+                "dm": cell(lc.delay_margin) if math.isfinite(lc.delay_margin) else NO_CROSSOVER,
+                "bn": cell(lc.noise_bandwidth),
+            }
+        )
+    return Table(
+        rows,
+        [
+            Column("law", "law"),
+            Column("kx", "K_x, K_P (N/m)"),
+            Column("ki", "K_I (N/(m s))"),
+            Column("kv", "K_v, K_D (N s/m)"),
+            Column("X", "X_ss (m)"),
+            Column("u_rms", "u_rms (N)"),
+            Column("floor", "least u_rms for X_ss (N)"),
+            Column("L", "|L(iω)|"),
+            Column("wc", "ω_c (rad/s)"),
+            Column("pm", "phase margin (°)"),
+            Column("dm", "delay margin (s)"),
+            Column("bn", "B_n (rad/s)"),
+        ],
+        caption=(
+            f"The active laws at {_at(study)} on equal footing: position and velocity gains K_x, K_v of the PD-type "
+            "laws, K_P, K_I, K_D of the PID. X_ss: steady amplitude of the unlimited loop; "
+            "u_rms: steady RMS force of the run; the least RMS force any controller needs to hold X_ss, "
+            "(F_0 − |k − mω² + icω| X_ss)/√2; |L(iω)|: loop gain at the forcing; ω_c: the gain crossover that sets "
+            "the delay margin (the loop's bandwidth); delay margin: the smallest time delay in the loop that "
+            "destabilises it; B_n = ∫|T(iω)|² dω over ω > 0: white position-sensor noise of two-sided density S_n "
+            "moves the mass with variance 2 S_n B_n."
+        ),
+        name="tab-control-costs",
+    )
+
+
+def active_metrics_table(study: ControlStudy) -> Table:
+    """Peak and RMS displacement (window and steady state), force and energy per active controller."""
+    a = study.active
+    return Table(
+        _metric_rows(a.metrics, "passive"),
+        _METRIC_COLUMNS,
+        caption=(
+            f"Active control at {_at(study)} from rest over {num(a.t[-1])} s: displacement over the window and in "
+            f"steady state (the last {STEADY_PERIODS} forcing periods, from t = {num(a.t_steady, 4)} s), the steady "
+            "RMS reduction against the passive oscillator, control force and the energy ∫|u v| dt the actuator "
+            "exchanges with the mass. The PID is force-limited with clamping."
+        ),
+        name="tab-control-active",
+    )
+
+
+def checks_table(study: ControlStudy) -> Table:
+    """Rounding-level checks of the active designs, printed as bounds."""
+    a = study.active
+    rows = [
+        {"check": "PD loop simulated (DOP853) against the exact closed-loop oscillator, max |Δx| (m)",
+         "value": within(a.pd_error, 1e-9)},
+        {"check": "LQR gains: python-control against scipy's Riccati solver, relative",
+         "value": within(a.lqr_check["scipy"], 1e-12)},
+        {"check": "LQR gains: python-control against the closed form, relative",
+         "value": within(a.lqr_check["closed form"], 1e-12)},
+        {"check": "Riccati residual of the returned P, relative", "value": within(a.lqr_check["residual"], 1e-12)},
+    ]  # fmt: skip
+    return Table(
+        rows,
+        [Column("check", "check"), Column("value", "bound")],
+        caption="Self-checks of the active designs (rounding level, printed as bounds).",
+        name="tab-control-checks",
+    )
+
+
+def move_table(study: ControlStudy) -> Table:
+    """Overshoot, steady oscillation and saturation of the PID move per integrator treatment."""
+    a = study.active
+    rows = []
+    for scheme in MOVE_SCHEMES:
+        mv = a.moves[scheme]
+        rows.append(
+            {
+                "scheme": LABELS[scheme],
+                "over": cell(mv.overshoot),
+                "amp": cell(mv.amplitude),
+                "mean": cell(mv.mean_error, 2),
+                "sat": cell(100.0 * mv.saturated, 3),
+                "imax": cell(mv.integral_max),
+                "peak_u": cell(mv.peak_u),
+            }
+        )
+    return Table(
+        rows,
+        [
+            Column("scheme", "force limit and integrator"),
+            Column("over", "overshoot (m)"),
+            Column("amp", "X_ss (m)"),
+            Column("mean", "mean error, steady (m)"),
+            Column("sat", "time at the limit (%)"),
+            Column("imax", "max|I| (m s)"),
+            Column("peak_u", "max|u| (N)"),
+        ],
+        caption=(
+            f"PID move to x_ref = {num(a.x_ref)} m under the disturbance at {_at(study)}, force limited to "
+            f"±{num(a.u_max)} N (first row: no limit): overshoot, steady half peak-to-peak oscillation X_ss and mean "
+            f"error (last {STEADY_PERIODS} periods), share of the window at the limit and the largest integrator "
+            "state I."
+        ),
+        name="tab-control-windup",
+    )
+
+
+def flutter_table(study: ControlStudy) -> Table:
+    """Poles of the negative-damping plant under velocity feedback below, at and above the stabilising gain."""
+    a = study.active
+    rows = []
+    for fc in a.flutter_cases:
+        verdict = "stable" if fc.re < 0 else ("marginal" if fc.re == 0 else "unstable")
+        rows.append(
+            {
+                "case": {"no feedback": "none", "1": "the stabilising gain"}.get(
+                    fc.label, f"{fc.label} × the stabilising gain"
+                ),
+                "kd": cell(fc.kv, 3),
+                "re": cell(fc.re, 3),
+                "im": cell(fc.im, 4),
+                "verdict": verdict,
+            }
+        )
+    return Table(
+        rows,
+        [
+            Column("case", "velocity gain"),
+            Column("kd", "K_v (N s/m)"),
+            Column("re", "max Re s (1/s)"),
+            Column("im", "|Im s| (rad/s)"),
+            Column("verdict", "loop"),
+        ],
+        caption=(
+            f"Negative damping c = {num(a.flutter.c)} N s/m (the linear galloping or stall-flutter model) under "
+            "u = −K_v v: the poles have real part −(c + K_v)/(2m); the loop is stable exactly when "
+            f"K_v > K_v* = −c = {num(a.kd_star)} N s/m."
+        ),
+        name="tab-control-flutter",
+    )
+
+
+def semi_active_metrics_table(study: ControlStudy) -> Table:
+    """Displacement, device force and energy of every suspension law at the base frequency."""
+    s = study.semi
+    return Table(
+        _metric_rows(s.metrics, "soft"),
+        _METRIC_COLUMNS,
+        caption=(
+            f"Semi-active suspension at ω = {num(s.omega)} rad/s (ω/ω_n = {cell(s.omega / s.osc.natural_frequency)}), "
+            f"base amplitude Y = F_0/k = {num(s.Y)} m, from rest over {num(s.runs['soft'].t[-1])} s: absolute "
+            "displacement of the mass, device force on the mass and the energy ∫|f v_rel| dt it exchanges with the "
+            "mass and the base, v_rel = v − v_b (all of it dissipated by the passive and semi-active dampers; for "
+            "the ideal skyhook's actuator the gross exchange, split in {numref}`tab-control-skyhook-energy`). "
+            f"Soft: damping c + c_min = {num(s.osc.c + s.c_min)} N s/m; firm: c + c_max = {num(s.osc.c + s.c_max)} "
+            f"N s/m. Steady state is the last {STEADY_PERIODS} periods; reduction against the soft passive damper."
+        ),
+        name="tab-control-semiactive",
+    )
+
+
+def skyhook_energy_table(study: ControlStudy) -> Table:
+    """What the ideal skyhook removes and what an actuator between body and base must exchange, W."""
+    s = study.semi
+    p, r = s.power, s.power_run
+    rows = [
+        ("removed from the mass by the skyhook force", "removed"),
+        ("net power of the actuator (force × relative velocity)", "net"),
+        ("power the actuator supplies (the positive part)", "supplied"),
+        ("gross power exchanged (its absolute value)", "gross"),
+    ]
+    return Table(
+        [{"what": what, "closed": cell(getattr(p, key), 4), "run": cell(r[key], 4)} for what, key in rows],
+        [
+            Column("what", "mean power"),
+            Column("closed", "closed form (W)"),
+            Column("run", "run, steady tail (W)"),
+        ],
+        caption=(
+            f"The ideal skyhook (c_sky = {num(s.c_sky)} N s/m) at ω = {num(s.omega)} rad/s, base amplitude "
+            f"Y = {num(s.Y)} m, realised by an actuator between the mass and the base (v_rel = v − v_b): mean powers "
+            "in steady state, what the skyhook force removes from the mass, c_sky v², and the actuator's power "
+            "f v_rel, net, supplied (its positive part) and gross (|f v_rel|), in closed form and measured on the RK4 "
+            f"run over its last {STEADY_PERIODS} periods. "
+            "A negative net power means the actuator absorbs more than it supplies."
+        ),
+        name="tab-control-skyhook-energy",
+    )
+
+
+def refinement_table(study: ControlStudy) -> Table:
+    """On-off skyhook at omega_n under step refinement: the switching is what limits RK4's order."""
+    s = study.semi
+    rows, prev = [], None
+    for spp, val in s.refine.items():
+        rows.append(
+            {
+                "spp": spp,
+                "dt": cell(2.0 * math.pi / s.osc.natural_frequency / spp, 3),
+                "T": cell(val, 5),
+                "d": FIRST_ROW if prev is None else cell(val - prev, 2),
+            }
+        )
+        prev = val
+    return Table(
+        rows,
+        [
+            Column("spp", "RK4 steps per period"),
+            Column("dt", "Δt (s)"),
+            Column("T", "max|x|/Y at ω_n"),
+            Column("d", "change from the row above"),
+        ],
+        caption=(
+            "On-off skyhook transmissibility at ω = ω_n under step refinement. The law switches the damping "
+            "discontinuously, so fixed-step RK4 loses its fourth order at each switch; the table shows how far "
+            "the sweeps' value (1000 steps per period) is from the converged one."
+        ),
+        name="tab-control-onoff-refinement",
+    )
+
+
+def semi_active_checks_table(study: ControlStudy) -> Table:
+    """The semi-active runs against closed forms and against themselves under refinement."""
+    s = study.semi
+    p, pr = s.power, s.power_run
+    vals = list(s.refine.values())
+    power = max(abs(pr[f] - getattr(p, f)) / max(abs(p.gross), 1e-300) for f in ("removed", "net", "supplied", "gross"))
+    rows = [
+        {"check": f"{LABELS[n]}: RK4 run's steady max|x|/Y against the closed form, relative",
+         "value": within(s.closed_run_error[n], 1e-4)}
+        for n in ("soft", "skyhook")
+    ] + [
+        {"check": "ideal skyhook: mean powers of the run against the closed form, largest relative difference",
+         "value": within(power, 1e-3)},
+        {"check": "on-off skyhook at ωₙ: last refinement step (16000 to 64000 steps per period), absolute",
+         "value": within(abs(vals[-1] - vals[-2]), 1e-4)},
+        {"check": "on-off and clipped dampers: largest instantaneous power they deliver (W)",
+         "value": "≤ 0" if s.worst_power <= 0.0 else within(s.worst_power, 1e-12)},
+    ]  # fmt: skip
+    return Table(
+        rows,
+        [Column("check", "check"), Column("value", "bound")],
+        caption="Self-checks of the semi-active runs (printed as bounds against stated tolerances).",
+        name="tab-control-semiactive-checks",
+    )
+
+
+def shaping_table(study: ControlStudy) -> Table:
+    """Delay, residual vibration (closed form and simulated), ringing and tolerance band of each shaper."""
+    s = study.shaping
+    rows = []
+    for name in ("none", "ZV", "ZVD"):
+        sh = s.shapers.get(name)
+        lo, hi = s.bands[name] if sh is not None else (NO_SHAPER, NO_SHAPER)
+        rows.append(
+            {
+                "shaper": "unshaped step" if name == "none" else name,
+                "delay": cell(sh.duration, 3) if sh is not None else "0",
+                "V": cell(100.0 * s.residual[name], 3),
+                "Vsim": cell(100.0 * s.residual_sim[name], 3),
+                "amp": cell(s.amplitude[name], 3),
+                "lo": lo if sh is None else cell(lo, 4),
+                "hi": hi if sh is None else cell(hi, 4),
+            }
+        )
+    return Table(
+        rows,
+        [
+            Column("shaper", "command"),
+            Column("delay", "added delay (s)"),
+            Column("V", "V, closed form (%)"),
+            Column("Vsim", "V, simulated (%)"),
+            Column("amp", "ringing after the move (m)"),
+            Column("lo", f"V ≤ {num(100 * SHAPER_LEVEL)} % from ω/ω_model"),
+            Column("hi", "to"),
+        ],
+        caption=(
+            f"Move of {num(s.move)} m on an oscillator whose natural frequency is {signed_pct(s.freq_error)} off the "
+            "model the shapers were designed on: delay added to the move, residual vibration V as a percentage of "
+            "the unshaped step's (closed form and measured on the exact response), ringing amplitude just after the "
+            f"last impulse, and the frequency band where V stays below {num(100 * SHAPER_LEVEL)} % (edges are roots "
+            "of V(ω/ω_model) = 5 %, solved to 10⁻¹² in the ratio)."
+        ),
+        name="tab-control-shaping",
+    )
