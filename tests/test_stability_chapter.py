@@ -259,7 +259,7 @@ def test_coinciding_curves_are_said_to_coincide():
     step = figures.step_figure(same).caption
     assert "The nominal and high curves coincide" in step
     assert "coincide" in figures.cost_figure(same).caption
-    assert "markers coincide" in figures.pole_figure(same).caption
+    assert "The markers of the nominal damping and the high damping coincide" in figures.pole_figure(same).caption
     apart = stability_study(n_paths=20, t_growth=30.0)
     assert "coincide" not in figures.step_figure(apart).caption
     cap = figures.transmissibility_figure(apart).caption  # low and nominal: 44.7 against 9 at resonance,

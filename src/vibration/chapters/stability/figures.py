@@ -74,7 +74,7 @@ def coinciding(curves: list[tuple[str, np.ndarray]], rtol: float = COINCIDE) -> 
 def _coincide_text(pairs: list[tuple[str, str]]) -> str:
     if not pairs:
         return ""
-    return " " + " ".join(f"The {a} and {b} curves coincide (to within {COINCIDE:.0%})." for a, b in pairs)
+    return " " + " ".join(f"The {a} and {b} curves coincide (to within {100 * COINCIDE:g} %)." for a, b in pairs)
 
 
 #: Above sqrt(2) omega_n, two transmissibility curves this close (largest relative gap) are said to nearly coincide.
@@ -90,6 +90,11 @@ def _close_above(curves: list[tuple[str, np.ndarray]], mask: np.ndarray) -> str:
             if gap <= CLOSE and not coinciding([(a, ya), (b, yb)]):
                 out.append(f"the {a} and {b} curves lie within {max(1, math.ceil(100 * gap))} % of each other")
     return f" Between $\\sqrt{{2}}\\,\\omega_n$ and $4\\,\\omega_n$ {join(out)}." if out else ""
+
+
+def _dampings(items: list[str], kind: str = "") -> str:
+    """``the run's positive damping high (...)`` or ``the run's positive dampings low (...) and high (...)``."""
+    return f"the run's {kind}damping{'s' if len(items) > 1 else ''} {join(items)}"
 
 
 def _cap(text: str) -> str:
@@ -154,14 +159,17 @@ def pole_figure(st: StabilityStudy) -> Captioned:
     stable = [_name(k) for k, v in verdicts.items() if v == "asymptotically stable"]
     on_axis = [_name(k) for k, v in verdicts.items() if v == "marginally stable"]
     growing = [_name(k) for k, v in verdicts.items() if v == "unstable"]
-    same = [(a, b) for i, (a, ca) in enumerate(cases) for b, cb in cases[i + 1 :] if ca == cb]
+    groups: dict[float, list[str]] = {}
+    for key, c in cases:
+        groups.setdefault(c, []).append(f"the {_name(key)}")
+    same = [g for g in groups.values() if len(g) > 1]
     caption = (
         f"{_cap(left)}: the poles of $m s^2 + c s + k$ in the complex plane for the paper's three dampings "
         f"($c$ = {join([num(c, 4) for _k, c in st.by_value()])} N s/m), for $c$ = 0 and for the flutter model "
         f"($c$ = {num(st.c_unstable, 4)} N s/m); the grey curve is the locus of the poles as $c$ runs from "
         f"{num(cs[0], 3)} to {num(cs[-1], 3)} N s/m, and the shaded half-plane is the stable one. "
         f"{_cap(right)}: zoom near $s = i\\omega_n$."
-        + "".join(f" The {_name(a)} and {_name(b)} markers coincide (equal $c$)." for a, b in same)
+        + "".join(f" The markers of {join(g)} coincide (equal $c$)." for g in same)
     )
     parts = []
     for group, where in ((stable, "in the left half-plane"), (on_axis, "on the imaginary axis"),
@@ -299,11 +307,7 @@ def transmissibility_figure(st: StabilityStudy) -> Captioned:
     r = st.isolation_ratio
     caption = (
         "Transmissibility of base motion $|X/Y|$ on a logarithmic scale against the base frequency, "
-        + (
-            f"for the run's positive damping{'s' if len(run) > 1 else ''}, {join(run)}, "
-            if run
-            else "for damping ratios 0.2 and 1 (grey), "
-        )
+        + (f"for {_dampings(run, 'positive ')}, " if run else "for damping ratios 0.2 and 1 (grey), ")
         + f"and for the settling-optimal {ZSTAR} = {st.zeta_star:.3f} (black dotted). Every curve passes through "
         f"$T$ = 1 at $\\sqrt{{2}}\\,\\omega_n$ = {num(w_iso, 4)} rad/s (dashed line), and above it the more heavily "
         "damped curves lie higher"
@@ -366,7 +370,7 @@ def step_figure(st: StabilityStudy) -> Captioned:
     left_out = [f"{n} ($c$ = {num(c, 4)} N s/m)" for n, c in st.by_value() if c < 0.0]
     caption = (
         f"{_cap(left)}: response to a step force, normalised by its final value $F/k$, for "
-        + (f"the run's dampings {join(drawn)} and " if drawn else "")
+        + (f"{_dampings(drawn)} and " if drawn else "")
         + f"the settling-optimal {ZSTAR} = {st.zeta_star:.3f} (black dotted), with the shaded ±2 % band"
         + (f"; {join(left_out)} grows without bound and is not drawn" if left_out else "")
         + f". {_cap(right)}: the exact 2 % settling time (black) and the 10–90 % rise time (dashed) against the "
@@ -408,7 +412,7 @@ def cost_figure(st: StabilityStudy) -> Captioned:
         fig.legend(*af.get_legend_handles_labels(), loc="outside upper center", ncols=3, frameon=False)
     left, right = panel_words(fig)
     run = [f"{n} ($c$ = {num(c, 4)} N s/m)" for n, c in st.positive()]
-    what = f"for the run's positive dampings {join(run)}" if run else "(no positive damping in this run: no curves)"
+    what = f"for {_dampings(run, 'positive ')}" if run else "(no positive damping in this run: no curves)"
     same = coinciding(forces)
     caption = (
         f"Load on the damper under $F_0$ = {num(st.F0, 4)} N on the mass, in the steady state, against the forcing "
@@ -461,7 +465,7 @@ def labels_figure(st: StabilityStudy) -> Captioned:
             textcoords="offset points",
             fontsize=8,
         )
-    off = [f"“{LABELS[n]}” ($c$ = {c:g} N s/m)" for n, c in st.by_value() if c <= 0.0]
+    off = [f"“{LABELS[n]}” ($c$ = {num(c, 4)} N s/m)" for n, c in st.by_value() if c <= 0.0]
     if off:
         ax.text(0.98, 0.97, "not on these axes (no finite peak or settling):\n" + ", ".join(off),
                 transform=ax.transAxes, ha="right", va="top", fontsize=7.5)  # fmt: skip
@@ -490,7 +494,12 @@ def labels_figure(st: StabilityStudy) -> Captioned:
         "The trade-off at a glance, on logarithmic axes: the resonant peak under a force on the mass against the "
         f"transmissibility of base motion at {st.isolation_ratio:g} {WN}, for damping ratios from 0.004 to 6; each "
         "dot is shaded by its 2 % step settling time (darker is slower). "
-        + (f"The run's positive dampings, {join(marked)}, are marked with their paper labels, and " if marked else "")
+        + (
+            f"{_cap(_dampings(marked, 'positive '))} {'are' if len(marked) > 1 else 'is'} marked with "
+            f"{'their' if len(marked) > 1 else 'its'} paper label{'s' if len(marked) > 1 else ''}, and "
+            if marked
+            else ""
+        )
         + f"the settling-optimal {ZSTAR} = {st.zeta_star:.3f} by a black star."
         + (f" Not on these axes: {join(off)}." if off else "")
     )
