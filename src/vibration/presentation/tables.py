@@ -25,8 +25,8 @@ Examples
 Table tab-demo: Steady amplitudes.
 c (N s/m)  x_ss (m)
 ---------  --------
-0.5        2.237
-15         —a
+0.500      2.237
+15.0       —a
 a: no peak when ζ ≥ 1/√2
 """
 
@@ -88,9 +88,10 @@ class Column:
     key: str  # key in each row dict
     header: str  # e.g. "ω (rad/s)"; a "_" starts a subscript up to the next space or "("
     digits: int = 4  # significant figures of floats
+    zeros: bool = True  # keep trailing zeros, so a column shows one number of significant figures (0.100, 15.0)
 
 
-def fmt(value, digits: int = 4) -> str:
+def fmt(value, digits: int = 4, zeros: bool = False) -> str:
     """Fixed-precision text of a cell: floats to ``digits`` significant figures.
 
     Examples
@@ -99,11 +100,13 @@ def fmt(value, digits: int = 4) -> str:
     ('2.237', '0.0001235', 'yes', '—', '—', 'overdamped')
     >>> fmt(1.273e5, 4), fmt(-2.5e-9, 2), fmt(1e-12), fmt(31540.0, 3)
     ('1.273×10⁵', '−2.5×10⁻⁹', '10⁻¹²', '3.15×10⁴')
+    >>> fmt(0.1, 3, zeros=True), fmt(15.0, 3, zeros=True), fmt(2.0e-5, 2, zeros=True), fmt(1234.0, 3, zeros=True)
+    ('0.100', '15.0', '2.0×10⁻⁵', '1.23×10³')
     """
     if value is None or isinstance(value, Missing):
         return DASH
     if isinstance(value, Approx):
-        return "≈" + fmt(value.value, digits)
+        return "≈" + fmt(value.value, digits, zeros)
     if isinstance(value, bool | np.bool_):
         return "yes" if value else "no"
     if isinstance(value, int | np.integer):
@@ -114,7 +117,9 @@ def fmt(value, digits: int = 4) -> str:
             return DASH
         if math.isinf(v):
             return "∞" if v > 0 else "−∞"
-        text = f"{v:.{digits}g}"
+        text = f"{v:#.{digits}g}" if zeros else f"{v:.{digits}g}"
+        if zeros:
+            text = text.rstrip(".") if "e" not in text else text.replace(".e", "e")
         if "e" in text:  # the book's number format: a power of ten, never e-notation
             mant, exp = text.split("e")
             power = "10" + str(int(exp)).translate(_SUPERSCRIPT)
@@ -204,7 +209,7 @@ class Table:
             line = []
             for c in self.columns:
                 v = row[c.key]
-                text = fmt(v, c.digits)
+                text = fmt(v, c.digits, c.zeros)
                 if isinstance(v, Missing):
                     text += self._marks[v.reason]
                 line.append(text)
