@@ -83,7 +83,7 @@ def key_findings(st: TMDStudy) -> list[str]:
     closed = {r: st.peaks_actual[st.mu][r] for r in RULES[:3]}
     alt = min(closed, key=closed.get)
     out = [
-        f"An absorber of {pct(st.mu, 2)} of the primary's mass, tuned for the primary's damping, makes the steady "
+        f"An absorber of {100 * st.mu:g} % of the primary's mass, tuned for the primary's damping, makes the steady "
         f"amplitude at the paper's forcing frequency ω = {st.omega_res:g} rad/s "
         f"{_rel(st.amp_with, st.amp_without)} than without it ({sig(st.amp_without)} m → {sig(st.amp_with)} m).",
         f"The tuning that accounts for the primary's damping ({ZP} = {sig(st.zeta_p, 3)}) holds the peak "
@@ -104,7 +104,7 @@ def key_findings(st: TMDStudy) -> list[str]:
     )
     force, ground = st.load_cases
     out.append(
-        f"On the {st.building.n}-storey shear building a roof absorber of {pct(st.mu_building, 2)} of the first "
+        f"On the {st.building.n}-storey shear building a roof absorber of {100 * st.mu_building:g} % of the first "
         f"modal mass leaves the roof's largest response near the first mode {_rel(1 - force.reduction, 1.0)} under a "
         f"roof force and {_rel(1 - ground.reduction, 1.0)} under ground acceleration."
     )
