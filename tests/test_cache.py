@@ -59,17 +59,21 @@ def test_the_closure_holds_what_a_module_imports_and_nothing_else(graph):
         "vibration.chapters",
         "vibration",
     } <= closure  # __init__ files run first
-    assert "vibration.presentation.tmd" not in closure and "vibration.chapters.real_oscillator.study" not in closure
+    assert "vibration.chapters.tmd.study" not in closure and "vibration.chapters.real_oscillator.study" not in closure
     # the package's __init__ imports the whole physics library, so `import vibration` brings all of it
     assert "vibration.physics.tmd" in import_closure({"vibration"}, graph)
 
 
 def test_the_manifest_names_each_input_and_changes_with_it(tmp_path, graph):
-    nb = _notebook(tmp_path / "notebooks" / "01_x.ipynb", "from vibration.presentation.tables import fmt")
+    nb = _notebook(
+        tmp_path / "notebooks" / "01_x.ipynb",
+        "from vibration.presentation.tables import fmt\n"
+        "from vibration.chapters.real_oscillator.panel import decay_panel",
+    )
     first = manifest(nb, {"a": 2.0}, ROOT, graph)
     assert "src/vibration/presentation/tables.py" in first and "src/vibration/physics/model.py" in first
-    assert "src/vibration/presentation/tmd.py" not in first
-    assert any(k.startswith("src/vibration/presentation/assets/") for k in first)  # files beside the modules
+    assert "src/vibration/chapters/tmd/study.py" not in first
+    assert "src/vibration/chapters/real_oscillator/panel/real_oscillator.js" in first  # files beside the modules
     assert any(k.startswith("data/") for k in first)
     assert differences(first, manifest(nb, {"a": 2.0}, ROOT, graph)) == []
     assert differences(first, manifest(nb, {"a": 3.0}, ROOT, graph)) == ["parameters changed"]

@@ -75,3 +75,12 @@ def test_alt_text_is_a_description_not_a_file():
     with pytest.raises(ValueError, match="alt text"):
         Captioned(fig, "A line.", "fig-y", "figures/fig-y.png")
     plt.close(fig)
+
+
+def test_dash_dotted_is_not_dotted():
+    fig, ax = figure()
+    ax.plot([0, 1], [0, 1], linestyle="-.")
+    check_caption(fig, "One dash-dotted line.")
+    with pytest.raises(ValueError, match="dotted"):
+        check_caption(fig, "One dotted line.")
+    plt.close(fig)

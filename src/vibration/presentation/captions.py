@@ -164,7 +164,7 @@ def check_caption(fig, caption: str) -> None:
         raise ValueError(f"caption names only one of the panels {', '.join(words)}")
     styles = _drawn_linestyles(fig)
     for word, ls in _LINESTYLE.items():
-        pattern = rf"\b{word}\b" if word != "dashed" else r"(?<!dash-)\bdashed\b"
+        pattern = rf"(?<!dash-)\b{word}\b"  # "dash-dotted" is neither dashed nor dotted
         if re.search(pattern, text) and ls not in styles:
             raise ValueError(f"caption says {word!r} but no {word} line is drawn")
     colours = _drawn_colours(fig)

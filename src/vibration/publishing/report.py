@@ -439,7 +439,7 @@ def _manifest(ch: Chapter, params: dict, graph) -> dict[str, str]:
 
 
 def _why(reasons: tuple[str, ...]) -> str:
-    """The first reasons a chapter runs again, e.g. "src/vibration/presentation/tmd.py changed"."""
+    """The first reasons a chapter runs again, e.g. "src/vibration/chapters/tmd/study.py changed"."""
     shown = ", ".join(reasons[:3])
     return shown + (f" and {len(reasons) - 3} more" if len(reasons) > 3 else "")
 
