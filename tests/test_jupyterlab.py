@@ -4,8 +4,8 @@ Starts ``jupyter lab`` from the project's virtual environment on a free port wit
 random token, on a temporary copy of ``notebooks/``, with its own settings,
 workspaces, config and runtime folders (news, update checks and the extension
 manager off; notebook windowing off so that every cell is in the page). Every
-notebook whose source uses ``vibration.presentation.widgets`` is opened, run with *Run All
-Cells*, and each explorer in it is exercised: both sliders moved with the
+notebook whose source uses chapter 5's live explorer (``vibration.chapters.explore.widget``)
+is opened, run with *Run All Cells*, and each explorer in it is exercised: both sliders moved with the
 keyboard, a bad mass typed; the readout and the figure must change, and no
 output may show a traceback. Screenshots go to ``build/screenshots/``.
 """
@@ -35,7 +35,7 @@ JUPYTER = Path(sys.executable).parent / "jupyter"
 SCREENSHOTS = ROOT / "build" / "screenshots"
 KERNEL_DISPLAY_NAME = "Python 3 (vibration)"
 USES_WIDGETS = re.compile(
-    r"vibration\.presentation\.widgets|from\s+vibration\.presentation\s+import\s+[^\n]*\bwidgets\b"
+    r"vibration\.chapters\.explore\.widget\b|from\s+vibration\.chapters\.explore\s+import\s+[^\n]*\bwidget\b"
 )
 
 #: JupyterLab settings for a quiet, deterministic session.
@@ -54,7 +54,7 @@ UPDATE_S = 20  # until a widget reflects a slider move
 
 
 def widget_notebooks(folder: Path) -> list[str]:
-    """Names of the notebooks in ``folder`` whose code cells use ``vibration.presentation.widgets``."""
+    """Names of the notebooks in ``folder`` whose code cells use ``vibration.chapters.explore.widget``."""
     names = []
     for path in sorted(folder.glob("*.ipynb")):
         cells = json.loads(path.read_text(encoding="utf-8"))["cells"]

@@ -118,7 +118,7 @@ def test_captions_match_their_figures_and_legends_cover_no_data(study):
 def _numbers(s: str) -> list[float]:
     s = s.replace("−", "-")
     out = []
-    for m in re.finditer(r"(\d+(?:\.\d+)?)(?: × 10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+))?", s):
+    for m in re.finditer(r"(\d+(?:\.\d+)?)(?:\s*×\s*10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+))?", s):
         v = float(m.group(1))
         if m.group(2):
             v *= 10.0 ** int(m.group(2).translate(str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")))

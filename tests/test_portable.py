@@ -33,6 +33,16 @@ def _sanitize(text: str) -> str:
     return text
 
 
+def _number(text: str) -> float:
+    """A table cell's number: plain, e-notation, or the book's ×10ⁿ with a true minus."""
+    text = text.replace("−", "-")
+    m = re.fullmatch(r"(?:(-?[\d.]+)×)?(-?)10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)", text)
+    if m:
+        power = 10.0 ** int(m.group(3).translate(str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")))
+        return float(m.group(1) or f"{m.group(2)}1") * power
+    return float(text)
+
+
 def _reference_ladder() -> dict[tuple[str, str], list[float]]:
     """The committed ladder's ≈ cells: (method, rtol) -> [evaluations, err x, err v, relative]."""
     nb = json.loads(NOTEBOOK.read_text(encoding="utf-8"))
@@ -44,7 +54,7 @@ def _reference_ladder() -> dict[tuple[str, str], list[float]]:
                 for line in text.splitlines():
                     parts = line.split()
                     if parts and parts[0] in MACHINE_DEPENDENT:
-                        rows[(parts[0], parts[1])] = [float(p.lstrip("≈")) for p in parts[3:7]]
+                        rows[(parts[0], parts[1])] = [_number(p.lstrip("≈")) for p in parts[3:7]]
                 return rows
     raise AssertionError("the ladder table is missing from the committed notebook")
 

@@ -14,7 +14,8 @@ import pytest
 from conftest import open_offline
 
 from vibration import Oscillator, ParameterError, SineForce, exact_response, settling_time, steady_state
-from vibration.presentation.static_page import C_MIN, slider_panel_html
+from vibration.chapters.explore.panel import slider_panel_html
+from vibration.chapters.explore.study import C_MIN
 from vibration.publishing.mathml import external_urls
 
 SCREENSHOTS = Path(__file__).resolve().parents[1] / "build" / "screenshots"

@@ -26,23 +26,15 @@ W_RES = r"$\omega_\mathrm{res}$"
 W_REF = r"$\omega_\mathrm{ref}$"
 W_N = r"$\omega_n$"
 
-_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
-
-
 def num(value: float, digits: int = 4) -> str:
-    """A number for prose: ``digits`` significant figures, powers of ten as × 10ⁿ (never e-notation).
+    """A number for prose: ``digits`` significant figures in the book's format (powers of ten as ×10ⁿ, never
+    e-notation) with a typographic minus.
 
-    >>> num(2.6e-05, 2), num(1e-07), num(44.72), num(-8.24e-06, 3)
-    ('2.6 × 10⁻⁵', '10⁻⁷', '44.72', '−8.24 × 10⁻⁶')
+    >>> num(2.6e-05, 2), num(1e-06), num(4526), num(-0.25)
+    ('2.6×10⁻⁵', '10⁻⁶', '4526', '−0.25')
     """
     text = g(value, digits)
-    sign = "−" if text.startswith("-") else ""
-    text = text.lstrip("-")
-    if "e" not in text:
-        return sign + text
-    mantissa, exponent = text.split("e")
-    power = "10" + str(int(exponent)).translate(_SUPERSCRIPT)
-    return sign + (power if mantissa in ("1", "1.0") else f"{mantissa} × {power}")
+    return "−" + text[1:] if text.startswith("-") else text
 
 
 def listing(items: list[str]) -> str:

@@ -25,21 +25,15 @@ SMALL = 0.01
 #: The pair the paper names ("Runge-Kutta-Fehlberg (RK45)", section 2.2).
 PAPER_PAIR = "Runge-Kutta-Fehlberg 4(5)"
 
-_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
-
-
 def num(value: float, digits: int = 4) -> str:
-    """A number for prose: ``digits`` significant figures, powers of ten as × 10ⁿ (never e-notation).
+    """A number for prose: ``digits`` significant figures in the book's format (powers of ten as ×10ⁿ, never
+    e-notation) with a typographic minus.
 
-    >>> num(2.6e-05, 2), num(1e-06), num(4526), num(0.00537, 2)
-    ('2.6 × 10⁻⁵', '10⁻⁶', '4526', '0.0054')
+    >>> num(2.6e-05, 2), num(1e-06), num(4526), num(-0.25)
+    ('2.6×10⁻⁵', '10⁻⁶', '4526', '−0.25')
     """
     text = g(value, digits)
-    if "e" not in text:
-        return text
-    mantissa, exponent = text.split("e")
-    power = "10" + str(int(exponent)).translate(_SUPERSCRIPT)
-    return power if mantissa in ("1", "1.0") else f"{mantissa} × {power}"
+    return "−" + text[1:] if text.startswith("-") else text
 
 
 def listing(items: list[str]) -> str:

@@ -1,35 +1,30 @@
-"""Live explorer: forcing-frequency and damping sliders over the exact response.
+"""Live explorer of chapter 5: forcing-frequency and damping sliders over the exact response (ipywidgets).
 
-:func:`explorer` returns an :class:`Explorer`, an ``ipywidgets.VBox`` holding
-the controls, a live readout table and one matplotlib figure: displacement
-x(t) (m) and velocity v(t) (m/s) from the closed form, and the magnification
-curve against the forcing frequency (rad/s below, Hz on top) with the
-operating point marked. Every number comes from the package
-(:func:`~vibration.exact_response`, :func:`~vibration.steady_state`,
-:func:`~vibration.settling_time`, :func:`~vibration.magnification`,
-:func:`~vibration.simulate`); nothing physical is computed here.
+:func:`explorer` returns an :class:`Explorer`, an ``ipywidgets.VBox`` holding the controls, a live
+readout table and one matplotlib figure: displacement x(t) (m) and velocity v(t) (m/s) from the closed
+form, and the magnification curve against the forcing frequency (rad/s below, Hz on top) with the
+operating point marked. Every number comes from :func:`vibration.chapters.explore.study.readout` and the
+physics library; nothing physical is computed here. :func:`live_explorer` starts it at a study's
+parameters. Displayed in a page without a kernel (the book), it shows the kernel-free panel of
+:mod:`vibration.chapters.explore.panel` at the same parameters instead.
 
 Figure transport
 ----------------
-The figure is a plain :class:`matplotlib.figure.Figure` on an Agg canvas,
-never registered with pyplot, so the global backend stays ``inline`` and the
-report's other figures remain static PNGs. Each update re-renders that same
-Figure into PNG bytes shown by an :class:`ipywidgets.Image`, which needs no
-frontend extension beyond ipywidgets itself. The artists that move are
-``animated`` and blitted onto a cached background (axes, ticks, labels,
-legend); the background is redrawn only when an axis' view limits change.
-Autoscaling uses ``axes.autolimit_mode = "round_numbers"``, so limits move in
-tick-sized steps and most slider steps take the blit path. The PNG is written
-with zlib level 1 and no row filter (:func:`_png`). No decimation: all
-``n_points`` samples are drawn (Agg's path simplification keeps that cheap).
+The figure is a plain :class:`matplotlib.figure.Figure` on an Agg canvas, never registered with
+pyplot, so the global backend stays ``inline`` and the report's other figures remain static PNGs. Each
+update re-renders that same Figure into PNG bytes shown by an :class:`ipywidgets.Image`, which needs
+no frontend extension beyond ipywidgets itself. The artists that move are ``animated`` and blitted onto
+a cached background (axes, ticks, labels, legend); the background is redrawn only when an axis' view
+limits change. Autoscaling uses ``axes.autolimit_mode = "round_numbers"``, so limits move in tick-sized
+steps and most slider steps take the blit path. The PNG is written with zlib level 1 and no row filter
+(:func:`_png`). No decimation: all ``n_points`` samples are drawn (Agg's path simplification keeps that
+cheap).
 
-Measured with :func:`benchmark_updates` (5001 samples, 1000 x 540 px, on the
-project's 2-core machine): median 17 ms from slider change to new PNG bytes;
-the steps whose limits move (10 % of a slow sweep) redraw everything in about
-110 ms; rebuilding the figure on every step would take about 270 ms. An ipympl
-canvas (``ipympl.backend_nbagg.Canvas``) with the same blitting measured
-38 ms per blitted step, because it PNG-encodes a diff image with Pillow at
-zlib level 6.
+Measured with :func:`vibration.chapters.explore.bench.benchmark_updates` (5001 samples, 1000 x 540 px,
+on the project's 2-core machine): median 17 ms from slider change to new PNG bytes; the steps whose
+limits move (10 % of a slow sweep) redraw everything in about 110 ms; rebuilding the figure on every
+step would take about 270 ms. An ipympl canvas (``ipympl.backend_nbagg.Canvas``) with the same blitting
+measured 38 ms per blitted step, because it PNG-encodes a diff image with Pillow at zlib level 6.
 """
 
 from __future__ import annotations
@@ -38,9 +33,7 @@ import base64
 import html
 import io
 import math
-import statistics
 import struct
-import time
 import zlib
 from dataclasses import dataclass
 
@@ -52,17 +45,29 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from PIL import Image
 
-from ..physics.exact import exact_response, steady_state
-from ..physics.frequency import magnification, settling_time
-from ..physics.model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
-from ..physics.numerics import simulate
+from vibration.chapters.explore.panel import slider_panel_html
+from vibration.chapters.explore.study import C_MAX, C_MIN, N_POINTS, ExploreStudy, readout
+from vibration.physics.exact import exact_response, steady_state
+from vibration.physics.frequency import magnification
+from vibration.physics.model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
+from vibration.physics.numerics import simulate
+from vibration.presentation.style import OKABE_ITO
 
-__all__ = ["Explorer", "benchmark_updates", "explorer"]
+__all__ = ["Explorer", "build_figure", "explorer", "live_explorer"]
 
 TWO_PI = 2.0 * math.pi
 
-#: Range of the damping slider, N s/m (log scale).
-C_MIN, C_MAX = 0.01, 20.0
+#: The look of the figure's lines: the response in the book's blue, the steady-state amplitudes and the
+#: operating point in vermillion (dashed lines), the settling time and the natural frequency grey dotted,
+#: the paper's RK45 orange dashed.
+STYLE = {
+    "response": {"color": OKABE_ITO["blue"], "lw": 0.9},
+    "curve": {"color": OKABE_ITO["blue"], "lw": 1.2},
+    "envelope": {"color": OKABE_ITO["vermillion"], "lw": 0.9, "ls": "--"},
+    "marker": {"color": OKABE_ITO["grey"], "lw": 1.0, "ls": ":"},
+    "rk45": {"color": OKABE_ITO["orange"], "lw": 1.0, "ls": "--"},
+    "point": {"color": OKABE_ITO["vermillion"], "marker": "o", "ms": 7, "ls": "none"},
+}
 
 #: Figure size (inches) and resolution (dots per inch) of the explorer's image.
 FIGSIZE, DPI = (10.0, 5.4), 100
@@ -141,6 +146,115 @@ _RK45_ROWS = (
 )
 
 
+def build_figure() -> tuple[Figure, dict, dict]:
+    """The explorer's figure, its axes (``x``, ``v``, ``m``) and its empty animated artists, by name.
+
+    The time plots sit in the left column (displacement above velocity), the magnification plot fills the
+    right column; :func:`figure_words` reads that layout back for the chapter's description.
+    """
+    fig = Figure(figsize=FIGSIZE, dpi=DPI, layout="none")  # fixed layout: blits need fixed axes
+    FigureCanvasAgg(fig)
+    gs = fig.add_gridspec(
+        2,
+        2,
+        width_ratios=(1.55, 1.0),
+        left=0.085,
+        right=0.985,
+        bottom=0.1,
+        top=0.83,
+        wspace=0.22,
+        hspace=0.2,
+    )
+    with mpl.rc_context({"axes.autolimit_mode": "round_numbers"}):
+        ax_x = fig.add_subplot(gs[0, 0])
+        ax_v = fig.add_subplot(gs[1, 0], sharex=ax_x)
+        ax_m = fig.add_subplot(gs[:, 1])
+    ax_x.tick_params(labelbottom=False)
+    for ax in (ax_x, ax_v):  # short tick labels (offset "1e-3" above), labels at a fixed place
+        ax.ticklabel_format(axis="y", style="sci", scilimits=(-1, 3), useMathText=True)
+        ax.yaxis.set_label_coords(-0.095, 0.5)
+    ax_x.set_ylabel("displacement x (m)")
+    ax_v.set_ylabel("velocity v (m/s)")
+    ax_v.set_xlabel("time t (s)")
+    ax_m.set_xlabel("forcing frequency ω (rad/s)")
+    ax_m.set_ylabel(r"magnification $|X|\,/\,(F_0/k)$ (1)")
+    ax_m.set_yscale("log")
+    sec = ax_m.secondary_xaxis("top", functions=(_hz, _rad))
+    sec.set_xlabel("forcing frequency f (Hz)")
+    for ax in (ax_x, ax_v, ax_m):
+        ax.grid(alpha=0.3)
+        ax.set_autoscalex_on(False)
+
+    def line(ax, **kw):
+        (ln,) = ax.plot([], [], animated=True, **kw)
+        return ln
+
+    def hline(ax, **kw):
+        return ax.axhline(0.0, animated=True, **kw)
+
+    art = {
+        "x_env_hi": hline(ax_x, **STYLE["envelope"]),
+        "x_env_lo": hline(ax_x, **STYLE["envelope"]),
+        "v_env_hi": hline(ax_v, **STYLE["envelope"]),
+        "v_env_lo": hline(ax_v, **STYLE["envelope"]),
+        "x_settle": ax_x.axvline(0.0, animated=True, **STYLE["marker"]),
+        "v_settle": ax_v.axvline(0.0, animated=True, **STYLE["marker"]),
+        "x": line(ax_x, **STYLE["response"]),
+        "v": line(ax_v, **STYLE["response"]),
+        "x_rk45": line(ax_x, **STYLE["rk45"]),
+        "v_rk45": line(ax_v, **STYLE["rk45"]),
+        "omega_n": ax_m.axvline(1.0, animated=True, **STYLE["marker"]),
+        "curve": line(ax_m, **STYLE["curve"]),
+        "point": line(ax_m, **STYLE["point"]),
+    }
+    return fig, {"x": ax_x, "v": ax_v, "m": ax_m}, art
+
+
+_LINESTYLE_WORD = {"--": "dashed", ":": "dotted", "-.": "dash-dotted", "-": "solid"}
+
+
+def figure_words(fig: Figure, axes: dict, art: dict) -> dict[str, str]:
+    """Where each plot sits and how its marked lines are drawn, read from the figure itself.
+
+    Keys: ``x``, ``v``, ``m`` (position words of the displacement, velocity and magnification plots),
+    ``envelope``, ``settle``, ``natural``, ``rk45`` (line-style words), ``hz`` ("Hz above" when the
+    magnification plot has a second axis in Hz, else "").
+    """
+    pos = {k: ax.get_position() for k, ax in axes.items()}
+    centre = {k: ((p.x0 + p.x1) / 2, (p.y0 + p.y1) / 2) for k, p in pos.items()}
+
+    def where(k: str) -> str:
+        others = [o for o in pos if o != k]
+        side = (
+            "left"
+            if all(pos[k].x1 <= pos[o].x0 for o in others if pos[o].x0 >= pos[k].x1)
+            and any(pos[o].x0 >= pos[k].x1 for o in others)
+            else "right"
+            if any(pos[o].x1 <= pos[k].x0 for o in others)
+            else ""
+        )
+        column = [o for o in others if abs(centre[o][0] - centre[k][0]) < 0.05]
+        if not column:
+            return f"{side}, full height" if side else "alone"
+        vertical = "top" if all(centre[k][1] > centre[o][1] for o in column) else "bottom"
+        return f"{vertical} {side}".strip()
+
+    def style(name: str) -> str:
+        return _LINESTYLE_WORD.get(art[name].get_linestyle(), "solid")
+
+    has_hz = any(getattr(child, "get_xlabel", lambda: "")().endswith("(Hz)") for child in axes["m"].child_axes)
+    return {
+        "x": where("x"),
+        "v": where("v"),
+        "m": where("m"),
+        "envelope": style("x_env_hi"),
+        "settle": style("x_settle"),
+        "natural": style("omega_n"),
+        "rk45": style("x_rk45"),
+        "hz": "Hz above" if has_hz else "",
+    }
+
+
 class _NoResponse(Exception):
     """Valid inputs whose response cannot be computed in floating point (overflow)."""
 
@@ -192,7 +306,7 @@ class Explorer(widgets.VBox):
         c: float = 0.5,
         omega: float = 4.47,
         t_end: float = 50.0,
-        n_points: int = 5001,
+        n_points: int = N_POINTS,
         show_rk45: bool = False,
     ) -> None:
         osc = Oscillator(m, c, k)
@@ -280,65 +394,7 @@ class Explorer(widgets.VBox):
     # ------------------------------------------------------------------ figure
     def _build_figure(self) -> Figure:
         """Create the figure and its (empty) artists once; :meth:`update` fills them."""
-        fig = Figure(figsize=FIGSIZE, dpi=DPI, layout="none")  # fixed layout: blits need fixed axes
-        FigureCanvasAgg(fig)
-        gs = fig.add_gridspec(
-            2,
-            2,
-            width_ratios=(1.55, 1.0),
-            left=0.085,
-            right=0.985,
-            bottom=0.1,
-            top=0.83,
-            wspace=0.22,
-            hspace=0.2,
-        )
-        with mpl.rc_context({"axes.autolimit_mode": "round_numbers"}):
-            ax_x = fig.add_subplot(gs[0, 0])
-            ax_v = fig.add_subplot(gs[1, 0], sharex=ax_x)
-            ax_m = fig.add_subplot(gs[:, 1])
-        ax_x.tick_params(labelbottom=False)
-        for ax in (ax_x, ax_v):  # short tick labels (offset "1e-3" above), labels at a fixed place
-            ax.ticklabel_format(axis="y", style="sci", scilimits=(-1, 3), useMathText=True)
-            ax.yaxis.set_label_coords(-0.095, 0.5)
-        ax_x.set_ylabel("displacement x (m)")
-        ax_v.set_ylabel("velocity v (m/s)")
-        ax_v.set_xlabel("time t (s)")
-        ax_m.set_xlabel("forcing frequency ω (rad/s)")
-        ax_m.set_ylabel("magnification |X| / (F0/k) (1)")
-        ax_m.set_yscale("log")
-        sec = ax_m.secondary_xaxis("top", functions=(_hz, _rad))
-        sec.set_xlabel("forcing frequency f (Hz)")
-        for ax in (ax_x, ax_v, ax_m):
-            ax.grid(alpha=0.3)
-            ax.set_autoscalex_on(False)
-
-        def line(ax, **kw):
-            (ln,) = ax.plot([], [], animated=True, **kw)
-            return ln
-
-        def hline(ax, **kw):
-            ln = ax.axhline(0.0, animated=True, **kw)
-            return ln
-
-        env = {"color": "0.45", "lw": 0.9, "ls": "--"}
-        settle = {"color": "tab:green", "lw": 1.0, "ls": ":"}
-        self._art = {
-            "x_env_hi": hline(ax_x, **env),
-            "x_env_lo": hline(ax_x, **env),
-            "v_env_hi": hline(ax_v, **env),
-            "v_env_lo": hline(ax_v, **env),
-            "x_settle": ax_x.axvline(0.0, animated=True, **settle),
-            "v_settle": ax_v.axvline(0.0, animated=True, **settle),
-            "x": line(ax_x, color="tab:blue", lw=0.9),
-            "v": line(ax_v, color="tab:blue", lw=0.9),
-            "x_rk45": line(ax_x, color="tab:orange", lw=1.0, ls=(0, (4, 3))),
-            "v_rk45": line(ax_v, color="tab:orange", lw=1.0, ls=(0, (4, 3))),
-            "omega_n": ax_m.axvline(1.0, animated=True, color="0.45", lw=0.9, ls="--"),
-            "curve": line(ax_m, color="tab:blue", lw=1.2),
-            "point": line(ax_m, color="tab:red", marker="o", ms=7, ls="none"),
-        }
-        self._axes = {"x": ax_x, "v": ax_v, "m": ax_m}
+        fig, self._axes, self._art = build_figure()
         self._legend = None
         self._legend_rk45 = None
         return fig
@@ -349,14 +405,13 @@ class Explorer(widgets.VBox):
         if self._legend is not None:
             self._legend.remove()
         handles = [
-            Line2D([], [], color="tab:blue", lw=1.2, label="exact closed form"),
-            Line2D([], [], color="0.45", lw=0.9, ls="--", label="± steady-state amplitude; ω_n"),
-            Line2D([], [], color="tab:green", lw=1.0, ls=":", label="2 % settling time"),
-            Line2D([], [], color="tab:red", marker="o", ls="none", label="operating point"),
+            Line2D([], [], **STYLE["curve"], label="exact closed form"),
+            Line2D([], [], **STYLE["envelope"], label="± steady-state amplitude"),
+            Line2D([], [], **STYLE["marker"], label=r"2 % settling time; $\omega_n$"),
+            Line2D([], [], **STYLE["point"], label="operating point"),
         ]
         if rk45:
-            rk = Line2D([], [], color="tab:orange", ls=(0, (4, 3)), label="RK45, SciPy defaults")
-            handles.insert(1, rk)
+            handles.insert(1, Line2D([], [], **STYLE["rk45"], label="RK45, SciPy defaults"))
         self._legend = self.figure.legend(
             handles=handles,
             loc="upper left",
@@ -428,32 +483,12 @@ class Explorer(widgets.VBox):
         t = np.linspace(0.0, t_end, self.n_points)
         with np.errstate(over="ignore", invalid="ignore", under="ignore", divide="ignore"):
             resp = exact_response(osc, force, t)
+            vals = readout(osc, force, t_end, self.n_points, response=resp).as_dict()
             ss = steady_state(osc, force)
-            ts = settling_time(osc, force)
-            if not (np.all(np.isfinite(resp.x)) and np.all(np.isfinite(resp.v))):
-                raise ParameterError(
-                    "the exact response overflows in this window (non-finite values): shorten t_end or change m, k, F0"
-                )
-            omega_n = osc.natural_frequency
-            top, step = _omega_range(omega_n, force.omega)
-            grid = _omega_grid(omega_n, osc.damping_ratio, top)
+            top, step = _omega_range(vals["omega_n"], force.omega)
+            grid = _omega_grid(vals["omega_n"], osc.damping_ratio, top)
             curve = magnification(osc, grid)
             paper = simulate(osc, force, t_end, self.n_points) if rk45 else None
-        vals = {
-            "omega_n": omega_n,
-            "f_n": omega_n / TWO_PI,
-            "omega": force.omega,
-            "f": force.frequency_hz,
-            "ratio": force.omega / omega_n,
-            "zeta": osc.damping_ratio,
-            "regime": osc.regime,
-            "magnification": ss.magnification,
-            "amplitude": ss.amplitude,
-            "peak": float(np.max(np.abs(resp.x))),
-            "settling": ts,
-            "steady_reached": "yes" if ts <= t_end else "no",
-            "t_end": t_end,
-        }
         if paper is not None:
             vals["rk45_max_error"] = float(np.max(np.abs(paper.x - resp.x)))
             vals["rk45_nfev"] = paper.nfev
@@ -649,8 +684,6 @@ class Explorer(widgets.VBox):
     def _repr_mimebundle_(self, **kwargs):
         """Widget view, plus for renderers without widget state (the HTML report) the
         static JavaScript slider panel at the same parameters, a PNG and a short text."""
-        from .static_page import slider_panel_html
-
         data = super()._repr_mimebundle_(**kwargs)
         if data is None:  # pragma: no cover - ipywidgets returns a bundle
             return None
@@ -716,7 +749,7 @@ def explorer(
     c: float = 0.5,
     omega: float = 4.47,
     t_end: float = 50.0,
-    n_points: int = 5001,
+    n_points: int = N_POINTS,
     show_rk45: bool = False,
 ) -> Explorer:
     """Interactive explorer of the forced oscillator from rest.
@@ -766,61 +799,8 @@ def explorer(
     return Explorer(m=m, k=k, F0=F0, c=c, omega=omega, t_end=t_end, n_points=n_points, show_rk45=show_rk45)
 
 
-def benchmark_updates(repeats: int = 30) -> dict:
-    """Time a slider update against rebuilding the figure, side by side in one run.
-
-    Each repeat moves a slider of one explorer by one step, alternating the
-    forcing frequency (+0.01 rad/s) and the damping (one log step), through
-    the widget callback (new artist data, relim/autoscale, Agg draw or blit,
-    PNG encoding), then gives a second explorer the same values and times
-    what a naive callback would do: build a new figure from scratch, fill it,
-    draw it and encode it. Afterwards the first explorer's update is timed
-    with the full redraw forced.
-
-    Parameters
-    ----------
-    repeats : int
-        Number of timed updates and of timed rebuilds (>= 1).
-
-    Returns
-    -------
-    dict
-        ``update_median_s`` and ``rebuild_median_s`` (s, medians);
-        ``full_draw_median_s`` (s, the update path forced to redraw the
-        whole figure); ``full_draw_fraction`` (share of the timed updates
-        that had to redraw the background); ``repeats``; ``n_points``.
-    """
-    repeats = check_int("repeats", repeats, low=1, high=10_000)
-    live, naive = explorer(), explorer()
-    t_update, t_rebuild, t_full = [], [], []
-    full0 = live.n_full_draws
-    for i in range(repeats):
-        start = time.perf_counter()
-        if i % 2 == 0:
-            live.omega_slider.value = round(live.omega_slider.value + live.omega_slider.step, 10)
-        else:
-            live.c_slider.value = 10.0 ** (math.log10(live.c_slider.value) + live.c_slider.step)
-        t_update.append(time.perf_counter() - start)
-        if live.error is not None:  # pragma: no cover - the sweep stays in range
-            raise RuntimeError(live.error)
-        naive._active = True  # copy the values without triggering an update
-        naive.omega_slider.value, naive.c_slider.value = live.omega_slider.value, live.c_slider.value
-        naive._active = False
-        start = time.perf_counter()
-        naive._rebuild()
-        t_rebuild.append(time.perf_counter() - start)
-    fraction = (live.n_full_draws - full0) / repeats
-    for _ in range(repeats):
-        start = time.perf_counter()
-        live.update(force_full=True)
-        t_full.append(time.perf_counter() - start)
-    for ex in (live, naive):
-        ex.close()
-    return {
-        "update_median_s": statistics.median(t_update),
-        "rebuild_median_s": statistics.median(t_rebuild),
-        "full_draw_median_s": statistics.median(t_full),
-        "full_draw_fraction": fraction,
-        "repeats": repeats,
-        "n_points": live.n_points,
-    }
+def live_explorer(study: ExploreStudy) -> Explorer:
+    """The explorer started at a study's parameters: its mass, stiffness, force, window, starting
+    forcing frequency and the damping its sliders can hold (:attr:`ExploreStudy.c_start`)."""
+    p = study.params
+    return explorer(m=p.m, k=p.k, F0=p.F0, c=study.c_start, omega=p.omega_res, t_end=p.t_end)
