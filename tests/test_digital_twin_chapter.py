@@ -56,6 +56,7 @@ def _check_words(st) -> None:
         assert not re.search(r"\b(nan|inf)\b", block), block
     for block in prose:
         assert not CODE_NAMES.search(block), block
+        assert not re.search(r"\{(?!numref\})", block), block  # an unformatted placeholder
         assert not re.search(r"\d\.?\d*e[+-]?\d", block), block
     fit, truth = st.fit, st.asset
     ls = abs(fit.k / truth.k - 1)

@@ -38,6 +38,7 @@ def test_figures_have_free_legends_and_true_captions(small):
         cap = make(small)
         check_caption(cap.fig, cap.caption)
         assert cap.name.startswith("fig-twin-") and "/" not in cap.alt
+        assert "{" not in cap.caption, cap.caption  # every placeholder formatted
         for ax in cap.fig.axes:
             if ax.get_legend() is not None:
                 assert legend_overlap(ax) == 0.0, ax.get_title()

@@ -40,7 +40,7 @@ def _cap(word: str) -> str:
 
 def receptance_gap(st: DigitalTwinStudy) -> float:
     """Largest relative difference between the identified and the true receptance over the plotted band, 1."""
-    w = st.frf.omega[_band(st)]
+    w = _fine(st)
     fit, tru = st.fit.oscillator, st.asset
     h_fit = np.abs(1.0 / (fit.k - fit.m * w**2 + 1j * fit.c * w))
     h_tru = np.abs(1.0 / (tru.k - tru.m * w**2 + 1j * tru.c * w))
@@ -49,6 +49,12 @@ def receptance_gap(st: DigitalTwinStudy) -> float:
 
 def _band(st: DigitalTwinStudy) -> np.ndarray:
     return st.frf.force_psd >= 1e-2 * np.max(st.frf.force_psd)
+
+
+def _fine(st: DigitalTwinStudy) -> np.ndarray:
+    """A fine frequency grid over the plotted band, rad/s (the model curves are smooth; the bins are coarse)."""
+    w = st.frf.omega[_band(st)]
+    return np.linspace(float(w[0]), float(w[-1]), 2000)
 
 
 def identification_figure(st: DigitalTwinStudy) -> Captioned:
@@ -66,9 +72,10 @@ def identification_figure(st: DigitalTwinStudy) -> Captioned:
     ax1.set_ylim(-1.45 * ymax, 1.45 * ymax)
     place_legend(ax1, ncol=2)
     keep = _band(st)
-    w = st.frf.omega[keep]
     tru, osc = st.asset, fit.oscillator
-    ax2.semilogy(w, np.abs(st.frf.H[keep]), ls="none", marker=".", ms=3.0, color=dots["color"], label="Welch $H_1$")
+    h_meas = np.abs(st.frf.H[keep])
+    ax2.semilogy(st.frf.omega[keep], h_meas, ls="none", marker=".", ms=3.0, color=dots["color"], label="Welch $H_1$")
+    w = _fine(st)
     ax2.semilogy(w, np.abs(1.0 / (osc.k - osc.m * w**2 + 1j * osc.c * w)), lw=1.2, **case_style("c_nominal"),
                  label="identified")  # fmt: skip
     ax2.semilogy(w, np.abs(1.0 / (tru.k - tru.m * w**2 + 1j * tru.c * w)), lw=1.2, **case_style("exact"),
@@ -217,7 +224,7 @@ def tradeoff_figure(st: DigitalTwinStudy) -> Captioned:
         f"{st.params.threshold:g}. {_cap(left)}: the average run length to a false alarm, measured on the healthy "
         f"records with the CUSUM restarted after each alarm (black dots, ± two standard errors, where at least "
         f"{MIN_ALARMS} alarms occurred) and from the Markov-chain theory (black dashed, drawn as far as the chain "
-        "computes it). {_cap(right)}: the mean detection delay of "
+        f"computes it). {_cap(right)}: the mean detection delay of "
         f"{faults}, each over its {next(iter(st.detection.values())).runs} faulty records."
     )
     alt = (
