@@ -1,4 +1,5 @@
-"""The Duffing chapter's presentation: figures, tables, sentences and the kernel-free panel (JS vs Python)."""
+"""The Duffing chapter's slider panel: the kernel-free fragment, the JupyterLab widget, and its JavaScript
+against the Python closed forms. The chapter's figures, tables and sentences: tests/test_duffing_chapter.py."""
 
 from __future__ import annotations
 
@@ -9,61 +10,9 @@ import pytest
 from conftest import open_offline
 
 from vibration import Duffing, ParameterError, folds, hb_amplitudes, response_curve
-from vibration.presentation import duffing as pres
-from vibration.presentation.style import legend_overlap
+from vibration.chapters.duffing import panel as pres
+from vibration.presentation.style import case_style
 from vibration.publishing.mathml import external_urls
-
-
-@pytest.fixture(scope="module")
-def study():
-    return pres.duffing_study(n_sweep=60, n_lyapunov=300)
-
-
-def test_figures_keep_legends_off_the_data(study):
-    import matplotlib.pyplot as plt
-
-    for make in (pres.frequency_response_figure, pres.sweep_figure, pres.chaos_figure):
-        fig = make(study)
-        for ax in fig.axes:
-            if ax.get_legend() is not None:
-                assert legend_overlap(ax) == 0.0, make.__name__
-        plt.close(fig)
-    fig = pres.paper_figure(study)
-    assert fig.axes[0].get_legend() is not None
-    plt.close(fig)
-
-
-def test_tables_have_names_units_and_no_nan(study):
-    for make in (pres.hb_table, pres.stability_table, pres.fold_table, pres.history_table, pres.lyapunov_table,
-                 pres.lyapunov_runs_table, pres.lyapunov_convergence_table, pres.checks_table):  # fmt: skip
-        t = make(study)
-        assert t.name.startswith("tab-duffing-")
-        text = repr(t)
-        assert "nan" not in text.lower()
-    assert all(r["agree"] is True for r in pres.stability_table(study).rows)
-
-
-def test_sentences_follow_the_results(study):
-    note = pres.closing_note(study)
-    for r in pres.fold_comparison(study):
-        assert f"{r['hb']:.5g}" in note and f"{r['time']:.5g}" in note
-    assert "chaotic" in pres.lyapunov_sentence(study)
-    for r in pres.fold_comparison(study):
-        assert f"{r['orbit']:.6g}" in note and r["inside"] is True
-    pooled, se, _, _ = study.pooled
-    assert f"{pres._pm(pooled, se)}" in pres.lyapunov_sentence(study)
-    assert "share no trajectory" in pres.lyapunov_sentence(study) and "by construction" in pres.lyapunov_sentence(study)
-
-
-def test_published_comparison_keeps_to_its_scope(study):
-    import dataclasses
-
-    text = pres.published_sentence(study)
-    assert "0.0999" in text and "standard errors" in text
-    other = dataclasses.replace(study, F0_ueda=5.0)
-    assert "no published value to compare with" in pres.published_sentence(other)
-    assert "beyond it" in pres.trust_sentence(study)  # 2.237 m > 1.77 m at k3 = 2 N/m^3
-    assert "whichever way" in pres.paper_sentence(study)
 
 
 def test_panel_fragment_is_self_contained():
@@ -71,6 +20,7 @@ def test_panel_fragment_is_self_contained():
     assert frag.startswith('<div class="vib-duffing"') and frag.rstrip().endswith("</div>")
     assert external_urls(frag) == [] and "http" not in frag.replace("http://www.w3.org/2000/svg", "")
     assert "window.vibrationDuffing" in frag and 'type="range"' in frag and "N/m" in frag
+    assert case_style("hardening")["color"] in frag and case_style("softening")["color"] in frag  # the book's colours
     with pytest.raises(ParameterError, match="k3"):
         pres.hb_panel_html(k3=10.0, k3_range=5.0)
     with pytest.raises(ParameterError, match="c"):
@@ -83,6 +33,7 @@ def test_explorer_bundle_carries_the_static_panel():
     bundle = ex._repr_mimebundle_()
     assert "application/vnd.jupyter.widget-view+json" in bundle
     assert bundle["text/html"].startswith('<div class="vib-duffing"') and "10.0" in bundle["text/html"]
+    assert bundle["text/plain"] == "HBExplorer(k₃ = 2 N/m³, F₀ = 10 N)"
 
 
 def _page(tmp_path, frag):

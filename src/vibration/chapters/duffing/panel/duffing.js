@@ -1,4 +1,4 @@
-/* Kernel-free harmonic-balance panel of the Duffing chapter (vibration.presentation.duffing).
+/* Kernel-free harmonic-balance panel of the Duffing chapter (vibration.chapters.duffing.panel).
    The same closed forms as vibration.physics.duffing: the amplitude cubic (hbAmplitudes), the
    amplitude-parametrised response curve (responseCurve), its peak and folds. No network, no library. */
 (function () {
@@ -166,7 +166,9 @@
     const cur = responseCurve(p, 700);
     const aMax = Math.max(...cur.A, 1e-12) * 1.12;
     const X = w => L + (R - L) * w / p.omega_max, Y = a => B - (B - T) * a / aMax;
-    const col = p.k3 >= 0 ? "#1f77b4" : "#d62728";
+    // the book's colours of the hardening and softening springs (data-colors, from presentation.style.CASES)
+    const colors = JSON.parse(panel.getAttribute("data-colors") || "{}");
+    const col = p.k3 >= 0 ? (colors.hardening || "#D55E00") : (colors.softening || "#56B4E9");
     // axes and ticks
     svg.appendChild(el("rect", {x: L, y: T, width: R - L, height: B - T, fill: "none", stroke: "#999"}));
     const step = w => { const e = Math.pow(10, Math.floor(Math.log10(w / 5))); const f = w / 5 / e; return (f < 2 ? 1 : f < 5 ? 2 : 5) * e; };

@@ -1,0 +1,305 @@
+"""Chapter 9's figures, each a :class:`~vibration.presentation.captions.Captioned` with a caption built from
+the figure's own layout and the study's numbers.
+
+Colours follow the book's visual language (:data:`vibration.presentation.style.CASES`): the hardening
+spring, the softening spring and the linear spring keep their colours in every figure; a stable branch is
+solid, an unstable one dashed, a backbone dotted.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from vibration.chapters.duffing.notation import sig, within
+from vibration.chapters.duffing.study import DuffingStudy, SpringCase
+from vibration.physics.duffing import backbone
+from vibration.presentation.captions import Captioned, panel_words
+from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
+
+STABLE_LS, UNSTABLE_LS = "-", "--"
+#: How a caption names each case's colour (the colours of :data:`vibration.presentation.style.CASES`).
+COLOUR_WORD = {"hardening": "red", "softening": "sky blue", "linear": "dark blue"}
+#: One-harmonic curve under the sweeps: light grey, behind the data.
+CURVE_GREY = "#bbbbbb"
+#: The alt text's axes of the two frequency-response figures.
+AXES = "Two panels of steady amplitude in metres against forcing frequency in radians per second: "
+#: Two curves "coincide" in a caption when they differ by less than this fraction of their scale.
+COINCIDE = 1e-3
+
+
+def _k3(case: SpringCase) -> str:
+    return f"k₃ = {case.duffing.k3:g} N/m³".replace("-", "−")
+
+
+def plot_curve(ax, omega, amplitude, stable, color, label) -> bool:
+    """Response curve, stable parts solid and unstable parts dashed; returns whether a dashed part was drawn."""
+    breaks = np.flatnonzero(np.diff(stable.astype(int))) + 1
+    first = {True: True, False: True}
+    dashed = False
+    for seg in np.split(np.arange(omega.size), breaks):
+        if seg.size == 0:
+            continue
+        s = bool(stable[seg[0]])
+        idx = np.concatenate([[seg[0] - 1] if seg[0] > 0 else [], seg]).astype(int)  # join the pieces
+        lab = None
+        if first[s]:
+            lab = f"{label}, {'stable' if s else 'unstable'}"
+            first[s] = False
+        ax.plot(omega[idx], amplitude[idx], color=color, ls=STABLE_LS if s else UNSTABLE_LS, lw=1.5 if s else 1.1,
+                label=lab)  # fmt: skip
+        dashed |= not s
+    return dashed
+
+
+def _join(parts: list[str]) -> str:
+    """Clauses joined by semicolons, the first letter capitalised (and nothing else changed)."""
+    text = "; ".join(parts)
+    return text[:1].upper() + text[1:]
+
+
+# ------------------------------------------------------------------------------ frequency response
+
+
+def frequency_response_figure(study: DuffingStudy) -> Captioned:
+    """Harmonic-balance response curves of the hardening and the softening spring, backbones, folds, linear curve."""
+    fig, axes = figure(1, 2, height=3.7, sharey=True)
+    p = study.params
+    lin = case_style("linear")
+    for ax, case in zip(axes, study.cases, strict=True):
+        ax.plot(study.linear_omega, study.linear_amplitude_curve, color=lin["color"], ls=lin["linestyle"], lw=0.9,
+                label="linear spring")  # fmt: skip
+        plot_curve(ax, case.curve_omega, case.curve_amplitude, case.curve_stable, case_style(case.label)["color"],
+                   f"$k_3$ = {case.duffing.k3:g} N/m$^3$")  # fmt: skip
+        a_bb = np.linspace(0.0, 1.1 * np.nanmax(case.curve_amplitude), 200)
+        ax.plot(backbone(case.duffing, a_bb), a_bb, color="k", lw=0.8, ls=":", label="backbone")
+        f = case.folds
+        if f.bistable:
+            ax.plot([f.omega_low, f.omega_high], [f.amplitude_low, f.amplitude_high], "o", ms=4.5, mfc="white",
+                    color="k", label="folds")  # fmt: skip
+        ax.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
+        ax.set_title(f"{case.label} spring")
+        ax.set_xlim(case.curve_omega.min(), case.curve_omega.max())
+    axes[0].set_ylabel(r"amplitude $A$ (m)")
+    axes[0].set_ylim(0.0, 1.7 * max(np.nanmax(c.curve_amplitude) for c in study.cases))  # room for the legends
+    for ax in axes:
+        place_legend(ax)
+    words = panel_words(fig)
+    parts = []
+    for word, case in zip(words, study.cases, strict=True):
+        shape = (
+            f"two stable branches (solid) joined by an unstable one (dashed) between the folds at "
+            f"{sig(case.folds.omega_low, 4)} and {sig(case.folds.omega_high, 4)} rad/s (open circles)"
+            if case.folds.bistable
+            else "a single-valued, stable curve (solid)"
+        )
+        parts.append(f"{word}, the {case.label} spring with {_k3(case)} ({COLOUR_WORD[case.label]}): {shape}")
+    caption = (
+        f"One-harmonic frequency response of the paper's oscillator (m = {p.m:g} kg, k = {p.k:g} N/m, "
+        f"c = {p.c_nominal:g} N s/m, F₀ = {p.F0:g} N) with a cubic spring. {_join(parts)}. In both "
+        f"panels the dotted black line is the backbone and the {COLOUR_WORD['linear']} line the linear spring "
+        "(k₃ = 0)."
+    )
+    lean = [
+        f"the {c.label} spring's leans to {'higher' if c.folds.peak_omega > c.linear_peak_omega else 'lower'}"
+        for c in study.cases
+    ]
+    alt = AXES + f"next to the linear resonance curve, {lean[0]} frequencies and {lean[1]} ones."
+    return Captioned(fig, caption, "fig-duffing-hb", alt)
+
+
+# ------------------------------------------------------------------------------------------ sweeps
+
+
+def sweep_figure(study: DuffingStudy) -> Captioned:
+    """Stepped sweeps up and down over the harmonic-balance curve and the continued periodic orbit."""
+    fig, axes = figure(1, 2, height=3.7, sharey=True)
+    any_dashed, any_branch = False, False
+    for ax, case in zip(axes, study.cases, strict=True):
+        col = case_style(case.label)["color"]
+        any_dashed |= plot_curve(ax, case.curve_omega, case.curve_amplitude, case.curve_stable, CURVE_GREY,
+                                 "one harmonic")  # fmt: skip
+        if case.branch is not None:
+            any_branch = True
+            b = case.branch
+            ax.plot(b.omega, b.amplitude, color="k", lw=0.7, label="periodic orbit (continuation)")
+            ax.plot([f.omega for f in b.folds], [f.amplitude for f in b.folds], "s", ms=4.5, mfc="white", color="k",
+                    label="folds of the orbit")  # fmt: skip
+        ax.plot(case.up.omega, case.up.amplitude, "^", ms=3.2, color=col, label="sweep up")
+        ax.plot(case.down.omega, case.down.amplitude, "v", ms=3.2, mfc="none", color="k", mew=0.7, label="sweep down")
+        for jump, res in ((case.jump_up, case.up), (case.jump_down, case.down)):
+            if jump is None:
+                continue
+            wj = 0.5 * (jump[0] + jump[1])
+            a_before, a_after = case.jump_amplitudes(res)
+            if not math.isfinite(a_before):
+                continue
+            ax.annotate("", xy=(wj, a_after), xytext=(wj, a_before),
+                        arrowprops={"arrowstyle": "->", "color": col, "lw": 1.0})  # fmt: skip
+        ax.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
+        ax.set_title(f"{case.label}, $k_3$ = {case.duffing.k3:g} N/m$^3$")
+        ax.set_xlim(case.up.omega.min(), case.up.omega.max())
+    axes[0].set_ylabel(r"steady amplitude $A$ (m)")
+    axes[0].set_ylim(0.0, 1.75 * max(np.nanmax(c.curve_amplitude) for c in study.cases))
+    for ax in axes:
+        place_legend(ax)
+    words = panel_words(fig)
+    parts = []
+    for word, case in zip(words, study.cases, strict=True):
+        jumps = sum(j is not None for j in (case.jump_up, case.jump_down))
+        jump_text = {0: "neither sweep jumps off its branch in this range", 1: "one sweep jumps (arrow)",
+                     2: "both sweeps jump (arrows)"}  # fmt: skip
+        if not case.folds.bistable:
+            jump_text[0] = "a single-valued response, so the sweeps have no branch to leave"
+        parts.append(f"{word}, the {case.label} spring ({COLOUR_WORD[case.label]} triangles): {jump_text[jumps]}")
+    gaps = [c.sweep_orbit_gap() for c in study.cases]
+    gaps = [g for g in gaps if math.isfinite(g)]
+    over = (
+        (
+            " and the periodic orbit of the full equation continued through the band (thin black line, its folds "
+            "open squares)"
+        )
+        if any_branch
+        else ""
+    )
+    agree = (
+        f" Where the continued orbit is drawn, the sweep amplitudes lie on it to within {within(max(gaps))}."
+        if gaps
+        else ""
+    )
+    caption = (
+        "Stepped frequency sweeps by time integration: filled triangles sweeping up, open black triangles sweeping "
+        f"down, over the one-harmonic curve (grey{', its unstable branch dashed' if any_dashed else ''}){over}. "
+        f"{_join(parts)}.{agree}"
+    )
+    alt = (
+        AXES + "the amplitudes of stepped sweeps "
+        "up and down follow different branches of the response curve and jump between them at different "
+        "frequencies."
+        if any(c.jump_up or c.jump_down for c in study.cases)
+        else AXES + "the sweeps up and down follow the response curve without jumping."
+    )
+    return Captioned(fig, caption, "fig-duffing-sweeps", alt)
+
+
+# ------------------------------------------------------------------------------- the paper's scenario
+
+
+def paper_figure(study: DuffingStudy) -> Captioned:
+    """The paper's resonance scenario from rest, linear and with the hardening spring."""
+    fig, ax = figure(1, 1, height=3.2)
+    p, hard = study.params, study.hardening
+    lin, hs, th = case_style("linear"), case_style("hardening"), case_style("threshold")
+    ax.plot(study.paper_t, study.paper_x_linear, color=lin["color"], ls=lin["linestyle"], lw=0.9,
+            label="linear spring (the paper)")  # fmt: skip
+    ax.plot(study.paper_t, study.paper_x_duffing, color=hs["color"], ls=hs["linestyle"], lw=1.0,
+            label=f"$k_3$ = {hard.duffing.k3:g} N/m$^3$")  # fmt: skip
+    trust = study.trust_amplitude
+    drawn = math.isfinite(trust)
+    if drawn:
+        label = "±amplitude where the linear answer fails"
+        ax.axhline(trust, color=th["color"], ls=th["linestyle"], lw=1.0, label=label)
+        ax.axhline(-trust, color=th["color"], ls=th["linestyle"], lw=1.0)
+    ax.set_xlabel(r"time $t$ (s)")
+    ax.set_ylabel(r"displacement $x$ (m)")
+    top = 1.1 * max(np.abs(study.paper_x_linear).max(), trust if drawn else 0.0)
+    ax.set_ylim(-top, top)
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.02, 1.0, 0.1), ncol=3, borderaxespad=0.0, frameon=False)
+    x_lin, x_duf = np.abs(study.paper_x_linear).max(), np.abs(study.paper_x_duffing).max()
+
+    def past(x: float) -> str:
+        return "crosses them" if x > trust else "stays inside them"
+
+    verdict = (
+        f"the linear response (largest |x| {sig(x_lin, 3)} m) {past(x_lin)}, the cubic one (largest |x| "
+        f"{sig(x_duf, 3)} m) {'too' if past(x_lin) == past(x_duf) else past(x_duf)}"
+    )
+    lines = (
+        f" The dotted grey lines at ±{sig(trust, 3)} m mark the amplitude beyond which the linear answer is not "
+        f"trustworthy: {verdict}."
+        if drawn
+        else ""
+    )
+    caption = (
+        f"The paper's resonance scenario from rest, forced at ω = {p.omega_res:g} rad/s for {p.t_end:g} s: "
+        f"displacement with the linear spring ({COLOUR_WORD['linear']}, the paper's model) and with the hardening "
+        f"spring {_k3(hard)} ({COLOUR_WORD['hardening']}).{lines}"
+    )
+    alt = (
+        "Displacement in metres against time in seconds from rest: the response with the hardening spring "
+        f"{'stays smaller than' if x_duf < x_lin else 'grows larger than'} the linear one."
+    )
+    return Captioned(fig, caption, "fig-duffing-paper", alt)
+
+
+# ------------------------------------------------------------------------------------------- chaos
+
+
+def chaos_figure(study: DuffingStudy) -> Captioned:
+    """Poincaré sections of Ueda's oscillator and the running largest Lyapunov exponent by both methods."""
+    fig, (ax1, ax2) = figure(1, 2, height=3.6)
+    p = study.params
+    chaos_col, per_col = OKABE_ITO["black"], case_style("hardening")["color"]
+    ax1.plot(study.section_chaos[:, 0], study.section_chaos[:, 1], ".", ms=1.2, color=chaos_col,
+             label=f"$F$ = {p.F0_ueda:g} N")  # fmt: skip
+    ax1.plot(study.section_periodic[:, 0], study.section_periodic[:, 1], "o", ms=6, color=per_col,
+             label=f"$F$ = {p.F0_ueda_periodic:g} N")  # fmt: skip
+    ax1.set_xlabel(r"$x$ at $t = 2\pi n$ (m)")
+    ax1.set_ylabel(r"$\dot x$ at $t = 2\pi n$ (m/s)")
+    ax1.set_title("stroboscopic Poincaré section")
+    place_legend(ax1)
+    styles = {"qr": "-", "benettin": "--"}
+    names = {"qr": "variational + QR", "benettin": "two trajectories"}
+    for which, col, force in (("chaotic", chaos_col, p.F0_ueda), ("periodic", per_col, p.F0_ueda_periodic)):
+        for method in ("qr", "benettin"):
+            t, lam = study.running(which, method)
+            ax2.plot(t, lam, color=col, ls=styles[method], lw=1.0, label=f"$F$ = {force:g} N: {names[method]}")
+    ax2.axhline(0.0, color="k", lw=0.6)
+    ax2.set_xscale("log")
+    ax2.set_xlabel(r"averaging time (s)")
+    ax2.set_ylabel(r"largest exponent $\lambda_1$ (1/s)")
+    ax2.set_title("Lyapunov exponent, running estimate")
+    place_legend(ax2)
+
+    left, right = (w[:1].upper() + w[1:] for w in panel_words(fig))
+    n_chaos, n_per = study.section_points("chaotic"), study.section_points("periodic")
+
+    def section(n: int, total: int) -> str:
+        if n == 1:
+            return "a single point: a periodic motion of the forcing period"
+        if n < total:
+            return f"{n} points: a periodic motion of {n} forcing periods"
+        return f"{n} distinct points spread over a folded set, no repeating pattern"
+
+    dot = "a red circle" if n_per == 1 else "red circles"
+    gaps = {w: study.method_gap(w) for w in ("chaotic", "periodic")}
+    both = all(g < COINCIDE for g in gaps.values())
+    coincide = (
+        f"for each forcing the two methods' curves coincide (they differ by less than {100 * COINCIDE:g} % of the "
+        "final estimate after the first 10 periods)"
+        if both
+        else "; ".join(
+            f"at F = {f:g} N the two methods' curves "
+            + ("coincide" if gaps[w] < COINCIDE else f"differ by up to {within(gaps[w], COINCIDE)}")
+            for w, f in (("chaotic", p.F0_ueda), ("periodic", p.F0_ueda_periodic))
+        )
+    )
+    caption = (
+        f"Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = F cos t. {left}: its state once per forcing period "
+        f"(stroboscopic Poincaré section) at F = {p.F0_ueda:g} N (black dots, "
+        f"{section(n_chaos, len(study.section_chaos))}) and at F = {p.F0_ueda_periodic:g} N ({dot}, "
+        f"{section(n_per, len(study.section_periodic))}). {right}: the running estimate of the largest "
+        "Lyapunov exponent against the averaging time (logarithmic axis), by the variational equations with QR "
+        f"(solid) and by two trajectories (dashed); {coincide}."
+    )
+    final = {w: study.running(w, "qr")[1][-1] for w in ("chaotic", "periodic")}
+    alt = (
+        f"Left, a Poincaré section of {n_chaos} points for the stronger forcing and {n_per} for the weaker one; "
+        "right, running estimates of the largest Lyapunov exponent against averaging time, settling "
+        + ("above zero" if final["chaotic"] > 0 else "below zero")
+        + " for the stronger forcing and "
+        + ("below zero" if final["periodic"] < 0 else "above zero")
+        + " for the weaker one."
+    )
+    return Captioned(fig, caption, "fig-duffing-chaos", alt)

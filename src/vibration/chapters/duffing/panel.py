@@ -1,0 +1,201 @@
+"""Chapter 9's slider panel: k₃ and F₀ move the harmonic-balance curve (all branches), its backbone and folds.
+
+:func:`hb_panel_html` is the kernel-free panel (``panel/duffing.js`` computes the closed forms in the
+browser, exposed as ``window.vibrationDuffing`` for the tests); :func:`hb_explorer` is the JupyterLab
+widget (ipywidgets), whose ``text/html`` bundle is that panel at the sliders' values, so renderers without a
+kernel still get a working panel.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import html
+import io
+import itertools
+import json
+import math
+from importlib.resources import files
+
+import numpy as np
+
+from vibration.chapters.duffing.figures import plot_curve
+from vibration.physics.duffing import Duffing, backbone, folds, response_curve
+from vibration.physics.model import check_real
+from vibration.presentation.style import case_style, figure, place_legend
+
+_counter = itertools.count(1)
+
+
+def _asset(name: str) -> str:
+    return files("vibration.chapters.duffing").joinpath("panel", name).read_text(encoding="utf-8")
+
+
+def _colors() -> dict:
+    return {name: case_style(name)["color"] for name in ("hardening", "softening")}
+
+
+def _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max) -> dict:
+    """The slider panel's values; a range left as None covers the chapter's case (twice its value, at least the
+    paper's range), so that a run with other parameters still shows its resonance and its force."""
+    m = check_real("m", m, low=0.0, low_open=True, unit="kg")
+    c = check_real("c", c, low=0.0, low_open=True, unit="N s/m")
+    k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
+    if omega_max is None:
+        omega_max = max(8.0, 2.0 * math.sqrt(k / m))
+    if k3_range is None:
+        k3_range = max(5.0, 2.0 * abs(check_real("k3", k3, unit="N/m^3")))
+    if F0_max is None:
+        F0_max = max(20.0, 2.0 * check_real("F0", F0, low=0.0, low_open=True, unit="N"))
+    k3_range = check_real("k3_range", k3_range, low=0.0, low_open=True, unit="N/m^3")
+    k3 = check_real("k3", k3, low=-k3_range, high=k3_range, unit="N/m^3")
+    F0_max = check_real("F0_max", F0_max, low=0.0, low_open=True, unit="N")
+    F0 = check_real("F0", F0, low=0.0, low_open=True, high=F0_max, unit="N")
+    omega_max = check_real("omega_max", omega_max, low=0.0, low_open=True, unit="rad/s")
+    return {"m": m, "c": c, "k": k, "k3": k3, "F0": F0, "omega_max": omega_max, "k3_range": k3_range, "F0_max": F0_max}
+
+
+def hb_panel_html(
+    m: float = 1.0,
+    c: float = 0.5,
+    k: float = 20.0,
+    k3: float = 2.0,
+    F0: float = 5.0,
+    omega_max: float | None = None,
+    k3_range: float | None = None,
+    F0_max: float | None = None,
+) -> str:
+    """Kernel-free slider panel: k3 and F0 move the harmonic-balance curve (all branches).
+
+    Self-contained HTML (inline ``panel/duffing.css`` and ``panel/duffing.js``, no URL): the browser
+    computes the curve by the amplitude parametrisation of :func:`vibration.physics.duffing.response_curve`,
+    its stability, the folds and the peak by the closed forms of :mod:`vibration.physics.duffing`.
+
+    Parameters
+    ----------
+    m, c, k : float
+        Mass (kg), damping (N s/m, > 0), linear stiffness (N/m, > 0).
+    k3 : float
+        Starting cubic stiffness, N/m^3, within ``±k3_range``.
+    F0 : float
+        Starting force amplitude, N, in ``(0, F0_max]``.
+    omega_max : float, optional
+        Right end of the frequency axis, rad/s (default: 8 or twice the natural frequency, the larger).
+    k3_range : float, optional
+        The k3 slider spans ``-k3_range`` to ``k3_range`` N/m^3 (default: 5 or twice |k3|, the larger).
+    F0_max : float, optional
+        The F0 slider spans ``F0_max / 200`` to ``F0_max`` N (default: 20 or twice F0, the larger).
+
+    Returns
+    -------
+    str
+        ``<div class="vib-duffing" ...>`` with its style, controls, an SVG and scripts.
+
+    Examples
+    --------
+    >>> frag = hb_panel_html()
+    >>> frag.startswith('<div class="vib-duffing"'), "<script src" in frag or "<link" in frag
+    (True, False)
+    """
+    params = _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max)
+    k3_range, F0_max = params["k3_range"], params["F0_max"]
+    digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode()).hexdigest()[:8]
+    pid = f"vib-duffing-{digest}-{next(_counter)}"
+    e = html.escape
+    return f"""<div class="vib-duffing" id="{e(pid)}" data-params="{e(json.dumps(params))}" \
+data-colors="{e(json.dumps(_colors()))}">
+<style>
+{_asset("duffing.css")}</style>
+<p class="vd-sub">One-harmonic frequency response of \
+<i>m ẍ + c ẋ + k x + k<sub>3</sub> x<sup>3</sup> = F<sub>0</sub> cos(ωt)</i> \
+with m = {m:g} kg, c = {c:g} N s/m, k = {k:g} N/m, computed in your browser: solid stable, dashed unstable, \
+dotted the backbone, circles the folds.</p>
+<noscript>This panel needs JavaScript to draw its plot.</noscript>
+<div class="vd-controls">
+<label for="{e(pid)}-k3">cubic stiffness k<sub>3</sub></label>
+<input type="range" class="vd-k3" id="{e(pid)}-k3" min="{-k3_range:g}" max="{k3_range:g}" \
+step="{k3_range / 500:g}" value="{params["k3"]!r}">
+<output class="vd-k3-out" for="{e(pid)}-k3"></output>
+<label for="{e(pid)}-F0">force amplitude F<sub>0</sub></label>
+<input type="range" class="vd-F0" id="{e(pid)}-F0" min="{F0_max / 200:g}" max="{F0_max:g}" \
+step="{F0_max / 200:g}" value="{params["F0"]!r}">
+<output class="vd-F0-out" for="{e(pid)}-F0"></output>
+</div>
+<svg class="vd-plot" viewBox="0 0 640 300" role="img" \
+aria-label="amplitude in m against forcing frequency in rad/s"></svg>
+<p class="vd-readout"></p>
+<script>
+{_asset("duffing.js")}</script>
+<script>window.vibrationDuffing.mount(document.getElementById({json.dumps(pid)}));</script>
+</div>
+"""
+
+
+class HBExplorer:
+    """JupyterLab sliders (ipywidgets) for k3 and F0 over the harmonic-balance curve.
+
+    Displays as the live widget in JupyterLab; renderers without a kernel get the kernel-free panel of
+    :func:`hb_panel_html` at the same parameters.
+    """
+
+    def __init__(self, m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=None, k3_range=None, F0_max=None):
+        import ipywidgets as widgets
+        import matplotlib.pyplot as plt
+
+        self.params = _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max)
+        k3_range, F0_max = self.params["k3_range"], self.params["F0_max"]
+        self.k3_slider = widgets.FloatSlider(value=k3, min=-k3_range, max=k3_range, step=k3_range / 500,
+                                             description="k₃ (N/m³)", continuous_update=False)  # fmt: skip
+        self.F0_slider = widgets.FloatSlider(value=F0, min=F0_max / 200, max=F0_max, step=F0_max / 200,
+                                             description="F₀ (N)", continuous_update=False)  # fmt: skip
+        self.image = widgets.Image(format="png", layout=widgets.Layout(max_width="100%", height="auto"))
+        with plt.ioff():
+            self.fig, self.ax = figure(1, 1, height=3.4)
+        self.widget = widgets.VBox([widgets.HBox([self.k3_slider, self.F0_slider]), self.image])
+        self.k3_slider.observe(lambda _: self.update(), names="value")
+        self.F0_slider.observe(lambda _: self.update(), names="value")
+        self.update()
+
+    def update(self) -> None:
+        """Redraw the curve for the sliders' values."""
+        p = self.params
+        d = Duffing(p["m"], p["c"], p["k"], float(self.k3_slider.value))
+        F0 = float(self.F0_slider.value)
+        ax = self.ax
+        ax.clear()
+        w, a, st = response_curve(d, F0, p["omega_max"], n=801)
+        plot_curve(ax, w, a, st, _colors()["hardening" if d.k3 >= 0 else "softening"], f"$k_3$ = {d.k3:.3g} N/m$^3$")
+        a_bb = np.linspace(0.0, 1.1 * np.nanmax(a), 200)
+        ax.plot(backbone(d, a_bb), a_bb, "k:", lw=0.8, label="backbone")
+        f = folds(d, F0)
+        if f.bistable:
+            ax.plot([f.omega_low, f.omega_high], [f.amplitude_low, f.amplitude_high], "o", mfc="white", color="k",
+                    label="folds")  # fmt: skip
+        ax.set_xlim(0.0, p["omega_max"])
+        ax.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
+        ax.set_ylabel(r"amplitude $A$ (m)")
+        place_legend(ax)
+        buf = io.BytesIO()
+        self.fig.savefig(buf, format="png")
+        self.image.value = buf.getvalue()
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        data = self.widget._repr_mimebundle_()
+        p = dict(self.params, k3=float(self.k3_slider.value), F0=float(self.F0_slider.value))
+        data["text/html"] = hb_panel_html(**p)
+        data["text/plain"] = f"HBExplorer(k₃ = {p['k3']:g} N/m³, F₀ = {p['F0']:g} N)"
+        return data
+
+
+def hb_explorer(m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=None, k3_range=None, F0_max=None) -> HBExplorer:
+    """JupyterLab explorer of the harmonic-balance curve (k3 in N/m^3 and F0 in N sliders).
+
+    Parameters are those of :func:`hb_panel_html` (kg, N s/m, N/m, N/m^3, N, rad/s).
+
+    Examples
+    --------
+    >>> ex = hb_explorer()
+    >>> ex.k3_slider.value = -1.0
+    >>> round(float(ex.ax.get_xlim()[1]), 4)      # rad/s: twice the natural frequency sqrt(20)
+    8.9443
+    """
+    return HBExplorer(m, c, k, k3, F0, omega_max, k3_range, F0_max)
