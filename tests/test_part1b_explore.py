@@ -16,8 +16,9 @@ from test_part1b_prose import header_problems, prose_problems, repeated, table_t
 
 from vibration import Oscillator, SineForce, exact_response, settling_time
 from vibration.chapters.explore import ExploreStudy, Params, explore_study, panel, readout, text
+from vibration.chapters.explore.figure import build_figure, figure_words
 from vibration.chapters.explore.study import C_MAX, C_MIN
-from vibration.chapters.explore.widget import build_figure, figure_words, live_explorer
+from vibration.chapters.explore.widget import live_explorer
 from vibration.physics.audit import resonant_peak
 
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "vibration" / "chapters" / "explore"

@@ -2,8 +2,8 @@
 
 Modules: :mod:`.params` (the chapter's parameter schema), :mod:`.study` (the readout and the experiments
 the chapter reports, one frozen record), :mod:`.text` (sentences, the readout table, key results),
-:mod:`.widget` (the live JupyterLab explorer), :mod:`.panel` with ``panel/sliders.{js,css}`` (the
-kernel-free panel of the book) and :mod:`.bench` (the slider-update benchmark).
+:mod:`.widget` (the live JupyterLab explorer) and :mod:`.figure` (its figure), :mod:`.panel` with
+``panel/sliders.{js,css}`` (the kernel-free panel of the book) and :mod:`.bench` (the slider-update benchmark).
 """
 
 from vibration.chapters.explore.params import SCHEMA, Params

@@ -2,7 +2,7 @@
 
 Every number is read from the study; every comparison word is decided from those numbers. The
 description of what the explorer and the book's panel draw is read from the figure and the panel
-themselves (:func:`vibration.chapters.explore.widget.figure_words`,
+themselves (:func:`vibration.chapters.explore.figure.figure_words`,
 :func:`vibration.chapters.explore.panel.panel_facts`), so it cannot drift from the drawing.
 
 Examples
@@ -19,9 +19,9 @@ from __future__ import annotations
 
 import math
 
+from vibration.chapters.explore.figure import build_figure, figure_words
 from vibration.chapters.explore.panel import OMEGA_STEP, panel_facts
 from vibration.chapters.explore.study import C_MAX, C_MIN, ExploreStudy
-from vibration.chapters.explore.widget import build_figure, figure_words
 from vibration.presentation.narrative import g
 from vibration.presentation.tables import Column, Table
 

@@ -17,8 +17,8 @@ no frontend extension beyond ipywidgets itself. The artists that move are ``anim
 a cached background (axes, ticks, labels, legend); the background is redrawn only when an axis' view
 limits change. Autoscaling uses ``axes.autolimit_mode = "round_numbers"``, so limits move in tick-sized
 steps and most slider steps take the blit path. The PNG is written with zlib level 1 and no row filter
-(:func:`_png`). No decimation: all ``n_points`` samples are drawn (Agg's path simplification keeps that
-cheap).
+(:func:`vibration.chapters.explore.figure.png`). No decimation: all ``n_points`` samples are drawn (Agg's path
+simplification keeps that cheap).
 
 Measured with :func:`vibration.chapters.explore.bench.benchmark_updates` (5001 samples, 1000 x 540 px,
 on the project's 2-core machine): median 17 ms from slider change to new PNG bytes; the steps whose
@@ -31,90 +31,28 @@ from __future__ import annotations
 
 import base64
 import html
-import io
 import math
-import struct
-import zlib
 from dataclasses import dataclass
 
 import ipywidgets as widgets
 import matplotlib as mpl
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
-from PIL import Image
 
+from vibration.chapters.explore.figure import STYLE, build_figure, omega_grid, omega_range, png_small
+from vibration.chapters.explore.figure import png as png_frame
 from vibration.chapters.explore.panel import slider_panel_html
 from vibration.chapters.explore.study import C_MAX, C_MIN, N_POINTS, ExploreStudy, readout
 from vibration.physics.exact import exact_response, steady_state
 from vibration.physics.frequency import magnification
 from vibration.physics.model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real
 from vibration.physics.numerics import simulate
-from vibration.presentation.style import OKABE_ITO
 
-__all__ = ["Explorer", "build_figure", "explorer", "live_explorer"]
-
-TWO_PI = 2.0 * math.pi
-
-#: The look of the figure's lines: the response in the book's blue, the steady-state amplitudes and the
-#: operating point in vermillion (dashed lines), the settling time and the natural frequency grey dotted,
-#: the paper's RK45 orange dashed.
-STYLE = {
-    "response": {"color": OKABE_ITO["blue"], "lw": 0.9},
-    "curve": {"color": OKABE_ITO["blue"], "lw": 1.2},
-    "envelope": {"color": OKABE_ITO["vermillion"], "lw": 0.9, "ls": "--"},
-    "marker": {"color": OKABE_ITO["grey"], "lw": 1.0, "ls": ":"},
-    "rk45": {"color": OKABE_ITO["orange"], "lw": 1.0, "ls": "--"},
-    "point": {"color": OKABE_ITO["vermillion"], "marker": "o", "ms": 7, "ls": "none"},
-}
-
-#: Figure size (inches) and resolution (dots per inch) of the explorer's image.
-FIGSIZE, DPI = (10.0, 5.4), 100
-
-#: zlib level of the live PNG frames (1: fastest; level 6 costs about 13 ms more per frame here).
-PNG_LEVEL = 1
+__all__ = ["Explorer", "explorer", "live_explorer"]
 
 #: Errors that bad input can raise while computing; shown in the readout, never raised.
 INPUT_ERRORS = (ValueError, TypeError, ArithmeticError, RuntimeError)
-
-
-def _hz(w):
-    return np.asarray(w, dtype=float) / TWO_PI
-
-
-def _rad(f):
-    return np.asarray(f, dtype=float) * TWO_PI
-
-
-def _nice_ceil(x: float) -> float:
-    """Smallest of 1, 1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of ten that is >= x (> 0)."""
-    e = math.floor(math.log10(x))
-    for mant in (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0):
-        v = mant * 10.0**e
-        if v >= x * (1 - 1e-12):
-            return v
-    return 10.0 ** (e + 1)  # pragma: no cover - the loop always returns
-
-
-def _omega_range(omega_n: float, omega: float) -> tuple[float, float]:
-    """Slider maximum and step (rad/s): at least 3 omega_n and 1.5 omega, about 1000-1500 steps."""
-    top = _nice_ceil(max(3.0 * omega_n, 1.5 * omega, 1e-6))
-    step = 10.0 ** (math.floor(math.log10(top)) - 3)
-    return top, step
-
-
-def _omega_grid(omega_n: float, zeta: float, omega_max: float, n: int = 1201) -> np.ndarray:
-    """Frequencies (rad/s) at which the magnification curve is drawn (display sampling only).
-
-    A uniform grid on ``[0, omega_max]`` plus points clustered within a few
-    multiples of ``zeta omega_n`` of ``omega_n``, so that the resonance peak
-    is resolved at the lightest damping of the slider.
-    """
-    base = np.linspace(0.0, omega_max, n)
-    near = omega_n * (1.0 + zeta * np.sinh(np.linspace(-6.0, 6.0, 241)))
-    near = near[(near > 0.0) & (near < omega_max)]
-    return np.unique(np.concatenate([base, near, [omega_n]]))
 
 
 @dataclass(frozen=True)
@@ -144,115 +82,6 @@ _RK45_ROWS = (
     _Row("rk45_max_error", "RK45 max |x − x_exact|", "m", ".3e"),
     _Row("rk45_nfev", "RK45 right-hand-side evaluations", "", "d"),
 )
-
-
-def build_figure() -> tuple[Figure, dict, dict]:
-    """The explorer's figure, its axes (``x``, ``v``, ``m``) and its empty animated artists, by name.
-
-    The time plots sit in the left column (displacement above velocity), the magnification plot fills the
-    right column; :func:`figure_words` reads that layout back for the chapter's description.
-    """
-    fig = Figure(figsize=FIGSIZE, dpi=DPI, layout="none")  # fixed layout: blits need fixed axes
-    FigureCanvasAgg(fig)
-    gs = fig.add_gridspec(
-        2,
-        2,
-        width_ratios=(1.55, 1.0),
-        left=0.085,
-        right=0.985,
-        bottom=0.1,
-        top=0.83,
-        wspace=0.22,
-        hspace=0.2,
-    )
-    with mpl.rc_context({"axes.autolimit_mode": "round_numbers"}):
-        ax_x = fig.add_subplot(gs[0, 0])
-        ax_v = fig.add_subplot(gs[1, 0], sharex=ax_x)
-        ax_m = fig.add_subplot(gs[:, 1])
-    ax_x.tick_params(labelbottom=False)
-    for ax in (ax_x, ax_v):  # short tick labels (offset "1e-3" above), labels at a fixed place
-        ax.ticklabel_format(axis="y", style="sci", scilimits=(-1, 3), useMathText=True)
-        ax.yaxis.set_label_coords(-0.095, 0.5)
-    ax_x.set_ylabel("displacement x (m)")
-    ax_v.set_ylabel("velocity v (m/s)")
-    ax_v.set_xlabel("time t (s)")
-    ax_m.set_xlabel("forcing frequency ω (rad/s)")
-    ax_m.set_ylabel(r"magnification $|X|\,/\,(F_0/k)$ (1)")
-    ax_m.set_yscale("log")
-    sec = ax_m.secondary_xaxis("top", functions=(_hz, _rad))
-    sec.set_xlabel("forcing frequency f (Hz)")
-    for ax in (ax_x, ax_v, ax_m):
-        ax.grid(alpha=0.3)
-        ax.set_autoscalex_on(False)
-
-    def line(ax, **kw):
-        (ln,) = ax.plot([], [], animated=True, **kw)
-        return ln
-
-    def hline(ax, **kw):
-        return ax.axhline(0.0, animated=True, **kw)
-
-    art = {
-        "x_env_hi": hline(ax_x, **STYLE["envelope"]),
-        "x_env_lo": hline(ax_x, **STYLE["envelope"]),
-        "v_env_hi": hline(ax_v, **STYLE["envelope"]),
-        "v_env_lo": hline(ax_v, **STYLE["envelope"]),
-        "x_settle": ax_x.axvline(0.0, animated=True, **STYLE["marker"]),
-        "v_settle": ax_v.axvline(0.0, animated=True, **STYLE["marker"]),
-        "x": line(ax_x, **STYLE["response"]),
-        "v": line(ax_v, **STYLE["response"]),
-        "x_rk45": line(ax_x, **STYLE["rk45"]),
-        "v_rk45": line(ax_v, **STYLE["rk45"]),
-        "omega_n": ax_m.axvline(1.0, animated=True, **STYLE["marker"]),
-        "curve": line(ax_m, **STYLE["curve"]),
-        "point": line(ax_m, **STYLE["point"]),
-    }
-    return fig, {"x": ax_x, "v": ax_v, "m": ax_m}, art
-
-
-_LINESTYLE_WORD = {"--": "dashed", ":": "dotted", "-.": "dash-dotted", "-": "solid"}
-
-
-def figure_words(fig: Figure, axes: dict, art: dict) -> dict[str, str]:
-    """Where each plot sits and how its marked lines are drawn, read from the figure itself.
-
-    Keys: ``x``, ``v``, ``m`` (position words of the displacement, velocity and magnification plots),
-    ``envelope``, ``settle``, ``natural``, ``rk45`` (line-style words), ``hz`` ("Hz above" when the
-    magnification plot has a second axis in Hz, else "").
-    """
-    pos = {k: ax.get_position() for k, ax in axes.items()}
-    centre = {k: ((p.x0 + p.x1) / 2, (p.y0 + p.y1) / 2) for k, p in pos.items()}
-
-    def where(k: str) -> str:
-        others = [o for o in pos if o != k]
-        side = (
-            "left"
-            if all(pos[k].x1 <= pos[o].x0 for o in others if pos[o].x0 >= pos[k].x1)
-            and any(pos[o].x0 >= pos[k].x1 for o in others)
-            else "right"
-            if any(pos[o].x1 <= pos[k].x0 for o in others)
-            else ""
-        )
-        column = [o for o in others if abs(centre[o][0] - centre[k][0]) < 0.05]
-        if not column:
-            return f"{side}, full height" if side else "alone"
-        vertical = "top" if all(centre[k][1] > centre[o][1] for o in column) else "bottom"
-        return f"{vertical} {side}".strip()
-
-    def style(name: str) -> str:
-        return _LINESTYLE_WORD.get(art[name].get_linestyle(), "solid")
-
-    has_hz = any(getattr(child, "get_xlabel", lambda: "")().endswith("(Hz)") for child in axes["m"].child_axes)
-    return {
-        "x": where("x"),
-        "v": where("v"),
-        "m": where("m"),
-        "envelope": style("x_env_hi"),
-        "settle": style("x_settle"),
-        "natural": style("omega_n"),
-        "rk45": style("x_rk45"),
-        "hz": "Hz above" if has_hz else "",
-    }
 
 
 class _NoResponse(Exception):
@@ -324,7 +153,7 @@ class Explorer(widgets.VBox):
         self._dirty = True
         self._active = False
 
-        top, step = _omega_range(osc.natural_frequency, force.omega)
+        top, step = omega_range(osc.natural_frequency, force.omega)
         style = {"description_width": "10.5em"}
         self.omega_slider = widgets.FloatSlider(
             value=force.omega,
@@ -468,7 +297,7 @@ class Explorer(widgets.VBox):
             art = self._art[name]
             if art.get_visible():
                 art.axes.draw_artist(art)
-        return _png(canvas)
+        return png_frame(canvas)
 
     # ------------------------------------------------------------------ update
     def _read(self):
@@ -485,8 +314,8 @@ class Explorer(widgets.VBox):
             resp = exact_response(osc, force, t)
             vals = readout(osc, force, t_end, self.n_points, response=resp).as_dict()
             ss = steady_state(osc, force)
-            top, step = _omega_range(vals["omega_n"], force.omega)
-            grid = _omega_grid(vals["omega_n"], osc.damping_ratio, top)
+            top, step = omega_range(vals["omega_n"], force.omega)
+            grid = omega_grid(vals["omega_n"], osc.damping_ratio, top)
             curve = magnification(osc, grid)
             paper = simulate(osc, force, t_end, self.n_points) if rk45 else None
         if paper is not None:
@@ -687,7 +516,7 @@ class Explorer(widgets.VBox):
         data = super()._repr_mimebundle_(**kwargs)
         if data is None:  # pragma: no cover - ipywidgets returns a bundle
             return None
-        data["image/png"] = base64.b64encode(_png_small(self._canvas)).decode("ascii")
+        data["image/png"] = base64.b64encode(png_small(self._canvas)).decode("ascii")
         try:
             data["text/html"] = slider_panel_html(
                 m=float(self.m_text.value),
@@ -705,41 +534,6 @@ class Explorer(widgets.VBox):
             f"t_end={self.t_end_text.value!r} s)"
         )
         return data
-
-
-def _chunk(tag: bytes, data: bytes) -> bytes:
-    return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data))
-
-
-def _png(canvas: FigureCanvasAgg, level: int = PNG_LEVEL) -> bytes:
-    """The canvas' current Agg buffer as PNG bytes (RGBA, 8 bit).
-
-    Written directly with zlib at ``level`` and PNG filter 0 (none) on every
-    row: half the time of Pillow's encoder at the same zlib level, which
-    tries every row filter (about 9 ms against 18 ms for 1000 x 540 pixels
-    here), for files about the same size on plots.
-    """
-    rgba = np.asarray(canvas.buffer_rgba())
-    h, w, _ = rgba.shape
-    raw = np.empty((h, 4 * w + 1), dtype=np.uint8)
-    raw[:, 0] = 0  # filter type of each scanline: none
-    raw[:, 1:] = rgba.reshape(h, 4 * w)
-    header = struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0)  # 8-bit RGBA, no interlace
-    return b"".join(
-        (
-            b"\x89PNG\r\n\x1a\n",
-            _chunk(b"IHDR", header),
-            _chunk(b"IDAT", zlib.compress(raw, level)),
-            _chunk(b"IEND", b""),
-        )
-    )
-
-
-def _png_small(canvas: FigureCanvasAgg) -> bytes:
-    """The canvas' current Agg buffer as a compact PNG (Pillow, zlib level 9), for storing."""
-    with io.BytesIO() as buf:
-        Image.fromarray(np.asarray(canvas.buffer_rgba())).save(buf, format="png", compress_level=9)
-        return buf.getvalue()
 
 
 def explorer(
