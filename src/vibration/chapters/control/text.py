@@ -24,6 +24,8 @@ ACTIVE = ("PD", "LQR", "PID")
 RESONANT = 0.05
 #: Two steady amplitudes within this relative difference are called the same.
 SAME = 0.01
+#: A move has settled when its steady mean error is below this fraction of the set point.
+SETTLED = 1e-3
 #: A design that uses less than this fraction above the least force for its amplitude wastes none.
 WASTE = 0.1
 
@@ -50,6 +52,12 @@ def delay_ranking(a: ActiveStudy) -> list[str]:
     return sorted(ACTIVE, key=lambda n: a.designs[n].costs.delay_margin)
 
 
+def settled(a: ActiveStudy) -> bool:
+    """Did the force-limited PID move with clamping settle: never at the limit in steady state, mean error tiny?"""
+    cl = a.moves["clamping"]
+    return cl.saturated_ss == 0.0 and abs(cl.mean_error) < SETTLED * max(abs(a.x_ref), 1e-300)
+
+
 def force_excess(a: ActiveStudy) -> tuple[str, float]:
     """The design whose steady RMS force exceeds the least force for its amplitude the most, and by what factor."""
     ratios = {n: d.u_rms / d.floor for n, d in a.designs.items() if math.isfinite(d.u_rms) and d.floor > 0}
@@ -57,8 +65,14 @@ def force_excess(a: ActiveStudy) -> tuple[str, float]:
     return worst, ratios[worst]
 
 
+def _margin(x: float) -> str:
+    """A delay margin in parentheses: seconds, or "any delay" when the loop gain never reaches 1."""
+    return f"{num(x)} s" if math.isfinite(x) else "any delay: its loop gain never reaches 1"
+
+
 def _delay(x: float) -> str:
-    return f"{num(x)} s" if math.isfinite(x) else "any delay (the loop gain never reaches 1)"
+    """A delay margin for a sentence: seconds, or unbounded when the loop gain never reaches 1."""
+    return f"up to {num(x)} s" if math.isfinite(x) else "any length (its loop gain never reaches 1)"
 
 
 def _than(x: float, y: float, smaller: str, larger: str) -> str:
@@ -88,11 +102,16 @@ def key_findings(study: ControlStudy) -> list[str]:
     X, Xp = a.designs[best].amplitude, a.passive_amplitude
     order = delay_ranking(a)
     h = a.hold
-    move = (
-        f"holding it needs $k|x_\\mathrm{{ref}}| + F_0$ = {num(h.needed)} N, so it cannot settle"
-        if not h.feasible
-        else f"it needs {num(h.needed)} N and settles"
-    )
+    cl = a.moves["clamping"]
+    if not h.feasible:
+        move = f"holding it needs $k|x_\\mathrm{{ref}}| + F_0$ = {num(h.needed)} N, so it cannot settle"
+    elif settled(a):
+        move = f"holding it needs {num(h.needed)} N, within the limit, and the run with clamping settles"
+    else:
+        move = (
+            f"holding it needs {num(h.needed)} N, within the limit, yet the run with clamping spends "
+            f"{pct(cl.saturated_ss, 2)} of the steady state at the limit"
+        )
     t = s.findings.t_res
     if t["clipped"] < 1.0:
         iso = "below 1, where every passive damper transmits more than 1"
@@ -111,12 +130,12 @@ def key_findings(study: ControlStudy) -> list[str]:
         f"designs {forcing_phrase(a)}: {num(X)} m, {_ratio_words(Xp, X)} than the {num(Xp)} m of the uncontrolled "
         f"plant{limit}.",
         f"Robustness to loop delay runs the other way round from stiffness: the **{LABELS[order[0]]}** tolerates the "
-        f"shortest delay ({_delay(a.designs[order[0]].costs.delay_margin)}), the **{LABELS[order[-1]]}** the longest "
-        f"({_delay(a.designs[order[-1]].costs.delay_margin)})."
+        f"shortest delay ({_margin(a.designs[order[0]].costs.delay_margin)}), the **{LABELS[order[-1]]}** the longest "
+        f"({_margin(a.designs[order[-1]].costs.delay_margin)})."
         if order[0] == best
         else f"The **{LABELS[order[0]]}** tolerates the shortest loop delay "
-        f"({_delay(a.designs[order[0]].costs.delay_margin)}), the **{LABELS[order[-1]]}** the longest "
-        f"({_delay(a.designs[order[-1]].costs.delay_margin)}).",
+        f"({_margin(a.designs[order[0]].costs.delay_margin)}), the **{LABELS[order[-1]]}** the longest "
+        f"({_margin(a.designs[order[-1]].costs.delay_margin)}).",
         f"A PID move to $x_\\mathrm{{ref}}$ = {num(a.x_ref)} m with a ±{num(a.u_max)} N actuator: {move}.",
         f"A clipped-skyhook damper, which needs no power source, transmits {num(t['clipped'])} of the base motion at "
         f"$\\omega_n$: {iso}.",
@@ -166,17 +185,17 @@ def comparison_sentence(study: ControlStudy) -> str:
     dm = {n: a.designs[n].costs.delay_margin for n in ACTIVE}
     bn = {n: a.designs[n].costs.noise_bandwidth for n in ACTIVE}
     cost = (
-        f". Loop delay and sensor noise: the PID goes unstable with a loop delay of {_delay(dm['PID'])}, "
-        f"{_than(dm['PID'], dm['PD'], 'shorter than', 'longer than')} the PD's {_delay(dm['PD'])} and "
-        f"{_than(dm['PID'], dm['LQR'], 'shorter than', 'longer than')} the LQR's {_delay(dm['LQR'])}; position-sensor "
+        f". Loop delay and sensor noise: the PID tolerates a loop delay of {_delay(dm['PID'])}, "
+        f"{_than(dm['PID'], dm['PD'], 'less than', 'more than')} the PD ({_margin(dm['PD'])}) and "
+        f"{_than(dm['PID'], dm['LQR'], 'less than', 'more than')} the LQR ({_margin(dm['LQR'])}); position-sensor "
         f"noise reaches the mass through a noise bandwidth of {num(bn['PID'])} rad/s, "
         f"{_than(bn['PID'], bn['PD'], 'narrower than', 'wider than')} the PD's {num(bn['PD'])} rad/s, and the force "
         f"it causes at high frequency grows with $K_D$, {num(pid.kv / max(pd.kv, 1e-300))} times the PD's."
     )
     worst, ratio = force_excess(a)
     force = (
-        f" No design wastes force: each uses at most {num(ratio)} times the least RMS force that can hold its "
-        "amplitude ({numref}`tab-control-costs`)."
+        f" No design wastes force: each uses at most {pct(ratio - 1.0, 2)} more than the least RMS force that can "
+        "hold its amplitude ({numref}`tab-control-costs`)."
         if ratio < 1.0 + WASTE
         else f" The {LABELS[worst]} spends {num(ratio)} times the least RMS force that could hold its amplitude "
         "({numref}`tab-control-costs`): force the disturbance does not require."
@@ -458,9 +477,9 @@ def summary(study: ControlStudy) -> str:
     worst, excess = force_excess(a)
     if excess < 1.0 + WASTE:
         lines.append(
-            "**The disturbance, not the tuning, sets the force bill.** Every design spends within "
-            f"{pct(excess - 1.0, 2)} of the least force that can hold its amplitude; a smaller amplitude always costs "
-            "a force closer to the disturbance's own."
+            "**The disturbance, not the tuning, sets the force bill.** No design here pays noticeably more than the "
+            "least force its amplitude needs, so retuning cannot save force; a smaller amplitude always costs a force "
+            "closer to the disturbance's own."
         )
     else:
         lines.append(
