@@ -238,6 +238,10 @@ _NEWTON = (
     "Free-body diagrams in Newton's form: the arrows are the forces on the body, drawn as they act when the "
     "coordinates and their rates are positive; the mass times the acceleration is their sum and is not drawn."
 )
+_NEWTON_TORQUES = (
+    "Free-body diagram in Newton's form: the arrows are the torques on the wheel, drawn as they act when the angle "
+    "and its rate are positive; the moment of inertia times the angular acceleration is their sum and is not drawn."
+)
 
 
 def single_mass() -> Captioned:
@@ -420,10 +424,10 @@ def shear_building(n: int = 5) -> Captioned:
     """An ``n``-storey shear frame with a roof absorber under ground acceleration, and the free-body diagram of a
     floor (2 <= n <= 8)."""
     n = check_int("n", n, low=2, high=8)
-    hs, half, t = 3.0 / n, 1.0, 0.14  # storey height, half the floor's width, floor thickness
-    sway = 0.22 * np.sin(0.5 * np.pi * np.arange(n + 1) / n)  # drawn in the first mode's shape
+    hs, half, t = 3.6 / n, 1.0, 0.14  # storey height, half the floor's width, floor thickness
+    sway = 0.3 * np.sin(0.5 * np.pi * np.arange(n + 1) / n)  # drawn in the first mode's shape
     top = n * hs + 0.75
-    fig, (left, right) = figure(1, 2, height=3.9)
+    fig, (left, right) = figure(1, 2, height=4.2)
     _blank(left, "schematic", "schematic", (-2.1, 2.4), (-0.75, top + 0.2))
     _ground(left, -1.6, 1.9, 0.0)
     for j in range(1, n + 1):
@@ -762,11 +766,12 @@ def torsional_oscillator() -> Captioned:
             fig,
             [
                 "a wheel of moment of inertia $I$ (kg m²) turns on a bearing about its axle; the spiral spring of "
-                "torsional stiffness $\\kappa$ (N m/rad) joins the axle to a lever; a motor turns a crank through the "
-                "angle $\\omega t$ ($\\omega$ in rad/s, $t$ in s) and, through a push rod, rocks the lever, which "
-                "winds the spring's outer end; an eddy-current (magnetic) brake astride the rim damps the wheel "
-                "viscously with coefficient $b$ (N m s/rad), and the bearing adds dry friction of torque $\\tau_c$ "
-                "(N m). The wheel's angle $\\theta$ (rad, blue) is the pointer's turn from its rest position "
+                "torsional stiffness $\\kappa$ (N m/rad) joins the axle to a lever; a motor turns an eccentric (a "
+                "crank) through the angle $\\omega t$ ($\\omega$ in rad/s, $t$ in s) and, through a push rod, rocks "
+                "the lever, which winds the spring's outer end; an eddy-current (magnetic) brake (grey) astride the "
+                "rim damps the wheel viscously with coefficient $b$ (N m s/rad), and the bearing adds dry friction "
+                "of torque $\\tau_c$ (N m). The wheel's angle $\\theta$ (rad, blue) is the pointer's turn from its "
+                "rest position "
                 "(dashed).",
                 "the torques on the wheel about its axle (N m): the drive $\\tau_0\\sin\\omega t$ that the rocked "
                 "spring passes on, the spring's $\\kappa\\theta$, the brake's $b\\dot\\theta$ and the bearing's "
@@ -776,8 +781,9 @@ def torsional_oscillator() -> Captioned:
             ],
         )
         + " Torques are vermillion. Divided by $I$, this is the chapter's model with $\\omega_n^2 = \\kappa/I$, "
-        "$2\\zeta\\omega_n = b/I$ and the friction angle $\\Delta = \\tau_c/\\kappa$; the drive there is the "
-        "measured drive angle $u(t)$ times the gain $g$, i.e. the torque $\\kappa g u(t)$. " + _NEWTON
+        "$2\\zeta\\omega_n = b/I$ and the friction angle $\\Delta = \\tau_c/\\kappa$ (the spring's resting angle "
+        "$c$ taken as zero); the drive there is the measured drive angle $u(t)$ times the gain $g$, the torque "
+        "$\\kappa g u(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily. " + _NEWTON_TORQUES
     )
     alt = (
         "A wheel on a spiral spring whose outer end is rocked by a motor through a crank and a push rod, with a "
