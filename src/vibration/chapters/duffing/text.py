@@ -289,10 +289,14 @@ def key_findings(study: DuffingStudy) -> list[str]:
     if math.isfinite(low):
         mid = next((h for h in study.history if h.where == "the middle of the band"), None)
         amps = f", about {sig(mid.hb_low, 2)} m and {sig(mid.hb_high, 2)} m mid-band," if mid else ""
+        history = (
+            "; which one the machine runs at depends on how it got there"
+            if mid is not None and mid.depends_on_history
+            else ""
+        )
         out.append(
             f"**Two steady states.** With a hardening spring ({_k3(hard)}) two stable amplitudes{amps} coexist "
-            f"between {sig(low, 4)} and {sig(high, 4)} rad/s (folds of the full equation); which one the machine "
-            "runs at depends on how it got there."
+            f"between {sig(low, 4)} and {sig(high, 4)} rad/s (folds of the full equation){history}."
         )
     h = study.history[0]
     out.append(
@@ -338,13 +342,13 @@ def summary(study: DuffingStudy) -> str:
         lines.append(
             f"* **Plan the run-up through the band.** Sweeping {big} through it keeps the hardening oscillator on the "
             f"large branch ({sig(max(mid.up, mid.down), 2)} m against {sig(min(mid.up, mid.down), 2)} m mid-band); "
-            "a disturbance can drop it to the small one, and the reverse sweep never reaches the large one."
+            "sweeping the other way ends on the small one."
         )
     errs = [abs(r.hb_error) / max(r.orbit, 1e-300) for r in study.folds_compared if math.isfinite(r.hb_error)]
     if errs:
         lines.append(
             f"* **One harmonic is a design tool.** It locates the band edges within {sig(100 * max(errs), 2)} % of "
-            "their frequency at a fraction of the cost; check the edges that matter with the full equation."
+            "their frequency in closed form; check the edges that matter with the full equation."
         )
     if study.pooled.sign > 0:
         lines.append(
