@@ -719,8 +719,8 @@ def torsional_oscillator() -> Captioned:
     left.plot([xe, top[0]], [ye, top[1]], color=INK, lw=2.4, solid_capstyle="round", zorder=4)
     crank_c, crank_r = (2.2, R + 0.7), 0.32
     pin = (crank_c[0] + crank_r * math.cos(math.radians(150)), crank_c[1] + crank_r * math.sin(math.radians(150)))
-    left.add_patch(Rectangle((1.75, R - 0.25), 0.9, 0.5, facecolor=BODY, edgecolor=INK, lw=_LW, zorder=2))
-    left.text(2.2, R, "motor", ha="center", va="center", fontsize=_TEXT, zorder=5)
+    left.add_patch(Rectangle((1.75, R - 0.3), 0.9, 1.0, facecolor=BODY, edgecolor=INK, lw=_LW, zorder=2))
+    left.text(2.2, R - 0.02, "motor", ha="center", va="center", fontsize=_TEXT, zorder=5)
     left.add_patch(Circle(crank_c, crank_r, facecolor="white", edgecolor=INK, lw=_LW, zorder=3))
     left.plot([top[0], pin[0]], [top[1], pin[1]], color=INK, lw=1.6, zorder=4)
     for p, r in ((top, 0.06), (pin, 0.05), (crank_c, 0.04)):
