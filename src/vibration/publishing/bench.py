@@ -8,7 +8,7 @@ a time: the tables are for reading. Targets (from the issues):
   per sample reported against one ``np.exp`` over the grid;
 * ``peak_displacement_map`` 200 x 200 x 5001: >= 1000x faster than the per-cell
   ``solve_ivp`` loop a user would write;
-* slider update with 5001 samples: <= 30 ms median, against rebuilding the figure;
+* slider update with 5001 samples: <= 30 ms median, against rebuilding the figure (chapter 5's bench);
 * ``make report``: <= 2x the time papermill needs for as many empty notebooks (cold), and a run
   with nothing changed at most a quarter of the cold one (the chapter cache).
 """
@@ -118,24 +118,6 @@ def bench_map(quick: bool) -> None:
     )
 
 
-def bench_widgets() -> None:
-    """Slider update of the live explorer against rebuilding its figure."""
-    try:
-        from ..chapters.explore.bench import benchmark_updates
-    except ImportError as exc:  # pragma: no cover - widgets are part of the project
-        print(f"\nslider update: skipped ({exc})")
-        return
-    res = benchmark_updates()
-    upd, rebuild = res["update_median_s"], res["rebuild_median_s"]
-    table(
-        "slider update with 5001 samples (kernel side, Agg draw included)",
-        [
-            ("update the artists' data", upd, None, "<= 30 ms"),
-            ("rebuild the figure each time", rebuild, rebuild / upd, ""),
-        ],
-    )
-
-
 def bench_report() -> None:
     """The whole report against papermill on as many empty notebooks (same kernel, sequential)."""
     import nbformat
@@ -226,7 +208,6 @@ def main(argv: list[str] | None = None) -> int:
     print("vibration benchmarks: medians of repeated runs, ratios measured side by side in this run")
     bench_exact(args.quick)
     bench_map(args.quick)
-    bench_widgets()
     bench_chapters(args.quick)
     if not args.skip_report:
         bench_report()

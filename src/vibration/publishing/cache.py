@@ -65,7 +65,11 @@ def import_closure(modules: set[str], graph) -> set[str]:
     closure = set(start)
     for m in start:
         closure |= graph.find_upstream_modules(m)
-    return closure
+    parents = set()  # importing a module runs its parents' __init__ first
+    for name in closure:
+        parts = name.split(".")
+        parents |= {".".join(parts[:i]) for i in range(1, len(parts))}
+    return closure | {m for m in parents if m in graph.modules}
 
 
 def manifest(notebook: Path, params: dict, root: Path, graph) -> dict[str, str]:
