@@ -204,7 +204,9 @@ def test_a_shared_parameter_is_declared_once():
     for schema in report.chapter_schemas().values():
         for param in schema.params:
             if param.name in SHARED:
-                ours = dataclasses.replace(param, meaning=SHARED[param.name].meaning, default=SHARED[param.name].default)
+                ours = dataclasses.replace(
+                    param, meaning=SHARED[param.name].meaning, default=SHARED[param.name].default
+                )
                 assert ours == SHARED[param.name], (schema.notebook, param.name)
 
 
