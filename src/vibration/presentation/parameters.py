@@ -118,3 +118,66 @@ def paper_window(p: dict) -> None:
             f"c = {c!r} N s/m with m = {m!r} kg over t_end = {t_end!r} s: (c/m) t_end = {c / m * t_end:.3g} "
             f"is out of range: allowed at most {MAX_STIFFNESS:g} (the paper's explicit RK45 would crawl)"
         )
+
+
+def above(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
+    """A rule: parameter ``name`` must exceed ``bound`` in this chapter (its shared range allows more).
+
+    >>> above("c", 0.0, "N s/m", "needs damping")({"c": 0.0})
+    Traceback (most recent call last):
+    ...
+    vibration.physics.model.ParameterError: c = 0.0 N s/m is out of range for this chapter: allowed c > 0 N s/m (needs damping)
+    """
+
+    def rule(p: dict) -> None:
+        if not p[name] > bound:
+            raise ParameterError(
+                f"{name} = {p[name]!r} {unit} is out of range for this chapter: "
+                f"allowed {name} > {bound:g} {unit} ({why})"
+            )
+
+    rule.__name__ = f"{name}_above_{bound:g}"
+    return rule
+
+
+def below(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
+    """A rule: parameter ``name`` must stay below ``bound`` in this chapter."""
+
+    def rule(p: dict) -> None:
+        if not p[name] < bound:
+            raise ParameterError(
+                f"{name} = {p[name]!r} {unit} is out of range for this chapter: "
+                f"allowed {name} < {bound:g} {unit} ({why})"
+            )
+
+    rule.__name__ = f"{name}_below_{bound:g}"
+    return rule
+
+
+def at_least(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
+    """A rule: parameter ``name`` must be at least ``bound`` in this chapter."""
+
+    def rule(p: dict) -> None:
+        if not p[name] >= bound:
+            raise ParameterError(
+                f"{name} = {p[name]!r} {unit} is out of range for this chapter: "
+                f"allowed {name} >= {bound:g} {unit} ({why})"
+            )
+
+    rule.__name__ = f"{name}_at_least_{bound:g}"
+    return rule
+
+
+def damping_ratio_at_most(limit: float, name: str = "c_nominal") -> Callable[[dict], None]:
+    """A rule: the damping ``name`` is non-negative with ζ = c / (2√(km)) at most ``limit``."""
+
+    def rule(p: dict) -> None:
+        c, zeta = p[name], p[name] / (2.0 * math.sqrt(p["k"] * p["m"]))
+        if not 0.0 <= zeta <= limit:
+            raise ParameterError(
+                f"{name} = {c!r} N s/m with m = {p['m']!r} kg, k = {p['k']!r} N/m gives ζ = {zeta:.4g}: allowed "
+                f"0 <= ζ <= {limit:g} ({name} <= {limit * 2.0 * math.sqrt(p['k'] * p['m']):.4g} N s/m)"
+            )
+
+    rule.__name__ = f"{name}_damping_ratio_at_most_{limit:g}"
+    return rule

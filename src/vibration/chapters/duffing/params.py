@@ -6,7 +6,7 @@ cell against it, and the chapter's computation takes a :class:`Params` record bu
 
 from __future__ import annotations
 
-from vibration.presentation.parameters import ordered, paper_window, shared
+from vibration.presentation.parameters import above, below, ordered, paper_window, shared
 from vibration.presentation.schema import Param, Schema
 
 SCHEMA = Schema(
@@ -68,6 +68,8 @@ SCHEMA = Schema(
     together=(
         paper_window,
         ordered("omega_sweep_min", "omega_sweep_max", "rad/s"),
+        above("c_nominal", 0.0, "N s/m", "the slow flow and its folds need damping"),
+        below("k3_soft", 0.0, "N/m³", "a softening spring softens"),
     ),
 )
 

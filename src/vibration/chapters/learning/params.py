@@ -6,7 +6,7 @@ cell against it, and the chapter's computation takes a :class:`Params` record bu
 
 from __future__ import annotations
 
-from vibration.presentation.parameters import ordered, sampling, shared
+from vibration.presentation.parameters import at_least, ordered, sampling, shared
 from vibration.presentation.schema import Param, Schema
 
 SCHEMA = Schema(
@@ -38,6 +38,7 @@ SCHEMA = Schema(
     ),
     together=(
         ordered("c_semi_min", "c_semi_max", "N s/m"),
+        at_least("c_nominal", 0.0, "N s/m", "a learner needs a passive plant"),
         sampling,
     ),
 )

@@ -6,7 +6,7 @@ cell against it, and the chapter's computation takes a :class:`Params` record bu
 
 from __future__ import annotations
 
-from vibration.presentation.parameters import paper_window, shared
+from vibration.presentation.parameters import damping_ratio_at_most, paper_window, shared
 from vibration.presentation.schema import Param, Schema
 
 SCHEMA = Schema(
@@ -43,7 +43,7 @@ SCHEMA = Schema(
         Param("zeta_building", "ζ_b", 0.05, "", 0.0, 0.99, "modal damping ratio of the building"),
         Param("mu_building", "μ_b", 0.02, "", 0.0, 1.0, "roof absorber mass over the first modal mass", low_open=True),
     ),
-    together=(paper_window,),
+    together=(paper_window, damping_ratio_at_most(0.5)),
 )
 
 Params = SCHEMA.record_type()
