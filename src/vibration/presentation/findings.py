@@ -107,6 +107,6 @@ def at_least(value: float, floor: float):
     Examples
     --------
     >>> at_least(3.2e-3, 1e-12), at_least(4.4e-16, 1e-12)
-    (0.0032, '< 1e-12')
+    (0.0032, '< 10⁻¹²')
     """
     return value if value >= floor else f"< {fmt(floor)}"

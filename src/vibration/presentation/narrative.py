@@ -55,20 +55,14 @@ def g(value: float, digits: int = 4) -> str:
 
 
 def sig(value: float, digits: int = 4) -> str:
-    """Like :func:`g`, with a typographic minus and ×10ⁿ instead of e-notation (for prose).
+    """Like :func:`g`, with the typographic minus sign (for prose).
 
     Examples
     --------
-    >>> sig(2.43e-5, 3), sig(-1.5e6), sig(-0.25)
-    ('2.43 × 10⁻⁵', '−1.5 × 10⁶', '−0.25')
+    >>> sig(-0.25), sig(-2.43e-5, 3)
+    ('−0.25', '−2.43×10⁻⁵')
     """
-    text = fmt(float(value), digits)
-    mant, _, exp = text.partition("e")
-    mant = "−" + mant[1:] if mant.startswith("-") else mant
-    return f"{mant} × 10{str(int(exp)).translate(_SUPERSCRIPT)}" if exp else mant
-
-
-_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+    return g(value, digits).replace("-", "−")
 
 
 def fixed(value: float, digits: int = 4) -> str:
@@ -76,17 +70,13 @@ def fixed(value: float, digits: int = 4) -> str:
 
     Examples
     --------
-    >>> fixed(9.9996), fixed(2.23703819), fixed(15.0, 3), fixed(2.43e-5, 3), fixed(float("inf"))
-    ('10.00', '2.237', '15.0', '2.43 × 10⁻⁵', '∞')
+    >>> fixed(9.9996), fixed(2.23703819), fixed(15.0, 3), fixed(2.43e-5, 3), fixed(float("inf")), fixed(0.0)
+    ('10.00', '2.237', '15.0', '2.43×10⁻⁵', '∞', '0')
     """
     v = float(value)
-    if not math.isfinite(v):
-        return g(v)
-    text = f"{v:#.{digits}g}"
-    if "e" in text:
-        return sig(v, digits)
-    text = text.rstrip(".")
-    return "−" + text[1:] if text.startswith("-") else text
+    if not math.isfinite(v) or v == 0:
+        return g(v)  # an exact zero has no significant figures to show
+    return fmt(v, digits, zeros=True)
 
 
 def parameters_sentence(**values: float) -> str:
@@ -152,65 +142,3 @@ def regime_clause(osc: Oscillator, force: SineForce | None = None, t_end: float 
                     f", so over {g(t_end)} s it grows almost linearly, like the $t\\cos\\omega_n t$ of exact resonance"
                 )
     return text + ")"
-
-
-def explorer_start(c: float) -> tuple[float, str]:
-    """The damping the sliders start at (N s/m) and a sentence saying why, for a chapter's ``c``.
-
-    The damping sliders are logarithmic, so they cannot hold c <= 0; such a run starts them at
-    their lowest damping and says so.
-
-    Examples
-    --------
-    >>> explorer_start(0.5)[0], explorer_start(-0.1)[0]
-    (0.5, 0.01)
-    """
-    from .widgets import C_MIN
-
-    if c > 0:
-        return c, f"The sliders start at this run's damping, c = {g(c)} N s/m."
-    what = "undamped" if c == 0 else "negative damping"
-    return C_MIN, (
-        f"This run's damping is c = {g(c)} N s/m ({what}); the damping sliders are logarithmic and cannot "
-        f"hold it, so they start at their lowest value, c = {g(C_MIN)} N s/m. Chapter 1 shows the response "
-        f"at c = {g(c)} N s/m."
-    )
-
-
-def explore_controls_markdown() -> str:
-    """Which controls exist where: JupyterLab (all) and the rendered report (ω, c and reset)."""
-    from . import static_page, widgets
-
-    return (
-        "* **In JupyterLab** (a running kernel): the forcing frequency ω (rad/s, the Hz value beside it) and "
-        f"the damping c (N s/m, logarithmic, from {g(widgets.C_MIN)} to {g(widgets.C_MAX)} N s/m, through "
-        "critical damping) redraw the figure while the slider moves; boxes for m (kg), k (N/m), F0 (N) and "
-        "the window t_end (s) apply when Enter is pressed (a value out of range is reported in red and the "
-        "figure keeps the last valid state); a check box overlays the paper's RK45 solution and its largest "
-        "deviation from the exact displacement.\n"
-        "* **In the rendered report** (no kernel): the same closed form runs in the browser with exactly "
-        f"three controls, the forcing frequency ω (steps of {g(static_page.OMEGA_STEP)} rad/s), the damping c "
-        f"(logarithmic, at least {g(static_page.C_MIN)} to {g(static_page.C_MAX)} N s/m) and a reset button; "
-        "it draws x(t) and v(t) and the magnification curve like the JupyterLab figure, but m, k, F0, t_end "
-        "and the RK45 overlay are fixed at this run's values."
-    )
-
-
-def explore_summary(values: dict) -> str:
-    """Chapter 5's summary from the explorer's starting readout (``Explorer.values``)."""
-    v = values
-    settled = (
-        f"it settles after {g(v['settling'], 3)} s, inside the {g(v['t_end'])} s window"
-        if v["steady_reached"] == "yes"
-        else f"it has not settled by t = {g(v['t_end'])} s"
-    )
-    bullets = [
-        f"At the starting point ω/ω_n = {g(v['ratio'], 5)} and ζ = {g(v['zeta'], 3)}: the oscillator is "
-        f"{v['regime']}, its steady amplitude is {g(v['amplitude'])} m ({g(v['magnification'], 3)} times the "
-        f"static deflection) and {settled}.",
-        "Near ω_n the steady amplitude is F0/(c ω): halving c doubles it and doubles the settling time; a few "
-        "half-power bandwidths (c/m) away from ω_n the amplitude no longer depends on c.",
-        "For ζ ≥ 1/√2 the magnification curve has no peak left to avoid; above ζ = 1 the transient no longer "
-        "oscillates.",
-    ]
-    return "\n".join("- " + b for b in bullets)

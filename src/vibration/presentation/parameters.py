@@ -123,10 +123,10 @@ def paper_window(p: dict) -> None:
 def above(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
     """A rule: parameter ``name`` must exceed ``bound`` in this chapter (its shared range allows more).
 
-    >>> above("c", 0.0, "N s/m", "needs damping")({"c": 0.0})
+    >>> above("c", 0.0, "N s/m", "damped")({"c": 0.0})
     Traceback (most recent call last):
     ...
-    vibration.physics.model.ParameterError: c = 0.0 N s/m is out of range for this chapter: allowed c > 0 N s/m (needs damping)
+    vibration.physics.model.ParameterError: c = 0.0 N s/m is out of range for this chapter: allowed c > 0 N s/m (damped)
     """
 
     def rule(p: dict) -> None:

@@ -216,7 +216,7 @@ def claims_details_markdown(st: ClaimsAuditStudy) -> str:
     """Each claim quoted from the paper, then one paragraph: its verdict, the exact reason, the best reading."""
     parts = []
     for c in st.claims:
-        text = [f"**{c.claim_id}** ({c.claim_kind}): *{c.verdict}*."]
+        text = [f"**{c.claim_id}** ({c.claim_kind}; {_quantity(c)}): *{c.verdict}*."]
         if c.changed:
             text.append(
                 f"This run's case is not the paper's: {prose(c.changed)}; the verdict is about this run's case."

@@ -13,18 +13,19 @@ from __future__ import annotations
 import html
 import itertools
 import json
-from importlib.resources import files
 
-from vibration.chapters.real_oscillator.figures import typical_decay
+from vibration.chapters.real_oscillator.figures import MODEL_STYLE, typical_decay
 from vibration.chapters.real_oscillator.study import RealOscillatorStudy
+from vibration.presentation.panels import line_style, panel_assets
 
 _counter = itertools.count(1)
 #: Slider ranges: omega_n (rad/s), zeta, Delta (rad): (low, high, step).
 RANGES = {"wn": (4.0, 5.0, 0.001), "zeta": (0.0, 0.1, 0.0005), "fr": (0.0, 0.3, 0.001)}
-
-
-def _asset(name: str) -> str:
-    return files("vibration.chapters.real_oscillator").joinpath("panel", name).read_text(encoding="utf-8")
+#: The measurement's grey dots and the combined law's line, as in the chapter's figures, with their legend words.
+STYLES = {
+    "measured": {**line_style({"color": "0.35"}), "label": "measured (20 Hz)"},
+    "model": {**line_style(MODEL_STYLE["combined"]), "label": "viscous + Coulomb model"},
+}
 
 
 def decay_panel_html(st: RealOscillatorStudy, brake: str = "on") -> str:
@@ -51,9 +52,8 @@ def decay_panel_html(st: RealOscillatorStudy, brake: str = "on") -> str:
         for k, (lo, hi, step) in RANGES.items()
     )
     title = "with" if brake == "on" else "without"
-    return f"""<div class="vro-panel" id="{pid}" data-decay="{e(json.dumps(data))}">
-<style>
-{_asset("real_oscillator.css")}</style>
+    return f"""<div class="vro-panel" id="{pid}" data-decay="{e(json.dumps(data))}" data-styles="{e(json.dumps(STYLES))}">
+{panel_assets("vibration.chapters.real_oscillator", "real_oscillator.js", "real_oscillator.css")}\
 <h3 class="vro-title">Free decay {title} the brake, run {d.run}: move ω<sub>n</sub>, ζ and Δ</h3>
 <p class="vro-sub">Dots: the measured angle (20 Hz, one-degree encoder). Line: the exact free decay with viscous and \
 Coulomb friction from the fitted first extremum, computed in your browser. The sliders start at the whole-trace fit.</p>
@@ -64,8 +64,6 @@ Coulomb friction from the fitted first extremum, computed in your browser. The s
 </div>
 <svg class="vro-plot" viewBox="0 0 640 300" role="img" aria-label="wheel angle in rad against time in s"></svg>
 <p class="vro-readout">rms residual in the fitted window: <span class="vro-rms"></span></p>
-<script>
-{_asset("real_oscillator.js")}</script>
 <script>window.vibrationRealDecay.mount(document.getElementById({json.dumps(pid)}));</script>
 </div>
 """

@@ -107,7 +107,7 @@ def key_results(st: ReproductionStudy) -> str:
         )
     else:
         items.append(
-            f"With c = {g(res.c)} N s/m the resonance case has no finite steady amplitude: its largest displacement "
+            f"With c = {sig(res.c)} N s/m the resonance case has no finite steady amplitude: its largest displacement "
             f"in the window is {g(res.peak_x)} m."
         )
     worst = st.worst
@@ -139,7 +139,7 @@ def changed_note(params) -> str | None:
 
 def _key_damping(st: ReproductionStudy, sid: str) -> str:
     f = st.cases[sid]
-    head = f"{case_name(sid).capitalize()} (c = {g(f.c)} N s/m)"
+    head = f"{case_name(sid).capitalize()} (c = {sig(f.c)} N s/m)"
     if f.c < 0:
         return f"{head} is unstable: the displacement grows to {g(f.peak_x)} m in the window and keeps growing."
     if f.c == 0:
@@ -326,8 +326,8 @@ def findings_table(st: ReproductionStudy) -> Table:
         rows,
         [
             Column("case", "case"),
-            Column("c", "c (N s/m)", 4),
-            Column("omega", "ω (rad/s)", 4),
+            Column("c", "c (N s/m)", 4, zeros=False),
+            Column("omega", "ω (rad/s)", 4, zeros=False),
             Column("zeta", "ζ"),
             Column("regime", "regime"),
             Column("xss", "x_ss (m)"),

@@ -1,6 +1,6 @@
 /* Kernel-free control panel (chapter 7): LQR weight, ideal skyhook gain, input shaper and frequency error.
- * Colours and line styles follow the book's cases (panel/control.css): passive plant blue, LQR orange dashed,
- * ideal skyhook bluish green dashed, unshaped step grey, shaped command bluish green.
+ * Colours and line styles come from Python (data-styles: the book's cases passive, LQR and skyhook, and the
+ * chapter's shaper styles); the plots are drawn by the book's helper window.VibPlot (presentation/assets/plot.js).
  * Closed forms only, mirrored from vibration.physics.control and vibration.physics.exact; the functions are
  * exposed as window.vibrationControl so the tests compare them with Python. Units: SI (kg, N s/m, N/m, N,
  * rad/s, s, m). */
@@ -100,79 +100,19 @@
   function linspace(a, b, n) { var o = []; for (var i = 0; i < n; i++) { o.push(a + (b - a) * i / (n - 1)); } return o; }
   function geomspace(a, b, n) { return linspace(Math.log(a), Math.log(b), n).map(Math.exp); }
 
-  function el(name, attrs, parent) {
-    var e = document.createElementNS(parent.namespaceURI, name);  /* the SVG namespace of the plot */
-    for (var key in attrs) { e.setAttribute(key, attrs[key]); }
-    if (parent) { parent.appendChild(e); }
-    return e;
-  }
-
-  /* Tick positions (in axis units, log10 for a log axis) at round values: 1, 2 or 5 times a power of ten. */
-  function ticks(a, b, log) {
-    if (log) {
-      var decades = [];
-      for (var d = Math.ceil(a - 1e-9); d <= b + 1e-9; d++) { decades.push(d); }
-      if (decades.length >= 2) { return decades; }
-    }
-    var raw = (b - a) / 4, mag = Math.pow(10, Math.floor(Math.log10(raw))), r = raw / mag;
-    var step = (r < 1.5 ? 1 : r < 3 ? 2 : r < 7 ? 5 : 10) * mag, out = [];
-    for (var v = Math.ceil(a / step - 1e-9) * step; v <= b + 1e-9 * step; v += step) {
-      out.push(Math.abs(v) < 1e-9 * step ? 0 : v);
-    }
-    return out;
-  }
-
-  function tickLabel(t, log) {
-    var v = log ? Math.pow(10, t) : t;
-    return String(Number(v.toPrecision(log ? 2 : 3)));
-  }
-
-  /* Draw series [{x: [], y: [], cls: ""}] into an svg with linear or log axes and tick labels. */
-  function plot(svg, series, opts) {
-    while (svg.firstChild) { svg.removeChild(svg.firstChild); }
-    var W = 420, H = 240, L = 56, R = 10, T = 10, B = 38;
-    var fx = opts.logx ? Math.log10 : function (v) { return v; };
-    var fy = opts.logy ? Math.log10 : function (v) { return v; };
-    var xs = [], ys = [];
-    series.forEach(function (s) { s.x.forEach(function (v) { xs.push(fx(v)); }); s.y.forEach(function (v) { if (isFinite(fy(v))) { ys.push(fy(v)); } }); });
-    var x0 = Math.min.apply(null, xs), x1 = Math.max.apply(null, xs);
-    var y0 = Math.min.apply(null, ys), y1 = Math.max.apply(null, ys);
-    if (opts.ymin !== undefined) { y0 = fy(opts.ymin); }
-    if (y1 - y0 < 1e-12) { y1 = y0 + 1; }
-    var pad = 0.05 * (y1 - y0); y0 -= opts.ymin !== undefined ? 0 : pad; y1 += pad;
-    function px(v) { return L + (fx(v) - x0) / (x1 - x0) * (W - L - R); }
-    function py(v) { return H - B - (Math.max(fy(v), y0) - y0) / (y1 - y0) * (H - T - B); }
-    el("rect", { x: L, y: T, width: W - L - R, height: H - T - B, class: "vc-frame" }, svg);
-    ticks(y0, y1, opts.logy).forEach(function (t) {
-      var yy = H - B - (t - y0) / (y1 - y0) * (H - T - B);
-      el("text", { x: L - 4, y: yy + 3, class: "vc-tick", "text-anchor": "end" }, svg).textContent = tickLabel(t, opts.logy);
-    });
-    ticks(x0, x1, opts.logx).forEach(function (t) {
-      var xx = L + (t - x0) / (x1 - x0) * (W - L - R);
-      el("text", { x: xx, y: H - B + 14, class: "vc-tick", "text-anchor": "middle" }, svg).textContent = tickLabel(t, opts.logx);
-    });
-    el("text", { x: (L + W - R) / 2, y: H - 6, class: "vc-label", "text-anchor": "middle" }, svg).textContent = opts.xlabel;
-    el("text", { x: 12, y: (T + H - B) / 2, class: "vc-label", "text-anchor": "middle", transform: "rotate(-90 12 " + (T + H - B) / 2 + ")" }, svg).textContent = opts.ylabel;
-    series.forEach(function (s) {
-      var pts = s.x.map(function (v, j) { return px(v).toFixed(1) + "," + py(s.y[j]).toFixed(1); }).join(" ");
-      if (s.dot) { el("circle", { cx: px(s.x[0]), cy: py(s.y[0]), r: 4, class: s.cls }, svg); }
-      else { el("polyline", { points: pts, class: s.cls }, svg); }
-    });
-  }
-
-  /* A number to d significant figures, powers of ten as ×10ⁿ (never e-notation), a typeset minus sign. */
-  function fmt(v, d) {
-    var s = String(Number(Number(v).toPrecision(d || 4)));
-    var m = s.match(/^(-?[0-9.]+)e([+-][0-9]+)$/);
-    if (m) {
-      var sup = { "0": "⁰", "1": "¹", "2": "²", "3": "³", "4": "⁴", "5": "⁵", "6": "⁶", "7": "⁷", "8": "⁸", "9": "⁹", "-": "⁻" };
-      s = m[1] + "×10" + String(parseInt(m[2], 10)).split("").map(function (c) { return sup[c]; }).join("");
-    }
-    return s.replace(/^-/, "−");
+  /* Two curves over (x, y) with their legend, drawn by the book's plotting helper (window.VibPlot). */
+  function plot(svg, a, b, axes) {
+    var line = function (s) {
+      return {type: "line", x: s.x, y: s.y, color: s.style.color, dash: s.style.dash, width: s.width || 1.6,
+        label: s.style.label, cls: s.cls};
+    };
+    window.VibPlot.draw(svg, {height: 250, aspect: 0.75, x: axes.x, y: axes.y, series: [line(a), line(b)]});
   }
 
   function mount(root) {
     var p = JSON.parse(root.getAttribute("data-params"));
+    var st = JSON.parse(root.getAttribute("data-styles"));
+    var fmt = window.VibPlot.fmt;
     var q = function (sel) { return root.querySelector(sel); };
     var ts = linspace(0, p.t_end, 1001);
     function updateActive() {
@@ -180,8 +120,8 @@
       var K = lqrGains(p.m, p.c, p.k, p.q_x, p.q_v, r);
       var cl = response(p.m, p.c + K[1], p.k + K[0], p.F0, p.omega, ts);
       var pas = response(p.m, p.c, p.k, p.F0, p.omega, ts);
-      plot(q("svg.vc-active"), [{ x: ts, y: pas.x, cls: "vc-passive" }, { x: ts, y: cl.x, cls: "vc-lqr" }],
-        { xlabel: "t (s)", ylabel: "x (m)" });
+      plot(q("svg.vc-active"), { x: ts, y: pas.x, style: st.passive, width: 1.2, cls: "vc-passive" },
+        { x: ts, y: cl.x, style: st.LQR, cls: "vc-lqr" }, { x: { label: "t (s)", pad: 0 }, y: { label: "x (m)" } });
       var re = p.k + K[0] - p.m * p.omega * p.omega, im = (p.c + K[1]) * p.omega;
       var X = p.F0 / Math.hypot(re, im), U = X * Math.hypot(K[0], p.omega * K[1]);
       q(".vc-r-out").textContent = "r = " + fmt(r, 3) + " 1/N²";
@@ -195,8 +135,9 @@
     function updateSky() {
       var cs = parseFloat(q(".vc-csky").value);
       var Ts = skyhook(p.m, p.c, p.k, cs, ws), Tp = skyhook(p.m, p.c, p.k, 0, ws);
-      plot(q("svg.vc-sky"), [{ x: ratios, y: Tp, cls: "vc-passive" }, { x: ratios, y: Ts, cls: "vc-skyhook" }],
-        { xlabel: "ω/ωₙ", ylabel: "|X/Y|", logx: true, logy: true });
+      plot(q("svg.vc-sky"), { x: ratios, y: Tp, style: st.passive, width: 1.2, cls: "vc-passive" },
+        { x: ratios, y: Ts, style: st.skyhook, cls: "vc-skyhook" },
+        { x: { label: "ω/ω_n", log: true, pad: 0 }, y: { label: "|X/Y|", log: true } });
       var wn = Math.sqrt(p.k / p.m);
       q(".vc-csky-out").innerHTML = "c<sub>sky</sub> = " + fmt(cs, 3) + " N s/m";
       q(".vc-sky-read").textContent = "at ω = ωₙ: |X/Y| = " + fmt(skyhook(p.m, p.c, p.k, cs, [wn])[0]) + " (passive "
@@ -207,8 +148,8 @@
       var kind = q(".vc-kind").value, err = parseFloat(q(".vc-err").value) / 100;
       var sh = shaper(kind, p.m, p.c, p.k), ka = p.k * (1 + err) * (1 + err);
       var x0 = shapedMove(shaper("none"), p.m, p.c, ka, p.move, tm), x = shapedMove(sh, p.m, p.c, ka, p.move, tm);
-      plot(q("svg.vc-shape"), [{ x: tm, y: x0, cls: "vc-unshaped" }, { x: tm, y: x, cls: "vc-shaped" }],
-        { xlabel: "t (s)", ylabel: "x (m)" });
+      plot(q("svg.vc-shape"), { x: tm, y: x0, style: st.none, width: 1.2, cls: "vc-unshaped" },
+        { x: tm, y: x, style: st[kind], cls: "vc-shaped" }, { x: { label: "t (s)", pad: 0 }, y: { label: "x (m)" } });
       q(".vc-err-out").textContent = (err >= 0 ? "+" : "") + fmt(100 * err, 3) + " %";
       q(".vc-shape-read").textContent = kind === "none" ? "unshaped step: residual vibration 100 %" :
         kind + ": residual vibration " + fmt(100 * residual(sh, p.m, p.c, ka), 3) + " % of the unshaped, added delay " + fmt(sh.times[sh.times.length - 1]) + " s";
