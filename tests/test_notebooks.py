@@ -76,13 +76,24 @@ def test_skeleton_and_no_physics_in_notebooks(path):
     cells = nb["cells"]
     assert nb["metadata"]["kernelspec"]["name"] == "vibration"
     assert cells[0]["cell_type"] == "markdown" and _src(cells[0]).startswith("# ")
-    assert "Overview" in _src(cells[0]) or "Overview" in _src(cells[1])
+    opening = _src(cells[0]) + _src(cells[1])
+    assert "?" in opening, f"{path.name}: a chapter opens with its question"
+    if not path.name.startswith("00_"):  # then the key-results box, before any table or figure
+        outputs = [o for c in cells if c["cell_type"] == "code" for o in c.get("outputs", []) if o.get("data")]
+        first = next((i for i, o in enumerate(outputs) if "".join(o["data"].get("text/markdown", "")).lstrip()
+                      .startswith("> **Key results**")), None)  # fmt: skip
+        assert first is not None, f"{path.name}: no key-results box"
+        shown = [i for i, o in enumerate(outputs) if "image/png" in o["data"] or "Table tab-" in
+                 "".join(o["data"].get("text/plain", ""))]  # fmt: skip
+        assert not shown or first < shown[0], f"{path.name}: the key results come before the first table or figure"
     if path.name.startswith("00_"):
         # the front page is the book's title page, not a chapter: its title, an overview, the run's headline
         # numbers (generated sentences and tables) instead of a summary section
         assert any(c["cell_type"] == "code" and "Markdown(" in _src(c) for c in cells), "front page: no headline"
     else:
-        assert any(c["cell_type"] == "markdown" and "Summary" in _src(c) for c in cells)
+        assert any(c["cell_type"] == "markdown" and re.search(r"Summary|takes? away", _src(c)) for c in cells), (
+            f"{path.name}: the chapter ends with what a designer takes away"
+        )
     assert "__version__" in _src(cells[-1]), "the last cell prints the library versions"
     code = [c for c in cells if c["cell_type"] == "code"]
     for c in code:
@@ -142,16 +153,24 @@ def test_part_one_prose_states_no_results_outside_quotes(path):
             assert not NUMBER_WITH_UNIT.search(line), f"{path.name}: a result written by hand: {line!r}"
 
 
-@pytest.mark.parametrize("path", PART_ONE, ids=lambda p: p.stem)
-def test_part_one_figures_have_captions_and_tables_are_tables(path):
-    """Every figure cell carries a caption and a name; every table is a Table object (tab- label)."""
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_every_figure_carries_its_caption_label_and_alt_text(path):
+    """Every figure output is a Captioned figure (caption, fig- label, alt text in its metadata); no cell keeps
+    a hand-written caption; every table is a Table object (tab- label)."""
+    from vibration.presentation.captions import METADATA_KEY
+
     for cell in _nb(path)["cells"]:
         if cell["cell_type"] != "code":
             continue
         src = _src(cell)
-        if re.search(r"^fig = ", src, re.M):
-            fig = cell["metadata"].get("mystnb", {}).get("figure", {})
-            assert fig.get("caption") and fig.get("name", "").startswith("fig-"), (path.name, src[:60])
+        assert "figure" not in cell["metadata"].get("mystnb", {}), (path.name, "a hand-written caption", src[:60])
+        for out in cell.get("outputs", []):
+            if "image/png" in out.get("data", {}) and "text/html" not in out.get("data", {}):
+                facts = out.get("metadata", {}).get(METADATA_KEY, {})
+                assert facts.get("caption") and facts.get("alt") and facts.get("name", "").startswith("fig-"), (
+                    path.name,
+                    src[:60],
+                )
         assert "show_table(" not in src and "print(format_table" not in src, (path.name, src[:60])
         for out in cell.get("outputs", []):
             plain = "".join(out.get("data", {}).get("text/plain", ""))
