@@ -12,20 +12,26 @@ import html
 import itertools
 import json
 import math
-from importlib.resources import files
 
+from vibration.chapters.control.figures import SHAPER_STYLE
 from vibration.chapters.control.params import Params
 from vibration.chapters.control.study import ControlStudy
+from vibration.presentation.panels import line_style, panel_assets
 
 _counter = itertools.count(1)
 #: Slider ranges: log10 of the LQR weight r (1/N²), skyhook gain (N s/m), frequency error (%); widened to the start.
 LOG_R = (-7.0, 2.0)
 C_SKY_MAX = 60.0
 ERROR_PCT = 50.0
-
-
-def _asset(name: str) -> str:
-    return files("vibration.chapters.control").joinpath("panel", name).read_text(encoding="utf-8")
+#: Line styles and legend words: the book's cases for the plant and the designs, the chapter's shaper styles.
+STYLES = {
+    "passive": {**line_style("passive"), "label": "passive"},
+    "LQR": {**line_style("LQR"), "label": "LQR"},
+    "skyhook": {**line_style("skyhook"), "label": "ideal skyhook"},
+    "none": {**line_style(SHAPER_STYLE["none"]), "label": "unshaped step"},
+    "ZV": {**line_style(SHAPER_STYLE["ZV"]), "label": "ZV-shaped command"},
+    "ZVD": {**line_style(SHAPER_STYLE["ZVD"]), "label": "ZVD-shaped command"},
+}
 
 
 def control_panel_html(params: Params | None = None, **values) -> str:
@@ -47,26 +53,25 @@ def control_panel_html(params: Params | None = None, **values) -> str:
     sky_max = max(C_SKY_MAX, p.c_sky)
     err = round(100 * p.freq_error)
     lo_e, hi_e = min(-ERROR_PCT, err), max(ERROR_PCT, err)
-    return f"""<div class="vc-panel" id="{pid}" data-params="{e(json.dumps(data))}">
-<style>
-{_asset("control.css")}</style>
+    return f"""<div class="vc-panel" id="{pid}" data-params="{e(json.dumps(data))}" \
+data-styles="{e(json.dumps(STYLES))}">
+{panel_assets("vibration.chapters.control", "control.js", "control.css")}\
 <h3 class="vc-title">Explore without a kernel: m = {p.m:g} kg, c = {p.c_nominal:g} N s/m, k = {p.k:g} N/m</h3>
 <noscript>This panel needs JavaScript to draw its plots.</noscript>
 <div class="vc-grid">
-<figure><figcaption>LQR at F<sub>0</sub> = {p.F0:g} N, ω = {p.omega_res:g} rad/s, no force limit \
-(blue: passive, orange dashed: LQR)</figcaption>
+<figure><figcaption>LQR at F<sub>0</sub> = {p.F0:g} N, ω = {p.omega_res:g} rad/s, no force limit</figcaption>
 <label>weight r of the force (logarithmic) \
 <input type="range" class="vc-logr" min="{lo_r:g}" max="{hi_r:g}" step="0.05" value="{lr:g}"></label>
 <output class="vc-r-out"></output>
 <svg class="vc-active" viewBox="0 0 420 240" role="img" aria-label="displacement x in m against time t in s"></svg>
 <p class="vc-active-read"></p></figure>
-<figure><figcaption>Ideal skyhook under base motion (blue: passive c, green dashed: skyhook)</figcaption>
+<figure><figcaption>Ideal skyhook under base motion</figcaption>
 <label>skyhook damping <input type="range" class="vc-csky" min="0" max="{sky_max:g}" step="0.5" \
 value="{p.c_sky:g}"></label>
 <output class="vc-csky-out"></output>
 <svg class="vc-sky" viewBox="0 0 420 240" role="img" aria-label="transmissibility against frequency ratio"></svg>
 <p class="vc-sky-read"></p></figure>
-<figure><figcaption>Move of {p.move:g} m (grey: unshaped step, green: shaped command)</figcaption>
+<figure><figcaption>Move of {p.move:g} m, input shaping</figcaption>
 <label>shaper <select class="vc-kind"><option value="none">none</option><option value="ZV">ZV</option>\
 <option value="ZVD" selected>ZVD</option></select></label>
 <label>natural-frequency error <input type="range" class="vc-err" min="{lo_e:g}" max="{hi_e:g}" step="1" \
@@ -75,8 +80,6 @@ value="{err}"></label>
 <svg class="vc-shape" viewBox="0 0 420 240" role="img" aria-label="displacement x in m against time t in s"></svg>
 <p class="vc-shape-read"></p></figure>
 </div>
-<script>
-{_asset("control.js")}</script>
 <script>window.vibrationControl.mount(document.getElementById({json.dumps(pid)}));</script>
 </div>
 """

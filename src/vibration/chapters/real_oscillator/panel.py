@@ -52,7 +52,8 @@ def decay_panel_html(st: RealOscillatorStudy, brake: str = "on") -> str:
         for k, (lo, hi, step) in RANGES.items()
     )
     title = "with" if brake == "on" else "without"
-    return f"""<div class="vro-panel" id="{pid}" data-decay="{e(json.dumps(data))}" data-styles="{e(json.dumps(STYLES))}">
+    return f"""<div class="vro-panel" id="{pid}" data-decay="{e(json.dumps(data))}" \
+data-styles="{e(json.dumps(STYLES))}">
 {panel_assets("vibration.chapters.real_oscillator", "real_oscillator.js", "real_oscillator.css")}\
 <h3 class="vro-title">Free decay {title} the brake, run {d.run}: move ω<sub>n</sub>, ζ and Δ</h3>
 <p class="vro-sub">Dots: the measured angle (20 Hz, one-degree encoder). Line: the exact free decay with viscous and \

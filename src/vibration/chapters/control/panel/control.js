@@ -106,7 +106,9 @@
       return {type: "line", x: s.x, y: s.y, color: s.style.color, dash: s.style.dash, width: s.width || 1.6,
         label: s.style.label, cls: s.cls};
     };
-    window.VibPlot.draw(svg, {height: 250, aspect: 0.75, x: axes.x, y: axes.y, series: [line(a), line(b)]});
+    var second = line(b);
+    if (b.style.label === a.style.label) { second.label = ""; } // the same curve twice: one legend entry
+    window.VibPlot.draw(svg, {height: 250, aspect: 0.75, x: axes.x, y: axes.y, series: [line(a), second]});
   }
 
   function mount(root) {
@@ -140,7 +142,7 @@
         { x: { label: "ω/ω_n", log: true, pad: 0 }, y: { label: "|X/Y|", log: true } });
       var wn = Math.sqrt(p.k / p.m);
       q(".vc-csky-out").innerHTML = "c<sub>sky</sub> = " + fmt(cs, 3) + " N s/m";
-      q(".vc-sky-read").textContent = "at ω = ωₙ: |X/Y| = " + fmt(skyhook(p.m, p.c, p.k, cs, [wn])[0]) + " (passive "
+      q(".vc-sky-read").innerHTML = "at ω = ω<sub>n</sub>: |X/Y| = " + fmt(skyhook(p.m, p.c, p.k, cs, [wn])[0]) + " (passive "
         + fmt(skyhook(p.m, p.c, p.k, 0, [wn])[0]) + ", every passive damper > 1)";
     }
     var tm = linspace(0, 10, 801);
