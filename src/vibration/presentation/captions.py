@@ -146,6 +146,12 @@ def _drawn_colours(fig) -> set[str]:
     return found - {""}
 
 
+def _greyish(hex_colour: str) -> bool:
+    """A neutral grey: equal channels, neither near black nor near white."""
+    r, g, b = (int(hex_colour[i : i + 2], 16) / 255 for i in (1, 3, 5))
+    return max(r, g, b) - min(r, g, b) < 0.04 and 0.2 < r < 0.9
+
+
 def check_caption(fig, caption: str) -> None:
     """Raise ``ValueError`` where ``caption`` contradicts ``fig`` (layout, line styles, colours, log axes)."""
     text = caption.lower()
@@ -168,6 +174,8 @@ def check_caption(fig, caption: str) -> None:
         if re.search(pattern, text) and ls not in styles:
             raise ValueError(f"caption says {word!r} but no {word} line is drawn")
     colours = _drawn_colours(fig)
+    if any(_greyish(h) for h in colours):
+        colours |= {"#7f7f7f"}  # any neutral grey answers to "grey"
     for word, hexes in _COLOURS.items():
         if re.search(rf"(?<![-\w]){word}\b", text) and not colours & {h.lower() for h in hexes}:
             raise ValueError(f"caption says {word!r} but nothing {word} is drawn")
@@ -184,7 +192,7 @@ class Captioned:
 
         if not caption.strip() or not alt.strip():
             raise ValueError(f"figure {name!r}: caption and alt text must not be empty")
-        if re.search(r"\.(png|svg|pdf)\b|/", alt):
+        if re.search(r"\.(png|svg|jpe?g|pdf)\b", alt) or re.fullmatch(r"[\w./\\-]+", alt.strip()):
             raise ValueError(f"figure {name!r}: alt text must describe the figure, not name a file: {alt!r}")
         check_caption(fig, caption)
         self.fig, self.caption, self.name, self.alt = fig, caption, name, alt

@@ -1,7 +1,10 @@
 """Figures of the real-oscillator chapter, each a function of a :class:`RealOscillatorStudy`.
 
-Colours and markers per case are fixed here once: the measurement is grey/black, the viscous law
-blue, the Coulomb law red, the combined law green; session 1 circles, session 2 squares.
+Colours and markers per case follow the book's visual language (Okabe–Ito): the measurement is
+grey, the viscous law (the paper's linear model) blue dashed, the Coulomb law vermillion dotted, the
+combined law bluish green solid; session 1 reddish-purple circles, session 2 orange squares. Each
+function returns a :class:`~vibration.presentation.captions.Captioned` figure whose caption is built
+from what it draws and the study's numbers.
 """
 
 from __future__ import annotations
@@ -12,19 +15,21 @@ import numpy as np
 
 from vibration.chapters.real_oscillator.study import DecayRun, RealOscillatorStudy
 from vibration.physics.lab import free_decay_peaks, half_period_losses
-from vibration.presentation.style import figure, place_legend
+from vibration.presentation.captions import Captioned, panel_words
+from vibration.presentation.style import OKABE_ITO, figure, place_legend
 
 LAW_STYLE = {
-    "viscous": {"color": "#1f77b4", "ls": "--", "label": "viscous"},
-    "coulomb": {"color": "#d62728", "ls": ":", "label": "Coulomb"},
-    "combined": {"color": "#2ca02c", "ls": "-", "label": "viscous + Coulomb"},
+    "viscous": {"color": OKABE_ITO["blue"], "ls": "--", "label": "viscous"},
+    "coulomb": {"color": OKABE_ITO["vermillion"], "ls": ":", "label": "Coulomb"},
+    "combined": {"color": OKABE_ITO["bluish green"], "ls": "-", "label": "viscous + Coulomb"},
 }
 MODEL_STYLE = {
-    "linear": {"color": "#1f77b4", "ls": "--", "label": "linear viscous (paper's model)"},
-    "combined": {"color": "#2ca02c", "ls": "-", "label": "viscous + Coulomb (Den Hartog)"},
+    "linear": {"color": OKABE_ITO["blue"], "ls": "--", "label": "linear viscous (paper's model)"},
+    "combined": {"color": OKABE_ITO["bluish green"], "ls": "-", "label": "viscous + Coulomb (Den Hartog)"},
 }
+MEASURED = "0.35"  # grey dots
 SESSION_MARKER = {1: "o", 2: "s"}
-SESSION_COLOR = {1: "#9467bd", 2: "#ff7f0e"}
+SESSION_COLOR = {1: OKABE_ITO["reddish purple"], 2: OKABE_ITO["orange"]}
 BRAKE_TITLE = {"off": "without the brake", "on": "with the brake"}
 
 
@@ -39,7 +44,7 @@ def decay_figure(st: RealOscillatorStudy):
     fig, axes = figure(2, 1, height=5.6)
     for ax, brake in zip(axes, ("off", "on"), strict=True):
         d = typical_decay(st, brake)
-        ax.plot(d.t, d.angle, color="0.35", lw=0.0, marker=".", ms=3, label="measured (20 Hz)")
+        ax.plot(d.t, d.angle, color=MEASURED, lw=0.0, marker=".", ms=3, label="measured (20 Hz)")
         c = d.combined
         tt = np.linspace(c.t_start, c.t_end, 2000)
         for law in ("viscous", "coulomb", "combined"):
@@ -52,7 +57,20 @@ def decay_figure(st: RealOscillatorStudy):
         ax.set_ylim(lo - 0.1 * (hi - lo), hi + 0.75 * (hi - lo))
         place_legend(ax, ncols=2)
     axes[-1].set_xlabel("$t$ (s)")
-    return fig
+    top, bottom = panel_words(fig)
+    runs = {b: typical_decay(st, b) for b in ("off", "on")}
+    caption = (
+        f"A typical free decay of each file (the run of median residual among the fits): {top} without the "
+        f"magnetic brake (run {runs['off'].run}), {bottom} with it (run {runs['on'].run}). Grey dots: the "
+        "measured wheel angle θ (rad) at 20 Hz; lines: the exact free decay fitted over the whole trace under "
+        "three damping laws, viscous (blue, dashed), Coulomb (vermillion, dotted) and viscous + Coulomb "
+        "(green, solid)."
+    )
+    alt = (
+        "Two decaying oscillations of the wheel angle against time, with three fitted envelopes each; the "
+        "viscous-plus-Coulomb fit follows the measured points most closely."
+    )
+    return Captioned(fig, caption, "fig-real-decay", alt)
 
 
 def loss_figure(st: RealOscillatorStudy):
@@ -71,7 +89,7 @@ def loss_figure(st: RealOscillatorStudy):
                 ls="none",
                 marker="o",
                 ms=3,
-                color="0.45",
+                color=MEASURED,
                 alpha=0.7,
                 label="measured, all runs" if i == 0 else None,
             )
@@ -90,7 +108,20 @@ def loss_figure(st: RealOscillatorStudy):
         ax.set_ylim(bottom=0.0, top=float(ax.get_ylim()[1]) * 1.45)
     axes[0].set_ylabel("loss per half period (rad)")
     place_legend(axes[0])
-    return fig
+    left, right = panel_words(fig)
+    n_off, n_on = len(st.decays["off"].runs), len(st.decays["on"].runs)
+    caption = (
+        f"Amplitude lost per half period against the amplitude, every extremum of every run ({left}: without "
+        f"the brake, {n_off} runs; {right}: with it, {n_on} runs). Grey dots: measured. Lines: each law's "
+        "pooled fit, where viscous damping loses a fixed fraction (a line through the origin, blue, dashed), "
+        "Coulomb friction a fixed angle (a horizontal line, vermillion, dotted) and the combined law both "
+        "(green, solid)."
+    )
+    alt = (
+        "Two scatter plots of loss per half period against amplitude; the points rise with amplitude from a "
+        "non-zero intercept, which only the combined law's line follows."
+    )
+    return Captioned(fig, caption, "fig-real-losses", alt)
 
 
 def response_figure(st: RealOscillatorStudy, models: bool = True):
@@ -104,7 +135,8 @@ def response_figure(st: RealOscillatorStudy, models: bool = True):
             lag = c.linear_lag if name == "linear" else c.combined_lag
             a1.plot(c.omega, ratio, color=s["color"], ls=s["ls"], label=s["label"] + ", steady")
             a2.plot(c.omega, lag, color=s["color"], ls=s["ls"])
-        a1.plot(c.omega, c.combined_hb, color="#2ca02c", ls=":", lw=1.0, label="viscous + Coulomb, harmonic balance")
+        a1.plot(c.omega, c.combined_hb, color=OKABE_ITO["bluish green"], ls=":", lw=1.0,
+                label="viscous + Coulomb, harmonic balance")  # fmt: skip
     for session in (1, 2):
         for steady in (True, False):
             ds = [d for d in st.driven if d.session == session and d.steady == steady]
@@ -135,8 +167,27 @@ def response_figure(st: RealOscillatorStudy, models: bool = True):
     a2.set_xlabel(r"drive frequency $\omega$ (rad/s)")
     a2.axvline(st.models["combined"].omega_n, color="0.6", lw=0.8, ls="-.")  # ω_n
     a2.set_ylim(-0.5, math.pi + 0.5)
-    place_legend(a1, outside=False, ncols=2, fontsize=7.5)
-    return fig
+    place_legend(a1, outside=False, ncols=2, fontsize=8)
+    top, bottom = panel_words(fig)
+    n = len(st.driven)
+    n_steady = sum(d.steady for d in st.driven)
+    models_text = (
+        " Lines: the steady response the free-decay fits predict, linear viscous (the paper's model; blue, "
+        "dashed) and viscous + Coulomb (green, solid, with its one-harmonic balance dotted)."
+        if models
+        else " No model is drawn: these are the measurements alone."
+    )
+    caption = (
+        f"The driven runs ({n}, of which {n_steady} reached a steady state): {top}, the late amplitude ratio of "
+        f"wheel to drive on a logarithmic axis; {bottom}, the phase lag, with the fitted natural frequency "
+        f"ωₙ = {st.models['combined'].omega_n:.4g} rad/s dash-dotted. Filled markers: steady runs; open: "
+        f"transient ones; circles session 1, squares session 2; bars: ± one standard error.{models_text}"
+    )
+    alt = (
+        "A resonance curve: the amplitude ratio peaks and the phase lag rises through π/2 near the natural "
+        "frequency, for both measurement sessions" + (", with the two models' predicted curves." if models else ".")
+    )
+    return Captioned(fig, caption, "fig-real-response-models" if models else "fig-real-response", alt)
 
 
 def prediction_figure(st: RealOscillatorStudy):
@@ -152,7 +203,7 @@ def prediction_figure(st: RealOscillatorStudy):
         picks.append(("transient, predicted", max(trans, key=lambda d: d.late.ratio)))
     fig, axes = figure(len(picks), 1, height=2.3 * len(picks) + 0.6, squeeze=False)
     for ax, (label, d) in zip(axes[:, 0], picks, strict=True):
-        ax.plot(d.t, d.angle, color="0.35", lw=0.0, marker=".", ms=2.5, label="measured")
+        ax.plot(d.t, d.angle, color=MEASURED, lw=0.0, marker=".", ms=2.5, label="measured")
         for name in ("linear", "combined"):
             s = MODEL_STYLE[name]
             ax.plot(
@@ -164,4 +215,14 @@ def prediction_figure(st: RealOscillatorStudy):
         ax.set_ylim(lo, hi + 0.6 * (hi - lo))
         place_legend(ax, ncols=3)
     axes[-1, 0].set_xlabel("$t$ (s)")
-    return fig
+    words = panel_words(fig) or ["the panel"]
+    parts = [f"{w}: session {d.session}, run {d.run} at ω = {d.omega:.3g} rad/s ({label})"
+             for w, (label, d) in zip(words, picks, strict=True)]  # fmt: skip
+    caption = (
+        "Measured wheel angle θ (grey dots) and the angle both models predict from the drive alone, with the "
+        "parameters of the free decays and the drive gain of the calibration runs: linear viscous (blue, "
+        "dashed) and viscous + Coulomb (green, solid). " + "; ".join(parts) + "."
+    )
+    caption = caption[0].upper() + caption[1:]
+    alt = "Driven oscillations of the wheel angle against time with the two models' predictions overlaid."
+    return Captioned(fig, caption, "fig-real-prediction", alt)

@@ -37,7 +37,7 @@ SUPPRESSED = 0.1
 LAW_TEXT = {"viscous": "viscous", "coulomb": "Coulomb", "combined": "combined"}
 BRAKE_TEXT = {"off": "without the brake", "on": "with the brake"}
 MODEL_TEXT = {"linear": "linear viscous (the paper's)", "combined": "viscous + Coulomb"}
-PAR_TEXT = {"omega_n": ("ω_n", "rad/s"), "zeta": ("ζ", ""), "friction": ("Δ", "rad")}
+PAR_TEXT = {"omega_n": ("ωₙ", "rad/s"), "zeta": ("ζ", ""), "friction": ("Δ", "rad")}
 FIXED = Missing("fixed at 0 by the law")
 
 
@@ -109,7 +109,7 @@ def front_findings(st: RealOscillatorStudy) -> list[str]:
         f"without the brake.",
         f"The magnetic brake adds Δζ = {_pm(st.brake_dzeta, st.brake_dzeta_se, 2)} of viscous damping "
         f"(ζ = {_pm(on.pooled[('combined', 'zeta')].mean, on.pooled[('combined', 'zeta')].stderr, 2)} with it); "
-        f"ω_n = {_pm(wn.mean, wn.stderr)} rad/s.",
+        f"ωₙ = {_pm(wn.mean, wn.stderr)} rad/s.",
         f"At resonance the wheel swings {g(amp, 3)} times as far as at the lowest drive frequency (the paper: about "
         "10)"
         + (
@@ -153,7 +153,7 @@ def decay_table(st: RealOscillatorStudy) -> Table:
     cols = [
         Column("brake", "brake"),
         Column("run", "run"),
-        Column("wn", "ω_n (rad/s)", 4),
+        Column("wn", "ωₙ (rad/s)", 4),
         Column("zeta", "ζ", 2),
         Column("zeta_se", "s(ζ)", 2),
         Column("delta", "Δ (rad)", 3),
@@ -200,8 +200,8 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
         Column("law", "law"),
         Column("chosen", "runs choosing it"),
         Column("n", "runs"),
-        Column("omega_n", "ω_n (rad/s)", 4),
-        Column("omega_n_se", "s(ω_n) (rad/s)", 2),
+        Column("omega_n", "ωₙ (rad/s)", 4),
+        Column("omega_n_se", "s(ωₙ) (rad/s)", 2),
         Column("zeta", "ζ", 2),
         Column("zeta_se", "s(ζ)", 2),
         Column("zeta_b", "Birge ratio of ζ", 2),
@@ -337,7 +337,7 @@ def peak_sentence(st: RealOscillatorStudy) -> str:
         f"splits the loss per half period into a part proportional to the amplitude (ζ) and a constant part (Δ) "
         f"from the extrema alone; over the narrow range of amplitudes it keeps the two are nearly collinear, so it "
         f"trades one for the other, while the whole trace also fits the shape between extrema. Neither estimator "
-        f"checks the model; their agreement on ω_n only says the period is well measured."
+        f"checks the model; their agreement on ωₙ only says the period is well measured."
     )
 
 
@@ -376,7 +376,7 @@ def driven_table(st: RealOscillatorStudy) -> Table:
         Column("run", "run"),
         Column("V", "motor (V)", 3),
         Column("w", "ω (rad/s)", 4),
-        Column("r", "ω/ω_n", 3),
+        Column("r", "ω/ωₙ", 3),
         Column("Au", "drive amplitude (rad)", 3),
         Column("early", "ratio, early", 3),
         Column("late", "ratio, late", 3),
@@ -394,7 +394,7 @@ def driven_table(st: RealOscillatorStudy) -> Table:
         f"Driven runs: wheel-to-drive amplitude ratio and phase lag from one-harmonic fits over whole drive "
         f"periods, the first {p.n_early} (early) and the last {p.n_late} (late; fewer in short runs); a run is "
         f"steady when early and late wheel amplitudes differ by at most {g(p.z_steady)} standard errors and the "
-        f"model's build-up time 1/(ζω_n) is shorter than the record.",
+        f"model's build-up time 1/(ζωₙ) is shorter than the record.",
         "tab-real-driven",
         notes=("Standard errors: the larger of the fit's and the scatter of one-period fits (batch means).",),
     )
@@ -411,14 +411,14 @@ def driven_sentence(st: RealOscillatorStudy) -> str:
     dur = _median_duration(st)
     if math.isfinite(st.build_up_time):
         build = (
-            f"The model's build-up time 1/(ζω_n) is {g(st.build_up_time, 3)} s against records of about {g(dur, 3)} s, "
-            f"so a transient started at the beginning still has e^(−{g(dur / st.build_up_time, 2)}) of its size at "
+            f"The model's build-up time 1/(ζωₙ) is {g(st.build_up_time, 3)} s against records of about {g(dur, 3)} s, "
+            f"so a transient started at the beginning still has $e^{{-{g(dur / st.build_up_time, 2)}}}$ of its size at "
             f"the end."
         )
     else:
         build = "The model has no viscous damping (ζ = 0), so by the model no transient ever dies out."
     return (
-        f"{n - len(tr)} of {n} driven runs are steady; {len(tr)} are transients, at ω/ω_n between {g(r[0], 3)} "
+        f"{n - len(tr)} of {n} driven runs are steady; {len(tr)} are transients, at ω/ωₙ between {g(r[0], 3)} "
         f"and {g(r[-1], 3)}; their late amplitude is up to "
         f"{g(max(d.late.wheel_amp / d.early.wheel_amp for d in tr), 3)} times the early one. {build} The "
         f"transients' late ratios are lower bounds of the steady ones."
@@ -447,17 +447,17 @@ def model_table(st: RealOscillatorStudy) -> Table:
         )
     cols = [
         Column("model", "model"),
-        Column("wn", "ω_n (rad/s)", 4),
+        Column("wn", "ωₙ (rad/s)", 4),
         Column("zeta", "ζ", 3),
         Column("zeta_se", "s(ζ)", 2),
         Column("delta", "Δ (rad)", 3),
         Column("g", "g (rad/rad)", 3),
-        Column("peak", "steady amplitude at ω_n (rad)", 3),
+        Column("peak", "steady amplitude at ωₙ (rad)", 3),
     ]
     return Table(
         rows,
         cols,
-        "The two models predicting the driven runs: ω_n, ζ and Δ pooled from the free decays "
+        "The two models predicting the driven runs: ωₙ, ζ and Δ pooled from the free decays "
         f"{BRAKE_TEXT[st.params.brake]} "
         f"(linear: the viscous-law fits; viscous + Coulomb: the combined-law fits), the drive gain g calibrated on the "
         f"{len(st.calibration_runs)} lowest-frequency runs; steady amplitude at resonance for the mean drive amplitude "
@@ -477,7 +477,7 @@ def calibration_sentence(st: RealOscillatorStudy) -> str:
         f"The drive gain g is calibrated on the {len(runs)} lowest-frequency runs only (session "
         f"{', '.join(map(str, sess))}, run{'s' if len(runs) > 1 else ''} {names}; ω = {g(min(w), 3)} to "
         f"{g(max(w), 3)} rad/s, "
-        f"ω/ω_n ≈ {g(sum(w) / len(w) / com.omega_n, 2)}): for each model, g minimises the squared difference between "
+        f"ω/ωₙ ≈ {g(sum(w) / len(w) / com.omega_n, 2)}): for each model, g minimises the squared difference between "
         "the "
         f"measured late amplitude ratio and the one of the model simulated from the same start under the same "
         f"measured drive. This gives g = {g(lin.gain, 3)} (linear viscous) and {g(com.gain, 3)} (viscous + Coulomb). "
@@ -614,7 +614,7 @@ def failure_sentence(st: RealOscillatorStudy) -> str:
         if not ds:
             return "on no predicted run"
         r = sorted(d.omega / wn for d in ds)
-        return f"on {len(ds)} predicted runs (ω/ω_n from {g(r[0], 3)} to {g(r[-1], 3)})"
+        return f"on {len(ds)} predicted runs (ω/ωₙ from {g(r[0], 3)} to {g(r[-1], 3)})"
 
     cal = st.calibration_runs
     cal_lin = max(st.prediction("linear", d).rel_error for d in cal)
@@ -731,7 +731,7 @@ def summary_text(st: RealOscillatorStudy) -> str:
                 else f"the drive ({g(st.drive_amp, 3)} rad) is below the {g(st.stick_drive_exact, 3)} rad at which "
                 "the wheel sticks."
             ),
-            f"* **Designer's takeaway.** Damping matters only within about ±{g(100 * st.brake_band, 2)} % of ω_n; "
+            f"* **Designer's takeaway.** Damping matters only within about ±{g(100 * st.brake_band, 2)} % of ωₙ; "
             "there, "
             f"identify it at the amplitudes of use, from repeated runs ({st.tests[0].runs_needed} per setting "
             "suffice to "

@@ -82,7 +82,7 @@ def claims_table(st: RealOscillatorStudy) -> Table:
     v4 = "partly supported: only near resonance" if st.brake_band < 0.5 else "supported across the band"
     m4 = (
         f"the brake changes the model's steady amplitude by more than {g(100 * BRAKE_MATTERS)} % only for "
-        f"|ω/ω_n − 1| < {g(st.brake_band, 2)}; moving the drive from {g(w_pk, 3)} to {g(w_det, 3)} rad/s lowers the "
+        f"|ω/ωₙ − 1| < {g(st.brake_band, 2)}; moving the drive from {g(w_pk, 3)} to {g(w_det, 3)} rad/s lowers the "
         f"measured ratio {g(st.detuning_factor, 3)}-fold"
     )
     rows = [
