@@ -131,7 +131,7 @@ def test_reproduction_sentences_follow_the_tables(executed, key):
     from vibration.presentation.narrative import PARAMETER_TEXT
 
     for name, value in changed.items():
-        assert f"{PARAMETER_TEXT[name][0]} = {value:g} " in key_results, (name, key_results)
+        assert f"{PARAMETER_TEXT[name][0]} = {value:g} ".replace("-", "−") in key_results, (name, key_results)
 
 
 @pytest.mark.slow

@@ -94,9 +94,9 @@ regime and verdict below is computed with the run's values; quotations keep the 
     changed, same = [], []
     for name, value in values.items():
         sym, unit = PARAMETER_TEXT.get(name, (name, ""))
-        text = f"{sym} = {g(value, 6)}{' ' + unit if unit else ''}"
+        text = f"{sym} = {sig(value, 6)}{' ' + unit if unit else ''}"
         if name in paper and float(value) != paper[name]:
-            changed.append(f"{text} (the paper's: {g(paper[name], 6)}{' ' + unit if unit else ''})")
+            changed.append(f"{text} (the paper's: {sig(paper[name], 6)}{' ' + unit if unit else ''})")
         else:
             same.append(text)
     if not changed:

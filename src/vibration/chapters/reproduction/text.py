@@ -83,8 +83,12 @@ def band_clause(st: ReproductionStudy) -> str:
     sc = st.scenarios["resonance"]
     lo, hi = half_power_band(sc.oscillator)
     w = sc.force.omega
+    if sc.oscillator.c < 0:
+        return "but with negative damping there is no steady state, so no half-power band"
+    if sc.oscillator.c == 0:
+        return "but undamped its resonant peak is infinite, so there is no half-power band"
     if lo is None or hi is None:
-        return "at this damping the response has no resonant peak, so no half-power band"
+        return "but at this damping the response has no resonant peak, so no half-power band"
     where = "inside" if lo <= w <= hi else "outside"
     text = f"{where} the half-power band ({g(lo)} to {g(hi)} rad/s) of its damping"
     if where == "outside":
@@ -189,7 +193,7 @@ def damping_text(st: ReproductionStudy) -> str:
         if sid == "damping_nominal" and "resonance" in run:
             lines.append(
                 f'- **{case_name(sid)}** is the resonance run of the previous section (the paper: "This is the case '
-                f'also examined in Figure 1"): the same c = {g(st.cases[sid].c)} N s/m at the same forcing, '
+                f'also examined in Figure 1"): the same c = {sig(st.cases[sid].c)} N s/m at the same forcing, '
                 "computed once."
             )
         else:
