@@ -293,8 +293,7 @@ def audit_summary(st: ClaimsAuditStudy) -> str:
     numbers = [c for c in st.claims if c.verdict in ("number differs", "partly reproduced") and not c.changed]
     for desc, group in _group_by_reading(numbers).items():
         pairs = "; ".join(
-            f"{c.claim_id} {_shown(c.best.value, c.best.unit, READING_DIGITS)} against the paper's {c.claim_kind}"
-            for c in group
+            f'{c.claim_id} {_shown(c.best.value, c.best.unit, READING_DIGITS)} against "{c.claim_kind}"' for c in group
         )
         matched = [c for c in group if c.best.verdict == "reproduced"]
         one = len(group) == 1

@@ -30,8 +30,16 @@ def _compare(value: float, paper: float) -> str:
     return "below" if value < paper else "above" if value > paper else "equal to"
 
 
-def part1_findings(st: OverviewStudy) -> list[str]:
-    """What Part I finds for this run, in three to five computed Markdown sentences (no bullets)."""
+def part1_findings(st: OverviewStudy | None = None, **values) -> list[str]:
+    """What Part I finds, in five computed Markdown sentences (no bullets), each naming its chapter.
+
+    ``st`` is the front page's study; without it the study is computed from ``values`` (the front page's
+    parameters, the paper's where not given), e.g. ``part1_findings(c_low=0.05)``.
+    """
+    if st is None:
+        from vibration.chapters.overview.study import overview_study
+
+        st = overview_study(**values)
     p = st.params
     out = []
     paper_x = PAPER_SAYS["resonance_amplitude"][1]
