@@ -91,7 +91,8 @@ def test_panel_in_chromium_matches_the_grid(browser, tmp_path):
             )
             shown = page.evaluate(
                 """() => Array.from(document.querySelectorAll('.twin-readout tbody tr')).map(r =>
-                    ['.twin-est', '.twin-lo', '.twin-hi', '.twin-in'].map(s => r.querySelector(s).textContent))"""
+                    ['.twin-est', '.twin-lo', '.twin-hi', '.twin-in'].map(s => r.querySelector(s).textContent
+                        .replace('\u2212', '-')))"""  # the book's minus sign, read back as a number
             )
             for p in range(3):
                 est, lo, hi, inside = shown[p]
@@ -108,7 +109,7 @@ def test_panel_in_chromium_matches_the_grid(browser, tmp_path):
             )
             expect = 100 * (g.estimates[i, j] - g.truth) / g.truth
             np.testing.assert_allclose(rel["est"], expect, rtol=1e-12, atol=1e-12)
-            assert page.eval_on_selector_all("svg.twin-plot circle", "c => c.length") == 3
+            assert page.eval_on_selector_all("svg.twin-plot circle.twin-dot", "c => c.length") == 3
         SCREENSHOTS.mkdir(parents=True, exist_ok=True)
         page.locator(".twin-panel").screenshot(path=str(SCREENSHOTS / "twin_panel.png"))
         assert outside == [] and errors == []

@@ -12,22 +12,26 @@ import html
 import itertools
 import json
 import re
-from importlib.resources import files
 
 import numpy as np
 
 from vibration.chapters.digital_twin.study import DigitalTwinStudy
 from vibration.physics.model import Oscillator, ParameterError
 from vibration.physics.twin import EstimateGrid, Identification, identify, random_force, synthetic_measurements
+from vibration.presentation.panels import line_style, panel_assets
+from vibration.presentation.style import OKABE_ITO
 
 NAMES = ("m", "c", "k")
 UNITS = ("kg", "N s/m", "N/m")
 
 _counter = itertools.count(1)
-
-
-def _asset(name: str) -> str:
-    return files("vibration.chapters.digital_twin").joinpath("panel", name).read_text(encoding="utf-8")
+#: The truth as the book's exact case (black dashed), the identified model's intervals in its nominal blue, the
+#: estimate a vermillion dot; with their legend words.
+STYLES = {
+    "truth": {**line_style("exact"), "label": "truth"},
+    "interval": {**line_style("c_nominal"), "label": "95 % interval"},
+    "estimate": {**line_style({"color": OKABE_ITO["vermillion"]}), "label": "estimate"},
+}
 
 
 def _grid_payload(grid: EstimateGrid) -> dict:
@@ -75,13 +79,12 @@ def twin_panel_html(grid: EstimateGrid, *, panel_id: str | None = None) -> str:
         f'<td class="twin-lo"></td><td class="twin-hi"></td><td class="twin-in"></td></tr>'
         for n, u in zip(NAMES, UNITS, strict=True)
     )
-    return f"""<div class="twin-panel" id="{e(pid)}" data-grid="{e(text)}">
-<style>
-{_asset("twin.css")}</style>
+    return f"""<div class="twin-panel" id="{e(pid)}" data-grid="{e(text)}" data-styles="{e(json.dumps(STYLES))}">
+{panel_assets("vibration.chapters.digital_twin", "twin.js", "twin.css")}\
 <h3 class="twin-title">Noise and record length against the estimates (precomputed)</h3>
 <p class="twin-sub">Each position of the sliders shows one identification computed when the report was built \
-(same force and noise draw throughout; only the slider's quantity changes). Bars: 95 % intervals of the \
-relative error; dashed line: the truth.</p>
+(same force and noise draw throughout; only the slider's quantity changes): each parameter's relative error \
+with its 95 % interval.</p>
 <noscript>This panel needs JavaScript to draw its plot.</noscript>
 <div class="twin-controls">
 <label for="{e(pid)}-noise">noise std. / rms response</label>
@@ -99,8 +102,6 @@ aria-label="relative error of m, c and k in percent with 95 % intervals"></svg>
 <tbody>
 {rows}
 </tbody></table>
-<script>
-{_asset("twin.js")}</script>
 <script>window.vibrationTwin.mount(document.getElementById({json.dumps(pid)}));</script>
 </div>
 """

@@ -16,25 +16,28 @@ import io
 import itertools
 import json
 import math
-from importlib.resources import files
 
 import numpy as np
 
-from vibration.chapters.stability.figures import look
+from vibration.chapters.stability.figures import LOCUS_GREY, REF_GREY, look
 from vibration.chapters.stability.study import BAND, StabilityStudy
 from vibration.chapters.stability.words import WN, c_text, num, pole_text, sig
 from vibration.physics.model import Oscillator, check_real
 from vibration.physics.stability import StepMetrics, poles, step_metrics, step_response, transmissibility
+from vibration.presentation.panels import line_style, panel_assets
 
 #: Range of the damping-ratio slider (log scale), 1.
 ZETA_MIN, ZETA_MAX = 0.005, 5.0
 #: Positions of the logarithmic slider.
 ZETA_STEPS = 600
 _counter = itertools.count(1)
-
-
-def _asset(name: str) -> str:
-    return files("vibration.chapters.stability").joinpath("panel", name).read_text(encoding="utf-8")
+#: The panel's colours, as the chapter's figures draw them: the nominal damping's curve, black marks, grey references.
+STYLES = {
+    "curve": line_style(look("nominal")),
+    "point": line_style({"color": "#000000"}),
+    "reference": line_style({"color": REF_GREY}),
+    "locus": line_style({"color": LOCUS_GREY}),
+}
 
 
 def stability_panel_html(
@@ -74,9 +77,9 @@ def stability_panel_html(
     e = html.escape
     pos = round(ZETA_STEPS * math.log(zeta / ZETA_MIN) / math.log(ZETA_MAX / ZETA_MIN))
     step = w_max / 1000.0
-    return f"""<div class="vst-panel" id="{e(panel_id)}" data-params="{e(json.dumps(params))}">
-<style>
-{_asset("stability.css")}</style>
+    return f"""<div class="vst-panel" id="{e(panel_id)}" data-params="{e(json.dumps(params))}" \
+data-styles="{e(json.dumps(STYLES))}">
+{panel_assets("vibration.chapters.stability", "stability.js", "stability.css")}\
 <h3 class="vst-title">Damping as a design choice: m = {m:g} kg, k = {k:g} N/m, ω<sub>n</sub> = {wn:.4g} rad/s</h3>
 <p class="vst-sub">Move the damping ratio (logarithmic) and the base frequency; computed in your browser from the
 closed forms.</p>
@@ -105,8 +108,6 @@ aria-label="poles in the complex plane"></svg>
 <tr><th>poles</th><td class="vst-r-poles"></td><th>overshoot</th><td class="vst-r-os"></td></tr>
 <tr><th>rise time (10–90 %)</th><td class="vst-r-tr"></td><th>settling time (2 %)</th><td class="vst-r-ts"></td></tr>
 </tbody></table>
-<script>
-{_asset("stability.js")}</script>
 <script>window.vibrationStability.mount(document.getElementById({json.dumps(panel_id)}));</script>
 </div>
 """

@@ -15,7 +15,6 @@ import io
 import itertools
 import json
 import math
-from importlib.resources import files
 
 import numpy as np
 
@@ -31,15 +30,11 @@ from vibration.physics.tmd import (
     tmd_magnification,
     tmd_peak,
 )
+from vibration.presentation.panels import line_style, panel_assets
 from vibration.presentation.style import OKABE_ITO, case_style
 
 __all__ = ["MU_RANGE", "F_RANGE", "ZETA_A_RANGE", "ZETA_P_RANGE", "TMDExplorer", "sliders_text", "tmd_explorer",
            "tmd_panel_html"]  # fmt: skip
-
-
-def _asset(name: str) -> str:
-    """Text of ``vibration/chapters/tmd/panel/<name>``."""
-    return files("vibration.chapters.tmd").joinpath("panel", name).read_text(encoding="utf-8")
 
 
 #: Ranges of the sliders (μ and ζ_a on logarithmic scales), 1.
@@ -51,6 +46,14 @@ ZETA_P_RANGE = (0.0, 0.3)
 R_RANGE = (0.4, 1.6)
 _SLIDER_RULES = (("dh", "Den Hartog"), ("hinf", "H∞ (Nishihara–Asami)"), ("h2", "H2 (Warburton)"))
 _counter = itertools.count(1)
+#: The panel's lines and marks with their legend words, as the JupyterLab explorer draws them.
+STYLES = {
+    "curve": {**line_style({"color": OKABE_ITO["blue"]}), "label": "with the absorber of the sliders"},
+    "opt": {**line_style("exact"), "label": "H∞ tuning for this μ"},
+    "bare": {**line_style({"color": OKABE_ITO["grey"]}), "label": "without absorber"},
+    "fixed": {**line_style({"color": OKABE_ITO["black"]}), "label": "fixed points P, Q of the undamped primary"},
+    "peak": {**line_style({"color": OKABE_ITO["vermillion"]}), "label": "peak"},
+}
 
 
 def _slider_values(mu, f, zeta_a, zeta_p) -> tuple[float, float, float, float]:
@@ -120,9 +123,9 @@ def tmd_panel_html(mu=0.05, f=None, zeta_a=None, zeta_p=0.0, *, panel_id: str | 
         f'<button type="button" class="vtm-rule" data-rule="{key}">{e(name.split(" (")[0])}</button>'
         for key, name in _SLIDER_RULES
     )
-    return f"""<div class="vtm-panel" id="{pid}" data-params="{e(json.dumps(params))}">
-<style>
-{_asset("tmd.css")}</style>
+    return f"""<div class="vtm-panel" id="{pid}" data-params="{e(json.dumps(params))}" \
+data-styles="{e(json.dumps(STYLES))}">
+{panel_assets("vibration.chapters.tmd", "tmd.js", "tmd.css")}\
 <h3 class="vtm-title">Tuned mass damper: the primary's magnification against the frequency ratio</h3>
 <p class="vtm-sub">Move the mass ratio μ and the absorber damping ζ<sub>a</sub> (logarithmic), the tuning
 f = ω<sub>a</sub>/ω<sub>p</sub> and the primary damping ζ<sub>p</sub>; computed in your browser from the
@@ -145,12 +148,7 @@ closed forms.</p>
 <div class="vtm-buttons">set f and ζ<sub>a</sub> to the rule for this μ: {buttons}</div>
 <div class="vtm-body">
 <figure><svg class="vtm-plot" viewBox="0 0 640 330" role="img"
-aria-label="primary's magnification against the frequency ratio"></svg>
-<figcaption><span class="vtm-key vtm-key-curve"></span>with the absorber of the sliders
-<span class="vtm-key vtm-key-opt"></span>H∞ tuning for this μ
-<span class="vtm-key vtm-key-bare"></span>without absorber
-<span class="vtm-key vtm-key-dot"></span>fixed points P, Q of the undamped primary
-<span class="vtm-key vtm-key-peak"></span>peak</figcaption></figure>
+aria-label="primary's magnification against the frequency ratio"></svg></figure>
 <div>
 <table class="vtm-readout"><tbody>
 <tr><th>peak |X<sub>p</sub>|/(F<sub>0</sub>/k<sub>p</sub>)</th><td class="vtm-r-peak"></td></tr>
@@ -165,8 +163,6 @@ aria-label="primary's magnification against the frequency ratio"></svg>
 {rules}</tbody></table>
 </div>
 </div>
-<script>
-{_asset("tmd.js")}</script>
 <script>window.vibrationTMD.mount(document.getElementById({json.dumps(panel_id)}));</script>
 </div>
 """

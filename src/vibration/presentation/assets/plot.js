@@ -11,10 +11,11 @@
  * A panel calls VibPlot.draw(svg, spec) whenever its sliders move:
  *
  *   spec = {
- *     height: 260,                 // px; at most aspect * width when aspect is given
+ *     height: 260,                 // px without the legend (its rows add to it); at most aspect * width
  *     aspect: 1,                   // optional
  *     equal: false,                // equal data scales on both axes (the range of one axis widens)
- *     x: {label: "t (s)", min, max, log, ticks: 5 | [values] | [{v, label}], grid: true, pad: 0.05},
+ *     x: {label: "t (s)", min, max, log, ticks: 5 | [values] | [{v, label}], grid: true, pad: 0.05,
+ *         format: v => text, tickStyle: {size, color, italic}},
  *     y: {...},
  *     series: [                    // in drawing order; every series may carry cls, label (legend), title
  *       {type: "line", x: [], y: [], color, dash, width},
@@ -106,9 +107,9 @@
 
   /** Label of a tick at v on an axis whose ticks are `step` apart: plain decimals from 0.001 to 10⁵, else ×10ⁿ. */
   function tickText(v, step) {
-    if (v === 0 || Math.abs(v) < 1e-9 * Math.abs(step)) { return "0"; }
-    var a = Math.abs(v);
     var lastDigit = Math.floor(Math.log10(Math.abs(step)) + 1e-9);
+    if (v === 0 || Math.abs(v) < 1e-9 * Math.abs(step)) { return lastDigit >= -6 ? fixed(0, Math.max(0, -lastDigit)) : "0"; }
+    var a = Math.abs(v);
     if (a >= 1e-3 && a < 1e5 && lastDigit >= -6) {
       return fixed(v, Math.max(0, -lastDigit));
     }
@@ -402,6 +403,12 @@
     });
   }
 
+  /** Font size, colour and style of an axis's tick labels (axis option tickStyle: {size, color, italic}). */
+  function tickStyle(ax) {
+    var t = ax.tickStyle || {};
+    return { size: t.size || FONT.tick, color: t.color || MUTED, style: t.italic ? "italic" : null };
+  }
+
   /** Draw the plot `spec` into `svg` at the SVG's current width; returns {x, y, box, width, height}. */
   function draw(svg, spec) {
     svg.__vibPlot = spec;
@@ -410,7 +417,7 @@
     var W = Math.max(width, 200);
     var H = spec.height || 260;
     if (spec.aspect) { H = Math.min(H, Math.round(spec.aspect * W)); }
-    svg.setAttribute("viewBox", "0 0 " + W + " " + H);
+    svg.setAttribute("viewBox", "0 0 " + W + " " + H);  // for measuring; the legend's rows add to the height
     svg.setAttribute("font-family", "inherit");
     svg.style.display = "block";
     svg.style.width = "100%";
@@ -420,12 +427,15 @@
     var xa = spec.x || {}, ya = spec.y || {};
     var entries = legendEntries(spec);
     var rows = layoutLegend(svg, entries, W);
-    var legendH = rows.length * 17;
-    var box = { t: 8 + legendH + (ya.label ? 0 : 0), b: H - (xa.label ? 40 : 24), l: 0, r: W - 12 };
+    var legendH = rows.length ? rows.length * 17 + 6 : 0;
+    H += legendH;
+    svg.setAttribute("viewBox", "0 0 " + W + " " + H);
+    var box = { t: 8 + legendH, b: H - (xa.label ? 40 : 24), l: 0, r: W - 12 };
     var xr = axisRange(xa, seriesValues(spec, "x")), yr = axisRange(ya, seriesValues(spec, "y"));
     var yTicks = tickList(ya, yr[0], yr[1], Math.max(2, Math.round((box.b - box.t) / 45)));
     var labelW = 0;
-    yTicks.forEach(function (t) { labelW = Math.max(labelW, measure(svg, t.label, FONT.tick)); });
+    var xts = tickStyle(xa), yts = tickStyle(ya);
+    yTicks.forEach(function (t) { labelW = Math.max(labelW, measure(svg, t.label, yts.size)); });
     box.l = Math.ceil(labelW + 8 + (ya.label ? 20 : 4));
     if (spec.equal) { // widen one range so that a unit is as long on both axes
       var kx = (box.r - box.l) / (xr[1] - xr[0]), ky = (box.b - box.t) / (yr[1] - yr[0]), mid, half;
@@ -440,12 +450,12 @@
     for (var tries = 0; tries < 8; tries++) { // fewer ticks until their labels leave room between them
       xTicks = tickList(xa, xr[0], xr[1], n);
       var widest = 0;
-      xTicks.forEach(function (t) { widest = Math.max(widest, measure(svg, t.label, FONT.tick)); });
+      xTicks.forEach(function (t) { widest = Math.max(widest, measure(svg, t.label, xts.size)); });
       var room = xTicks.length > 1 ? (box.r - box.l) / (xTicks.length - 1) : Infinity;
       if (widest + 10 <= room || n <= 2 || Array.isArray(xa.ticks)) { break; }
       n -= 1;
     }
-    var last = xTicks.length ? measure(svg, xTicks[xTicks.length - 1].label, FONT.tick) : 0;
+    var last = xTicks.length ? measure(svg, xTicks[xTicks.length - 1].label, xts.size) : 0;
     box.r = Math.min(box.r, W - 2 - last / 2);
     var sx = scale(xr[0], xr[1], !!xa.log, box.l, box.r), sy = scale(yr[0], yr[1], !!ya.log, box.b, box.t);
     var id = "vibplot-" + (++uid);
@@ -455,14 +465,14 @@
     xTicks.forEach(function (t) {
       var X = sx(t.v).toFixed(2);
       if (xa.grid !== false) { el("line", { x1: X, x2: X, y1: box.t, y2: box.b, stroke: GRID }, axes); }
-      el("text", { "class": "vp-tick", x: X, y: box.b + 15, "text-anchor": "middle", "font-size": FONT.tick,
-        fill: MUTED }, axes).textContent = t.label;
+      el("text", { "class": "vp-tick", x: X, y: box.b + 4 + xts.size, "text-anchor": "middle", "font-size": xts.size,
+        fill: xts.color, "font-style": xts.style }, axes).textContent = t.label;
     });
     yTicks.forEach(function (t) {
       var Y = sy(t.v).toFixed(2);
       if (ya.grid !== false) { el("line", { x1: box.l, x2: box.r, y1: Y, y2: Y, stroke: GRID }, axes); }
-      el("text", { "class": "vp-tick", x: box.l - 5, y: Y, dy: "0.32em", "text-anchor": "end", "font-size": FONT.tick,
-        fill: MUTED }, axes).textContent = t.label;
+      el("text", { "class": "vp-tick", x: box.l - 5, y: Y, dy: "0.32em", "text-anchor": "end", "font-size": yts.size,
+        fill: yts.color, "font-style": yts.style }, axes).textContent = t.label;
     });
     el("rect", { x: box.l, y: box.t, width: box.r - box.l, height: box.b - box.t, fill: "none", stroke: FRAME }, axes);
     if (xa.label) {

@@ -108,7 +108,7 @@
     };
     var second = line(b);
     if (b.style.label === a.style.label) { second.label = ""; } // the same curve twice: one legend entry
-    window.VibPlot.draw(svg, {height: 250, aspect: 0.75, x: axes.x, y: axes.y, series: [line(a), second]});
+    window.VibPlot.draw(svg, {height: 220, aspect: 0.7, x: axes.x, y: axes.y, series: [line(a), second]});
   }
 
   function mount(root) {

@@ -1,7 +1,8 @@
 /*
  * Kernel-free panel of the digital-twin chapter: noise and record-length sliders over
  * identifications precomputed by vibration.physics.twin.estimate_grid (embedded as JSON in
- * data-grid). Nothing is estimated here; the script looks results up and draws them.
+ * data-grid). Nothing is estimated here; the script looks results up and draws them with the book's helper
+ * window.VibPlot (presentation/assets/plot.js), in the styles passed from Python (data-styles).
  *
  * window.vibrationTwin = {cell, relative, mount} is defined once per page; every panel
  * (div.twin-panel) is mounted separately.
@@ -30,64 +31,42 @@
     return { est: c.est.map(f), lo: c.lo.map(f), hi: c.hi.map(f) };
   }
 
-  function fmt(v, digits) {
-    var s = Number(v).toPrecision(digits);
-    if (s.indexOf("e") < 0 && s.indexOf(".") >= 0) {
-      s = s.replace(/0+$/, "").replace(/\.$/, "");
-    }
-    return s;
-  }
-
-  /** SVG markup of one element (attribute values are numbers or fixed class names; text is escaped). */
-  function el(name, attrs, text) {
-    var a = Object.keys(attrs).map(function (k) { return " " + k + '="' + attrs[k] + '"'; }).join("");
-    if (text === undefined) { return "<" + name + a + "/>"; }
-    var t = String(text).replace(/&/g, "&amp;").replace(/</g, "&lt;");
-    return "<" + name + a + ">" + t + "</" + name + ">";
-  }
-
-  function niceStep(span) {
-    var raw = span / 4;
-    var p = Math.pow(10, Math.floor(Math.log10(raw)));
-    var m = raw / p;
-    return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
-  }
-
-  function draw(svg, grid, rel) {
-    var out = [];
-    var W = 640, H = 200, left = 70, right = 20, top = 14, bottom = 40;
-    var lim = 0;
-    for (var p = 0; p < 3; p++) {
+  /* Relative errors of m, c and k with their 95 % intervals, one row each, drawn by window.VibPlot. */
+  function draw(svg, grid, rel, st) {
+    var lim = 0, p;
+    for (p = 0; p < 3; p++) {
       lim = Math.max(lim, Math.abs(rel.lo[p]), Math.abs(rel.hi[p]), Math.abs(rel.est[p]));
     }
     lim = lim > 0 ? 1.15 * lim : 1;
-    var step = niceStep(2 * lim);
+    var step = window.VibPlot.niceStep(2 * lim, 4);
     lim = Math.ceil(lim / step) * step;
-    var x = function (v) { return left + (v + lim) / (2 * lim) * (W - left - right); };
-    var rowH = (H - top - bottom) / 3;
-    for (var tk = -lim; tk <= lim + 1e-9 * lim; tk += step) {
-      out.push(el("line", { x1: x(tk), x2: x(tk), y1: top, y2: H - bottom, class: "twin-grid" }));
-      out.push(el("text", { x: x(tk), y: H - bottom + 15, "text-anchor": "middle", class: "twin-tick" },
-        fmt(Math.abs(tk) < 1e-12 * lim ? 0 : tk, 3)));
-    }
-    out.push(el("text", { x: (left + W - right) / 2, y: H - 6, "text-anchor": "middle", class: "twin-axis" },
-      "relative error (%)"));
-    out.push(el("line", { x1: x(0), x2: x(0), y1: top, y2: H - bottom, class: "twin-truth" }));
+    var bars = [], rows = [], ys = [];
     for (p = 0; p < 3; p++) {
-      var yc = top + (p + 0.5) * rowH;
-      out.push(el("text", { x: left - 10, y: yc + 4, "text-anchor": "end", class: "twin-name" }, grid.names[p]));
-      out.push(el("line", { x1: x(rel.lo[p]), x2: x(rel.hi[p]), y1: yc, y2: yc, class: "twin-bar" }));
-      out.push(el("line", { x1: x(rel.lo[p]), x2: x(rel.lo[p]), y1: yc - 6, y2: yc + 6, class: "twin-bar" }));
-      out.push(el("line", { x1: x(rel.hi[p]), x2: x(rel.hi[p]), y1: yc - 6, y2: yc + 6, class: "twin-bar" }));
-      out.push(el("circle", { cx: x(rel.est[p]), cy: yc, r: 4.5, class: "twin-dot" }));
+      var y = 2.5 - p;
+      ys.push(y);
+      rows.push({v: y, label: grid.names[p]});
+      bars.push([rel.lo[p], y, rel.hi[p], y], [rel.lo[p], y - 0.13, rel.lo[p], y + 0.13],
+        [rel.hi[p], y - 0.13, rel.hi[p], y + 0.13]);
     }
-    svg.innerHTML = out.join("");
+    window.VibPlot.draw(svg, {
+      height: 200,
+      x: {label: "relative error (%)", min: -lim, max: lim},
+      y: {min: 0, max: 3, ticks: rows, grid: false, tickStyle: {size: 15, italic: true, color: "#1d2733"}},
+      series: [
+        {type: "vline", x: 0, color: st.truth.color, dash: st.truth.dash, width: 1.2, label: st.truth.label,
+          cls: "twin-truth"},
+        {type: "segments", segs: bars, color: st.interval.color, width: 2.2, label: st.interval.label, cls: "twin-bar"},
+        {type: "points", x: rel.est, y: ys, r: 4.5, color: st.estimate.color, label: st.estimate.label, cls: "twin-dot"},
+      ],
+    });
   }
 
   function mount(root) {
     if (!root || root.dataset.twinMounted) { return; }
     root.dataset.twinMounted = "1";
     var grid = JSON.parse(root.getAttribute("data-grid"));
+    var styles = JSON.parse(root.getAttribute("data-styles"));
+    var fmt = window.VibPlot.fmt;
     var noise = root.querySelector(".twin-noise");
     var len = root.querySelector(".twin-len");
     var svg = root.querySelector(".twin-plot");
@@ -105,7 +84,7 @@
         r.querySelector(".twin-hi").textContent = fmt(c.hi[p], 5);
         r.querySelector(".twin-in").textContent = c.covers[p] ? "yes" : "no";
       }
-      draw(svg, grid, relative(grid, c));
+      draw(svg, grid, relative(grid, c), styles);
     }
     noise.addEventListener("input", update);
     len.addEventListener("input", update);

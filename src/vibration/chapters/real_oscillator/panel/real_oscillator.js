@@ -62,7 +62,7 @@
   function draw(svg, data, model, styles) {
     var m = styles.measured, f = styles.model;
     window.VibPlot.draw(svg, {
-      height: 300,
+      height: 280, aspect: 0.75,
       x: {label: "t (s)", min: data.t[0], max: data.t[data.t.length - 1]},
       y: {label: "θ (rad)", pad: 0.08},
       series: [

@@ -1,7 +1,8 @@
 /*
  * Kernel-free panel of the stability chapter: damping ratio (log) and base frequency sliders
  * moving the transmissibility curve, the step response and the poles together.
- * SI units (kg, N/m, rad/s, s). No libraries, no network. The closed forms are those of
+ * SI units (kg, N/m, rad/s, s). No libraries, no network: the plots are drawn by the book's helper
+ * window.VibPlot (presentation/assets/plot.js), in the colours passed from Python. The closed forms are those of
  * vibration.physics.stability (transmissibility, poles, step_response, step_metrics):
  *
  *   T(w) = sqrt((1 + (2 zeta r)^2) / ((1 - r^2)^2 + (2 zeta r)^2)),  r = w / wn (scaled form for r > 1);
@@ -172,86 +173,33 @@
     };
   }
 
-  /* ---------------------------------------------------------------- drawing */
+  /* ---------------------------------------------------------------- drawing (window.VibPlot) */
 
-  function fmt(v, d) {
-    if (!isFinite(v)) {
-      return v > 0 ? "\u221e" : "\u2013";
-    }
-    var t = Number(v).toPrecision(d || 4);
-    if (t.indexOf("e") < 0 && t.indexOf(".") >= 0) {
-      t = t.replace(/0+$/, "").replace(/\.$/, "");
-    }
-    return t.replace("-", "\u2212");
-  }
+  var fmt = function (v, d) { return window.VibPlot.fmt(v, d); };
 
-  function niceTicks(lo, hi, n) {
-    var raw = (hi - lo) / Math.max(1, n);
-    var mag = Math.pow(10, Math.floor(Math.log10(raw)));
-    var r = raw / mag;
-    var st = (r <= 1 ? 1 : r <= 2 ? 2 : r <= 5 ? 5 : 10) * mag;
-    var out = [];
-    for (var v = Math.ceil(lo / st - 1e-9) * st; v <= hi + 1e-9 * st; v += st) {
-      out.push(Math.abs(v) < 1e-12 * st ? 0 : v);
-    }
-    return out;
-  }
-
-  var PAD = { l: 50, r: 10, t: 12, b: 38 };
-
-  function axes(w, h, xt, yt, sx, sy, xl, yl, yfmt) {
-    var s = [];
-    var x0 = PAD.l, x1 = w - PAD.r, y0 = h - PAD.b, y1 = PAD.t;
-    s.push('<rect class="vst-area" x="' + x0 + '" y="' + y1 + '" width="' + (x1 - x0) + '" height="' + (y0 - y1) + '"></rect>');
-    xt.forEach(function (v) {
-      var X = sx(v).toFixed(1);
-      s.push('<line class="vst-grid" x1="' + X + '" x2="' + X + '" y1="' + y1 + '" y2="' + y0 + '"></line>');
-      s.push('<text class="vst-tick" x="' + X + '" y="' + (y0 + 14) + '" text-anchor="middle">' + fmt(v, 3) + "</text>");
-    });
-    yt.forEach(function (v) {
-      var Y = sy(v).toFixed(1);
-      s.push('<line class="vst-grid" x1="' + x0 + '" x2="' + x1 + '" y1="' + Y + '" y2="' + Y + '"></line>');
-      s.push('<text class="vst-tick" x="' + (x0 - 4) + '" y="' + Y + '" dy="0.32em" text-anchor="end">' +
-        (yfmt ? yfmt(v) : fmt(v, 3)) + "</text>");
-    });
-    s.push('<text class="vst-label" x="' + ((x0 + x1) / 2) + '" y="' + (h - 6) + '" text-anchor="middle">' + xl + "</text>");
-    s.push('<text class="vst-label" transform="translate(14,' + ((y0 + y1) / 2) + ') rotate(-90)" text-anchor="middle">' +
-      yl + "</text>");
-    return s.join("");
-  }
-
-  function line(cls, xs, ys, sx, sy) {
-    var pts = xs.map(function (x, i) { return sx(x).toFixed(1) + "," + sy(ys[i]).toFixed(1); });
-    return '<polyline class="' + cls + '" points="' + pts.join(" ") + '"></polyline>';
-  }
-
-  function drawTrans(svg, p, wMax) {
-    var W = 420, H = 260;
+  /** Transmissibility on a logarithmic axis from 0.01 to 1000, the operating point and √2 ω_n. */
+  function drawTrans(svg, p, wMax, st) {
     var wn = Math.sqrt(p.k / p.m);
     var ws = [], ts = [];
     for (var i = 0; i <= 600; i++) { ws.push((wMax * i) / 600); }
     for (var j = -80; j <= 80; j++) { ws.push(wn * (1 + (Math.max(p.zeta, 0.002) * 6 * j) / 80)); }
     ws = ws.filter(function (w) { return w >= 0 && w <= wMax; }).sort(function (a, b) { return a - b; });
     ws.forEach(function (w) { ts.push(transmissibility(p, w)); });
-    var d0 = -2, d1 = 3;
-    var sx = function (v) { return PAD.l + (v / wMax) * (W - PAD.l - PAD.r); };
-    var sy = function (v) {
-      var l = Math.min(Math.max(Math.log10(v), d0 - 0.2), d1 + 0.2);
-      return PAD.t + ((d1 - l) / (d1 - d0)) * (H - PAD.t - PAD.b);
-    };
-    var yt = [0.01, 0.1, 1, 10, 100, 1000];
-    var s = [axes(W, H, niceTicks(0, wMax, 5), yt, sx, sy, "base frequency \u03c9 (rad/s)", "|X/Y| (log)",
-      function (v) { return String(v); })];
-    var Xi = sx(Math.SQRT2 * wn).toFixed(1);
-    s.push('<line class="vst-mark" x1="' + Xi + '" x2="' + Xi + '" y1="' + PAD.t + '" y2="' + (H - PAD.b) + '"></line>');
-    s.push(line("vst-curve", ws, ts, sx, sy));
-    s.push('<circle class="vst-op" cx="' + sx(p.omega).toFixed(1) + '" cy="' + sy(transmissibility(p, p.omega)).toFixed(1) +
-      '" r="5"></circle>');
-    svg.innerHTML = s.join("");
+    var lo = 0.01, hi = 1000, T = Math.min(Math.max(transmissibility(p, p.omega), lo), hi);
+    window.VibPlot.draw(svg, {
+      height: 260, aspect: 0.8,
+      x: {label: "base frequency ω (rad/s)", min: 0, max: wMax},
+      y: {label: "|X/Y| (log)", log: true, min: lo, max: hi, ticks: [0.01, 0.1, 1, 10, 100, 1000]},
+      series: [
+        {type: "vline", x: Math.SQRT2 * wn, color: st.reference.color, dash: "4 3", cls: "vst-mark"},
+        {type: "line", x: ws, y: ts, color: st.curve.color, dash: st.curve.dash, width: 1.4, cls: "vst-curve"},
+        {type: "points", x: [p.omega], y: [T], r: 5, color: st.point.color, cls: "vst-op"},
+      ],
+    });
   }
 
-  function drawStep(svg, p, r) {
-    var W = 420, H = 260;
+  /** Normalised step response with its ±2 % band and the settling time. */
+  function drawStep(svg, p, r, st) {
     var tEnd = Math.max((12 * 2 * Math.PI) / r.wn, Math.min(1.2 * r.settling_time, 400 * (2 * Math.PI) / r.wn));
     var n = 1500, ts = [], ys = [];
     var f = oneMinusY(p);
@@ -260,42 +208,42 @@
       ts.push(t);
       ys.push(1 - f(t));
     }
-    var sx = function (v) { return PAD.l + (v / tEnd) * (W - PAD.l - PAD.r); };
-    var sy = function (v) { return PAD.t + ((2.05 - v) / 2.1) * (H - PAD.t - PAD.b); };
-    var s = [axes(W, H, niceTicks(0, tEnd, 5), [0, 0.5, 1, 1.5, 2], sx, sy, "time t (s)", "k x / F")];
-    s.push('<rect class="vst-band" x="' + PAD.l + '" y="' + sy(1 + BAND).toFixed(1) + '" width="' + (W - PAD.l - PAD.r) +
-      '" height="' + (sy(1 - BAND) - sy(1 + BAND)).toFixed(1) + '"></rect>');
-    s.push(line("vst-curve", ts, ys, sx, sy));
+    var series = [
+      {type: "band", y0: 1 - BAND, y1: 1 + BAND, color: "#d9dde2", cls: "vst-band"},
+      {type: "line", x: ts, y: ys, color: st.curve.color, dash: st.curve.dash, width: 1.4, cls: "vst-curve"},
+    ];
     if (r.settling_time <= tEnd) {
-      var X = sx(r.settling_time).toFixed(1);
-      s.push('<line class="vst-mark" x1="' + X + '" x2="' + X + '" y1="' + PAD.t + '" y2="' + (H - PAD.b) + '"></line>');
+      series.push({type: "vline", x: r.settling_time, color: st.reference.color, dash: "1.5 3", cls: "vst-mark"});
     }
-    svg.innerHTML = s.join("");
+    window.VibPlot.draw(svg, {
+      height: 260, aspect: 0.8,
+      x: {label: "time t (s)", min: 0, max: tEnd},
+      y: {label: "k x / F", min: -0.05, max: 2.05, ticks: [0, 0.5, 1, 1.5, 2]},
+      series: series,
+    });
   }
 
-  function drawPoles(svg, p, r) {
-    var W = 260, H = 260;
-    var wn = r.wn;
-    var pl = r.poles;
+  /** Poles in the complex plane, equal scales, with the circle of radius ω_n. */
+  function drawPoles(svg, p, r, st) {
+    var wn = r.wn, pl = r.poles;
     var R = Math.max(1.2 * wn, (-pl[1][0] * 1.1) / 1.75);
-    // equal scales on both axes (the plot area is about square): Re s from -1.75 R to 0.25 R, Im s from -R to R
-    var sx = function (v) { return PAD.l + ((v + 1.75 * R) / (2 * R)) * (W - PAD.l - PAD.r); };
-    var sy = function (v) { return PAD.t + ((R - v) / (2 * R)) * (H - PAD.t - PAD.b); };
-    var s = [axes(W, H, niceTicks(-1.75 * R, 0.25 * R, 4), niceTicks(-R, R, 4), sx, sy, "Re s (1/s)", "Im s (1/s)")];
-    var circ = [];
+    var cx = [], cy = [];
     for (var i = 0; i <= 120; i++) {
       var a = (Math.PI * i) / 120 + Math.PI / 2;
-      circ.push(sx(wn * Math.cos(a)).toFixed(1) + "," + sy(wn * Math.sin(a)).toFixed(1));
+      cx.push(wn * Math.cos(a));
+      cy.push(wn * Math.sin(a));
     }
-    s.push('<polyline class="vst-circle" points="' + circ.join(" ") + '"></polyline>');
-    var X0 = sx(0).toFixed(1);
-    s.push('<line class="vst-axis0" x1="' + X0 + '" x2="' + X0 + '" y1="' + PAD.t + '" y2="' + (H - PAD.b) + '"></line>');
-    pl.forEach(function (q) {
-      var x = sx(q[0]), y = sy(q[1]);
-      s.push('<path class="vst-pole" d="M' + (x - 5) + "," + (y - 5) + "L" + (x + 5) + "," + (y + 5) + "M" + (x - 5) + "," +
-        (y + 5) + "L" + (x + 5) + "," + (y - 5) + '"></path>');
+    window.VibPlot.draw(svg, {
+      height: 260, aspect: 1, equal: true,
+      x: {label: "Re s (1/s)", min: -1.75 * R, max: 0.25 * R},
+      y: {label: "Im s (1/s)", min: -R, max: R},
+      series: [
+        {type: "line", x: cx, y: cy, color: st.locus.color, dash: "3 3", width: 1, cls: "vst-circle"},
+        {type: "vline", x: 0, color: st.reference.color, width: 1, cls: "vst-axis0"},
+        {type: "points", marker: "cross", r: 5, width: 2.2, x: pl.map(function (q) { return q[0]; }),
+          y: pl.map(function (q) { return q[1]; }), color: st.point.color, cls: "vst-pole"},
+      ],
     });
-    svg.innerHTML = s.join("");
   }
 
   function text(panel, cls, v) {
@@ -317,6 +265,7 @@
     }
     panel.dataset.vstMounted = "1";
     var cfg = JSON.parse(panel.dataset.params);
+    var styles = JSON.parse(panel.dataset.styles);
     var zIn = panel.querySelector("input.vst-zeta");
     var wIn = panel.querySelector("input.vst-omega");
     var nPos = +zIn.max;
@@ -327,16 +276,17 @@
     function update() {
       var r = compute(state);
       text(panel, "vst-zeta-out", fmt(state.zeta, 4));
-      text(panel, "vst-omega-out", fmt(state.omega, 4) + " rad/s (" + fmt(state.omega / r.wn, 3) + " \u03c9n)");
+      panel.querySelector(".vst-omega-out").innerHTML = fmt(state.omega, 4) + " rad/s (" + fmt(state.omega / r.wn, 3) +
+        " \u03c9<sub>n</sub>)";
       text(panel, "vst-r-c", fmt(r.c, 4) + " N s/m");
       text(panel, "vst-r-t", fmt(r.T, 4));
       text(panel, "vst-r-poles", poleText(r.poles) + " 1/s");
       text(panel, "vst-r-os", fmt(100 * r.overshoot, 4) + " %");
       text(panel, "vst-r-tr", fmt(r.rise_time, 4) + " s");
       text(panel, "vst-r-ts", fmt(r.settling_time, 4) + " s");
-      drawTrans(panel.querySelector("svg.vst-trans"), state, cfg.w_max);
-      drawStep(panel.querySelector("svg.vst-step"), state, r);
-      drawPoles(panel.querySelector("svg.vst-poles"), state, r);
+      drawTrans(panel.querySelector("svg.vst-trans"), state, cfg.w_max, styles);
+      drawStep(panel.querySelector("svg.vst-step"), state, r, styles);
+      drawPoles(panel.querySelector("svg.vst-poles"), state, r, styles);
       return r;
     }
     zIn.addEventListener("input", function () { state.zeta = posToZeta(+zIn.value); update(); });

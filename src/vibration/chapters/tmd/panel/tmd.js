@@ -4,7 +4,9 @@
  * magnification curve |X_p| / (F0/k_p) against r = w / w_p, with the curve without absorber,
  * Den Hartog's fixed points P and Q (undamped primary), the peak and the three rules' tunings.
  * Dimensionless groups as in vibration.physics.tmd; zeta_a = c_a / (2 m_a w_a) (absorber's own
- * frequency). No libraries, no network. The formulas are those of vibration.physics.tmd:
+ * frequency). No libraries, no network: the plot is drawn by the book's helper window.VibPlot
+ * (presentation/assets/plot.js), in the styles and legend words passed from Python. The formulas are those of
+ * vibration.physics.tmd:
  *
  *   H(r) = N / D,  N = f^2 - r^2 + 2i zeta_a f r,
  *                  D = (1 - r^2 + 2i zeta_p r) N - mu r^2 (f^2 + 2i zeta_a f r)   (tmd_magnification);
@@ -146,56 +148,19 @@
     return { peak: pk.peak, r_peak: pk.r, fixed: fixedPoints(mu, f), rules: rules, bare_peak: barePeak };
   }
 
-  /* ---------------------------------------------------------------- drawing */
+  /* ---------------------------------------------------------------- drawing (window.VibPlot) */
 
-  function fmt(v, d) {
-    if (!isFinite(v)) {
-      return v > 0 ? "\u221e" : "\u2013";
-    }
-    var t = Number(v).toPrecision(d || 4);
-    if (t.indexOf("e") < 0 && t.indexOf(".") >= 0) {
-      t = t.replace(/0+$/, "").replace(/\.$/, "");
-    }
-    return t.replace("-", "\u2212");
-  }
-
-  function niceTicks(lo, hi, n) {
-    var raw = (hi - lo) / Math.max(1, n);
-    var mag = Math.pow(10, Math.floor(Math.log10(raw)));
-    var r = raw / mag;
-    var st = (r <= 1 ? 1 : r <= 2 ? 2 : r <= 5 ? 5 : 10) * mag;
-    var out = [];
-    for (var v = Math.ceil(lo / st - 1e-9) * st; v <= hi + 1e-9 * st; v += st) {
-      out.push(Math.abs(v) < 1e-12 * st ? 0 : v);
-    }
-    return out;
-  }
-
-  /** A subscript inside an SVG text element. */
-  function sub(t) {
-    return '<tspan class="vtm-sub" dy="3">' + t + '</tspan><tspan dy="-3">\u200b</tspan>';
-  }
-
-  var W = 640, H = 330, PAD = { l: 52, r: 12, t: 12, b: 40 };
+  var fmt = function (v, d) { return window.VibPlot.fmt(v, d); };
   var R0 = 0.4, R1 = 1.6;
-
-  function polyline(cls, rs, hs, sx, sy, yTop) {
-    var pts = rs.map(function (r, i) {
-      var v = isFinite(hs[i]) ? Math.min(hs[i], 2 * yTop) : 2 * yTop;
-      return sx(r).toFixed(2) + "," + sy(v).toFixed(2);
-    });
-    return '<polyline class="' + cls + '" points="' + pts.join(" ") + '"></polyline>';
-  }
 
   /** Upper limit of the y axis: a nice number above the fixed points of Den Hartog's tuning. */
   function yLimit(mu, fx) {
     var ref = Math.max(2 * Math.sqrt(1 + 2 / mu), 1.15 * Math.max(fx.h[0], fx.h[1]));
-    var st = niceTicks(0, ref, 5);
-    var step = st.length > 1 ? st[1] - st[0] : 1;
+    var step = window.VibPlot.niceStep(ref, 5);
     return Math.ceil(ref / step) * step;
   }
 
-  function draw(svg, clipId, s, res) {
+  function draw(svg, s, res, st) {
     var grid = [];
     for (var i = 0; i <= 1200; i++) { grid.push(R0 + ((R1 - R0) * i) / 1200); }
     function withPoints(extra) {  // the grid plus the points a curve must pass through exactly
@@ -203,49 +168,31 @@
       return rs.sort(function (a, b) { return a - b; });
     }
     var rs = withPoints([res.fixed.r[0], res.fixed.r[1], res.r_peak]);
-    var yTop = yLimit(s.mu, res.fixed);
-    var x0 = PAD.l, x1 = W - PAD.r, y0 = H - PAD.b, y1 = PAD.t;
-    var sx = function (r) { return x0 + ((r - R0) / (R1 - R0)) * (x1 - x0); };
-    var sy = function (v) { return y0 - (v / yTop) * (y0 - y1); };
-    var out = [];
-    out.push('<defs><clipPath id="' + clipId + '"><rect x="' + x0 + '" y="' + y1 + '" width="' + (x1 - x0) +
-      '" height="' + (y0 - y1) + '"></rect></clipPath></defs>');
-    out.push('<rect class="vtm-area" x="' + x0 + '" y="' + y1 + '" width="' + (x1 - x0) + '" height="' + (y0 - y1) + '"></rect>');
-    niceTicks(R0, R1, 6).forEach(function (v) {
-      var X = sx(v).toFixed(1);
-      out.push('<line class="vtm-grid" x1="' + X + '" x2="' + X + '" y1="' + y1 + '" y2="' + y0 + '"></line>');
-      out.push('<text class="vtm-tick" x="' + X + '" y="' + (y0 + 14) + '" text-anchor="middle">' + fmt(v, 3) + "</text>");
-    });
-    niceTicks(0, yTop, 5).forEach(function (v) {
-      var Y = sy(v).toFixed(1);
-      out.push('<line class="vtm-grid" x1="' + x0 + '" x2="' + x1 + '" y1="' + Y + '" y2="' + Y + '"></line>');
-      out.push('<text class="vtm-tick" x="' + (x0 - 4) + '" y="' + Y + '" dy="0.32em" text-anchor="end">' + fmt(v, 3) + "</text>");
-    });
-    out.push('<text class="vtm-label" x="' + ((x0 + x1) / 2) + '" y="' + (H - 6) +
-      '" text-anchor="middle">frequency ratio r = \u03c9/\u03c9' + sub("p") + "</text>");
-    out.push('<text class="vtm-label" transform="translate(13,' + ((y0 + y1) / 2) +
-      ') rotate(-90)" text-anchor="middle">|X' + sub("p") + "| / (F" + sub("0") + "/k" + sub("p") + ")</text>");
-    var g = ['<g clip-path="url(#' + clipId + ')">'];
-    var opt = hinf(s.mu); // drawn dashed over the sliders' curve, which it equals at an H\u221e start
     var rb = withPoints([1]);
-    g.push(polyline("vtm-bare", rb, rb.map(function (r) { return bare(r, s.zeta_p); }), sx, sy, yTop));
-    g.push(polyline("vtm-curve", rs, rs.map(function (r) { return magnification(s.mu, s.f, s.zeta_a, r, s.zeta_p); }),
-      sx, sy, yTop));
-    g.push(polyline("vtm-opt", grid, grid.map(function (r) { return magnification(s.mu, opt.f, opt.zeta_a, r, s.zeta_p); }),
-      sx, sy, yTop));
+    var opt = hinf(s.mu); // drawn dashed over the sliders' curve, which it equals at an H\u221e start
+    var line = function (style, width, x, y, cls) {
+      return {type: "line", x: x, y: y, color: style.color, dash: style.dash, width: width, label: style.label, cls: cls};
+    };
+    var series = [
+      line(st.bare, 1.2, rb, rb.map(function (r) { return bare(r, s.zeta_p); }), "vtm-bare"),
+      line(st.curve, 2, rs, rs.map(function (r) { return magnification(s.mu, s.f, s.zeta_a, r, s.zeta_p); }), "vtm-curve"),
+      line(st.opt, 1.4, grid, grid.map(function (r) { return magnification(s.mu, opt.f, opt.zeta_a, r, s.zeta_p); }),
+        "vtm-opt"),
+      {type: "points", x: res.fixed.r, y: res.fixed.h, r: 4.5, color: st.fixed.color, label: st.fixed.label,
+        cls: "vtm-fixed"},
+      {type: "points", x: isFinite(res.peak) ? [res.r_peak] : [], y: isFinite(res.peak) ? [res.peak] : [], r: 4,
+        color: st.peak.color, label: st.peak.label, cls: "vtm-peak"},
+    ];
     ["P", "Q"].forEach(function (name, j) {
-      var X = sx(res.fixed.r[j]), Y = sy(res.fixed.h[j]);
-      g.push('<circle class="vtm-fixed" cx="' + X.toFixed(2) + '" cy="' + Y.toFixed(2) + '" r="4.5"></circle>');
-      g.push('<text class="vtm-fixed-label" x="' + (X + (j === 0 ? -8 : 8)).toFixed(1) + '" y="' + (Y - 8).toFixed(1) +
-        '" text-anchor="' + (j === 0 ? "end" : "start") + '">' + name + "</text>");
+      series.push({type: "text", x: res.fixed.r[j], y: res.fixed.h[j], text: name, dx: j === 0 ? -8 : 8, dy: -8,
+        anchor: j === 0 ? "end" : "start", weight: 600, cls: "vtm-fixed-label"});
     });
-    if (isFinite(res.peak) && res.r_peak >= R0 && res.r_peak <= R1 && res.peak <= yTop) {
-      g.push('<circle class="vtm-peak" cx="' + sx(res.r_peak).toFixed(2) + '" cy="' + sy(res.peak).toFixed(2) +
-        '" r="4"></circle>');
-    }
-    g.push("</g>");
-    out.push(g.join(""));
-    svg.innerHTML = out.join("");
+    window.VibPlot.draw(svg, {
+      height: 290, aspect: 0.8,
+      x: {label: "frequency ratio r = \u03c9/\u03c9_p", min: R0, max: R1},
+      y: {label: "|X_p| / (F_0/k_p)", min: 0, max: yLimit(s.mu, res.fixed)},
+      series: series,
+    });
   }
 
   function text(panel, cls, v) {
@@ -260,6 +207,7 @@
     }
     panel.dataset.vtmMounted = "1";
     var cfg = JSON.parse(panel.dataset.params);
+    var styles = JSON.parse(panel.dataset.styles);
     var inputs = {
       mu: panel.querySelector("input.vtm-mu"),
       f: panel.querySelector("input.vtm-f"),
@@ -269,7 +217,6 @@
     var logs = { mu: true, f: false, zeta_a: true, zeta_p: false };
     var state = { mu: cfg.mu, f: cfg.f, zeta_a: cfg.zeta_a, zeta_p: cfg.zeta_p };
     var svg = panel.querySelector("svg.vtm-plot");
-    var clipId = panel.id + "-clip";
     function read(name) {
       var v = +inputs[name].value;
       return logs[name] ? Math.pow(10, v) : v;
@@ -284,7 +231,8 @@
       var res = compute(state);
       text(panel, "vtm-mu-out", fmt(state.mu, 3));
       text(panel, "vtm-f-out", fmt(state.f, 4));
-      text(panel, "vtm-za-out", fmt(state.zeta_a, 3) + " (\u03b6\u2032a = f \u03b6a = " + fmt(state.f * state.zeta_a, 3) + ")");
+      panel.querySelector(".vtm-za-out").innerHTML = fmt(state.zeta_a, 3) + " (\u03b6\u2032<sub>a</sub> = f \u03b6<sub>a</sub> = " +
+        fmt(state.f * state.zeta_a, 3) + ")";
       text(panel, "vtm-zp-out", fmt(state.zeta_p, 3));
       text(panel, "vtm-r-peak", fmt(res.peak, 4) + (isFinite(res.peak) ? " at r = " + fmt(res.r_peak, 4) : ""));
       text(panel, "vtm-r-bare", fmt(res.bare_peak, 4));
@@ -297,7 +245,7 @@
         text(panel, "vtm-" + e[1] + "-p0", fmt(t.peak0, 5));
         text(panel, "vtm-" + e[1] + "-p", fmt(t.peak, 5));
       });
-      draw(svg, clipId, state, res);
+      draw(svg, state, res, styles);
       return res;
     }
     Object.keys(inputs).forEach(function (name) {
