@@ -413,7 +413,16 @@ def _evaluate(q: str, sid: str, runs: dict[str, _Run]):
     if q.startswith("amplitude_ratio_"):
         other = runs[ALSO_USES[q][0]]
         if not (run.has_steady and other.has_steady) or other.ss.amplitude == 0:
-            return "", None, no_steady
+            unsteady = run if not run.has_steady else other  # name the run without a steady state
+            o = unsteady.sc.oscillator
+            return (
+                "",
+                None,
+                (
+                    f"c = {_g(o.c)} N s/m < 0: the free vibration grows as exp({_g(-o.decay_rate, 3)} t/s), "
+                    "so no steady state exists."
+                ),
+            )
         r_e = ss.amplitude / other.ss.amplitude
         r_p = run.late(run.paper.x) / other.late(other.paper.x)
         if q == "amplitude_ratio_resonance_reference":

@@ -100,6 +100,8 @@ def fmt(value, digits: int = 4, zeros: bool = False) -> str:
     ('2.237', '0.0001235', 'yes', '—', '—', 'overdamped')
     >>> fmt(1.273e5, 4), fmt(-2.5e-9, 2), fmt(1e-12), fmt(31540.0, 3)
     ('1.273×10⁵', '−2.5×10⁻⁹', '10⁻¹²', '3.15×10⁴')
+    >>> fmt(-0.1), fmt(-1e-9)
+    ('−0.1', '−10⁻⁹')
     >>> fmt(0.1, 3, zeros=True), fmt(15.0, 3, zeros=True), fmt(2.0e-5, 2, zeros=True), fmt(1234.0, 3, zeros=True)
     ('0.100', '15.0', '2.0×10⁻⁵', '1.23×10³')
     """
@@ -123,9 +125,8 @@ def fmt(value, digits: int = 4, zeros: bool = False) -> str:
         if "e" in text:  # the book's number format: a power of ten, never e-notation
             mant, exp = text.split("e")
             power = "10" + str(int(exp)).translate(_SUPERSCRIPT)
-            text = power if mant in ("1", "-1") else f"{mant}×{power}"
-            text = ("−" + text) if mant == "-1" else text.replace("-", "−", 1) if text.startswith("-") else text
-        return text
+            text = power if mant == "1" else f"-{power}" if mant == "-1" else f"{mant}×{power}"
+        return text.replace("-", "−", 1) if text.startswith("-") else text  # a true minus sign
     return str(value)
 
 

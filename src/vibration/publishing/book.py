@@ -283,9 +283,9 @@ def key_results(nb) -> str:
 
 def findings_markdown(pages: list[ChapterPage]) -> str:
     """The front page's findings of every part: each chapter's key results, as this run computed them."""
-    lines = ["## What each part finds", "", "Each chapter opens with its key results; here they are together, "
-             "computed by this run.", ""]  # fmt: skip
-    for caption, lo, hi in PARTS:
+    lines = ["## What Parts II and III find", "", "Each chapter opens with its key results; here are those "
+             "beyond the paper, computed by this run.", ""]  # fmt: skip
+    for caption, lo, hi in PARTS[1:]:  # the front page states Part I's findings itself
         members = [(p, key_results(p.notebook)) for p in pages if p.number is not None and lo <= p.number <= hi]
         members = [(p, box) for p, box in members if box]
         if not members:
