@@ -430,7 +430,7 @@
     var legendH = rows.length ? rows.length * 17 + 6 : 0;
     H += legendH;
     svg.setAttribute("viewBox", "0 0 " + W + " " + H);
-    var box = { t: 8 + legendH, b: H - (xa.label ? 40 : 24), l: 0, r: W - 12 };
+    var box = { t: 8 + legendH, b: H - (xa.label ? 42 : 24), l: 0, r: W - 12 };
     var xr = axisRange(xa, seriesValues(spec, "x")), yr = axisRange(ya, seriesValues(spec, "y"));
     var yTicks = tickList(ya, yr[0], yr[1], Math.max(2, Math.round((box.b - box.t) / 45)));
     var labelW = 0;
@@ -465,7 +465,7 @@
     xTicks.forEach(function (t) {
       var X = sx(t.v).toFixed(2);
       if (xa.grid !== false) { el("line", { x1: X, x2: X, y1: box.t, y2: box.b, stroke: GRID }, axes); }
-      el("text", { "class": "vp-tick", x: X, y: box.b + 4 + xts.size, "text-anchor": "middle", "font-size": xts.size,
+      el("text", { "class": "vp-tick", x: X, y: box.b + 6 + xts.size, "text-anchor": "middle", "font-size": xts.size,
         fill: xts.color, "font-style": xts.style }, axes).textContent = t.label;
     });
     yTicks.forEach(function (t) {
