@@ -2,9 +2,8 @@
 with it: its number format against Python's :func:`vibration.presentation.tables.fmt`, its ticks, and every
 refactored panel in headless Chromium at a phone's and a desktop's width.
 
-Number format. ``VibPlot.fmt`` follows ``tables.fmt`` digit for digit (Python's "g" rules, rounding half to
-even, ×10ⁿ instead of e-notation) with one deliberate difference: it writes a true minus sign "−" in fixed
-notation too, where ``tables.fmt`` leaves Python's ASCII hyphen ("-0.5"); the comparison maps that hyphen.
+Number format. ``VibPlot.fmt`` follows ``tables.fmt`` character for character: Python's "g" rules, rounding
+half to even, ×10ⁿ instead of e-notation, a true minus sign "−".
 """
 
 from __future__ import annotations
@@ -25,6 +24,8 @@ from vibration.publishing.mathml import external_urls
 
 #: Widths of the viewport: a phone (390 CSS px) and a desktop (1280 CSS px).
 WIDTHS = (390, 1280)
+#: The panels drawn with the helper (chapter packages).
+PANELS = ("control", "stability", "tmd", "digital_twin", "real_oscillator", "duffing", "explore")
 #: Tolerance of the bounding-box comparisons, CSS px (sub-pixel rounding of text boxes).
 SLACK = 0.5
 
@@ -107,7 +108,7 @@ def test_number_format_equals_python(helper_page):
     cases = _random_numbers(60, 20250101) + EDGES
     got = page.evaluate("cs => cs.map(c => window.VibPlot.fmt(c[0], c[1], c[2]))", [list(c) for c in cases])
     for (v, digits, zeros), js in zip(cases, got, strict=True):
-        assert js == fmt(v, digits, zeros).replace("-", "−"), (v, digits, zeros)
+        assert js == fmt(v, digits, zeros), (v, digits, zeros)
         assert "e" not in js and "-" not in js
     special = page.evaluate("() => [NaN, Infinity, -Infinity].map(v => window.VibPlot.fmt(v, 3))")
     assert special == [fmt(math.nan), fmt(math.inf), fmt(-math.inf)]
@@ -195,6 +196,8 @@ def test_helper_loads_twice_and_redraws_at_the_new_width(browser, tmp_path):
 def _fragments() -> dict:
     from vibration.chapters.control.panel import control_panel_html
     from vibration.chapters.digital_twin.panel import twin_panel_html
+    from vibration.chapters.duffing.panel import hb_panel_html
+    from vibration.chapters.explore.panel import slider_panel_html
     from vibration.chapters.real_oscillator.panel import decay_panel_html
     from vibration.chapters.real_oscillator.study import real_oscillator_study
     from vibration.chapters.stability.panel import stability_panel_html
@@ -208,6 +211,8 @@ def _fragments() -> dict:
         "tmd": ("div.vtm-panel", tmd_panel_html(0.05)),
         "digital_twin": ("div.twin-panel", twin_panel_html(grid)),
         "real_oscillator": ("div.vro-panel", decay_panel_html(real_oscillator_study())),
+        "duffing": ("div.vib-duffing", hb_panel_html()),
+        "explore": ("div.vib-panel", slider_panel_html()),
     }
 
 
@@ -252,7 +257,7 @@ LAYOUT = """([sel, s]) => {
 
 
 @pytest.mark.browser
-@pytest.mark.parametrize("name", ["control", "stability", "tmd", "digital_twin", "real_oscillator"])
+@pytest.mark.parametrize("name", PANELS)
 def test_panel_fits_a_phone_and_a_desktop(browser, tmp_path, fragments, name):
     sel, frag = fragments[name]
     path = _blank(tmp_path, frag, f"{name}.html")

@@ -14,24 +14,32 @@ import io
 import itertools
 import json
 import math
-from importlib.resources import files
 
 import numpy as np
 
-from vibration.chapters.duffing.figures import plot_curve
+from vibration.chapters.duffing.figures import STABLE_LS, UNSTABLE_LS, plot_curve
 from vibration.physics.duffing import Duffing, backbone, folds, response_curve
 from vibration.physics.model import check_real
+from vibration.presentation.panels import line_style, panel_assets
 from vibration.presentation.style import case_style, figure, place_legend
 
 _counter = itertools.count(1)
 
 
-def _asset(name: str) -> str:
-    return files("vibration.chapters.duffing").joinpath("panel", name).read_text(encoding="utf-8")
-
-
 def _colors() -> dict:
     return {name: case_style(name)["color"] for name in ("hardening", "softening")}
+
+
+#: The panel's looks and legend words: the springs' colours from the book's cases, the chapter's line styles of
+#: stable and unstable branches, the backbone black dotted, the folds as open circles.
+STYLES = {
+    "hardening": {**line_style({"color": case_style("hardening")["color"]}), "label": "hardening"},
+    "softening": {**line_style({"color": case_style("softening")["color"]}), "label": "softening"},
+    "stable": {**line_style({"color": "k", "linestyle": STABLE_LS}), "label": "stable"},
+    "unstable": {**line_style({"color": "k", "linestyle": UNSTABLE_LS}), "label": "unstable"},
+    "backbone": {**line_style({"color": "k", "linestyle": ":"}), "label": "backbone"},
+    "folds": {**line_style({"color": "k"}), "label": "folds"},
+}
 
 
 def _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max) -> dict:
@@ -102,9 +110,8 @@ def hb_panel_html(
     pid = f"vib-duffing-{digest}-{next(_counter)}"
     e = html.escape
     return f"""<div class="vib-duffing" id="{e(pid)}" data-params="{e(json.dumps(params))}" \
-data-colors="{e(json.dumps(_colors()))}">
-<style>
-{_asset("duffing.css")}</style>
+data-styles="{e(json.dumps(STYLES))}">
+{panel_assets("vibration.chapters.duffing", "duffing.js", "duffing.css")}\
 <p class="vd-sub">One-harmonic frequency response of \
 <i>m ẍ + c ẋ + k x + k<sub>3</sub> x<sup>3</sup> = F<sub>0</sub> cos(ωt)</i> \
 with m = {m:g} kg, c = {c:g} N s/m, k = {k:g} N/m, computed in your browser: solid stable, dashed unstable, \
@@ -123,8 +130,6 @@ step="{F0_max / 200:g}" value="{params["F0"]!r}">
 <svg class="vd-plot" viewBox="0 0 640 300" role="img" \
 aria-label="amplitude in m against forcing frequency in rad/s"></svg>
 <p class="vd-readout"></p>
-<script>
-{_asset("duffing.js")}</script>
 <script>window.vibrationDuffing.mount(document.getElementById({json.dumps(pid)}));</script>
 </div>
 """

@@ -6,9 +6,12 @@ book. The response is computed in the browser from the closed form (steady state
 ``panel/sliders.js``), and the same JavaScript is exposed as ``window.vibrationSliders.compute(params)``
 so the tests can compare its numbers with :func:`vibration.exact_response`.
 
-What the panel draws and how is read from its own files (:func:`panel_facts`): the line style of each
-marked line from the CSS dash patterns, the width below which the plots stack from the CSS container
-query. The panel's captions and the chapter's description of it are written from those facts.
+The plots are drawn by the book's plotting helper (``presentation/assets/plot.js``) in the line styles of
+the JupyterLab figure (:data:`STYLES`, passed to the script as ``data-styles``). What the panel draws and
+how is read from what it is given and from its own files (:func:`panel_facts`): the line style of each
+marked line from :data:`STYLES`, the logarithmic magnification axis from the script, the width below which
+the plots stack from the CSS container query. The panel's captions and the chapter's description of it are
+written from those facts.
 
 Several panels may share one page: the script defines ``window.vibrationSliders`` once and each panel is
 mounted on its own ``div.vib-panel``; element ids carry a per-panel prefix.
@@ -25,8 +28,10 @@ import re
 from dataclasses import dataclass
 from importlib.resources import files
 
+from vibration.chapters.explore.figure import STYLE
 from vibration.chapters.explore.study import C_MAX, C_MIN
 from vibration.physics.model import ParameterError, check_int, check_real
+from vibration.presentation.panels import line_style, panel_assets
 
 #: Positions of the logarithmic damping slider.
 C_STEPS = 1000
@@ -36,6 +41,18 @@ OMEGA_STEP = 0.01
 
 _counter = itertools.count(1)
 
+#: The panel's line styles, those of the JupyterLab figure (:data:`~vibration.chapters.explore.figure.STYLE`):
+#: the response and the magnification curve blue, the steady-state amplitudes and the operating point
+#: vermillion, the settling time and the natural frequency grey.
+STYLES = {
+    "response": line_style(STYLE["response"]),
+    "curve": line_style(STYLE["curve"]),
+    "envelope": line_style(STYLE["envelope"]),
+    "settle": line_style(STYLE["marker"]),
+    "natural": line_style(STYLE["marker"]),
+    "point": line_style({"color": STYLE["point"]["color"]}),
+}
+
 
 def asset(name: str) -> str:
     """Text of ``vibration/chapters/explore/panel/<name>``."""
@@ -44,7 +61,7 @@ def asset(name: str) -> str:
 
 @dataclass(frozen=True)
 class PanelFacts:
-    """What the panel draws, read from its CSS: line-style words and the width below which plots stack."""
+    """What the panel draws: line-style words, the width below which plots stack, its frequency plot's axes."""
 
     envelope: str  # line style of the ± steady-state amplitude lines: "dashed", "dotted" or "solid"
     settle: str  # line style of the settling-time line
@@ -55,25 +72,34 @@ class PanelFacts:
 
 
 def _dash_word(css: str, cls: str) -> str:
+    """Line style in words of the CSS rule of ``cls`` (its ``stroke-dasharray``)."""
     rule = re.search(rf"\.{re.escape(cls)}\s*\{{([^}}]*)\}}", css)
-    dash = re.search(r"stroke-dasharray:\s*([\d.]+)", rule.group(1)) if rule else None
-    if dash is None:
+    dash = re.search(r"stroke-dasharray:\s*([\d. ]+)", rule.group(1)) if rule else None
+    return _pattern_word(dash.group(1) if dash else "")
+
+
+def _pattern_word(dash: str) -> str:
+    """Line style in words of an SVG dash pattern: none solid, a first dash of 4 px or more dashed, else dotted."""
+    first = dash.split()[0] if dash.strip() else ""
+    if not first:
         return "solid"
-    return "dashed" if float(dash.group(1)) >= 4 else "dotted"
+    return "dashed" if float(first) >= 4 else "dotted"
 
 
 def panel_facts() -> PanelFacts:
-    """The panel's drawing facts, read from ``panel/sliders.css`` and ``panel/sliders.js``."""
+    """The panel's drawing facts: its line styles (:data:`STYLES`, which ``panel/sliders.js`` draws with), the
+    magnification axis and the frequency axis's unit from ``panel/sliders.js``, the stacking width from
+    ``panel/sliders.css``."""
     css, js = asset("sliders.css"), asset("sliders.js")
     stack = re.search(r"@container \(max-width: (\d+)px\)\s*\{\s*\.vib-panel \.vib-body", css)
-    natural_cls = re.search(r"var Xn = .*?\n\s*s\.push\('<line class=\"([\w-]+)\"", js, flags=re.S)
+    freq = js.split("function drawFreq", 1)[1].split("function setText", 1)[0]
     return PanelFacts(
-        _dash_word(css, "vib-envelope"),
-        _dash_word(css, "vib-settle"),
-        _dash_word(css, natural_cls.group(1) if natural_cls else "vib-settle"),
+        _pattern_word(STYLES["envelope"]["dash"]),
+        _pattern_word(STYLES["settle"]["dash"]),
+        _pattern_word(STYLES["natural"]["dash"]),
         int(stack.group(1)) if stack else 0,
-        "Math.log10" in js and ", log" in js,
-        "(Hz)" in js.split("function drawFreq", 1)[1].split("function setText", 1)[0],
+        re.search(r"\by: \{[^}]*\blog: true", freq) is not None,
+        "(Hz)" in freq,
     )
 
 
@@ -142,8 +168,8 @@ def slider_panel_html(
     -------
     str
         HTML: ``<div class="vib-panel" data-params='...'>`` with a ``<style>``, the controls, three ``<svg>``
-        plots, a readout table and two ``<script>`` elements (``panel/sliders.js`` and the call that mounts
-        this panel).
+        plots, a readout table and three ``<script>`` elements (the plotting helper, ``panel/sliders.js`` and
+        the call that mounts this panel).
 
     Examples
     --------
@@ -191,9 +217,9 @@ def slider_panel_html(
         f'<tr><th scope="row">{a}</th><td class="{ca}"></td><th scope="row">{b}</th><td class="{cb}"></td></tr>'
         for a, ca, b, cb in readout
     )
-    return f"""<div class="vib-panel" id="{e(pid)}" data-params="{e(json.dumps(params))}">
-<style>
-{asset("sliders.css")}</style>
+    return f"""<div class="vib-panel" id="{e(pid)}" data-params="{e(json.dumps(params))}" \
+data-styles="{e(json.dumps(STYLES))}">
+{panel_assets("vibration.chapters.explore", "sliders.js", "sliders.css")}\
 <h3 class="vib-title">Explore without a kernel: m = {m:g} kg, k = {k:g} N/m, F<sub>0</sub> = {F0:g} N, \
 window 0 to {t_end:g} s</h3>
 <p class="vib-sub">Response from rest, <i>m x'' + c x' + k x = F<sub>0</sub> sin(ωt)</i>, computed in \
@@ -229,8 +255,6 @@ aria-label="magnification against forcing frequency in rad/s"></svg>
 <tr><th scope="row">steady state reached in the window</th><td class="vib-r-settled" colspan="3"></td></tr>
 </table>
 </div>
-<script>
-{asset("sliders.js")}</script>
 <script>window.vibrationSliders.mount(document.getElementById({json.dumps(pid)}));</script>
 </div>
 """

@@ -14,6 +14,7 @@
  *     height: 260,                 // px without the legend (its rows add to it); at most aspect * width
  *     aspect: 1,                   // optional
  *     equal: false,                // equal data scales on both axes (the range of one axis widens)
+ *     top: 0,                      // px kept free above the plot area (for notes placed there), added to height
  *     x: {label: "t (s)", min, max, log, ticks: 5 | [values] | [{v, label}], grid: true, pad: 0.05,
  *         format: v => text, tickStyle: {size, color, italic}},
  *     y: {...},
@@ -430,7 +431,10 @@
     var legendH = rows.length ? rows.length * 17 + 6 : 0;
     H += legendH;
     svg.setAttribute("viewBox", "0 0 " + W + " " + H);
-    var box = { t: 8 + legendH, b: H - (xa.label ? 42 : 24), l: 0, r: W - 12 };
+    var top = spec.top || 0; // room for notes above the plot area
+    H += top;
+    svg.setAttribute("viewBox", "0 0 " + W + " " + H);
+    var box = { t: 8 + legendH + top, b: H - (xa.label ? 42 : 24), l: 0, r: W - 12 };
     var xr = axisRange(xa, seriesValues(spec, "x")), yr = axisRange(ya, seriesValues(spec, "y"));
     var yTicks = tickList(ya, yr[0], yr[1], Math.max(2, Math.round((box.b - box.t) / 45)));
     var labelW = 0;

@@ -1,6 +1,7 @@
 /* Kernel-free harmonic-balance panel of the Duffing chapter (vibration.chapters.duffing.panel).
    The same closed forms as vibration.physics.duffing: the amplitude cubic (hbAmplitudes), the
-   amplitude-parametrised response curve (responseCurve), its peak and folds. No network, no library. */
+   amplitude-parametrised response curve (responseCurve), its peak and folds. No network, no library: the plot
+   is drawn by the book's helper window.VibPlot (presentation/assets/plot.js), loaded before this script. */
 (function () {
   "use strict";
   if (window.vibrationDuffing) { return; }
@@ -151,60 +152,51 @@
     return w2 >= 0 ? Math.sqrt(w2) : NaN;
   }
 
-  const NS = "http://www.w3.org/2000/svg";
-  function el(tag, attrs) {
-    const e = document.createElementNS(NS, tag);
-    for (const key in attrs) { e.setAttribute(key, attrs[key]); }
-    return e;
-  }
-  function fmt(x, d) { return isFinite(x) ? Number(x.toPrecision(d)).toString() : "—"; }
-
+  /* The curve (stable solid, unstable dashed), the backbone and the folds, drawn by window.VibPlot in the
+     book's colour of the hardening or softening spring (data-styles, from presentation.style.CASES). */
   function draw(panel, p) {
-    const svg = panel.querySelector("svg.vd-plot");
-    while (svg.firstChild) { svg.removeChild(svg.firstChild); }
-    const L = 58, R = 628, T = 14, B = 258;
+    const P = window.VibPlot, fmt = P.fmt;
+    const st = JSON.parse(panel.getAttribute("data-styles"));
     const cur = responseCurve(p, 700);
     const aMax = Math.max(...cur.A, 1e-12) * 1.12;
-    const X = w => L + (R - L) * w / p.omega_max, Y = a => B - (B - T) * a / aMax;
-    // the book's colours of the hardening and softening springs (data-colors, from presentation.style.CASES)
-    const colors = JSON.parse(panel.getAttribute("data-colors") || "{}");
-    const col = p.k3 >= 0 ? (colors.hardening || "#D55E00") : (colors.softening || "#56B4E9");
-    // axes and ticks
-    svg.appendChild(el("rect", {x: L, y: T, width: R - L, height: B - T, fill: "none", stroke: "#999"}));
-    const step = w => { const e = Math.pow(10, Math.floor(Math.log10(w / 5))); const f = w / 5 / e; return (f < 2 ? 1 : f < 5 ? 2 : 5) * e; };
-    const sx = step(p.omega_max), sy = step(aMax);
-    for (let w = 0; w <= p.omega_max + 1e-9; w += sx) {
-      svg.appendChild(el("line", {x1: X(w), x2: X(w), y1: B, y2: B + 4, stroke: "#333"}));
-      const t = el("text", {x: X(w), y: B + 16, "text-anchor": "middle", class: "vd-tick"}); t.textContent = fmt(w, 3); svg.appendChild(t);
+    const spring = p.k3 >= 0 ? st.hardening : st.softening;
+    const series = [];
+    const bw = [], ba = [];
+    for (let i = 0; i <= 200; i++) {
+      const a = aMax * i / 200, w = backbone(p, a);
+      if (isFinite(w) && w <= p.omega_max) { bw.push(w); ba.push(a); }
     }
-    for (let a = 0; a <= aMax + 1e-12; a += sy) {
-      svg.appendChild(el("line", {x1: L - 4, x2: L, y1: Y(a), y2: Y(a), stroke: "#333"}));
-      const t = el("text", {x: L - 7, y: Y(a) + 4, "text-anchor": "end", class: "vd-tick"}); t.textContent = fmt(a, 3); svg.appendChild(t);
-    }
-    const xl = el("text", {x: (L + R) / 2, y: 292, "text-anchor": "middle", class: "vd-label"}); xl.textContent = "forcing frequency ω (rad/s)"; svg.appendChild(xl);
-    const yl = el("text", {x: 14, y: (T + B) / 2, "text-anchor": "middle", class: "vd-label", transform: `rotate(-90 14 ${(T + B) / 2})`}); yl.textContent = "amplitude A (m)"; svg.appendChild(yl);
-    // backbone
-    const bb = [];
-    for (let i = 0; i <= 200; i++) { const a = aMax * i / 200, w = backbone(p, a); if (isFinite(w) && w <= p.omega_max) { bb.push(`${X(w).toFixed(2)},${Y(a).toFixed(2)}`); } }
-    svg.appendChild(el("polyline", {points: bb.join(" "), fill: "none", stroke: "#000", "stroke-dasharray": "1.5 3", class: "vd-backbone"}));
-    // curve, split by stability
-    let seg = [], st = null;
+    series.push({type: "line", x: bw, y: ba, color: st.backbone.color, dash: st.backbone.dash, width: 1,
+      label: st.backbone.label, cls: "vd-backbone"});
+    // the curve, split where its stability changes (each piece starts at the last point of the one before)
+    const named = {true: false, false: false};
+    let xs = [], ys = [], stable = null;
     const flush = () => {
-      if (seg.length > 1) {
-        svg.appendChild(el("polyline", {points: seg.join(" "), fill: "none", stroke: col, "stroke-width": st ? 2 : 1.4,
-          "stroke-dasharray": st ? "none" : "6 4", class: st ? "vd-stable" : "vd-unstable"}));
+      if (xs.length > 1) {
+        const look = stable ? st.stable : st.unstable;
+        series.push({type: "line", x: xs, y: ys, color: spring.color, dash: look.dash, width: stable ? 2 : 1.4,
+          label: named[stable] ? "" : spring.label + ", " + look.label, cls: stable ? "vd-stable" : "vd-unstable"});
+        named[stable] = true;
       }
     };
     for (let i = 0; i < cur.omega.length; i++) {
-      const pt = `${X(cur.omega[i]).toFixed(2)},${Y(cur.A[i]).toFixed(2)}`;
-      if (st !== null && cur.stable[i] !== st) { seg.push(pt); flush(); seg = [seg[seg.length - 1]]; }
-      st = cur.stable[i]; seg.push(pt);
+      if (stable !== null && cur.stable[i] !== stable) {
+        xs.push(cur.omega[i]); ys.push(cur.A[i]); flush();
+        xs = [xs[xs.length - 1]]; ys = [ys[ys.length - 1]];
+      }
+      stable = cur.stable[i]; xs.push(cur.omega[i]); ys.push(cur.A[i]);
     }
     flush();
     const f = folds(p);
-    for (const [w, a] of [[f.omega_low, f.amplitude_low], [f.omega_high, f.amplitude_high]]) {
-      if (isFinite(w)) { svg.appendChild(el("circle", {cx: X(w), cy: Y(a), r: 4, fill: "white", stroke: "#000", class: "vd-fold"})); }
-    }
+    const fw = [f.omega_low, f.omega_high].filter(isFinite), fa = [f.amplitude_low, f.amplitude_high].filter(isFinite);
+    series.push({type: "points", x: fw, y: fa, r: 4, color: "#fff", stroke: st.folds.color, label: fw.length ?
+      st.folds.label : "", cls: "vd-fold"});
+    P.draw(panel.querySelector("svg.vd-plot"), {
+      height: 270, aspect: 0.8,
+      x: {label: "forcing frequency ω (rad/s)", min: 0, max: p.omega_max},
+      y: {label: "amplitude A (m)", min: 0, max: aMax},
+      series: series,
+    });
     const [ap, wp] = peak(p);
     panel.querySelector("p.vd-readout").textContent = (isFinite(f.omega_low)
       ? `Folds at ${fmt(f.omega_low, 5)} and ${fmt(f.omega_high, 5)} rad/s: two stable amplitudes coexist between them. `

@@ -1,7 +1,9 @@
 /*
  * Static slider panel for the forced mass-spring-damper
  *   m x'' + c x' + k x = F0 sin(omega t),  x(0) = v(0) = 0,
- * in SI units (kg, N s/m, N/m, N, rad/s, s, m). No libraries, no network.
+ * in SI units (kg, N s/m, N/m, N, rad/s, s, m). No libraries, no network: the plots are drawn (and redrawn
+ * at the panel's width) by the book's helper window.VibPlot (presentation/assets/plot.js), in the line
+ * styles passed from Python (data-styles, the JupyterLab figure's styles).
  *
  * The response from rest is the steady state plus a free transient:
  *   H = F0 / (k - m omega^2 + i c omega) = P + i Q,
@@ -229,112 +231,37 @@
     };
   }
 
-  /* ---------------------------------------------------------------- drawing */
+  /* ---------------------------------------------------------------- drawing (window.VibPlot) */
 
-  function fmt(v, digits) {
-    if (!isFinite(v)) {
-      return v > 0 ? "\u221e" : v < 0 ? "\u2212\u221e" : "\u2013";
-    }
-    var s = Number(v).toPrecision(digits || 4);
-    if (s.indexOf("e") < 0 && s.indexOf(".") >= 0) {
-      s = s.replace(/0+$/, "").replace(/\.$/, "");
-    }
-    return s.replace("-", "\u2212");
-  }
+  var fmt = function (v, d) { return window.VibPlot.fmt(v, d); };
 
-  function niceStep(span, nTicks) {
-    var raw = span / Math.max(1, nTicks);
-    var mag = Math.pow(10, Math.floor(Math.log10(raw)));
-    var r = raw / mag;
-    return (r <= 1 ? 1 : r <= 2 ? 2 : r <= 2.5 ? 2.5 : r <= 5 ? 5 : 10) * mag;
-  }
-
-  function ticks(lo, hi, nTicks) {
-    var st = niceStep(hi - lo, nTicks);
-    var out = [];
-    for (var v = Math.ceil(lo / st - 1e-9) * st; v <= hi + 1e-9 * st; v += st) {
-      out.push(Math.abs(v) < 1e-12 * st ? 0 : v);
-    }
-    return out;
-  }
-
-  /** Label of the decade tick 10^d: plain for 0.001 to 10000, else 1e±d. */
-  function decade(v) {
-    var d = Math.round(Math.log10(v));
-    return d >= -3 && d <= 4 ? String(Number(Math.pow(10, d).toPrecision(1))) : "1e" + d;
-  }
-
-  function esc(s) {
-    return String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
-  }
-
-  var TW0 = 640, TH = 270; // time plot: default width and height, px
-  var FW0 = 340, FH = 270; // frequency plot
-  var PAD = { l: 62, r: 14, t: 20, b: 44 };
-
-  function frame(w, h, xTicks, yTicks, sx, sy, xLabel, yLabel, yFmt) {
-    var s = [];
-    var x0 = PAD.l, x1 = w - PAD.r, y0 = h - PAD.b, y1 = PAD.t;
-    s.push('<rect class="vib-plotarea" x="' + x0 + '" y="' + y1 + '" width="' + (x1 - x0) +
-      '" height="' + (y0 - y1) + '"></rect>');
-    xTicks.forEach(function (v) {
-      var X = sx(v).toFixed(2);
-      s.push('<line class="vib-grid" x1="' + X + '" x2="' + X + '" y1="' + y1 + '" y2="' + y0 + '"></line>');
-      s.push('<text class="vib-tick" x="' + X + '" y="' + (y0 + 15) + '" text-anchor="middle">' +
-        esc(fmt(v, 3)) + "</text>");
-    });
-    yTicks.forEach(function (v) {
-      var Y = sy(v).toFixed(2);
-      s.push('<line class="vib-grid" x1="' + x0 + '" x2="' + x1 + '" y1="' + Y + '" y2="' + Y + '"></line>');
-      s.push('<text class="vib-tick" x="' + (x0 - 5) + '" y="' + Y + '" dy="0.32em" text-anchor="end">' +
-        esc(yFmt ? yFmt(v) : fmt(v, 3)) + "</text>");
-    });
-    s.push('<text class="vib-axislabel" x="' + ((x0 + x1) / 2) + '" y="' + (h - 8) +
-      '" text-anchor="middle">' + esc(xLabel) + "</text>");
-    s.push('<text class="vib-axislabel" transform="translate(14,' + ((y0 + y1) / 2) +
-      ') rotate(-90)" text-anchor="middle">' + esc(yLabel) + "</text>");
-    return s.join("");
-  }
-
-  /** Width to draw at: one viewBox unit per CSS pixel, so text keeps its size at any panel width. */
-  function fitWidth(svg, w0, h) {
-    var w = Math.round(svg.getBoundingClientRect().width) || w0;
-    w = Math.max(w, 240);
-    svg.setAttribute("viewBox", "0 0 " + w + " " + h);
-    return w;
-  }
-
-  function drawTime(svg, p, r, which) {
-    var TW = fitWidth(svg, TW0, TH);
+  /** Displacement (which = "x") or velocity ("v") from rest, ± the steady-state amplitude, the settling time. */
+  function drawTime(svg, p, r, which, st) {
     var vel = which === "v";
     var ys = vel ? r.v : r.x, amp = vel ? r.velocity_amplitude : r.amplitude;
     var ymax = Math.max(vel ? r.peak_v : r.peak, isFinite(amp) ? amp : 0, 1e-300) * 1.08;
-    var sx = function (v) { return PAD.l + (v / p.t_end) * (TW - PAD.l - PAD.r); };
-    var sy = function (v) { return PAD.t + ((ymax - v) / (2 * ymax)) * (TH - PAD.t - PAD.b); };
-    var s = [frame(TW, TH, ticks(0, p.t_end, Math.max(3, Math.round(TW / 80))), ticks(-ymax, ymax, 6), sx, sy,
-      "time t (s)", vel ? "velocity v (m/s)" : "displacement x (m)")];
-    var yA = isFinite(amp) && p.c > 0 ? [sy(amp).toFixed(2), sy(-amp).toFixed(2)] : [];
-    yA.forEach(function (Y) {
-      s.push('<line class="vib-envelope" x1="' + PAD.l + '" x2="' + (TW - PAD.r) + '" y1="' + Y +
-        '" y2="' + Y + '"></line>');
-    });
+    var series = [];
+    if (isFinite(amp) && p.c > 0) {
+      [amp, -amp].forEach(function (a) {
+        series.push({type: "hline", y: a, color: st.envelope.color, dash: st.envelope.dash, width: 1, cls: "vib-envelope"});
+      });
+    }
     if (r.settled) {
-      var X = sx(r.settling).toFixed(2);
-      s.push('<line class="vib-settle" x1="' + X + '" x2="' + X + '" y1="' + PAD.t + '" y2="' +
-        (TH - PAD.b) + '"></line>');
-      s.push('<text class="vib-note" x="' + X + '" y="' + (PAD.t - 5) +
-        '" text-anchor="middle">2 % settled</text>');
+      series.push({type: "vline", x: r.settling, color: st.settle.color, dash: st.settle.dash, width: 1, cls: "vib-settle"},
+        {type: "text", x: r.settling, y: ymax, dy: -5, anchor: r.settling > 0.8 * p.t_end ? "end" : "middle", text: "2 % settled", color: st.settle.color, size: 11,
+          cls: "vib-note"});
     }
-    var pts = new Array(r.t.length);
-    for (var i = 0; i < r.t.length; i++) {
-      pts[i] = sx(r.t[i]).toFixed(2) + "," + sy(ys[i]).toFixed(2);
-    }
-    s.push('<polyline class="vib-x" points="' + pts.join(" ") + '"></polyline>');
-    svg.innerHTML = s.join("");
+    series.push({type: "line", x: r.t, y: ys, color: st.response.color, dash: st.response.dash, width: 1.3, cls: "vib-x"});
+    window.VibPlot.draw(svg, {
+      height: 256, aspect: 0.75, top: 14,
+      x: {label: "time t (s)", min: 0, max: p.t_end},
+      y: {label: vel ? "velocity v (m/s)" : "displacement x (m)", min: -ymax, max: ymax},
+      series: series,
+    });
   }
 
-  function drawFreq(svg, p, r, wMax) {
-    var FW = fitWidth(svg, FW0, FH);
+  /** Steady-state magnification against the forcing frequency (logarithmic), ω_n and the operating point. */
+  function drawFreq(svg, p, r, wMax, st) {
     var n = 400, ws = [], gs = [];
     var wn = Math.sqrt(p.k / p.m);
     var zeta = p.c / (2 * Math.sqrt(p.k * p.m));
@@ -360,26 +287,19 @@
     if (d1 <= d0) {
       d1 = d0 + 1;
     }
-    var sx = function (v) { return PAD.l + (v / wMax) * (FW - PAD.l - PAD.r); };
-    var sy = function (v) {
-      return PAD.t + ((d1 - Math.log10(v)) / (d1 - d0)) * (FH - PAD.t - PAD.b);
-    };
-    var yt = [];
-    for (var d = d0; d <= d1; d++) {
-      yt.push(Math.pow(10, d));
-    }
-    var s = [frame(FW, FH, ticks(0, wMax, Math.max(3, Math.round(FW / 70))), yt, sx, sy, "forcing frequency \u03c9 (rad/s)",
-      "magnification |X|/(F\u2080/k), log", decade)];
-    var Xn = sx(r.wn).toFixed(2);
-    s.push('<line class="vib-settle" x1="' + Xn + '" x2="' + Xn + '" y1="' + PAD.t + '" y2="' +
-      (FH - PAD.b) + '"></line>');
-    s.push('<text class="vib-note" x="' + (+Xn + 4) + '" y="' + (FH - PAD.b - 6) +
-      '">\u03c9<tspan class="vib-sub" dy="3">n</tspan></text>');
-    var pts = ws.map(function (w, j) { return sx(w).toFixed(2) + "," + sy(gs[j]).toFixed(2); });
-    s.push('<polyline class="vib-frf" points="' + pts.join(" ") + '"></polyline>');
-    s.push('<circle class="vib-op" cx="' + sx(p.omega).toFixed(2) + '" cy="' +
-      sy(r.magnification).toFixed(2) + '" r="5"><title>operating point</title></circle>');
-    svg.innerHTML = s.join("");
+    window.VibPlot.draw(svg, {
+      height: 270, aspect: 0.8,
+      x: {label: "forcing frequency \u03c9 (rad/s)", min: 0, max: wMax},
+      y: {label: "magnification |X|/(F_0/k), log", log: true, min: Math.pow(10, d0), max: Math.pow(10, d1)},
+      series: [
+        {type: "vline", x: r.wn, color: st.natural.color, dash: st.natural.dash, width: 1, cls: "vib-natural"},
+        {type: "text", x: r.wn, y: Math.pow(10, d0), dx: 4, dy: -6, text: "\u03c9_n", color: st.natural.color,
+          size: 11, cls: "vib-note"},
+        {type: "line", x: ws, y: gs, color: st.curve.color, dash: st.curve.dash, width: 1.3, cls: "vib-frf"},
+        {type: "points", x: [p.omega], y: [r.magnification], r: 5, color: st.point.color, title: "operating point",
+          cls: "vib-op"},
+      ],
+    });
   }
 
   function setText(panel, cls, text) {
@@ -396,6 +316,7 @@
     }
     panel.dataset.vibMounted = "1";
     var cfg = JSON.parse(panel.dataset.params);
+    var styles = JSON.parse(panel.dataset.styles);
     var state = {
       m: cfg.m, c: cfg.c, k: cfg.k, F0: cfg.F0, omega: cfg.omega,
       t_end: cfg.t_end, n_points: cfg.n_points,
@@ -433,18 +354,18 @@
       setText(panel, "vib-r-settle", fmt(r.settling, 4) + " s");
       setText(panel, "vib-r-settled", r.settled
         ? "yes, after " + fmt(r.settling, 4) + " s of " + fmt(state.t_end, 4) + " s"
-        : "no: the transient is still above 2% at t = " + fmt(state.t_end, 4) + " s");
+        : "no: the transient is still above 2 % at t = " + fmt(state.t_end, 4) + " s");
       panel.vibLast = r;
       draw();
       return r;
     }
 
     function draw() {
-      drawTime(svgT, state, panel.vibLast, "x");
+      drawTime(svgT, state, panel.vibLast, "x", styles);
       if (svgV) {
-        drawTime(svgV, state, panel.vibLast, "v");
+        drawTime(svgV, state, panel.vibLast, "v", styles);
       }
-      drawFreq(svgF, state, panel.vibLast, +wIn.max);
+      drawFreq(svgF, state, panel.vibLast, +wIn.max, styles);
     }
 
     wIn.addEventListener("input", function () {
@@ -466,20 +387,6 @@
     }
     cIn.value = String(cToPos(cfg.c));
     update();
-    if (window.ResizeObserver) { // redraw at the new width, once per frame, when the panel is resized
-      var lastW = Math.round(svgT.getBoundingClientRect().width), pending = false;
-      new ResizeObserver(function () {
-        if (pending || Math.round(svgT.getBoundingClientRect().width) === lastW) {
-          return;
-        }
-        pending = true;
-        window.requestAnimationFrame(function () {
-          pending = false;
-          lastW = Math.round(svgT.getBoundingClientRect().width);
-          draw();
-        });
-      }).observe(panel);
-    }
     return { panel: panel, state: state, update: update };
   }
 
