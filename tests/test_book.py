@@ -111,7 +111,7 @@ def test_banner_lists_own_and_other_changes():
     other = [Parameter("c_low", 0.05, 0.1, "low damping", "N s/m", True)]
     assert banner_html([p for p in own if p.name == "m"], []) == ""
     text = banner_html(own, own[:1] + other)
-    assert "k</code> (spring stiffness) = <strong>30 N/m</strong>; the paper: 20 N/m" in text
+    assert "k (spring stiffness, <code>-p k</code>) = <strong>30 N/m</strong>; the paper: 20 N/m" in text
     assert "Also changed in this run" in text and "c_low" in text
     assert "<code>m</code>" not in text
     only_other = banner_html(own[1:], other)

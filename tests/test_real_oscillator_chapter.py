@@ -143,7 +143,7 @@ def test_figures_keep_legends_off_the_data(study):
         (figures.response_figure, {"models": False}),
         (figures.prediction_figure, {}),
     ):
-        fig = f(study, **kw)
+        fig = f(study, **kw).fig  # a Captioned figure
         for ax in fig.axes:
             assert legend_overlap(ax) == 0.0, (f.__name__, ax.get_title())
         plt.close(fig)

@@ -512,17 +512,28 @@ def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), ti
         '<span class="pageNumber"></span> / <span class="totalPages"></span></div>',
         "margin": {"top": "16mm", "bottom": "16mm", "left": "14mm", "right": "14mm"},
     }
-    with sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
-        try:
-            page = browser.new_page()
-            page.route("**/*", lambda r: r.continue_() if r.request.url.startswith(("file:", "data:")) else r.abort())
-            page.goto(html_path.resolve().as_uri())
-            page.wait_for_load_state("load")
-            page.emulate_media(media="print")
-            return print_book(page, pdf_path, title, parts, options)
-        finally:
-            browser.close()
+
+    def work():
+        with sync_playwright() as pw:
+            browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+            try:
+                page = browser.new_page()
+                page.route(
+                    "**/*", lambda r: r.continue_() if r.request.url.startswith(("file:", "data:")) else r.abort()
+                )
+                page.goto(html_path.resolve().as_uri())
+                page.wait_for_load_state("load")
+                page.emulate_media(media="print")
+                return print_book(page, pdf_path, title, parts, options)
+            finally:
+                browser.close()
+
+    # A thread of its own: playwright's sync API refuses a thread whose asyncio loop runs (a notebook's, or a
+    # caller's own playwright session).
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(1) as pool:
+        return pool.submit(work).result()
 
 
 def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True) -> dict:

@@ -29,8 +29,8 @@ def sci(value: float, digits: int = 2) -> str:
         return f"{value:g}"
     exp = int(math.floor(math.log10(abs(value))))
     if -3 <= exp < 4:
-        decimals = max(digits - 1 - exp, 0)
-        return f"{round(value, decimals):.{decimals}f}"
+        decimals = digits - 1 - exp  # negative: round to tens, hundreds, ... (2 figures of 512 read 510)
+        return f"{round(value, decimals):.{max(decimals, 0)}f}"
     mant = value / 10**exp
     text = f"{mant:.{digits}g}"
     if text.startswith("10"):
