@@ -132,16 +132,16 @@ def add_bookmarks(pdf: Path, titles: list[str], pages: list[int], parts: list[tu
     from pypdf import PdfReader, PdfWriter
 
     writer = PdfWriter(clone_from=PdfReader(str(pdf)))
-    writer.add_outline_item("Title page", 0)
-    writer.add_outline_item("Contents", 1)
+    writer.add_outline_item(title="Title page", page_number=0)
+    writer.add_outline_item(title="Contents", page_number=1)
     starts = {index: caption for caption, index in parts}
     parent = None
     for i, (title, page) in enumerate(zip(titles, pages, strict=True)):
         if i in starts:
-            parent = writer.add_outline_item(starts[i], page - 1)
+            parent = writer.add_outline_item(title=starts[i], page_number=page - 1)
         elif parent is not None and i > max(starts, default=0) and not _is_chapter(title):
             parent = None  # the appendices after the last part stand on their own
-        writer.add_outline_item(title, page - 1, parent=parent)
+        writer.add_outline_item(title=title, page_number=page - 1, parent=parent)
     writer.page_mode = "/UseOutlines"
     with open(pdf, "wb") as fh:
         writer.write(fh)
