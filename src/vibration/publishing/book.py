@@ -149,7 +149,10 @@ def summary(nb) -> str:
 
 
 def _value_text(value) -> str:
-    return f"{value:g}" if isinstance(value, float) else str(value)
+    """A parameter value in the book's number format (×10ⁿ, true minus), to 6 significant figures."""
+    from ..presentation.tables import fmt
+
+    return fmt(value, 6) if isinstance(value, float) else str(value)
 
 
 def _unit_text(value, unit: str) -> str:

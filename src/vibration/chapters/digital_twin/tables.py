@@ -176,7 +176,6 @@ def assumption_table(st: DigitalTwinStudy) -> Table:
         rows.append(
             {
                 "case": label,
-                "what": _case_text(label, st),
                 "R": ex.runs,
                 "cm": pm(cov[0], hw[0], 3),
                 "cc": pm(cov[1], hw[1], 3),
@@ -192,30 +191,33 @@ def assumption_table(st: DigitalTwinStudy) -> Table:
         rows,
         [
             Column("case", "case"),
-            Column("what", "what the records carry"),
             Column("R", "runs"),
             Column("cm", "coverage m"),
             Column("cc", "coverage c"),
             Column("ck", "coverage k"),
-            Column("pk", "first-order coverage k", 2),
-            Column("bk", "mean error k (%)", 2),
-            Column("se", "rms error / std. error", 3),
-            Column("lb", "whiteness test flags"),
-            Column("ic", "input-correlation test flags"),
+            Column("pk", "predicted k", 2),
+            Column("bk", "error k (%)", 2),
+            Column("se", "rms / s.e.", 3),
+            Column("lb", "whiteness flags"),
+            Column("ic", "input flags"),
         ],
         caption="Coverage of the 95 % intervals, and the share of runs the residual tests flag at the 5 % level, "
         "when the records break one assumption at a time.",
         name="tab-twin-assumptions",
         notes=(
+            "Cases: " + "; ".join(f"{label}: {_case_text(label, st)}" for label in a.experiments) + ".",
+            "Predicted k: the first-order coverage of k; error k: its mean relative error; rms / s.e.: the rms "
+            "error over the stated standard error, averaged over m, c and k.",
             "± : half-width of the Wilson 95 % interval of the share over the row's runs. Each row draws its own "
             "noise; all rows share one force record (the coverage is conditional on that design).",
             f"Whiteness: Ljung–Box statistic of the output-error residual over {a.lags} lags, χ² with {a.lags} "
             f"degrees of freedom. Input correlation: residual against the measured force at lags 0 to {a.lags - 1} "
             "(χ² with the rank of the force's lag covariance); it assumes a white residual, so coloured noise "
             "trips it too.",
-            "First-order coverage: 2Φ(q σ_assumed/σ_true) − 1 from the sandwich covariance with the exact "
-            "Jacobian at the truth; it applies to Gaussian white or AR(1) noise on the response only (a noisy "
-            "force biases the estimate at second order and a cubic spring is model error).",
+            "First-order coverage: 2Φ(q σₐ/σₜ) − 1, σₐ the assumed and σₜ the true standard deviation, from the "
+            "sandwich covariance with the exact Jacobian at the truth; it applies to Gaussian white or AR(1) "
+            "noise on the response only (a noisy force biases the estimate at second order and a cubic spring is "
+            "model error).",
         ),
     )
 

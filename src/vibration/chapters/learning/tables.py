@@ -202,7 +202,7 @@ def comparison_table(cmp: Comparison, caption: str, name: str, reference: int) -
         notes=(
             f"Mean over the same {cmp.runs[0].cost.size} seeded episodes (seed {cmp.seed}), "
             "± its standard error; the exact expected cost where the law is linear on the task.",
-            f"J_ref: the mean cost J of {cmp.names[reference]}.",
+            f"Reference cost: the mean cost J of {cmp.names[reference]}.",
         ),
     )
 
@@ -302,7 +302,7 @@ def robustness_table(st: LearningStudy) -> Table:
         name="tab-learning-robustness",
         notes=(
             f"Mean over the same {rb.n_episodes} seeded episodes per plant (force bound applied), ± one standard "
-            "error; J_opt: exact finite-horizon LQ optimum of the changed task.",
+            "error; optimum: the exact finite-horizon LQ optimum of the changed task.",
         ),
     )
 

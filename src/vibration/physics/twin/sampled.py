@@ -599,7 +599,7 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
             float(np.max(np.abs(ours.x - yd[:, 0]))) / scale,
             1e-10,
         ),
-        "solve_ivp, force linear between samples (relative)": (
+        "SciPy's integrator, force linear between samples (relative)": (
             float(np.max(np.abs(ours.x[:m_] - np.array(ref)))) / scale,
             1e-8,
         ),
