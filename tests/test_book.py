@@ -298,9 +298,10 @@ def test_the_print_edition_has_a_title_page_contents_and_bookmarks(site):
     texts = [" ".join((page.extract_text() or "").replace("\u2019", "'").split()) for page in reader.pages]
     assert texts[0].startswith(BOOK_TITLE), texts[0][:200]
     contents = next(i for i, t in enumerate(texts) if t.startswith("Contents"))
-    entries = re.findall(
-        r"(\d+\. [^\d]{8,}?|Table of symbols|Using the package|References) (\d+)(?= |$)", texts[contents]
-    )
+    listing = texts[contents].removeprefix("Contents").split(f" {BOOK_TITLE} ")[0]  # the header line ends it
+    stop = r"(?= (?:\d+\. |Part |Table |Using |References|Overview)|$)"
+    entries = [(t.strip(), p) for t, p in re.findall(r"(.+?) (\d{1,3})" + stop, listing)]
+    entries = [(re.sub(r"^Part [IVX]+: .*? (?=\d+\. )", "", t), p) for t, p in entries]
     assert len(entries) == len(CHAPTERS) + 4, entries  # the front page, the chapters, three appendices
     assert entries[0][0].replace("\ufb01", "fi") == "Overview and findings", entries[0]
     for title, page in entries[1:]:
