@@ -26,6 +26,7 @@ W_RES = r"$\omega_\mathrm{res}$"
 W_REF = r"$\omega_\mathrm{ref}$"
 W_N = r"$\omega_n$"
 
+
 def num(value: float, digits: int = 4) -> str:
     """A number for prose: ``digits`` significant figures in the book's format (powers of ten as ×10ⁿ, never
     e-notation) with a typographic minus.

@@ -25,6 +25,7 @@ SMALL = 0.01
 #: The pair the paper names ("Runge-Kutta-Fehlberg (RK45)", section 2.2).
 PAPER_PAIR = "Runge-Kutta-Fehlberg 4(5)"
 
+
 def num(value: float, digits: int = 4) -> str:
     """A number for prose: ``digits`` significant figures in the book's format (powers of ten as ×10ⁿ, never
     e-notation) with a typographic minus.
