@@ -28,10 +28,19 @@ CHAPTERS = [p.stem for p in NOTEBOOKS if not p.stem.startswith("00_")]
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory) -> Path:
-    """The book from the committed notebooks; with its PDF where Chromium is installed (make test-fast runs
-    without it: the tests that need the PDF are browser tests)."""
+    """The HTML book from the committed notebooks (the print edition has its own, slow, fixture)."""
     out = tmp_path_factory.mktemp("book") / "report"
-    report.book_from_sources(report.discover(ROOT), out, pdf=os.path.exists(CHROMIUM))
+    report.book_from_sources(report.discover(ROOT), out, pdf=False)
+    return out
+
+
+@pytest.fixture(scope="module")
+def printed(tmp_path_factory) -> Path:
+    """The book with its print edition (Chromium prints it twice: about a minute and a half)."""
+    if not os.path.exists(CHROMIUM):
+        pytest.skip(f"{CHROMIUM} is missing: make browser installs it")
+    out = tmp_path_factory.mktemp("printed") / "report"
+    report.book_from_sources(report.discover(ROOT), out, pdf=True)
     return out
 
 
@@ -128,11 +137,12 @@ def test_split_help_and_summary_helpers():
     assert summary(nb) == "First plain."
 
 
+@pytest.mark.slow
 @pytest.mark.browser
-def test_pdf_has_a_page_or_more_per_chapter(site):
+def test_pdf_has_a_page_or_more_per_chapter(printed):
     from pypdf import PdfReader
 
-    reader = PdfReader(str(site / "report.pdf"))
+    reader = PdfReader(str(printed / "report.pdf"))
     assert len(reader.pages) >= len(CHAPTERS) + 1
     texts = [" ".join((page.extract_text() or "").replace("\u2019", "'").split()) for page in reader.pages]
     assert texts[0].startswith(BOOK_TITLE) or BOOK_TITLE in texts[0]
@@ -289,12 +299,13 @@ def test_lint_imports_fails_on_a_forbidden_import(tmp_path):
     assert "BROKEN" in proc.stdout and "vibration.physics.model" in proc.stdout, proc.stdout
 
 
+@pytest.mark.slow
 @pytest.mark.browser
-def test_the_print_edition_has_a_title_page_contents_and_bookmarks(site):
+def test_the_print_edition_has_a_title_page_contents_and_bookmarks(printed):
     """Title page first, a contents whose page numbers open their chapters, one bookmark per chapter and appendix."""
     from pypdf import PdfReader
 
-    reader = PdfReader(str(site / "report.pdf"))
+    reader = PdfReader(str(printed / "report.pdf"))
     texts = [" ".join((page.extract_text() or "").replace("\u2019", "'").split()) for page in reader.pages]
     assert texts[0].startswith(BOOK_TITLE), texts[0][:200]
     contents = next(i for i, t in enumerate(texts) if t.startswith("Contents"))
