@@ -132,3 +132,15 @@ def open_offline(browser, path, viewport=(1120, 900)):
     page.goto(path.as_uri())
     page.wait_for_load_state("load")
     return page, outside, errors
+
+
+#: Parameter sets beyond the paper's and the "heavy" one that chapter tests repeat: make test checks the
+#: paper's and one far set; these run in make test-slow (CI runs both), so make test stays within minutes.
+SLOW_PARAMETER_SETS = {"soft", "stiff", "light", "negative", "zero-negative", "zero"}
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        callspec = getattr(item, "callspec", None)
+        if callspec is not None and set(callspec.id.split("-")) & SLOW_PARAMETER_SETS:
+            item.add_marker(pytest.mark.slow)

@@ -165,48 +165,56 @@ def test_pdf_has_a_page_or_more_per_chapter(printed):
 # ---------------------------------------------------------------- browser checks
 
 
-@pytest.mark.browser
-def test_every_page_loads_offline_without_errors(browser, site):
+WIDE_JS = """() => {
+    const col = document.querySelector('article.bd-article').getBoundingClientRect().right;
+    const sel = 'article table, article img, article svg, article .vib-panel, article figure';
+    return [...document.querySelectorAll(sel)]
+        .filter(e => e.getBoundingClientRect().right > col + 2)
+        .map(e => e.tagName + ' ' + (e.querySelector('caption') || e).textContent.slice(0, 60));
+}"""
+
+
+@pytest.fixture(scope="module")
+def visited(browser, site) -> dict:
+    """Every page opened once at 1280 px: what it loaded from outside, its errors, its sidebar, what is too wide."""
+    out = {}
     for path in _pages(site):
         page, outside, errors = open_offline(browser, path, viewport=(1280, 900))
         page.wait_for_timeout(100)
-        assert outside == [], (path.name, outside)
-        assert errors == [], (path.name, errors)
+        facts = {"outside": outside, "errors": errors}
+        if path.name not in ("search.html", "genindex.html"):
+            hrefs = page.eval_on_selector_all(".bd-sidebar-primary a", "els => els.map(e => e.getAttribute('href'))")
+            facts["targets"] = {h.split("#")[0] for h in hrefs if h}
+            facts["sidebar"] = page.inner_text(".bd-sidebar-primary")
+            facts["wide"] = page.evaluate(WIDE_JS)
+        out[path] = facts
         page.close()
+    return out
 
 
 @pytest.mark.browser
-def test_every_chapter_is_reachable_from_the_sidebar_of_every_page(browser, site):
-    for path in [p for p in _pages(site) if p.name not in ("search.html", "genindex.html")]:
-        page, _, _ = open_offline(browser, path, viewport=(1280, 900))
-        hrefs = page.eval_on_selector_all(".bd-sidebar-primary a", "els => els.map(e => e.getAttribute('href'))")
-        targets = {h.split("#")[0] for h in hrefs if h}
+def test_every_page_loads_offline_without_errors(visited):
+    for path, facts in visited.items():
+        assert facts["outside"] == [], (path.name, facts["outside"])
+        assert facts["errors"] == [], (path.name, facts["errors"])
+
+
+@pytest.mark.browser
+def test_every_chapter_is_reachable_from_the_sidebar_of_every_page(visited):
+    for path, facts in visited.items():
+        if "targets" not in facts:
+            continue
+        targets = facts["targets"]
         for name in CHAPTERS:
             assert f"{name}.html" in targets or (path.stem == name and "" in targets), (path.name, name)
-        captions = page.inner_text(".bd-sidebar-primary")
         for caption, lo, _ in PARTS:
             if any(int(n.split("_")[0]) >= lo for n in CHAPTERS):
-                assert caption in captions, (path.name, caption)
-        page.close()
+                assert caption in facts["sidebar"], (path.name, caption)
 
 
 @pytest.mark.browser
-def test_nothing_is_wider_than_the_text_column_at_1280_px(browser, site):
-    wide = {}
-    for path in [p for p in _pages(site) if p.name not in ("search.html", "genindex.html")]:
-        page, _, _ = open_offline(browser, path, viewport=(1280, 900))
-        found = page.evaluate(
-            """() => {
-                const col = document.querySelector('article.bd-article').getBoundingClientRect().right;
-                const sel = 'article table, article img, article svg, article .vib-panel, article figure';
-                return [...document.querySelectorAll(sel)]
-                    .filter(e => e.getBoundingClientRect().right > col + 2)
-                    .map(e => e.tagName + ' ' + (e.querySelector('caption') || e).textContent.slice(0, 60));
-            }"""
-        )
-        if found:
-            wide[path.name] = found
-        page.close()
+def test_nothing_is_wider_than_the_text_column_at_1280_px(visited):
+    wide = {path.name: facts["wide"] for path, facts in visited.items() if facts.get("wide")}
     assert wide == {}
 
 
