@@ -45,6 +45,7 @@ def test_runner_banner_with_changed_parameter(browser, tmp_path):
     assert (tmp_path / "report" / "report.pdf").is_file()
 
 
+@pytest.mark.slow
 @pytest.mark.notebooks
 def test_runner_says_one_chapter(tmp_path):
     proc = subprocess.run(
