@@ -360,3 +360,11 @@ def test_api_bad_input(raises_parameter_error):
         learn.train(method="ars", popsize=4)
     with raises_parameter_error("render_mode", "human"):
         learn.OscillatorEnv(render_mode="human")
+
+
+def test_train_docstring_states_the_defaults_it_uses():
+    """The docstring's default iteration counts are DEFAULTS' (they drifted once: 120/60 against 100/40)."""
+    from vibration.physics.learning.training import DEFAULTS, train
+
+    doc = train.__doc__
+    assert f"{DEFAULTS['ars']['iterations']} ARS" in doc and f"{DEFAULTS['cma']['iterations']} CMA-ES" in doc

@@ -150,7 +150,7 @@ def train(
     method : {"ars", "cma"}
         The learner.
     iterations : int, optional
-        Iterations (ARS) or generations (CMA-ES); default 120 (ARS), 60 (CMA-ES).
+        Iterations (ARS) or generations (CMA-ES); default ``DEFAULTS[method]["iterations"]`` (100 ARS, 40 CMA-ES).
     n_episodes : int, optional
         Initial states per iteration, shared by its candidates; default 4.
     initial_gains : array_like, shape (2,)
