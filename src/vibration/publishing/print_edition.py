@@ -129,8 +129,11 @@ def print_book(page, pdf_path: Path, title: str, parts: list[tuple[str, int]], p
 
 def add_bookmarks(pdf: Path, titles: list[str], pages: list[int], parts: list[tuple[str, int]]) -> None:
     """PDF bookmarks: the title page, the contents, each part with its chapters, the appendices."""
+    import logging
+
     from pypdf import PdfReader, PdfWriter
 
+    logging.getLogger("pypdf").setLevel(logging.ERROR)  # Chromium's trailer sizes draw a harmless warning
     writer = PdfWriter(clone_from=PdfReader(str(pdf)))
     writer.add_outline_item(title="Title page", page_number=0)
     writer.add_outline_item(title="Contents", page_number=1)
