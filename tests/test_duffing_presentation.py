@@ -112,7 +112,6 @@ def test_panel_sliders_redraw_offline(browser, tmp_path):
             "input.vd-k3", "el => { el.value = '-1'; el.dispatchEvent(new Event('input', {bubbles: true})); }"
         )
         assert state()["folds"] == 2
-        page.locator("div.vib-duffing").screenshot(path="/tmp/duffing_panel.png")
         assert outside == [] and errors == []
     finally:
         page.close()
