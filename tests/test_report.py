@@ -302,3 +302,12 @@ def test_sigterm_stops_a_chapter_stuck_in_compiled_code_and_its_kernel(tmp_path)
     assert proc.returncode == 130, err
     gone, alive = psutil.wait_procs(family, timeout=10)
     assert not alive, [p.cmdline() for p in alive]
+
+
+def test_a_chapter_without_a_schema_runs_but_takes_no_p_value(tmp_path):
+    """A drafted notebook with no package runs at its own values; -p on its parameters is refused, naming it."""
+    root = _stuck_project(tmp_path / "project")
+    chapters = report.discover(root)
+    assert report.check_parameters(chapters, []) == {}
+    with pytest.raises(report.ParameterError, match="01_spin has no parameter schema"):
+        report.check_parameters(chapters, [("seconds", "1")])

@@ -155,11 +155,13 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
     parameter, its value and what is allowed.
     """
     schemas = chapter_schemas()
-    missing = [ch.name for ch in chapters if ch.name not in schemas]
-    if missing:
+    asked = {name for name, _ in pairs}
+    missing = [ch.name for ch in chapters if ch.name not in schemas and asked & set(ch.params)]
+    if missing:  # a chapter without a schema runs at its notebook's own values, but takes no -p value
         raise ParameterError(
-            f"chapter {missing[0]} has no parameter schema: allowed chapters with a package "
-            f"vibration.chapters.<topic> holding params.SCHEMA (python -m vibration.report --new-chapter writes one)"
+            f"chapter {missing[0]} has no parameter schema, so -p cannot set its parameters: allowed chapters with a "
+            f"package vibration.chapters.<topic> holding params.SCHEMA (python -m vibration.report --new-chapter "
+            f"writes one)"
         )
     declared: dict[str, str] = {}
     for ch in chapters:
@@ -174,11 +176,12 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
             )
         value = _convert(name, text, declared[name])
         for ch in chapters:
-            if name in ch.params:
+            if name in ch.params and ch.name in schemas:
                 value = schemas[ch.name][name].check(value)  # each chapter's own range
         values[name] = value
     for ch in chapters:  # the chapter's rules that tie several of its parameters together
-        schemas[ch.name].check({k: v for k, v in values.items() if k in ch.params})
+        if ch.name in schemas:
+            schemas[ch.name].check({k: v for k, v in values.items() if k in ch.params})
     return values
 
 
