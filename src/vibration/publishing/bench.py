@@ -16,7 +16,6 @@ a time: the tables are for reading. Targets (from the issues):
 from __future__ import annotations
 
 import argparse
-import statistics
 import subprocess
 import sys
 import tempfile
@@ -29,25 +28,7 @@ from ..physics.exact import exact_response
 from ..physics.frequency import peak_displacement_map
 from ..physics.model import Oscillator, SineForce
 from ..physics.numerics import simulate
-
-
-def median_time(fn, repeats: int) -> float:
-    """Median wall time of ``fn()`` over ``repeats`` calls (one warm-up call first), s."""
-    fn()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
-def table(title: str, rows: list[tuple[str, float, float | None, str]]) -> None:
-    print(f"\n{title}")
-    print(f"  {'case':58s} {'median':>12s} {'ratio':>10s}  target")
-    for name, t, ratio, target in rows:
-        r = f"{ratio:10.1f}x" if ratio is not None else " " * 11
-        print(f"  {name:58s} {t * 1e3:9.3f} ms {r}  {target}")
+from ..presentation.timing import median_time, table
 
 
 def bench_exact(quick: bool) -> None:

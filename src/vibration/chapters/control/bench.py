@@ -9,8 +9,6 @@ the layout); :func:`measure` returns the rows.
 
 from __future__ import annotations
 
-import statistics
-import time
 from collections.abc import Callable
 
 import numpy as np
@@ -24,19 +22,9 @@ from vibration.physics.control import (
     simulate_controlled,
 )
 from vibration.physics.model import Oscillator
+from vibration.presentation.timing import median_time, table
 
 Row = tuple[str, float, float | None, str]
-
-
-def median_time(fn: Callable[[], object], repeats: int) -> float:
-    """Median wall time of ``fn()`` over ``repeats`` calls (one warm-up call first), s."""
-    fn()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def measure(quick: bool) -> tuple[str, list[Row]]:
@@ -73,15 +61,7 @@ def measure(quick: bool) -> tuple[str, list[Row]]:
     )
 
 
-def _print_table(title: str, rows: list[Row]) -> None:
-    print(f"\n{title}")
-    print(f"  {'case':58s} {'median':>12s} {'ratio':>10s}  target")
-    for name, t, ratio, target in rows:
-        r = f"{ratio:10.1f}x" if ratio is not None else " " * 11
-        print(f"  {name:58s} {t * 1e3:9.3f} ms {r}  {target}")
-
-
-def run(quick: bool, table: Callable[[str, list[Row]], None] | None = None) -> None:
-    """Print the chapter's benchmark table (with ``table`` if given, e.g. ``vibration.publishing.bench.table``)."""
+def run(quick: bool, table: Callable[[str, list[Row]], None] = table) -> None:
+    """Print the chapter's benchmark table."""
     title, rows = measure(quick)
-    (table or _print_table)(title, rows)
+    table(title, rows)

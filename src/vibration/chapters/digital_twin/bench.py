@@ -9,7 +9,6 @@ against ``scipy.optimize.curve_fit`` on the full model, and the chapter's batch 
 
 from __future__ import annotations
 
-import statistics
 import time
 
 import numpy as np
@@ -25,31 +24,13 @@ from vibration.physics.twin import (
     sampled_response,
     simulated_test,
 )
-
-
-def median_time(fn, repeats: int) -> float:
-    """Median wall time of ``repeats`` calls, s (one warm-up call first)."""
-    fn()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
+from vibration.presentation.timing import median_time, table
 
 
 def _once(fn) -> float:
     start = time.perf_counter()
     fn()
     return time.perf_counter() - start
-
-
-def table(title: str, rows: list[tuple[str, float, float | None, str]]) -> None:
-    """Print ``(case, seconds, ratio or None, note)`` rows under a title."""
-    print(f"\n{title}")
-    for name, seconds, ratio, note in rows:
-        r = f"{ratio:8.1f}x" if ratio is not None else " " * 9
-        print(f"  {name:<62} {1e3 * seconds:10.2f} ms {r}  {note}")
 
 
 def run(quick: bool) -> None:

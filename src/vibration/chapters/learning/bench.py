@@ -1,37 +1,16 @@
 """Learning chapter's benchmark: training time of each learner to its default budget (target: under a minute).
 
-``run(quick, median_time=..., table=...)`` takes the report's timing and printing helpers
-(``vibration.publishing.bench.median_time`` and ``table``) so that the chapter does not import the
-publishing layer; without them it uses the plain versions below.
+``run(quick, median_time=..., table=...)`` times and prints with :mod:`vibration.presentation.timing`
+unless given others.
 """
 
 from __future__ import annotations
 
-import statistics
-import time
-
 from vibration.physics.learning import OscillatorTask, lqr_reference, resonance_task, semi_active_task, train
+from vibration.presentation.timing import median_time, table
 
 
-def _median_time(fn, repeats: int) -> float:
-    """Median wall time of ``fn()`` over ``repeats`` calls (one warm-up call first), s."""
-    fn()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
-def _table(title: str, rows: list[tuple[str, float, float | None, str]]) -> None:
-    print(f"\n{title}")
-    for name, t, ratio, target in rows:
-        r = f"{ratio:10.1f}x" if ratio is not None else " " * 11
-        print(f"  {name:58s} {t * 1e3:9.3f} ms {r}  {target}")
-
-
-def cases(quick: bool, median_time=_median_time) -> list[tuple[str, float, float | None, str]]:
+def cases(quick: bool, median_time=median_time) -> list[tuple[str, float, float | None, str]]:
     """Time ``train`` (ARS and CMA-ES, default budgets) on the default, resonance and semi-active tasks.
 
     Rows: case, median wall time (s), ratio (ARS on the default task over this case), target.
@@ -55,7 +34,7 @@ def cases(quick: bool, median_time=_median_time) -> list[tuple[str, float, float
     return rows
 
 
-def run(quick: bool, median_time=_median_time, table=_table) -> None:
+def run(quick: bool, median_time=median_time, table=table) -> None:
     """Time the learners and print the table (``make bench``)."""
     table(
         "learning: train() wall time to its default budget (ratio: ARS on the default task / this case)",

@@ -11,8 +11,6 @@
 from __future__ import annotations
 
 import math
-import statistics
-import time
 from collections.abc import Callable
 
 import numpy as np
@@ -21,29 +19,10 @@ from scipy.optimize import minimize_scalar
 from vibration.physics.model import Oscillator
 from vibration.physics.stability import settling_optimal_zeta, step_metrics, white_noise_monte_carlo
 from vibration.physics.stability.random_load import _default_dt
+from vibration.presentation.timing import median_time, table
 
 #: A row of a benchmark table: case, median time (s), ratio to the first row (or None), target.
 Row = tuple[str, float, float | None, str]
-
-
-def median_time(fn: Callable[[], object], repeats: int) -> float:
-    """Median wall time of ``fn()`` over ``repeats`` calls (one warm-up call first), s."""
-    fn()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
-def print_table(title: str, rows: list[Row]) -> None:
-    """The benchmark table in the layout of ``vibration.bench``."""
-    print(f"\n{title}")
-    print(f"  {'case':58s} {'median':>12s} {'ratio':>10s}  target")
-    for name, t, ratio, target in rows:
-        r = f"{ratio:10.1f}x" if ratio is not None else " " * 11
-        print(f"  {name:58s} {t * 1e3:9.3f} ms {r}  {target}")
 
 
 def _euler_maruyama(osc: Oscillator, S0: float, n_paths: int, t_end: float, dt: float, seed: int) -> float:
@@ -62,7 +41,7 @@ def _euler_maruyama(osc: Oscillator, S0: float, n_paths: int, t_end: float, dt: 
     return acc / max(count, 1)
 
 
-def run(quick: bool, table: Callable[[str, list[Row]], None] = print_table) -> None:
+def run(quick: bool, table: Callable[[str, list[Row]], None] = table) -> None:
     """Time the Monte Carlo and the settling-optimal search against naive alternatives, side by side.
 
     ``table(title, rows)`` reports each table (default: printed like ``vibration.bench``'s own tables).

@@ -18,8 +18,6 @@ the time so a ratio is never bought with a wrong answer:
 from __future__ import annotations
 
 import math
-import statistics
-import time
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -34,27 +32,7 @@ from vibration.physics.tmd import (
     tmd_peak,
     tmd_system,
 )
-
-
-def median_time(fn, repeats: int) -> float:
-    """Median wall time of ``fn()`` over ``repeats`` calls (one warm-up call first), s."""
-    fn()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
-def table(title: str, rows: list[tuple[str, float, float | None, str]]) -> None:
-    """Print one benchmark table: case, median time, ratio to the first row's, target."""
-    print(f"\n{title}")
-    print(f"  {'case':58s} {'median':>12s} {'ratio':>10s}  target")
-    for name, t, ratio, target in rows:
-        r = f"{ratio:10.1f}x" if ratio is not None else " " * 11
-        print(f"  {name:58s} {t * 1e3:9.3f} ms {r}  {target}")
-
+from vibration.presentation.timing import median_time, table
 
 MU, ZETA_P = 0.05, 0.5 / (2.0 * math.sqrt(20.0))  # the chapter's mass ratio, the paper's primary (c = 0.5 N s/m)
 R_GRID = np.linspace(0.0, 3.0, 20001)
