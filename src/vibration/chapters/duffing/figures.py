@@ -67,11 +67,14 @@ def frequency_response_figure(study: DuffingStudy) -> Captioned:
     fig, axes = figure(1, 2, height=3.7, sharey=True)
     p = study.params
     lin = case_style("linear")
+    drew_unstable = {}
     for ax, case in zip(axes, study.cases, strict=True):
         ax.plot(study.linear_omega, study.linear_amplitude_curve, color=lin["color"], ls=lin["linestyle"], lw=0.9,
                 label="linear spring")  # fmt: skip
-        plot_curve(ax, case.curve_omega, case.curve_amplitude, case.curve_stable, case_style(case.label)["color"],
-                   f"$k_3$ = {case.duffing.k3:g} N/m$^3$")  # fmt: skip
+        drew_unstable[case.label] = plot_curve(
+            ax, case.curve_omega, case.curve_amplitude, case.curve_stable, case_style(case.label)["color"],
+            f"$k_3$ = {case.duffing.k3:g} N/m$^3$",
+        )  # fmt: skip
         a_bb = np.linspace(0.0, 1.1 * np.nanmax(case.curve_amplitude), 200)
         ax.plot(backbone(case.duffing, a_bb), a_bb, color="k", lw=0.8, ls=":", label="backbone")
         f = case.folds
@@ -91,7 +94,7 @@ def frequency_response_figure(study: DuffingStudy) -> Captioned:
         shape = (
             f"two stable branches (solid) joined by an unstable one (dashed) between the folds at "
             f"{sig(case.folds.omega_low, 4)} and {sig(case.folds.omega_high, 4)} rad/s (open circles)"
-            if case.folds.bistable
+            if case.folds.bistable and drew_unstable[case.label]
             else "a single-valued, stable curve (solid)"
         )
         parts.append(f"{word}, the {case.label} spring with {_k3(case)} ({COLOUR_WORD[case.label]}): {shape}")
