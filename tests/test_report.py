@@ -11,7 +11,7 @@ import pytest
 
 import vibration
 from vibration.physics.model import ParameterError
-from vibration.publishing import report
+from vibration.publishing import engine, report
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -29,7 +29,7 @@ def no_kernel(monkeypatch):
         raise AssertionError("a kernel was started")
 
     monkeypatch.setattr(papermill, "execute_notebook", boom)
-    monkeypatch.setattr(report, "notebook_pool", boom)  # chapters run in other processes
+    monkeypatch.setattr(engine, "cluster", boom)  # chapters run as tasks on a Dask cluster
 
 
 def test_selects_chapters_by_stem_number_and_name(chapters):

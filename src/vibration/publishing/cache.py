@@ -164,6 +164,14 @@ class ChapterCache:
             return Lookup(False, tuple(diff))
         return Lookup(True, (), float(stored.get("elapsed_s", 0.0)))
 
+    def last_elapsed(self, name: str) -> float | None:
+        """The execution time of the chapter's last stored run, s (None when it never ran): longest first."""
+        meta, _, _ = self._paths(name)
+        try:
+            return float(json.loads(meta.read_text(encoding="utf-8"))["elapsed_s"])
+        except (OSError, ValueError, KeyError, TypeError):
+            return None
+
     def restore(self, name: str, notebook_to: Path, tables_to: Path) -> None:
         """Copy the cached executed notebook and its tables into a build."""
         _, nb, tables = self._paths(name)

@@ -2,7 +2,8 @@
 
 Usage::
 
-    python -m vibration.report [CHAPTER ...] [-p NAME VALUE ...] [--out DIR]
+    python -m vibration.report [CHAPTER ...] [-p NAME VALUE ...] [--out DIR] [--jobs N | --scheduler ADDRESS]
+    python -m vibration.report sweep CHAPTER -g NAME START:STOP:N ... --out DIR   # see publishing/sweep.py
     python -m vibration.report --list
     python -m vibration.report --in-place      # re-execute notebooks/ (nbval references)
 
@@ -19,9 +20,7 @@ from __future__ import annotations
 
 import argparse
 import math
-import multiprocessing
 import os
-import queue
 import re
 import shutil
 import signal
@@ -207,46 +206,75 @@ class CellTimeout(RuntimeError):
     """A chapter's cell ran longer than :data:`CELL_TIMEOUT_S`."""
 
 
-def _execute(
-    source: Path, output: Path, params: dict, kernel: str, tables: str | None, cell_timeout: float = CELL_TIMEOUT_S
-) -> float:
-    """Execute one notebook with papermill; runs in its own process. Returns the seconds it took.
+@dataclass(frozen=True, kw_only=True)
+class ChapterTask:
+    """One chapter's execution, as a task for the engine: everything a worker needs, by value."""
 
-    One process per notebook: jupyter clients sharing a process can lose a kernel
-    message, and papermill's ``cwd`` changes the working directory of the whole
-    process. SIGTERM (the pool's terminate) kills this process's kernel too: jupyter
-    starts kernels in a session of their own, where a stopped runner would leave them
-    computing.
+    name: str  # notebook stem
+    source: str  # the notebook's path on the client (used as is when the worker sees the same file)
+    notebook: bytes  # its content (a worker on another machine runs this copy)
+    params: dict
+    cell_timeout: float = CELL_TIMEOUT_S
+    tables: bool = True  # collect the tables the notebook writes
+    kernel: str | None = None  # the kernel to start; None: the project's when the worker has it, else python3
+
+
+def run_chapter(task: ChapterTask) -> dict:
+    """Execute one notebook with papermill on a worker; returns the executed notebook, its tables and seconds.
+
+    Runs on a single-threaded Dask worker (papermill's ``cwd`` changes the working directory of the
+    whole process). The executed copy and the tables stay in a temporary folder of the worker and
+    come back by value: only the client writes the output folder.
     """
+    import hashlib
     import logging
 
     import papermill
 
-    signal.signal(signal.SIGTERM, _kill_children_and_exit)
+    from .engine import announce
+
+    announce(task.name)
     for name in ("papermill", "traitlets", "nbclient"):
         logging.getLogger(name).setLevel(logging.ERROR)
-    if tables is None:  # the kernel inherits the environment (a forked worker may predate this run)
-        os.environ.pop(TABLES_ENV, None)
-    else:
-        os.environ[TABLES_ENV] = tables
-    start = time.perf_counter()
-    try:
-        papermill.execute_notebook(
-            str(source),
-            str(output),
-            parameters=params,
-            kernel_name=kernel,
-            cwd=str(source.parent),
-            progress_bar=False,
-            log_output=False,
-            execution_timeout=cell_timeout,
-            extra_arguments=KERNEL_ARGS,
-        )
-    except TimeoutError as exc:
-        raise CellTimeout(
-            f"{_cell_preview(str(exc))} ran longer than the runner's limit of {cell_timeout:g} s"
-        ) from None
-    return time.perf_counter() - start
+    with tempfile.TemporaryDirectory(prefix="vibration-chapter-") as tmp:
+        tmp = Path(tmp)
+        source = Path(task.source)
+        if not (source.is_file() and hashlib.sha256(source.read_bytes()).digest()
+                == hashlib.sha256(task.notebook).digest()):  # fmt: skip
+            source = tmp / "source" / Path(task.source).name  # another machine: the shipped copy
+            source.parent.mkdir()
+            source.write_bytes(task.notebook)
+        output, tables = tmp / "executed.ipynb", tmp / "tables"
+        tables.mkdir()
+        if task.tables:
+            os.environ[TABLES_ENV] = str(tables)
+        else:
+            os.environ.pop(TABLES_ENV, None)
+        start = time.perf_counter()
+        try:
+            papermill.execute_notebook(
+                str(source),
+                str(output),
+                parameters=dict(task.params),
+                kernel_name=task.kernel or kernel_name(),
+                cwd=str(source.parent),
+                progress_bar=False,
+                log_output=False,
+                execution_timeout=task.cell_timeout,
+                extra_arguments=KERNEL_ARGS,
+            )
+        except TimeoutError as exc:
+            raise CellTimeout(
+                f"{_cell_preview(str(exc))} ran longer than the runner's limit of {task.cell_timeout:g} s"
+            ) from None
+        finally:
+            os.environ.pop(TABLES_ENV, None)
+        elapsed = time.perf_counter() - start
+        return {
+            "notebook": output.read_bytes(),
+            "tables": {p.name: p.read_bytes() for p in sorted(tables.iterdir()) if p.is_file()},
+            "elapsed_s": elapsed,
+        }
 
 
 def _cell_preview(message: str) -> str:
@@ -270,39 +298,26 @@ def _cell_preview(message: str) -> str:
     return f'the cell starting "{lines[0]}"' if lines else "a cell the message does not quote"
 
 
-def _kill_children_and_exit(signum, frame):
-    """SIGTERM in a pool worker: kill the kernel (and anything else it started), then exit."""
-    import psutil
+def execute_notebooks(
+    runs: list[tuple[Path, Path, dict]], jobs: int = 2, kernel: str | None = None, scheduler: str | None = None
+) -> list[float]:
+    """Execute ``(source, output, parameters)`` runs with papermill, ``jobs`` at a time; seconds each, in order.
 
-    children = psutil.Process().children(recursive=True)
-    for child in children:
-        try:
-            child.kill()
-        except psutil.NoSuchProcess:
-            pass
-    psutil.wait_procs(children, timeout=5)
-    os._exit(143)
-
-
-def notebook_pool(jobs: int = 2):
-    """A pool that runs each notebook in its own process, forked from a server that imported papermill once.
-
-    Leaving its ``with`` block terminates what still runs (a failed chapter, Ctrl-C, SIGTERM): each worker
-    kills its kernel on the way out.
+    ``kernel`` names the kernel (default: the project's when the worker has it); ``scheduler`` an existing cluster.
     """
-    ctx = multiprocessing.get_context("forkserver")
-    ctx.set_forkserver_preload(["papermill", __name__])
-    return ctx.Pool(processes=max(1, jobs), maxtasksperchild=1)
+    from .engine import cluster
 
-
-def execute_notebooks(runs: list[tuple[Path, Path, dict]], jobs: int = 2, kernel: str | None = None) -> list[float]:
-    """Execute ``(source, output, parameters)`` runs with papermill, ``jobs`` at a time; seconds each, in order."""
-    kernel = kernel or kernel_name()
-    with notebook_pool(jobs) as pool:
-        pending = [
-            pool.apply_async(_execute, (Path(src), Path(out), dict(params), kernel, None)) for src, out, params in runs
-        ]
-        return [p.get() for p in pending]
+    with cluster(jobs, scheduler) as client:
+        tasks = [
+            ChapterTask(name=f"{Path(src).stem}#{i}", source=str(Path(src).resolve()), notebook=Path(src).read_bytes(),
+                        params=dict(params), tables=False, kernel=kernel)
+            for i, (src, _, params) in enumerate(runs)
+        ]  # fmt: skip
+        futures = [client.submit(run_chapter, task, key=f"chapter-{task.name}", pure=False) for task in tasks]
+        results = client.gather(futures)
+    for (_, out, _), res in zip(runs, results, strict=True):
+        Path(out).write_bytes(res["notebook"])
+    return [res["elapsed_s"] for res in results]
 
 
 def chapter_parameters(ch: Chapter, values: dict) -> list:
@@ -343,11 +358,14 @@ def run(
     pdf: bool = True,
     cell_timeout: float = CELL_TIMEOUT_S,
     cache: bool = True,
+    scheduler: str | None = None,
 ) -> list[dict]:
     """Execute ``chapters`` with papermill and build the book into ``out`` (replaced only on success).
 
     A chapter whose notebook, parameter values, imported modules, data and environment are those of a
     cached run (``out/cache``) is not executed again; the runner says which chapters ran and why.
+    The others run as tasks on a Dask cluster (:mod:`~vibration.publishing.engine`): a local one of
+    ``jobs`` workers, or the one at ``scheduler``; the longest (by their last recorded time) first.
     """
     import logging
 
@@ -367,7 +385,6 @@ def run(
     try:
         for sub in ("notebooks", "report", "tables", "tables-of"):
             (work / sub).mkdir()
-        kernel = kernel_name()
         total = len(chapters)
         t0 = time.perf_counter()
         graph = grimp.build_graph("vibration", cache_dir=None)
@@ -382,29 +399,9 @@ def run(
                 log(f"[cached] {ch.name}: nothing it depends on changed")
             else:
                 why = _why(found.reasons) if found is not None else "the cache is off"
-                todo.append((ch, params, why))
-        finished: queue.Queue = queue.Queue()  # (chapter, seconds or None, exception or None)
-        with notebook_pool(jobs) as pool:
-            for ch, params, why in todo:
-                (work / "tables-of" / ch.name).mkdir()
-                args = (ch.path, work / "notebooks" / ch.path.name, params)
-                pool.apply_async(
-                    _execute,
-                    (*args, kernel, str(work / "tables-of" / ch.name), cell_timeout),
-                    callback=lambda res, ch=ch: finished.put((ch, res, None)),
-                    error_callback=lambda exc, ch=ch: finished.put((ch, None, exc)),
-                )
-                log(f"[start] {ch.name}: {why}")
-            for _ in todo:
-                ch, res, exc = finished.get()
-                if exc is not None:  # a chapter failed: report it, keep the old tree (the pool stops the others)
-                    raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
-                executed, tables = work / "notebooks" / ch.path.name, work / "tables-of" / ch.name
-                for path in tables.iterdir():
-                    shutil.copy2(path, work / "tables" / path.name)
-                store.store(ch.name, manifests[ch.name], executed, tables, res)
-                results[ch.name] = {"executed": executed, "elapsed_s": res}
-                log(f"[{len(results)}/{total}] {ch.name} done in {res:.1f} s")
+                todo.append((ch, params, why, store.last_elapsed(ch.name)))
+        if todo:
+            _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, cell_timeout, log)
         t_run = time.perf_counter() - t0
         pages = [
             ChapterPage(
@@ -433,6 +430,46 @@ def run(
         return [{"name": p.name, "title": p.title, "elapsed_s": p.elapsed_s} for p in pages]
     finally:
         shutil.rmtree(work, ignore_errors=True)
+
+
+def _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, cell_timeout, log) -> None:
+    """Run the chapters of ``todo`` as tasks, longest first; store each as it finishes (the client writes all)."""
+    from distributed import wait
+
+    from .engine import cluster
+
+    order = sorted(todo, key=lambda item: -(item[3] or 0.0))  # unknown times (None) last
+    with cluster(jobs, scheduler, log=log) as client:
+        pending = {}
+        for rank, (ch, params, why, _) in enumerate(order):
+            task = ChapterTask(name=ch.name, source=str(ch.path.resolve()), notebook=ch.path.read_bytes(),
+                               params=params, cell_timeout=cell_timeout)  # fmt: skip
+            future = client.submit(run_chapter, task, key=f"chapter-{ch.name}-{os.getpid()}-{time.time_ns()}",
+                                   pure=False, priority=len(order) - rank)  # fmt: skip
+            pending[future] = ch
+            log(f"[start] {ch.name}: {why}")
+        while pending:
+            try:
+                done, _ = wait(list(pending), timeout=0.5, return_when="FIRST_COMPLETED")
+            except TimeoutError:
+                done = ()
+            for line in client.restarts.drain():
+                log(line)
+            for future in done:
+                ch = pending.pop(future)
+                exc = future.exception()
+                if exc is not None:  # a chapter failed: report it, keep the old tree (leaving the block stops the rest)
+                    raise RuntimeError(f"chapter {ch.name} failed: {_short(exc)}") from exc
+                res = future.result()
+                executed, tables = work / "notebooks" / ch.path.name, work / "tables-of" / ch.name
+                tables.mkdir()
+                executed.write_bytes(res["notebook"])
+                for name, data in res["tables"].items():
+                    (tables / name).write_bytes(data)
+                    (work / "tables" / name).write_bytes(data)
+                store.store(ch.name, manifests[ch.name], executed, tables, res["elapsed_s"])
+                results[ch.name] = {"executed": executed, "elapsed_s": res["elapsed_s"]}
+                log(f"[{len(results)}/{total}] {ch.name} done in {res['elapsed_s']:.1f} s")
 
 
 def _manifest(ch: Chapter, params: dict, graph) -> dict[str, str]:
@@ -505,7 +542,24 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
         log(f"{ch.name} re-executed in {time.perf_counter() - start:.1f} s")
 
 
+#: The runner's subcommands (its first argument, which no chapter may take as its name): name -> the
+#: ``module:function`` that takes the remaining arguments and returns the exit status.
+SUBCOMMANDS = {
+    "sweep": "vibration.publishing.sweep:main",
+}
+
+
+def _subcommand(name: str, argv: list[str]) -> int:
+    import importlib
+
+    module, _, function = SUBCOMMANDS[name].partition(":")
+    return getattr(importlib.import_module(module), function)(argv)
+
+
 def main(argv: list[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv and argv[0] in SUBCOMMANDS:  # every subcommand is dispatched here
+        return _subcommand(argv[0], argv[1:])
     parser = argparse.ArgumentParser(prog="python -m vibration.report", description=__doc__.split("\n\n")[0])
     parser.add_argument("chapters", nargs="*", help="chapters to run (default: all)")
     parser.add_argument(
@@ -518,7 +572,12 @@ def main(argv: list[str] | None = None) -> int:
         help="set a parameter in every chapter that declares it",
     )
     parser.add_argument("--out", default="build", help="output folder (default: build)")
-    parser.add_argument("--jobs", type=int, default=2, help="chapters run at once (default: 2)")
+    parser.add_argument(
+        "--jobs", type=int, default=2, help="worker processes of the local Dask cluster, chapters at once (default: 2)"
+    )
+    parser.add_argument(
+        "--scheduler", metavar="ADDRESS", help="run the chapters on this Dask scheduler (tcp://host:8786) instead"
+    )
     parser.add_argument("--no-pdf", action="store_true", help="skip the PDF (faster previews)")
     parser.add_argument(
         "--no-cache", action="store_true", help="execute every chapter, even those whose inputs did not change"
@@ -528,7 +587,7 @@ def main(argv: list[str] | None = None) -> int:
         "--new-chapter", metavar="NN_topic", help="write a new chapter from the template (package, notebook, test)"
     )
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
-    args = parser.parse_args(_protect_negative_values(sys.argv[1:] if argv is None else list(argv)))
+    args = parser.parse_args(_protect_negative_values(argv))
     previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         if args.new_chapter:
@@ -550,7 +609,15 @@ def main(argv: list[str] | None = None) -> int:
             execute_in_place(chapters)
             return 0
         values = check_parameters(chapters, [tuple(p) for p in args.parameter])
-        run(chapters, values, Path(args.out).resolve(), jobs=args.jobs, pdf=not args.no_pdf, cache=not args.no_cache)
+        run(
+            chapters,
+            values,
+            Path(args.out).resolve(),
+            jobs=args.jobs,
+            pdf=not args.no_pdf,
+            cache=not args.no_cache,
+            scheduler=args.scheduler,
+        )
     except ParameterError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
