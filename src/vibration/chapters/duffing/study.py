@@ -499,6 +499,48 @@ def _convergence(main: LyapunovEstimate) -> tuple[ConvergenceRow, ...]:
     return tuple(rows)
 
 
+def _lyapunov_runs(p: Params, ueda: Duffing) -> tuple[tuple[LyapunovEstimate, ...], Pooled]:
+    """The independent QR runs on Ueda's oscillator at ``F0_ueda`` and their pooled largest exponent (1/s)."""
+    n_blocks = min(20, p.n_lyapunov // 10)
+    # the main run has n_lyapunov periods; the others at most N_OTHER_RUNS (bounded work at the parameter's extreme)
+    lengths = [p.n_lyapunov] + [
+        min(p.n_lyapunov, N_OTHER_RUNS, MAX_RK4_STEPS // spp - 300) for _, spp in LYAPUNOV_RUNS[1:]
+    ]
+    runs = tuple(
+        lyapunov_estimate(ueda, p.F0_ueda, 1.0, *start, n_periods=n, n_blocks=n_blocks, steps_per_period=spp)
+        for (start, spp), n in zip(LYAPUNOV_RUNS, lengths, strict=True)
+    )
+    return runs, Pooled(*pooled_exponent(runs))
+
+
+@dataclass(frozen=True, kw_only=True, eq=False)
+class ChaosStudy:
+    """The chapter's largest Lyapunov exponent alone (what a sweep over Ueda's forcing needs), SI units."""
+
+    params: Params
+    lyap_runs: tuple[LyapunovEstimate, ...] = field(repr=False)  # main run first, QR
+    pooled: Pooled  # 1/s
+
+
+def chaos_study(params: Params | None = None, **values) -> ChaosStudy:
+    """The pooled largest Lyapunov exponent of Ueda's oscillator at the run's ``c_ueda`` and ``F0_ueda``.
+
+    The same runs as :func:`duffing_study`'s (so its key results equal the chapter's), without the rest of
+    the chapter: the study a sweep runs at every point.
+
+    Examples
+    --------
+    >>> st = chaos_study(n_lyapunov=200)
+    >>> st.pooled.mean > 0, len(st.lyap_runs)   # 1/s
+    (True, 6)
+    """
+    p = params if params is not None else Params.from_values(values)
+    if not isinstance(p, Params):
+        raise ParameterError(f"params = {p!r:.60} is not valid: allowed a duffing Params record or None")
+    runs, pooled = _lyapunov_runs(p, Duffing(1.0, p.c_ueda, 0.0, 1.0))
+    return ChaosStudy(params=p, lyap_runs=runs, pooled=pooled)
+
+
 def duffing_study(params: Params | None = None, **values) -> DuffingStudy:
     """Compute chapter 9: harmonic balance, Floquet checks, sweeps, continued folds, the paper's scenario, chaos.
 
@@ -544,14 +586,7 @@ def duffing_study(params: Params | None = None, **values) -> DuffingStudy:
     section_chaos = poincare_section(ueda, p.F0_ueda, 1.0, *UEDA_START, n_periods=N_SECTION, n_transient=300)
     section_periodic = poincare_section(ueda, p.F0_ueda_periodic, 1.0, *UEDA_START, n_periods=200, n_transient=1000)
     n_blocks = min(20, p.n_lyapunov // 10)
-    # the main run has n_lyapunov periods; the others at most N_OTHER_RUNS (bounded work at the parameter's extreme)
-    lengths = [p.n_lyapunov] + [
-        min(p.n_lyapunov, N_OTHER_RUNS, MAX_RK4_STEPS // spp - 300) for _, spp in LYAPUNOV_RUNS[1:]
-    ]
-    runs = tuple(
-        lyapunov_estimate(ueda, p.F0_ueda, 1.0, *start, n_periods=n, n_blocks=n_blocks, steps_per_period=spp)
-        for (start, spp), n in zip(LYAPUNOV_RUNS, lengths, strict=True)
-    )
+    runs, pooled = _lyapunov_runs(p, ueda)
     partner = lyapunov_estimate(ueda, p.F0_ueda, 1.0, *LYAPUNOV_RUNS[0][0], n_periods=p.n_lyapunov, n_blocks=n_blocks,
                                 method="benettin")  # fmt: skip
     kw = {"n_periods": min(p.n_lyapunov, N_PERIODIC), "n_transient": 300}
@@ -563,7 +598,6 @@ def duffing_study(params: Params | None = None, **values) -> DuffingStudy:
             ueda, p.F0_ueda_periodic, 1.0, x0=float(section_periodic[-1, 0]), v0=float(section_periodic[-1, 1])
         )
         floq = math.log(max(abs(x) for x in orb.multipliers)) / (2 * math.pi)
-    pooled = Pooled(*pooled_exponent(runs))
     cm = ueda.c / ueda.m
     qr_sums = [abs(e.exponent + e.second + cm) for e in runs] + [abs(sum(per_qr.exponents) + cm)]
     fold_mu = [abs(f.multiplier - 1.0) for c in cases if c.branch for f in c.branch.folds]

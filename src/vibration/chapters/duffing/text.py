@@ -17,6 +17,7 @@ import math
 
 import numpy as np
 
+from vibration.chapters.duffing.keyresults import KEY_RESULTS
 from vibration.chapters.duffing.notation import apm, count, sig, signed
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 
@@ -316,9 +317,9 @@ def key_findings(study: DuffingStudy) -> list[str]:
             f"**One harmonic is close, not exact.** Harmonic balance misses the true folds by at most "
             f"{sig(max(errs), 2)} rad/s{sweeps}."
         )
-    pooled = study.pooled
+    pooled, key = study.pooled, KEY_RESULTS.values(study)  # the declared key results (keyresults.py)
     out.append(
-        f"**Chaos.** Ueda's oscillator at F = {p.F0_ueda:g} N has λ₁ {apm(pooled.mean, pooled.standard_error)} "
+        f"**Chaos.** Ueda's oscillator at F = {p.F0_ueda:g} N has λ₁ {apm(key['lyapunov'], key['lyapunov_se'])} "
         f"1/s from {len(study.lyap_runs)} independent runs, {chaos_verdict(study)}"
         + (f"; nearby motions separate by a factor e every ≈{sig(1 / pooled.mean, 2)} s." if pooled.sign > 0 else ".")
     )

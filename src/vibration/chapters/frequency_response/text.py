@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 
+from vibration.chapters.frequency_response.keyresults import KEY_RESULTS
 from vibration.chapters.frequency_response.study import TOL_ESTIMATE, FrequencyStudy
 from vibration.presentation.narrative import g, regime_clause
 
@@ -81,7 +82,12 @@ def key_results(study: FrequencyStudy) -> str:
     """The key-results box: the chapter's headline numbers as a Markdown block quote."""
     p = study.params
     ratio = p.omega_res / study.omega_n
-    amps = [f"{num(c.M_res, 3)} times with the {c.name.split()[0]}" for c in study.cases if c.steady]
+    declared = KEY_RESULTS["M_res"].value(study)  # the nominal case's, as declared in keyresults.py
+    amps = [
+        f"{num(declared if c.case == 'c_nominal' else c.M_res, 3)} times with the {c.name.split()[0]}"
+        for c in study.cases
+        if c.steady
+    ]
     if amps:
         amps[0] = amps[0].replace(" times with", " times the static deflection $F_0/k$ with")
     no_steady = [c.name for c in study.cases if not c.steady]
