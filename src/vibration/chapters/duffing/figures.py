@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from vibration.chapters.duffing.notation import sig, within
+from vibration.chapters.duffing.notation import forcing_term, sig, within
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 from vibration.physics.duffing import backbone
 from vibration.presentation.captions import Captioned, panel_words
@@ -240,32 +240,40 @@ def paper_figure(study: DuffingStudy) -> Captioned:
 
 
 def chaos_figure(study: DuffingStudy) -> Captioned:
-    """Poincaré sections of Ueda's oscillator and the running largest Lyapunov exponent by both methods."""
-    fig, (ax1, ax2) = figure(1, 2, height=3.6)
+    """Poincaré sections of Ueda's oscillator, the running largest Lyapunov exponent by both methods, and
+    Ueda's chaos map (the pooled exponent over forcing frequency and amplitude)."""
+    fig, (ax1, ax2, ax3) = figure(1, 3, height=3.9, layout="constrained")
     p = study.params
+    strobe = r"2\pi n" if p.omega_ueda == 1.0 else rf"2\pi n/{p.omega_ueda:g}"
     chaos_col, per_col = OKABE_ITO["black"], case_style("hardening")["color"]
     ax1.plot(study.section_chaos[:, 0], study.section_chaos[:, 1], ".", ms=1.2, color=chaos_col,
              label=f"$F$ = {p.F0_ueda:g} N")  # fmt: skip
     ax1.plot(study.section_periodic[:, 0], study.section_periodic[:, 1], "o", ms=6, color=per_col,
              label=f"$F$ = {p.F0_ueda_periodic:g} N")  # fmt: skip
-    ax1.set_xlabel(r"$x$ at $t = 2\pi n$ (m)")
-    ax1.set_ylabel(r"$\dot x$ at $t = 2\pi n$ (m/s)")
-    ax1.set_title("stroboscopic Poincaré section")
-    place_legend(ax1)
+    ax1.set_xlabel(rf"$x$ at $t = {strobe}$ (m)")
+    ax1.set_ylabel(rf"$\dot x$ at $t = {strobe}$ (m/s)")
+    ax1.legend(loc="lower left", bbox_to_anchor=(0.0, 1.02, 1.0, 0.1), ncol=2, borderaxespad=0.0, frameon=False)
     styles = {"qr": "-", "benettin": "--"}
-    names = {"qr": "variational + QR", "benettin": "two trajectories"}
-    for which, col, force in (("chaotic", chaos_col, p.F0_ueda), ("periodic", per_col, p.F0_ueda_periodic)):
+    for which, col in (("chaotic", chaos_col), ("periodic", per_col)):
         for method in ("qr", "benettin"):
             t, lam = study.running(which, method)
-            ax2.plot(t, lam, color=col, ls=styles[method], lw=1.0, label=f"$F$ = {force:g} N: {names[method]}")
+            ax2.plot(t, lam, color=col, ls=styles[method], lw=1.0)
     ax2.axhline(0.0, color="k", lw=0.6)
     ax2.set_xscale("log")
     ax2.set_xlabel(r"averaging time (s)")
     ax2.set_ylabel(r"largest exponent $\lambda_1$ (1/s)")
-    ax2.set_title("Lyapunov exponent, running estimate")
-    place_legend(ax2)
 
-    left, right = (w[:1].upper() + w[1:] for w in panel_words(fig))
+    cmap = study.chaos_map
+    top = max(float(np.max(np.abs(cmap.exponent))), 1e-12)
+    mesh = ax3.pcolormesh(cmap.omegas, cmap.forces, cmap.exponent, shading="nearest", cmap="RdBu_r", vmin=-top,
+                          vmax=top)  # fmt: skip
+    fig.colorbar(mesh, ax=ax3, location="top", label=r"$\lambda_1$ (1/s)")
+    ax3.plot([p.omega_ueda], [p.F0_ueda], "o", ms=6, mfc="none", color=chaos_col)
+    ax3.plot([p.omega_ueda], [p.F0_ueda_periodic], "o", ms=6, mfc="none", color=per_col)
+    ax3.set_xlabel(r"forcing frequency $\omega_U$ (rad/s)")
+    ax3.set_ylabel(r"force amplitude $F_U$ (N)")
+
+    left, middle, right = (w[:1].upper() + w[1:] for w in panel_words(fig)[:3])
     n_chaos, n_per = study.section_points("chaotic"), study.section_points("periodic")
 
     def section(n: int, total: int) -> str:
@@ -289,20 +297,22 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
         )
     )
     caption = (
-        f"Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = F cos t. {left}: its state once per forcing period "
+        f"Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = {forcing_term(p)}. {left}: its state once per forcing period "
         f"(stroboscopic Poincaré section) at F = {p.F0_ueda:g} N (black dots, "
         f"{section(n_chaos, len(study.section_chaos))}) and at F = {p.F0_ueda_periodic:g} N ({dot}, "
-        f"{section(n_per, len(study.section_periodic))}). {right}: the running estimate of the largest "
+        f"{section(n_per, len(study.section_periodic))}). {middle}: the running estimate of the largest "
         "Lyapunov exponent against the averaging time (logarithmic axis), by the variational equations with QR "
-        f"(solid) and by two trajectories (dashed); {coincide}."
+        f"(solid) and by two trajectories (dashed), in the colours of the forcings; {coincide}. {right}: the exponent "
+        f"over a {cmap.omegas.size} × {cmap.forces.size} grid of forcing frequency and amplitude, {cmap.n_periods} "
+        "periods per run (red: positive, chaotic; blue: negative); circles mark the two forcings."
     )
     final = {w: study.running(w, "qr")[1][-1] for w in ("chaotic", "periodic")}
     alt = (
         f"Left, a Poincaré section of {n_chaos} points for the stronger forcing and {n_per} for the weaker one; "
-        "right, running estimates of the largest Lyapunov exponent against averaging time, settling "
+        "middle, running estimates of the largest Lyapunov exponent against averaging time, settling "
         + ("above zero" if final["chaotic"] > 0 else "below zero")
         + " for the stronger forcing and "
         + ("below zero" if final["periodic"] < 0 else "above zero")
-        + " for the weaker one."
+        + " for the weaker one; right, a colour map of the exponent over forcing frequency and amplitude."
     )
     return Captioned(fig, caption, "fig-duffing-chaos", alt)

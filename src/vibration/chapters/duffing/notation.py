@@ -92,3 +92,8 @@ def within(fraction: float, floor: float = 1e-3) -> str:
             if step >= fraction:
                 break
     return f"{100 * step:g} %"
+
+
+def forcing_term(p) -> str:
+    """Ueda's forcing as the captions write it: ``F cos t`` at 1 rad/s, else ``F cos(ω t)`` with its value."""
+    return "F cos t" if p.omega_ueda == 1.0 else f"F cos({p.omega_ueda:g} t)"

@@ -42,6 +42,7 @@ SCHEMA = Schema(
         ),
         Param("n_sweep", "N_sweep", 200, "", 10, 400, "frequencies in each sweep"),
         Param("c_ueda", "c_U", 0.05, "N s/m", 0.0, 10.0, "damping of Ueda's oscillator", low_open=True),
+        Param("omega_ueda", "ω_U", 1.0, "rad/s", 0.0, 10.0, "forcing frequency of Ueda's oscillator", low_open=True),
         Param(
             "F0_ueda", "F_U", 7.5, "N", 0.0, 100.0, "forcing of Ueda's oscillator in the chaotic case", low_open=True
         ),

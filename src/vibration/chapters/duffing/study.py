@@ -19,6 +19,7 @@ and returns a :class:`DuffingStudy`; figures, tables and sentences are functions
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 
@@ -68,6 +69,10 @@ CONVERGENCE_LENGTHS = (1000, 2000, 5000, 10_000, 20_000, 50_000, 100_000)
 #: Largest arclength step of the continuation through the band (scaled unknowns): the folds are located by
 #: the secant method on det(M - I) whatever the step, so a coarser step costs only resolution of the drawn branch.
 CONTINUATION_STEP = 0.1
+#: Ueda's chaos map in the chapter: forcing frequencies (rad/s) and amplitudes (N) of its grid, and the periods of
+#: each of its runs (the chapter's time budget; ``python -m vibration.report sweep 09 -g omega_ueda ... -g F0_ueda ...
+#: -p n_lyapunov N`` computes the same map at any resolution).
+MAP_OMEGAS, MAP_FORCES, MAP_PERIODS = np.linspace(0.5, 1.5, 9), np.linspace(1.0, 13.0, 7), 100
 #: Periods of the periodic case's exponents (at most), of the other chaotic runs (at most), of the sections.
 N_PERIODIC, N_OTHER_RUNS, N_SECTION = 5000, 20_000, 3000
 
@@ -264,6 +269,27 @@ class ConvergenceRow:
     standard_error: float  # 1/s
 
 
+@dataclass(frozen=True, kw_only=True, eq=False)
+class ChaosMap:
+    """Ueda's chaos map: the pooled largest Lyapunov exponent over forcing frequency and amplitude (1/s)."""
+
+    omegas: np.ndarray = field(repr=False)  # forcing frequencies, rad/s
+    forces: np.ndarray = field(repr=False)  # force amplitudes, N
+    exponent: np.ndarray = field(repr=False)  # [force, omega], 1/s
+    standard_error: np.ndarray = field(repr=False)  # [force, omega], 1/s
+    n_periods: int  # periods of each run (the main run's n_lyapunov at every point)
+
+    @property
+    def chaotic(self) -> np.ndarray:
+        """Points whose exponent is positive beyond three standard errors."""
+        return self.exponent - 3.0 * self.standard_error > 0.0
+
+    @property
+    def share_chaotic(self) -> float:
+        """Share of the grid's points that are chaotic, 1."""
+        return float(np.mean(self.chaotic))
+
+
 @dataclass(frozen=True, eq=False)
 class DuffingStudy:
     """Everything chapter 9 shows, computed once (SI units)."""
@@ -292,6 +318,7 @@ class DuffingStudy:
     convergence: tuple[ConvergenceRow, ...]
     floquet_periodic: float  # log max|mu| / T of the periodic Ueda orbit, 1/s (nan: not period 1)
     published: Published
+    chaos_map: ChaosMap
     # self-checks
     amp_residual: float  # largest relative residual of the amplitude equation on the drawn curves
     liouville: float  # largest relative error of |mu1 mu2| against exp(-cT/m)
@@ -319,7 +346,7 @@ class DuffingStudy:
     def running(self, which: str, method: str) -> tuple[np.ndarray, np.ndarray]:
         """Running estimate of the largest exponent: (averaging time s, estimate 1/s) of ``which`` in
         ("chaotic", "periodic") by ``method`` in ("qr", "benettin")."""
-        T = 2 * math.pi  # Ueda's forcing frequency is 1 rad/s
+        T = 2 * math.pi / self.params.omega_ueda  # forcing period, s
         if which == "chaotic":
             e = self.main_run if method == "qr" else self.lyap_benettin
             n = np.arange(1, e.n_periods + 1)
@@ -480,7 +507,7 @@ def _published(p: Params, pooled: Pooled, runs: tuple[LyapunovEstimate, ...]) ->
         c=pub["c"],
         F0=pub["F0"],
         step=pub["step"],
-        applies=p.c_ueda == pub["c"] and p.F0_ueda == pub["F0"],
+        applies=p.c_ueda == pub["c"] and p.F0_ueda == pub["F0"] and p.omega_ueda == 1.0,
         delta=delta,
         z=delta / pooled.standard_error,
         sigma1=sigma1,
@@ -507,7 +534,7 @@ def _lyapunov_runs(p: Params, ueda: Duffing) -> tuple[tuple[LyapunovEstimate, ..
         min(p.n_lyapunov, N_OTHER_RUNS, MAX_RK4_STEPS // spp - 300) for _, spp in LYAPUNOV_RUNS[1:]
     ]
     runs = tuple(
-        lyapunov_estimate(ueda, p.F0_ueda, 1.0, *start, n_periods=n, n_blocks=n_blocks, steps_per_period=spp)
+        lyapunov_estimate(ueda, p.F0_ueda, p.omega_ueda, *start, n_periods=n, n_blocks=n_blocks, steps_per_period=spp)
         for (start, spp), n in zip(LYAPUNOV_RUNS, lengths, strict=True)
     )
     return runs, Pooled(*pooled_exponent(runs))
@@ -539,6 +566,26 @@ def chaos_study(params: Params | None = None, **values) -> ChaosStudy:
         raise ParameterError(f"params = {p!r:.60} is not valid: allowed a duffing Params record or None")
     runs, pooled = _lyapunov_runs(p, Duffing(1.0, p.c_ueda, 0.0, 1.0))
     return ChaosStudy(params=p, lyap_runs=runs, pooled=pooled)
+
+
+def chaos_map(p: Params, omegas=MAP_OMEGAS, forces=MAP_FORCES, n_periods: int = MAP_PERIODS) -> ChaosMap:
+    """Ueda's chaos map: :func:`chaos_study` (the sweep's study) at every forcing frequency and amplitude.
+
+    ``p`` gives the damping ``c_ueda``; every point runs ``n_periods`` periods (at most 40 000 points).
+    """
+    omegas, forces = np.asarray(omegas, dtype=float), np.asarray(forces, dtype=float)
+    if omegas.size * forces.size > 40_000:
+        raise ParameterError(
+            f"chaos map of {forces.size} x {omegas.size} points: allowed at most 40000 (the sweep command runs more)"
+        )
+    lam = np.empty((forces.size, omegas.size))
+    se = np.empty_like(lam)
+    for i, F in enumerate(forces):
+        for j, w in enumerate(omegas):
+            point = dataclasses.replace(p, omega_ueda=float(w), F0_ueda=float(F), n_lyapunov=int(n_periods))
+            pooled = chaos_study(point).pooled
+            lam[i, j], se[i, j] = pooled.mean, pooled.standard_error
+    return ChaosMap(omegas=omegas, forces=forces, exponent=lam, standard_error=se, n_periods=int(n_periods))
 
 
 def duffing_study(params: Params | None = None, **values) -> DuffingStudy:
@@ -583,21 +630,22 @@ def duffing_study(params: Params | None = None, **values) -> DuffingStudy:
     x_duf, _ = duffing_response(hard.duffing, p.F0, p.omega_res, t, sine=True)
 
     ueda = Duffing(1.0, p.c_ueda, 0.0, 1.0)
-    section_chaos = poincare_section(ueda, p.F0_ueda, 1.0, *UEDA_START, n_periods=N_SECTION, n_transient=300)
-    section_periodic = poincare_section(ueda, p.F0_ueda_periodic, 1.0, *UEDA_START, n_periods=200, n_transient=1000)
+    w_u = p.omega_ueda
+    section_chaos = poincare_section(ueda, p.F0_ueda, w_u, *UEDA_START, n_periods=N_SECTION, n_transient=300)
+    section_periodic = poincare_section(ueda, p.F0_ueda_periodic, w_u, *UEDA_START, n_periods=200, n_transient=1000)
     n_blocks = min(20, p.n_lyapunov // 10)
     runs, pooled = _lyapunov_runs(p, ueda)
-    partner = lyapunov_estimate(ueda, p.F0_ueda, 1.0, *LYAPUNOV_RUNS[0][0], n_periods=p.n_lyapunov, n_blocks=n_blocks,
+    partner = lyapunov_estimate(ueda, p.F0_ueda, w_u, *LYAPUNOV_RUNS[0][0], n_periods=p.n_lyapunov, n_blocks=n_blocks,
                                 method="benettin")  # fmt: skip
     kw = {"n_periods": min(p.n_lyapunov, N_PERIODIC), "n_transient": 300}
-    per_qr = lyapunov_qr(ueda, p.F0_ueda_periodic, 1.0, *UEDA_START, **kw)
-    per_ben = lyapunov_benettin(ueda, p.F0_ueda_periodic, 1.0, *UEDA_START, **kw)
+    per_qr = lyapunov_qr(ueda, p.F0_ueda_periodic, p.omega_ueda, *UEDA_START, **kw)
+    per_ben = lyapunov_benettin(ueda, p.F0_ueda_periodic, p.omega_ueda, *UEDA_START, **kw)
     floq = math.nan
     if np.ptp(section_periodic, axis=0).max() < 1e-6:  # period 1: its Floquet multipliers give the exponent
         orb = periodic_orbit(
-            ueda, p.F0_ueda_periodic, 1.0, x0=float(section_periodic[-1, 0]), v0=float(section_periodic[-1, 1])
+            ueda, p.F0_ueda_periodic, p.omega_ueda, x0=float(section_periodic[-1, 0]), v0=float(section_periodic[-1, 1])
         )
-        floq = math.log(max(abs(x) for x in orb.multipliers)) / (2 * math.pi)
+        floq = math.log(max(abs(x) for x in orb.multipliers)) / (2 * math.pi / p.omega_ueda)
     cm = ueda.c / ueda.m
     qr_sums = [abs(e.exponent + e.second + cm) for e in runs] + [abs(sum(per_qr.exponents) + cm)]
     fold_mu = [abs(f.multiplier - 1.0) for c in cases if c.branch for f in c.branch.folds]
@@ -624,6 +672,7 @@ def duffing_study(params: Params | None = None, **values) -> DuffingStudy:
         convergence=_convergence(runs[0]),
         floquet_periodic=floq,
         published=_published(p, pooled, runs),
+        chaos_map=chaos_map(p),
         amp_residual=max(r1, r2),
         liouville=max(l1, l2),
         qr_sum_error=max(qr_sums),

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from vibration.chapters.duffing.notation import power, sig
+from vibration.chapters.duffing.notation import forcing_term, power, sig
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 from vibration.presentation.tables import Approx, Column, Missing, Table
 
@@ -247,7 +247,7 @@ def lyapunov_table(study: DuffingStudy) -> Table:
             Column("se", "standard error (1/s)"),
             Column("l2", "λ_2 (1/s)"),
         ],
-        caption=f"Lyapunov exponents of Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = F cos t from "
+        caption=f"Lyapunov exponents of Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = {forcing_term(p)} from "
         f"{_start(*study_start(study))} (per unit time, natural logarithm); standard errors by batch means over "
         f"{main.block_means.size} blocks of {main.block_periods} periods.",
         name="tab-duffing-lyapunov",
