@@ -73,6 +73,15 @@ def _kill_when(proc_out: Path, ready, worker) -> None:
     os.killpg(worker.pid, signal.SIGKILL)  # the worker and its nanny, at once
 
 
+def _runs_a_kernel(pid: int) -> bool:
+    import psutil
+
+    try:
+        return any("ipykernel" in " ".join(p.cmdline()) for p in psutil.Process(pid).children(recursive=True))
+    except psutil.Error:
+        return False
+
+
 @pytest.mark.slow
 @pytest.mark.notebooks
 def test_a_sweep_and_a_two_chapter_report_survive_a_killed_worker_on_an_existing_cluster(dask_cluster, tmp_path):
@@ -112,8 +121,7 @@ def test_a_sweep_and_a_two_chapter_report_survive_a_killed_worker_on_an_existing
              "--no-pdf"],
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
         )  # fmt: skip
-        time.sleep(8.0)  # both chapters are running, one on each worker
-        os.killpg(fresh.pid, signal.SIGKILL)
+        _kill_when(report_out, lambda: _runs_a_kernel(fresh.pid), fresh)  # inside a chapter: its kernel runs
         stdout, stderr = proc.communicate(timeout=900)
         assert proc.returncode == 0, stdout + stderr
         assert "[rerun]" in stdout and "the worker running it was lost" in stdout
