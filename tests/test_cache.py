@@ -118,3 +118,35 @@ def test_a_second_run_reuses_unchanged_chapters_and_says_why_others_run(tmp_path
     ]
     executed = json.loads((out / "notebooks" / "01_a.ipynb").read_text())
     assert "".join(executed["cells"][-1]["outputs"][0]["text"]).strip() == "10"  # the cached run of a = 5
+
+
+@pytest.mark.slow
+@pytest.mark.notebooks
+def test_nothing_changed_only_checks_and_one_edit_rebuilds_only_its_pages(tmp_path):
+    """With nothing changed the runner builds nothing; one edited chapter runs alone and Sphinx reads its page again,
+    not the others' (its environment is kept in the output folder), and the tree is still swapped whole."""
+    root = tmp_path / "project"
+    code = "from vibration.presentation.tables import fmt\nprint(fmt(a * 2))"
+    _notebook(root / "notebooks" / "01_a.ipynb", code)
+    b = _notebook(root / "notebooks" / "02_b.ipynb", code.replace("2)", "3)"))
+    chapters = report.discover(root)
+    out = tmp_path / "out"
+    logs: list[str] = []
+    report.run(chapters, {}, out, jobs=2, log=logs.append, pdf=False)
+    index = out / "report" / "index.html"
+    first = index.stat().st_mtime_ns
+    logs.clear()
+    report.run(chapters, {}, out, jobs=2, log=logs.append, pdf=False)
+    assert not any(line.startswith(("[start]", "book:")) for line in logs), logs
+    assert any(line.startswith("report: nothing changed (2 chapters and the book as built)") for line in logs), logs
+    assert index.stat().st_mtime_ns == first  # the tree was not touched
+    b.write_text(b.read_text().replace("a * 3", "a * 4"))
+    logs.clear()
+    report.run(chapters, {}, out, jobs=2, log=logs.append, pdf=False)
+    assert [line for line in logs if line.startswith("[start]")] == ["[start] 02_b: notebook changed"]
+    assert any(line.startswith("book:") and "1 source changed (02_b.ipynb)" in line for line in logs), logs
+    sphinx_log = (out / "book-state" / "book-src" / "sphinx-html.log").read_text()
+    assert "0 added, 1 changed, 0 removed" in sphinx_log  # Sphinx read the one changed page again, no other
+    executed = json.loads((out / "notebooks" / "02_b.ipynb").read_text())
+    assert "".join(executed["cells"][-1]["outputs"][0]["text"]).strip() == "4"
+    assert (out / "report" / "01_a.html").is_file() and not list(out.glob(".report-*"))

@@ -21,6 +21,7 @@ from __future__ import annotations
 import copy
 import html
 import io
+import json
 import re
 import shutil
 import time
@@ -462,8 +463,12 @@ def write_source(pages: list[ChapterPage], src: Path) -> None:
         nbformat.write(prepare(p, changes), src / f"{p.name}.ipynb")
 
 
-def sphinx_build(src: Path, out: Path, builder: str) -> None:
-    """Run Sphinx in this process: errors raise; its messages go to ``src/sphinx-<builder>.log``."""
+def sphinx_build(src: Path, out: Path, builder: str, incremental: bool = False) -> None:
+    """Run Sphinx in this process: errors raise; its messages go to ``src/sphinx-<builder>.log``.
+
+    ``incremental``: keep the environment in ``src/_build`` and rebuild only the pages whose sources
+    changed (a persistent source folder whose unchanged files keep their times: :func:`sync_tree`).
+    """
     from sphinx.application import Sphinx
     from sphinx.util.docutils import docutils_namespace
 
@@ -480,10 +485,10 @@ def sphinx_build(src: Path, out: Path, builder: str) -> None:
             builder,
             status=status,
             warning=warnings,
-            freshenv=True,
+            freshenv=not incremental,
             parallel=1,
         )
-        app.build(force_all=True)
+        app.build(force_all=not incremental)
     (src / f"sphinx-{builder}.log").write_text(status.getvalue() + warnings.getvalue(), encoding="utf-8")
     if app.statuscode:
         raise RuntimeError(f"Sphinx ({builder}) failed: {warnings.getvalue().strip()[-2000:]}")
@@ -539,12 +544,89 @@ def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), ti
         return pool.submit(work).result()
 
 
-def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True) -> dict:
+def sync_tree(fresh: Path, kept: Path, keep: tuple[str, ...] = ("_build",)) -> list[str]:
+    """Make ``kept`` hold what ``fresh`` holds, touching only what differs; returns the changed paths.
+
+    Unchanged files keep their modification times, so Sphinx sees only the changed pages as outdated.
+    Top-level entries named in ``keep`` (Sphinx's environment) and ``*.log`` files are left alone.
+    """
+    changed = []
+    kept.mkdir(parents=True, exist_ok=True)
+    wanted = {p.relative_to(fresh) for p in fresh.rglob("*") if p.is_file()}
+    for rel in sorted(wanted):
+        src, dst = fresh / rel, kept / rel
+        if dst.is_file() and dst.read_bytes() == src.read_bytes():
+            continue
+        dst.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(src, dst)
+        changed.append(str(rel))
+    for path in sorted(kept.rglob("*"), reverse=True):
+        rel = path.relative_to(kept)
+        if rel.parts[0] in keep or path.suffix == ".log":
+            continue
+        if path.is_file() and rel not in wanted:
+            path.unlink()
+            changed.append(f"{rel} (removed)")
+        elif path.is_dir() and not any(path.iterdir()):
+            path.rmdir()
+    return changed
+
+
+def _stable_cell_ids(src: Path) -> None:
+    """Number the cells of every notebook in ``src`` (``cell-0``, ...): nbformat gives each new cell a random id,
+    which would make an unchanged page look changed to :func:`sync_tree`."""
+    for path in src.glob("*.ipynb"):
+        nb = nbformat.read(path, as_version=4)
+        for i, cell in enumerate(nb.cells):
+            cell["id"] = f"cell-{i}"
+        nbformat.write(nb, path)
+
+
+def build_incremental(pages: list[ChapterPage], out: Path, work: Path, state: Path, pdf: bool = True) -> dict:
+    """:func:`build` with a persistent Sphinx folder ``state``: only changed pages are rebuilt, the PDF is
+    reprinted only when a page changed, and ``out`` receives a finished copy (the caller swaps it into place).
+
+    A failure removes ``state``, so the next build starts cold rather than from a half-updated folder.
+    """
+    t0 = time.perf_counter()
+    try:
+        write_source(pages, work / "book-src")
+        _stable_cell_ids(work / "book-src")
+        src = state / "book-src"
+        changed = sync_tree(work / "book-src", src)
+        html = state / "html"
+        if changed or not (html / "index.html").is_file():
+            sphinx_build(src, html, "html", incremental=True)
+            _check_offline(html)
+        shutil.copytree(html, out, ignore=shutil.ignore_patterns(".doctrees", ".buildinfo"), dirs_exist_ok=True)
+        info = {"html_s": time.perf_counter() - t0, "changed": changed}
+        if pdf:
+            t1 = time.perf_counter()
+            printed, record = state / "report.pdf", state / "report-pdf.json"
+            if changed or not (printed.is_file() and record.is_file()):
+                record.unlink(missing_ok=True)
+                sphinx_build(src, state / "single", "singlehtml", incremental=True)
+                edition = print_pdf(state / "single" / "index.html", state / "report.part.pdf", pages)
+                (state / "report.part.pdf").replace(printed)
+                record.write_text(json.dumps({"pages": edition.page_count}), encoding="utf-8")
+                info["pdf_s"] = time.perf_counter() - t1
+            info["pdf_pages"] = json.loads(record.read_text(encoding="utf-8"))["pages"]
+            shutil.copy2(printed, out / "report.pdf")
+        return info
+    except BaseException:
+        shutil.rmtree(state, ignore_errors=True)
+        raise
+
+
+def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, state: Path | None = None) -> dict:
     """Build the HTML book into ``out`` (``out/index.html``) and ``out/report.pdf``.
 
-    ``work`` holds the Sphinx sources and the single-page build used for the PDF.
+    ``work`` holds the Sphinx sources and the single-page build used for the PDF; with ``state``, a
+    persistent Sphinx folder, only what changed is rebuilt (:func:`build_incremental`).
     Returns timings and the PDF's page count.
     """
+    if state is not None:
+        return build_incremental(pages, out, work, state, pdf=pdf)
     t0 = time.perf_counter()
     src = work / "book-src"
     write_source(pages, src)

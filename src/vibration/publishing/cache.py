@@ -172,6 +172,25 @@ class ChapterCache:
         except (OSError, ValueError, KeyError, TypeError):
             return None
 
+    def notebook(self, name: str) -> Path:
+        """The cached executed notebook of chapter ``name``."""
+        return self._paths(name)[1]
+
+    def book_matches(self, digest: str) -> bool:
+        """Whether the book in the output tree was built from inputs with this digest."""
+        try:
+            return json.loads((self.folder / "book.json").read_text(encoding="utf-8")).get("digest") == digest
+        except (OSError, ValueError, AttributeError):
+            return False
+
+    def remember_book(self, digest: str) -> None:
+        """Record the digest of a book just swapped into place (written last: a half-built tree has none)."""
+        self.folder.mkdir(parents=True, exist_ok=True)
+        (self.folder / "book.json").write_text(json.dumps({"digest": digest}), encoding="utf-8")
+
+    def forget_book(self) -> None:
+        (self.folder / "book.json").unlink(missing_ok=True)
+
     def restore(self, name: str, notebook_to: Path, tables_to: Path) -> None:
         """Copy the cached executed notebook and its tables into a build."""
         _, nb, tables = self._paths(name)

@@ -394,12 +394,26 @@ def run(
             manifests[ch.name] = _manifest(ch, params, graph)
             found = store.lookup(ch.name, manifests[ch.name]) if cache else None
             if found is not None and found.hit:
-                store.restore(ch.name, work / "notebooks" / ch.path.name, work / "tables")
-                results[ch.name] = {"executed": work / "notebooks" / ch.path.name, "elapsed_s": found.elapsed_s}
+                results[ch.name] = {"executed": store.notebook(ch.name), "elapsed_s": found.elapsed_s}
                 log(f"[cached] {ch.name}: nothing it depends on changed")
             else:
                 why = _why(found.reasons) if found is not None else "the cache is off"
                 todo.append((ch, params, why, store.last_elapsed(ch.name)))
+        book_key = _book_digest(chapters, manifests, values, pdf)
+        if not todo and cache and store.book_matches(book_key) and _tree_complete(out, pdf):
+            log(
+                f"report: nothing changed ({_plural(total, 'chapter')} and the book as built), checked in "
+                f"{time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}"
+            )
+            return [
+                {"name": ch.name, "title": ChapterPage(ch.name, nbformat.read(results[ch.name]["executed"],
+                 as_version=4), []).title, "elapsed_s": results[ch.name]["elapsed_s"]}
+                for ch in chapters
+            ]  # fmt: skip
+        store.forget_book()  # the tree is about to change: no record may describe it until it is complete
+        for name in list(results):  # the cached chapters enter the new tree
+            store.restore(name, work / "notebooks" / f"{name}.ipynb", work / "tables")
+            results[name]["executed"] = work / "notebooks" / f"{name}.ipynb"
         if todo:
             _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, cell_timeout, log)
         t_run = time.perf_counter() - t0
@@ -413,15 +427,24 @@ def run(
             for ch in chapters
         ]
         t1 = time.perf_counter()
-        info = build_book(pages, work / "report", work / "book", pdf=pdf)
+        state = out / "book-state" if cache else None  # Sphinx's folder, kept: only changed pages are rebuilt
+        info = build_book(pages, work / "report", work / "book", pdf=pdf, state=state)
         shutil.rmtree(work / "book", ignore_errors=True)
         pdf_text = f", PDF {_plural(info['pdf_pages'], 'page')}" if "pdf_pages" in info else ""
-        log(f"book: built in {time.perf_counter() - t1:.1f} s{pdf_text}")
+        if "pdf_pages" in info and "pdf_s" not in info:
+            pdf_text += " (no page changed: not reprinted)"
+        pages_text = ""
+        if "changed" in info:
+            names = info["changed"]
+            shown = f" ({', '.join(names)})" if 0 < len(names) <= 4 else ""
+            pages_text = f", {_plural(len(names), 'source')} changed{shown}"
+        log(f"book: built in {time.perf_counter() - t1:.1f} s{pages_text}{pdf_text}")
         for sub in ("notebooks", "report", "tables"):
             target = out / sub
             if target.exists():
                 target.rename(work / f"old-{sub}")
             (work / sub).rename(target)
+        store.remember_book(book_key)
         ran = len(todo)
         log(
             f"report: {_plural(ran, 'chapter')} executed and {total - ran} reused from the cache in {t_run:.1f} s, "
@@ -470,6 +493,36 @@ def _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, 
                 store.store(ch.name, manifests[ch.name], executed, tables, res["elapsed_s"])
                 results[ch.name] = {"executed": executed, "elapsed_s": res["elapsed_s"]}
                 log(f"[{len(results)}/{total}] {ch.name} done in {res['elapsed_s']:.1f} s")
+
+
+def _book_digest(chapters: list[Chapter], manifests: dict, values: dict, pdf: bool) -> str:
+    """What the book depends on beyond the chapters' manifests: the publishing and presentation code, the pdf
+    switch and the run's values (SHA-256)."""
+    import hashlib
+    import json
+
+    import vibration
+
+    h = hashlib.sha256()
+    h.update(json.dumps({"pdf": pdf, "values": values, "chapters": [ch.name for ch in chapters],
+                         "manifests": manifests}, sort_keys=True, default=repr).encode())  # fmt: skip
+    package = Path(vibration.__file__).resolve().parent
+    for folder in (package / "publishing", package / "presentation"):
+        for path in sorted(folder.rglob("*")):
+            if path.is_file() and "__pycache__" not in path.parts:
+                h.update(str(path.relative_to(package)).encode() + b"\0" + path.read_bytes())
+    return h.hexdigest()
+
+
+def _tree_complete(out: Path, pdf: bool) -> bool:
+    """Whether ``out`` holds a finished tree (the book, its PDF when asked, the notebooks and tables)."""
+    report_dir = out / "report"
+    return (
+        (report_dir / "index.html").is_file()
+        and (not pdf or (report_dir / "report.pdf").is_file())
+        and (out / "notebooks").is_dir()
+        and (out / "tables").is_dir()
+    )
 
 
 def _manifest(ch: Chapter, params: dict, graph) -> dict[str, str]:
