@@ -254,3 +254,13 @@ def test_sigterm_stops_a_sweep_within_seconds_and_resume_completes_only_the_miss
 
     ds = xr.open_dataset(out / "sweep.nc", engine="h5netcdf")
     assert (ds["error"].values == "").all() and np.isfinite(ds["lyapunov"].values).all()
+
+
+def test_no_chapter_takes_a_subcommands_name(tmp_path):
+    from vibration.publishing import report
+    from vibration.publishing.template import new_chapter
+
+    for ch in report.discover():
+        assert not any(ch.matches(name) for name in report.SUBCOMMANDS), ch.name
+    with pytest.raises(ParameterError, match="topic = 'sweep' is the runner's subcommand"):
+        new_chapter("13_sweep", tmp_path)

@@ -193,6 +193,12 @@ def new_chapter(stem: str, root: Path, package_dir: Path | None = None, prefix: 
     if not m:
         raise ParameterError(f"stem = {stem!r} is not a chapter name: allowed NN_topic, e.g. 13_damping_map")
     topic = m["topic"]
+    from .report import SUBCOMMANDS
+
+    if topic in SUBCOMMANDS:  # "python -m vibration.report sweep" must stay the subcommand
+        raise ParameterError(
+            f"topic = {topic!r} is the runner's subcommand: allowed a topic other than {', '.join(SUBCOMMANDS)}"
+        )
     root = Path(root)
     package = Path(package_dir or root / "src" / "vibration" / "chapters") / topic
     title = topic.replace("_", " ").capitalize()
