@@ -86,3 +86,15 @@ def test_steadiness_follows_the_transient(lab):
         else:
             beating += not s.steady
     assert beating >= 1
+
+
+def test_check_lab_command(lab, tmp_path, capsys):
+    from vibration.publishing.report import main
+
+    folder, _ = lab
+    assert main(["--check-lab", str(folder)]) == 0
+    out = capsys.readouterr().out
+    assert "12 free decays, 10 driven" in out and "CASSY Lab 2" in out
+    (tmp_path / "runs.csv").write_text("file,kind,brake,brake_current_A,session,run\nmissing.csv,free,off,,A,\n")
+    assert main(["--check-lab", str(tmp_path)]) == 2
+    assert "row 1, column 'file'" in capsys.readouterr().err
