@@ -12,7 +12,14 @@ viscous friction, Den Hartog's exact solution and harmonic balance, and a stick-
 :mod:`~vibration.physics.lab.manifest` (a laboratory's folder described by ``runs.csv``).
 """
 
-from vibration.physics.lab.amplitude import DampingCurve, DampingDifference, compare_damping, damping_vs_amplitude
+from vibration.physics.lab.amplitude import (
+    DampingCurve,
+    DampingDifference,
+    JointBrakeFit,
+    compare_damping,
+    damping_vs_amplitude,
+    joint_brake_fit,
+)
 from vibration.physics.lab.cassy import load_cassy_runs
 from vibration.physics.lab.decay import (
     FreeDecayFit,
@@ -22,6 +29,7 @@ from vibration.physics.lab.decay import (
     free_decay_response,
     parse_law,
 )
+from vibration.physics.lab.forced import law_forced_amplitude
 from vibration.physics.lab.friction import (
     friction_forced_amplitude,
     friction_forced_amplitude_hb,
@@ -40,6 +48,7 @@ __all__ = [
     "DecayPeaks",
     "FreeDecayFit",
     "HarmonicFit",
+    "JointBrakeFit",
     "LabCheck",
     "LabData",
     "LabRun",
@@ -61,6 +70,8 @@ __all__ = [
     "friction_forced_amplitude_hb",
     "half_period_losses",
     "harmonic_fit",
+    "joint_brake_fit",
+    "law_forced_amplitude",
     "load_cassy_runs",
     "load_lab_data",
     "load_logger_runs",
