@@ -26,6 +26,7 @@ RATE = 10.0  # Hz
 CURRENTS = (0.0, 0.2, 0.4, 0.7)  # A
 DRIVEN_CURRENTS = (0.2, 0.7)
 DRIVE_OMEGAS = (3.6, 4.1, 4.4, 4.7, 5.2)  # rad/s
+DRIVEN_SECONDS = {0.2: 130.0, 0.7: 60.0}  # record lengths: about 3.5 build-up times at 200 mA, 11 at 700 mA
 HEADER = (
     "Zeit t / s",
     "Weg &b_A1 / rad",
@@ -118,7 +119,7 @@ def write_lab(folder) -> dict:
     for current in DRIVEN_CURRENTS:
         label = f"{round(current * 1000)} mA"
         for j, omega in enumerate(DRIVE_OMEGAS):
-            t = np.arange(0.0, 60.0, 1.0 / RATE)
+            t = np.arange(0.0, DRIVEN_SECONDS[current], 1.0 / RATE)
             volts = 4.0
             theta = _driven(t, zeta_of(current), omega, volts)
             name = f"erzwungen_{round(current * 1000)}mA_{j + 1}.csv"
@@ -126,7 +127,7 @@ def write_lab(folder) -> dict:
             rows.append(f"{name},driven,{label},{current},A,")
     (folder / "runs.csv").write_text("\n".join(rows) + "\n", encoding="utf-8")
     (folder / "rig.csv").write_text(
-        "encoder_step_rad,max_angle_rad,description\n0.001,3.0,simulated Pohl wheel (eddy-current brake)\n",
+        "encoder_step_rad,max_angle_rad,description\n0.001,30.0,simulated Pohl wheel (eddy-current brake)\n",
         encoding="utf-8",
     )
     return {"omega_n": OMEGA_N, "friction": DELTA, "zeta0": ZETA0, "k_brake": K_BRAKE, "gain": GAIN}

@@ -4,6 +4,7 @@ computations (SciPy's solve_ivp on the same law, the Coulomb energy balance, num
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -139,7 +140,7 @@ def test_cassy_german_and_english(tmp_path):
 
 
 def test_todays_folder_and_manifest_errors(tmp_path):
-    data = load_lab_data("data/lab_oscillator")
+    data = load_lab_data(Path(__file__).resolve().parents[1] / "data" / "lab_oscillator")
     assert len(data.select(kind="free", brake="off")) == len(data.select(kind="free", brake="on")) == 10
     assert len(data.select(kind="driven")) == 54 and data.sessions == ["decays", "1", "2"]
     assert data.rig.encoder_step_rad == pytest.approx(math.pi / 180)

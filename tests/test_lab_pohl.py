@@ -34,7 +34,7 @@ def test_loader_reads_every_run(lab):
     r = data.select(kind="driven")[0]
     assert r.data.drive_unit == "V" and r.data.drive_angle is not None
     assert r.data.t[1] - r.data.t[0] == pytest.approx(0.1)
-    assert data.rig.encoder_step_rad == 0.001 and data.rig.max_angle_rad == 3.0
+    assert data.rig.encoder_step_rad == 0.001 and data.rig.max_angle_rad == 30.0
     assert data.current("700 mA") == pytest.approx(0.7)
     check = check_lab_data(folder)
     assert check.n_free == 12 and check.n_driven == 10
@@ -71,21 +71,22 @@ def test_brake_difference_at_matched_amplitude(lab):
 
 
 def test_steadiness_follows_the_transient(lab):
-    """At 700 mA the transient decays as exp(-zeta omega_n t) with tau = 5.4 s: every 60 s run is steady and
-    reaches 90 % within a few tau. At 200 mA (tau = 37 s) the runs off resonance still beat at the end."""
+    """The transient decays as exp(-zeta omega_n t): tau = 5.4 s at 700 mA (60 s records), 37 s at 200 mA (130 s).
+    Every resonant run is steady at the end and reaches 90 % within a few tau; cut during its build-up (at 1.5 tau)
+    the 200 mA resonant run is still growing."""
     folder, _ = lab
     data = load_lab_data(folder)
-    beating = 0
     for r in data.select(kind="driven"):
         omega = gen.DRIVE_OMEGAS[int(r.file.rsplit("_", 1)[1].split(".")[0]) - 1]
-        s = steadiness(r.t, r.angle, omega)
         tau = 1.0 / (gen.zeta_of(r.brake_current_A) * gen.OMEGA_N)
-        if r.brake == "700 mA":
+        s = steadiness(r.t, r.angle, omega)
+        if omega == 4.4:
             assert s.steady, (r.file, s)
             assert s.t90 < 3.0 * tau + 2.0 * math.pi / omega, (r.file, s.t90, tau)
-        else:
-            beating += not s.steady
-    assert beating >= 1
+            if r.brake == "200 mA":
+                cut = r.t < 1.5 * tau
+                early = steadiness(r.t[cut], r.angle[cut], omega)
+                assert not early.steady and early.drift > 0.02
 
 
 def test_check_lab_command(lab, tmp_path, capsys):

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from vibration.physics.lab.amplitude import _as_runs
-from vibration.physics.lab.decay import FreeDecayFit, fit_free_decay, law_name, parse_law
+from vibration.physics.lab.decay import FreeDecayFit, equivalent_zeta, fit_free_decay, law_name, parse_law
 from vibration.physics.lab.peaks import _resolution
 
 _KEYS = ("omega_n", "zeta", "friction", "quadratic", "power", "power_exponent", "offset")
@@ -25,7 +25,9 @@ class PooledDecayFit:
         Canonical law string.
     mean : dict
         Mean over runs of "omega_n" (rad/s), "zeta", "friction" (rad), "quadratic" (1/rad), "power",
-        "power_exponent", "offset" (rad).
+        "power_exponent", "offset" (rad). For the power law, "power" is the coefficient whose
+        equivalent damping ratio at the runs' median half-period amplitude, with the mean exponent,
+        equals the mean over runs of theirs (coefficients with different exponents do not average).
     stderr : dict
         Run-to-run standard errors of those means (sample standard deviation / sqrt(n)); with a single
         run, that run's own fit error.
@@ -57,6 +59,14 @@ class PooledDecayFit:
     bic: float
     n_runs: int
     fits: tuple = field(repr=False)
+
+
+def _reference_amplitude(pairs) -> float:
+    """Median half-period amplitude of the runs (rad): where the power term's pooled coefficient is matched."""
+    from vibration.physics.lab.amplitude import _curve
+
+    x = np.concatenate([_curve(t, y).amplitude for t, y in pairs])
+    return float(np.median(x)) if x.size else 1.0
 
 
 def fit_free_decays(runs, law: str = "coulomb+viscous") -> PooledDecayFit:
@@ -93,9 +103,17 @@ def fit_free_decays(runs, law: str = "coulomb+viscous") -> PooledDecayFit:
         mean[k] = float(v.mean())
         stderr[k] = float(v.std(ddof=1) / math.sqrt(n)) if n > 1 else float(fits[0].stderr[k])
         fit_se[k] = float(np.median([f.stderr[k] for f in fits]))
+    if "power" in terms:  # a_i with different p_i do not average: match the mean equivalent ratio at X_ref
+        x_ref = _reference_amplitude(pairs)
+        z_ref = np.mean(
+            [equivalent_zeta(x_ref, f.omega_n, power=f.power, power_exponent=f.power_exponent) for f in fits]
+        )
+        unit = float(equivalent_zeta(x_ref, mean["omega_n"], power=1.0, power_exponent=mean["power_exponent"]))
+        mean["power"] = float(z_ref) / unit if unit > 0 else 0.0
     coeffs = {}
+    names = {"viscous": "zeta", "coulomb": "friction", "quadratic": "quadratic", "power": "power"}
     for key in fits[0].coefficients:
-        coeffs[key] = float(np.mean([f.coefficients[key] for f in fits]))
+        coeffs[key] = mean[names.get(key, key)]
     rss = sum(float(f.residual_rms) ** 2 * f.n for f in fits)
     n_samples = sum(f.n for f in fits)
     steps = [s for s in (_resolution(np.asarray(y)) for _, y in pairs) if s > 0]
