@@ -307,6 +307,11 @@ def _driven(r, params: Params) -> Driven | None:
     )
 
 
+def driven_run(r, params: Params) -> Driven | None:
+    """One driven run's drive frequency, drifts and late-drift test (None when it cannot be analysed)."""
+    return _driven(r, params)
+
+
 def _groups(driven, tol) -> tuple:
     out = []
     keys = dict.fromkeys((d.run.brake, d.run.session) for d in driven)
@@ -526,6 +531,7 @@ __all__ = [
     "Prediction",
     "RealOscillatorStudy",
     "Setting",
+    "driven_run",
     "lab_folder",
     "law_amplitude",
     "real_oscillator_study",
