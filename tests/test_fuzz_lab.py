@@ -127,3 +127,51 @@ def test_bad_paths(path):
 
 def test_folder_without_manifest(tmp_path):
     refused(load_lab_data, tmp_path, name="runs.csv")
+
+
+@pytest.mark.parametrize(
+    ("kw", "name"),
+    [
+        ({"omega_n": np.nan}, "omega_n"),
+        ({"omega_n": -1.0}, "omega_n"),
+        ({"force": np.inf}, "force"),
+        ({"zeta": -0.1}, "zeta"),
+        ({"friction": "a"}, "friction"),
+        ({"quadratic": np.nan}, "quadratic"),
+        ({"power": -1.0}, "power"),
+        ({"power_exponent": 50.0}, "power_exponent"),
+    ],
+)
+def test_law_forced_amplitude_and_equivalent_zeta(kw, name):
+    from vibration.physics.lab import damping_ode, equivalent_zeta, law_forced_amplitude
+
+    base = {"omega_n": 4.5, "force": 0.1}
+    refused(law_forced_amplitude, 4.0, **{**base, **kw}, name=name)
+    if name not in ("force", "friction"):
+        eq = {k: v for k, v in {**base, **kw}.items() if k != "force"}
+        refused(equivalent_zeta, 1.0, eq.pop("omega_n"), **eq, name=name)
+        refused(damping_ode, T, **eq, omega_n=base["omega_n"] if name != "omega_n" else kw["omega_n"], name=name)
+
+
+@pytest.mark.parametrize("omega", [np.nan, -1.0, 0.0, [[1.0]], "x"])
+def test_law_forced_amplitude_omega(omega):
+    from vibration.physics.lab import law_forced_amplitude
+
+    refused(law_forced_amplitude, omega, omega_n=4.5, force=0.1, name="omega")
+
+
+@pytest.mark.parametrize("amplitude", [np.nan, -1.0, "x", [[1.0]], True])
+def test_equivalent_zeta_amplitude(amplitude):
+    from vibration.physics.lab import equivalent_zeta
+
+    refused(equivalent_zeta, amplitude, 4.5, name="amplitude")
+
+
+def test_joint_brake_fit_inputs():
+    from vibration.physics.lab import joint_brake_fit
+
+    refused(joint_brake_fit, [], [(T, Y)], name="runs_a")
+    refused(joint_brake_fit, [(T, Y)], "ab", name="runs_b")
+    refused(joint_brake_fit, [(T, Y)], [(T, np.full(T.size, np.inf))], name="runs_b[0] theta")
+    flat = np.where(T < 9.0, 0.0, 1e-3) + 1e-4 * np.sin(T)  # no free decay: too few half periods
+    refused(joint_brake_fit, [(T, flat)], [(T, Y)], name="runs_a")

@@ -178,9 +178,9 @@ def brake_table(st: RealOscillatorStudy) -> Table | None:
         [
             Column("pair", "settings"),
             Column("band", "X band (rad)"),
-            Column("dz", "Δζ_eq (bootstrap)"),
+            Column("dz", "ζ_eq difference (bootstrap)"),
             Column("ci", "95 % interval"),
-            Column("joint", "Δζ (joint fit)"),
+            Column("joint", "brake-only ζ (joint fit)"),
             Column("resolved", "resolved"),
         ],
         "The brake at matched amplitude: the difference of mean equivalent damping inside the band, by bootstrap "
@@ -208,9 +208,11 @@ def brake_sentence(st: RealOscillatorStudy) -> str:
     for a, b, d, j in st.comparisons:
         verdict = "is resolved" if brake_resolved(d, j) else "is not resolved"
         out.append(
-            f"Brake {b} against {a}, at matched amplitudes of {g(d.band[0], 3)} to {g(d.band[1], 3)} rad: Δζ_eq = "
+            f"Brake {b} against {a}, at matched amplitudes of {g(d.band[0], 3)} to {g(d.band[1], 3)} rad: "
+            "ζ<sub>eq</sub> differs by "
             f"{pm(d.delta_zeta, d.stderr, 2)} (95 % interval {g(d.ci_low, 2)} to {g(d.ci_high, 2)}, {d.method}); "
-            f"the joint fit gives Δζ = {pm(j.delta_zeta, j.stderr, 2)}. The brake effect {verdict}."
+            f"the joint fit gives a brake-only viscous ratio of {pm(j.delta_zeta, j.stderr, 2)}. The brake effect "
+            f"{verdict}."
         )
     return " ".join(out)
 
@@ -517,7 +519,7 @@ def claims_csv(st: RealOscillatorStudy) -> Table:
 def ascii_detail(text: str) -> str:
     """A detail for a CSV cell: ASCII minus, no ± (written out), degrees dropped (the radians stay)."""
     text = re.sub(r" \(-?[0-9.]+°\)", "", text.replace("−", "-"))
-    return text.replace(" ± ", " with standard error ").replace("ω_n", "omega_n")
+    return text.replace(" ± ", " with standard error ").replace("ωₙ", "omega_n")
 
 
 def write_csv_tables(st: RealOscillatorStudy, folder=None) -> list:

@@ -22,7 +22,7 @@ VERDICTS = ("supported", "partly supported", "not supported", "not testable with
 PAPER_AMPLIFICATION, ABOUT_FACTOR = 10.0, 1.5
 #: The paper's "almost completely suppressed": at most this fraction of the lightly damped amplitude.
 SUPPRESSED = 0.1
-#: Runs within this relative distance of ω_n are "at resonance"; beyond LOW_RATIO ω_n "far below".
+#: Runs within this relative distance of ωₙ are "at resonance"; beyond LOW_RATIO ωₙ "far below".
 NEAR, LOW_RATIO = 0.05, 0.7
 
 
@@ -80,7 +80,7 @@ def _c09(st, quote) -> Claim:
             claim=quote,
             short="about 10-fold at resonance",
             verdict=VERDICTS[3],
-            detail="needs steady runs at resonance and far below it (ω ≤ 0.7 ω_n) at one brake setting",
+            detail="needs steady runs at resonance and far below it (ω ≤ 0.7 ωₙ) at one brake setting",
         )
     ok = [abs(math.log(a / PAPER_AMPLIFICATION)) <= math.log(ABOUT_FACTOR) for a, _, _ in amp.values()]
     verdict = VERDICTS[0] if all(ok) else VERDICTS[1] if any(ok) else VERDICTS[2]
@@ -161,7 +161,7 @@ def _c19(st, quote) -> Claim:
             claim=quote,
             short="grows uncontrollably",
             verdict=VERDICTS[3],
-            detail="no driven run near resonance; runs within 5 % of ω_n would test it",
+            detail="no driven run near resonance; runs within 5 % of ωₙ would test it",
         )
     if not steady:
         return Claim(

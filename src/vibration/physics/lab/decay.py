@@ -193,6 +193,23 @@ def _sine_power_integral(m: float) -> float:
     return math.sqrt(math.pi) * math.exp(math.lgamma((m + 1.0) / 2.0) - math.lgamma(m / 2.0 + 1.0))
 
 
+def _coefficients_checked(amplitude, omega_n, zeta, quadratic, power, power_exponent) -> np.ndarray:
+    if isinstance(amplitude, (str, bytes, bool)):
+        raise ParameterError(f"amplitude = {amplitude!r} is not a number: allowed amplitudes >= 0 (rad)")
+    try:
+        x = np.asarray(amplitude, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"amplitude = {amplitude!r:.80} is not a number: allowed amplitudes >= 0 (rad)") from None
+    if x.ndim > 1 or not np.all(np.isfinite(x)) or np.any(x < 0):
+        raise ParameterError(f"amplitude = {amplitude!r:.80} is out of range: allowed finite amplitudes >= 0 (rad)")
+    check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
+    check_real("zeta", zeta, low=0.0, high=10.0)
+    check_real("quadratic", quadratic, low=0.0, high=1e6, unit="1/rad")
+    check_real("power", power, low=0.0, high=1e6)
+    check_real("power_exponent", power_exponent, low=0.0, high=20.0)
+    return x
+
+
 def equivalent_zeta(amplitude, omega_n, *, zeta=0.0, quadratic=0.0, power=0.0, power_exponent=2.0):
     r"""Equivalent viscous damping ratio of the velocity-dependent terms at a half-period amplitude.
 
@@ -225,7 +242,7 @@ def equivalent_zeta(amplitude, omega_n, *, zeta=0.0, quadratic=0.0, power=0.0, p
     >>> round(float(equivalent_zeta(1.0, 4.5, power=9.0, power_exponent=1.0)), 12)  # a = 2 zeta omega_n
     1.0
     """
-    x = np.asarray(amplitude, dtype=float)
+    x = _coefficients_checked(amplitude, omega_n, zeta, quadratic, power, power_exponent)
     out = zeta + 4.0 * quadratic * x / (3.0 * math.pi)
     if power:
         out = (
@@ -358,6 +375,10 @@ def damping_ode(
     if not np.all(np.diff(te) > 0) or te[0] < 0:
         raise ParameterError("t_eval is not increasing from t >= 0: allowed increasing times (s) from 0")
     omega_n = check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
+    _coefficients_checked(0.0, omega_n, zeta, quadratic, power, power_exponent)
+    friction = check_real("friction", friction, low=0.0, high=1e6, unit="rad")
+    offset = check_real("offset", offset, low=-1e6, high=1e6, unit="rad")
+    theta0 = check_real("theta0", theta0, low=-1e6, high=1e6, unit="rad")
     w2 = omega_n * omega_n
     out = np.full(te.size, np.nan)
     t_now, y_now, v_now = 0.0, float(theta0), 0.0

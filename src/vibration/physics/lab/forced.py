@@ -55,8 +55,11 @@ def law_forced_amplitude(
     >>> float(law_forced_amplitude(4.5, omega_n=4.5, force=0.1, zeta=0.05)[0])  # F / (2 zeta)
     1.0
     """
-    w = np.atleast_1d(np.asarray(omega, dtype=float))
-    if w.ndim != 1 or not np.all(np.isfinite(w)) or np.any(w <= 0):
+    try:
+        w = np.atleast_1d(np.asarray(omega, dtype=float))
+    except (TypeError, ValueError):
+        raise ParameterError(f"omega = {omega!r:.80} is not a number: allowed finite frequencies > 0 (rad/s)") from None
+    if isinstance(omega, (bool, np.bool_)) or w.ndim != 1 or not np.all(np.isfinite(w)) or np.any(w <= 0):
         raise ParameterError(f"omega = {omega!r:.80} is out of range: allowed finite frequencies > 0 (rad/s)")
     wn = check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
     f = check_real("force", force, low=0.0, high=1e6, unit="rad")
