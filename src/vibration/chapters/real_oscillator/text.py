@@ -149,8 +149,8 @@ def law_sentence(st: RealOscillatorStudy) -> str:
         )
     amp_dep = [s for s in st.settings if s.law in ("coulomb+quadratic", "coulomb+power")]
     tail = (
-        " An amplitude-dependent loss is chosen where the decays reach large amplitudes: there the damping "
-        "rises with amplitude, which neither a viscous term nor dry friction alone describes."
+        " An amplitude-dependent loss is chosen: at large amplitudes the loss per half period grows faster than "
+        "dry friction (a constant loss) and a viscous term (a loss in proportion to the amplitude) allow."
         if amp_dep
         else " No setting's decays need an amplitude-dependent loss beyond dry friction and a viscous term."
     )
@@ -352,6 +352,17 @@ def prediction_sentence(st: RealOscillatorStudy) -> str:
     if paper is not None and paper is not best:
         s += f"; the paper's viscous law errs by {g(100 * paper.pooled_error, 2)} %"
     s += "."
+    chosen = next((x.law for x in st.settings if x.brake == best.brake), None)
+    if chosen is not None and chosen != best.law and (best.brake, chosen) in st.predictions:
+        c = st.predictions[(best.brake, chosen)]
+        s += (
+            f" The law the free decays choose, {LAW_WORDS[chosen]}, errs by {g(100 * c.pooled_error, 2)} %: the "
+            "better description of the decays is not the better predictor of the driven runs, whose amplitudes "
+            "lie beyond most of the decays' range."
+            if max((d.steady.amplitude for d in best.predicted), default=0.0)
+            > max(x.amplitude_range[1] for x in st.settings if x.brake == best.brake)
+            else f" The law the free decays choose, {LAW_WORDS[chosen]}, errs by {g(100 * c.pooled_error, 2)} %."
+        )
     measured = max((gr.amplitude for gr in st.groups if gr.n_steady), default=math.nan)
     res = max((a for _, a in best.resonance.values()), default=math.nan)
     if math.isfinite(measured):
@@ -418,7 +429,7 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
             loose = "power" in law  # a weakly determined exponent: its digits depend on the machine's rounding
             mark = "≈" if loose else ""
             coef = "; ".join(
-                f"{k} {mark}{g(v, 3)} ± {mark}{g(p.stderr[_KEY[k]], 2)}" for k, v in p.coefficients.items()
+                f"{_SYMBOL[k]} = {mark}{g(v, 3)} ± {mark}{g(p.stderr[_KEY[k]], 2)}" for k, v in p.coefficients.items()
             )
             rows.append(
                 {
@@ -452,6 +463,7 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
     return t
 
 
+_SYMBOL = {"viscous": "ζ", "coulomb": "Δ", "quadratic": "b", "power": "a", "power_exponent": "p"}
 _KEY = {
     "viscous": "zeta",
     "coulomb": "friction",
