@@ -19,6 +19,7 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from ..physics.model import ParameterError, check_int, check_real
 
@@ -36,9 +37,19 @@ class Param:
     meaning: str = ""
     low_open: bool = False
     choices: tuple = ()  # for text parameters: the allowed values
+    path: bool = False  # a text parameter naming a folder (the default may be relative to the project)
 
     def check(self, value):
         """The value, converted and range-checked, or :class:`ParameterError`."""
+        if self.path:
+            if not isinstance(value, str) or not value.strip() or len(value) > 4096 or "\0" in value:
+                raise ParameterError(f"{self.name} = {value!r:.80} is not a path: allowed a folder name")
+            if value == self.default:
+                return value
+            folder = Path(value).expanduser()
+            if not folder.is_dir():
+                raise ParameterError(f"{self.name} = {value!r} is not a folder: allowed an existing folder")
+            return str(folder.resolve())
         if self.choices:
             if value not in self.choices:
                 raise ParameterError(

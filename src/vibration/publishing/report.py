@@ -640,9 +640,17 @@ def main(argv: list[str] | None = None) -> int:
         "--new-chapter", metavar="NN_topic", help="write a new chapter from the template (package, notebook, test)"
     )
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
+    parser.add_argument(
+        "--check-lab", metavar="DIR", help="validate a lab data folder (runs.csv, logger files) and exit"
+    )
     args = parser.parse_args(_protect_negative_values(argv))
     previous = signal.signal(signal.SIGTERM, _terminate)
     try:
+        if args.check_lab:
+            from ..physics.lab.manifest import check_lab_data
+
+            print(check_lab_data(args.check_lab).summary())
+            return 0
         if args.new_chapter:
             from .template import new_chapter
 

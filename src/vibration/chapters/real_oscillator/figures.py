@@ -1,228 +1,262 @@
 """Figures of the real-oscillator chapter, each a function of a :class:`RealOscillatorStudy`.
 
-Colours and markers per case follow the book's visual language (Okabe–Ito): the measurement is
-grey, the viscous law (the paper's linear model) blue dashed, the Coulomb law vermillion dotted, the
-combined law bluish green solid; session 1 reddish-purple circles, session 2 orange squares. Each
-function returns a :class:`~vibration.presentation.captions.Captioned` figure whose caption is built
-from what it draws and the study's numbers.
+Colours follow the book's Okabe–Ito palette: one colour per brake setting (in manifest order), one per
+damping law (the paper's viscous law blue); steady runs filled, others open. Each function returns a
+:class:`~vibration.presentation.captions.Captioned` figure whose caption is built from what it draws.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
-from vibration.chapters.real_oscillator.study import DecayRun, RealOscillatorStudy
-from vibration.physics.lab import free_decay_peaks, half_period_losses
-from vibration.presentation.captions import Captioned, panel_words
+from vibration.chapters.real_oscillator.study import LAWS, RealOscillatorStudy, law_amplitude
+from vibration.physics.lab import FreeDecayFit, equivalent_zeta
+from vibration.presentation.captions import Captioned
 from vibration.presentation.style import OKABE_ITO, figure, place_legend
 
+SETTING_COLORS = ("blue", "vermillion", "bluish green", "orange", "reddish purple", "sky blue", "black")
 LAW_STYLE = {
-    "viscous": {"color": OKABE_ITO["blue"], "ls": "--", "label": "viscous"},
+    "viscous": {"color": OKABE_ITO["blue"], "ls": "--", "label": "viscous (the paper's)"},
     "coulomb": {"color": OKABE_ITO["vermillion"], "ls": ":", "label": "Coulomb"},
-    "combined": {"color": OKABE_ITO["bluish green"], "ls": "-", "label": "viscous + Coulomb"},
+    "coulomb+viscous": {"color": OKABE_ITO["bluish green"], "ls": "-", "label": "Coulomb + viscous"},
+    "coulomb+quadratic": {"color": OKABE_ITO["orange"], "ls": "-.", "label": "Coulomb + quadratic"},
+    "coulomb+power": {"color": OKABE_ITO["reddish purple"], "ls": (0, (5, 1.5)), "label": "Coulomb + power"},
 }
-MODEL_STYLE = {
-    "linear": {"color": OKABE_ITO["blue"], "ls": "--", "label": "linear viscous (paper's model)"},
-    "combined": {"color": OKABE_ITO["bluish green"], "ls": "-", "label": "viscous + Coulomb (Den Hartog)"},
+#: The panel's model line (kept for the kernel-free panel).
+MODEL_STYLE = {"combined": {"color": OKABE_ITO["bluish green"], "ls": "-", "label": "Coulomb + viscous"}}
+LAW_WORDS = {
+    "viscous": "viscous",
+    "coulomb": "Coulomb",
+    "coulomb+viscous": "Coulomb + viscous",
+    "coulomb+quadratic": "Coulomb + quadratic",
+    "coulomb+power": "Coulomb + power",
 }
-MEASURED = "0.35"  # grey dots
-SESSION_MARKER = {1: "o", 2: "s"}
-SESSION_COLOR = {1: OKABE_ITO["reddish purple"], 2: OKABE_ITO["orange"]}
-BRAKE_TITLE = {"off": "without the brake", "on": "with the brake"}
+SESSION_MARKERS = ("o", "s", "^", "D", "v", "P")
 
 
-def typical_decay(st: RealOscillatorStudy, brake: str) -> DecayRun:
-    """The run of median combined-fit residual (a typical run, not the best one)."""
-    runs = sorted(st.decays[brake].runs, key=lambda d: d.combined.residual_rms)
-    return runs[len(runs) // 2]
+def setting_color(i: int) -> str:
+    """The colour of the i-th brake setting."""
+    return OKABE_ITO[SETTING_COLORS[i % len(SETTING_COLORS)]]
 
 
-def decay_figure(st: RealOscillatorStudy):
-    """One free decay per file, measured, with the three fitted laws over the fitted window."""
-    fig, axes = figure(2, 1, height=5.6)
-    for ax, brake in zip(axes, ("off", "on"), strict=True):
-        d = typical_decay(st, brake)
-        ax.plot(d.t, d.angle, color=MEASURED, lw=0.0, marker=".", ms=3, label="measured (20 Hz)")
-        c = d.combined
-        tt = np.linspace(c.t_start, c.t_end, 2000)
-        for law in ("viscous", "coulomb", "combined"):
-            f = d.fits[law]
-            s = LAW_STYLE[law]
-            ax.plot(tt, f.predict(tt), color=s["color"], ls=s["ls"], lw=1.1, label=f"{s['label']} fit")
-        ax.set_title(f"{BRAKE_TITLE[brake]}, run {d.run}")
-        ax.set_ylabel(r"$\theta$ (rad)")
-        lo, hi = float(np.min(d.angle)), float(np.max(d.angle))
-        ax.set_ylim(lo - 0.1 * (hi - lo), hi + 0.75 * (hi - lo))
-        place_legend(ax, ncols=2)
-    axes[-1].set_xlabel("$t$ (s)")
-    top, bottom = panel_words(fig)
-    runs = {b: typical_decay(st, b) for b in ("off", "on")}
+def law_zeta_eq(fit, amplitude):
+    """Equivalent damping ratio of a pooled law at amplitudes X (rad), the Coulomb term as 2 Δ/(π X)."""
+    m = fit.mean
+    x = np.asarray(amplitude, dtype=float)
+    z = equivalent_zeta(
+        x,
+        m["omega_n"],
+        zeta=max(m["zeta"], 0.0),
+        quadratic=max(m["quadratic"], 0.0),
+        power=max(m["power"], 0.0),
+        power_exponent=m["power_exponent"] if m["power"] > 0 else 2.0,
+    )
+    return z + 2.0 * max(m["friction"], 0.0) / (math.pi * x)
+
+
+def damping_figure(st: RealOscillatorStudy) -> Captioned:
+    """The central figure: ζ_eq against the half-period amplitude X for every brake setting, with each chosen law."""
+    fig, ax = figure(1, 1, height=3.8)
+    for i, s in enumerate(st.settings):
+        col = setting_color(i)
+        x = np.concatenate([c.amplitude for c in s.curves])
+        z = np.concatenate([c.zeta_eq for c in s.curves])
+        ax.plot(x, z, ls="none", marker=".", ms=3, color=col, alpha=0.45)
+        xx = np.linspace(max(s.amplitude_range[0], 1e-3), s.amplitude_range[1], 200)
+        ax.plot(xx, law_zeta_eq(s.fits[s.law], xx), color=col, lw=1.4, label=f"brake {s.brake}: {LAW_WORDS[s.law]}")
+    if st.band is not None:
+        ax.axvspan(*st.band, color="0.9", zorder=0)
+    ax.set_xlabel("half-period amplitude $X$ (rad)")
+    ax.set_ylabel(r"$\zeta_{eq}$")
+    ax.set_ylim(
+        0.0,
+        min(0.3, float(np.nanpercentile(np.concatenate([c.zeta_eq for s in st.settings for c in s.curves]), 99)) * 1.3),
+    )
+    place_legend(ax)
+    n = sum(len(s.runs) for s in st.settings)
+    band = (
+        f" Shaded: the amplitudes every setting covers ({st.band[0]:.2f} to {st.band[1]:.2f} rad)."
+        if st.band is not None
+        else ""
+    )
     caption = (
-        f"A typical free decay of each file (the run of median residual among the fits): {top} without the "
-        f"magnetic brake (run {runs['off'].run}), {bottom} with it (run {runs['on'].run}). Grey dots: the "
-        "measured wheel angle θ (rad) at 20 Hz; lines: the exact free decay fitted over the whole trace under "
-        "three damping laws, viscous (blue, dashed), Coulomb (vermillion, dotted) and viscous + Coulomb "
-        "(green, solid)."
+        f"Equivalent damping ratio of each half period against its amplitude, {n} free decays at "
+        f"{len(st.settings)} brake settings (dots), with the law the data choose for each setting (lines).{band}"
     )
-    alt = (
-        "Two decaying oscillations of the wheel angle against time, with three fitted envelopes each; the "
-        "viscous-plus-Coulomb fit follows the measured points most closely."
-    )
-    return Captioned(fig, caption, "fig-real-decay", alt)
+    alt = "Scatter of equivalent damping ratio against amplitude for each brake setting, with one fitted curve each."
+    return Captioned(fig, caption, "fig-real-damping", alt)
 
 
-def loss_figure(st: RealOscillatorStudy):
-    """Amplitude loss per half period against amplitude, all runs, with each pooled law drawn."""
-    fig, axes = figure(1, 2, height=3.6, sharey=True)
-    for ax, brake in zip(axes, ("off", "on"), strict=True):
-        ds = st.decays[brake]
-        amax = 0.0
-        for i, d in enumerate(ds.runs):
-            peaks = free_decay_peaks(d.t, d.angle)
-            a, loss = half_period_losses(peaks, d.combined.offset)
-            keep = peaks.t[:-1] >= d.combined.t_start - 1e-9
-            ax.plot(
-                a[keep],
-                loss[keep],
-                ls="none",
-                marker="o",
-                ms=3,
-                color=MEASURED,
-                alpha=0.7,
-                label="measured, all runs" if i == 0 else None,
-            )
-            amax = max(amax, float(np.max(a[keep], initial=0.0)))
-        aa = np.linspace(0.0, amax * 1.05, 50)
-        for law in ("viscous", "coulomb", "combined"):
-            z = ds.pooled.get((law, "zeta"))
-            dlt = ds.pooled.get((law, "friction"))
-            zeta = z.mean if z else 0.0
-            delta = dlt.mean if dlt else 0.0
-            q = math.exp(-math.pi * zeta / math.sqrt(1 - zeta * zeta))
-            s = LAW_STYLE[law]
-            ax.plot(aa, (1 - q) * aa + (1 + q) * delta, color=s["color"], ls=s["ls"], label=s["label"])
-        ax.set_title(BRAKE_TITLE[brake])
-        ax.set_xlabel(r"amplitude $|\theta_k - c|$ (rad)")
-        ax.set_ylim(bottom=0.0, top=float(ax.get_ylim()[1]) * 1.45)
-    axes[0].set_ylabel("loss per half period (rad)")
-    place_legend(axes[0])
-    left, right = panel_words(fig)
-    n_off, n_on = len(st.decays["off"].runs), len(st.decays["on"].runs)
+def current_figure(st: RealOscillatorStudy) -> Captioned | None:
+    """ζ against brake current with the eddy-current law ζ = ζ₀ + k I² (only with more than two currents)."""
+    cl = st.current_law
+    if cl is None:
+        return None
+    fig, ax = figure(1, 1, height=3.2)
+    cur = np.array(cl["currents"])
+    ax.errorbar(
+        cur,
+        cl["zeta"],
+        yerr=cl["zeta_stderr"],
+        ls="none",
+        marker="o",
+        color=OKABE_ITO["blue"],
+        label="free decays (Coulomb + viscous)",
+    )
+    ii = np.linspace(0.0, cur.max() * 1.05, 100)
+    ax.plot(ii, cl["zeta0"] + cl["k"] * ii**2, color="0.2", lw=1.2, label="ζ₀ + k I²")
+    ax.set_xlabel("brake current $I$ (A)")
+    ax.set_ylabel(r"viscous $\zeta$")
+    place_legend(ax)
     caption = (
-        f"Amplitude lost per half period against the amplitude, every extremum of every run ({left}: without "
-        f"the brake, {n_off} runs; {right}: with it, {n_on} runs). Grey dots: measured. Lines: each law's "
-        "pooled fit, where viscous damping loses a fixed fraction (a line through the origin, blue, dashed), "
-        "Coulomb friction a fixed angle (a horizontal line, vermillion, dotted) and the combined law both "
-        "(green, solid)."
+        f"Viscous damping ratio of the free decays against the brake current at {len(cur)} settings, with the "
+        f"eddy-current law ζ = ζ₀ + k I² fitted by weighted least squares: k = {cl['k']:.3g} ± "
+        f"{cl['k_stderr']:.2g} per A², χ² = {cl['chi2']:.2g} on {cl['dof']} degrees of freedom."
     )
-    alt = (
-        "Two scatter plots of loss per half period against amplitude; the points rise with amplitude from a "
-        "non-zero intercept, which only the combined law's line follows."
-    )
-    return Captioned(fig, caption, "fig-real-losses", alt)
+    return Captioned(fig, caption, "fig-real-current", "Damping ratio rising with brake current, with a parabola.")
 
 
-def response_figure(st: RealOscillatorStudy, models: bool = True):
-    """Late amplitude ratio and phase lag against drive frequency, both sessions, with the models' steady curves."""
-    fig, (a1, a2) = figure(2, 1, height=6.0, sharex=True)
-    c = st.curves
-    if models:
-        for name in ("linear", "combined"):
-            s = MODEL_STYLE[name]
-            ratio = c.linear_ratio if name == "linear" else c.combined_ratio
-            lag = c.linear_lag if name == "linear" else c.combined_lag
-            a1.plot(c.omega, ratio, color=s["color"], ls=s["ls"], label=s["label"] + ", steady")
-            a2.plot(c.omega, lag, color=s["color"], ls=s["ls"])
-        a1.plot(c.omega, c.combined_hb, color=OKABE_ITO["bluish green"], ls=":", lw=1.0,
-                label="viscous + Coulomb, harmonic balance")  # fmt: skip
-    for session in (1, 2):
-        for steady in (True, False):
-            ds = [d for d in st.driven if d.session == session and d.steady == steady]
+def resonance_figure(st: RealOscillatorStudy) -> Captioned:
+    """Steady amplitude of the driven runs against drive frequency, with each law's calibrated prediction."""
+    fig, ax = figure(1, 1, height=3.8)
+    brakes = list(dict.fromkeys(d.run.brake for d in st.driven))
+    sessions = list(dict.fromkeys(d.run.session for d in st.driven))
+    names = [s.brake for s in st.settings]
+    for b in brakes:
+        col = setting_color(names.index(b)) if b in names else "0.3"
+        for si, sess in enumerate(sessions):
+            ds = [d for d in st.driven if d.run.brake == b and d.run.session == sess]
             if not ds:
                 continue
-            w = np.array([d.omega for d in ds])
-            kw = dict(
-                ls="none",
-                marker=SESSION_MARKER[session],
-                ms=4,
-                color=SESSION_COLOR[session],
-                capsize=2,
-                mfc=SESSION_COLOR[session] if steady else "white",
-            )
-            a1.errorbar(
-                w,
-                [d.late.ratio for d in ds],
-                yerr=[d.late.ratio_se for d in ds],
-                label=f"session {session}, {'steady' if steady else 'transient'}",
-                **kw,
-            )
-            a2.errorbar(w, [d.late.lag for d in ds], yerr=[d.late.lag_se for d in ds], **kw)
-    a1.set_yscale("log")
-    a1.set_ylabel("amplitude ratio wheel/drive")
-    lo, hi = a1.get_ylim()
-    a1.set_ylim(lo, hi * 40)
-    a2.set_ylabel("phase lag (rad)")
-    a2.set_xlabel(r"drive frequency $\omega$ (rad/s)")
-    a2.axvline(st.models["combined"].omega_n, color="0.6", lw=0.8, ls="-.")  # ω_n
-    a2.set_ylim(-0.5, math.pi + 0.5)
-    place_legend(a1, outside=False, ncols=2, fontsize=8)
-    top, bottom = panel_words(fig)
-    n = len(st.driven)
-    n_steady = sum(d.steady for d in st.driven)
-    models_text = (
-        " Lines: the steady response the free-decay fits predict, linear viscous (the paper's model; blue, "
-        "dashed) and viscous + Coulomb (green, solid, with its one-harmonic balance dotted)."
-        if models
-        else " No model is drawn: these are the measurements alone."
-    )
-    caption = (
-        f"The driven runs ({n}, of which {n_steady} reached a steady state): {top}, the late amplitude ratio of "
-        f"wheel to drive on a logarithmic axis; {bottom}, the phase lag, with the fitted natural frequency "
-        f"ωₙ = {st.models['combined'].omega_n:.4g} rad/s dash-dotted. Filled markers: steady runs; open: "
-        f"transient ones; circles session 1, squares session 2; bars: ± one standard error.{models_text}"
-    )
-    alt = (
-        "A resonance curve: the amplitude ratio peaks and the phase lag rises through π/2 near the natural "
-        "frequency, for both measurement sessions" + (", with the two models' predicted curves." if models else ".")
-    )
-    return Captioned(fig, caption, "fig-real-response-models" if models else "fig-real-response", alt)
-
-
-def prediction_figure(st: RealOscillatorStudy):
-    """Measured wheel angle and both models' predictions for a calibration run, a steady run and a transient."""
-    cal = st.calibration_runs[0]
-    pred = [d for d in st.driven if not st.is_calibration(d)]
-    steady = [d for d in pred if d.steady]
-    trans = [d for d in pred if not d.steady]
-    picks = [("calibration", cal)]
-    if steady:
-        picks.append(("steady, predicted", max(steady, key=lambda d: d.late.ratio)))
-    if trans:
-        picks.append(("transient, predicted", max(trans, key=lambda d: d.late.ratio)))
-    fig, axes = figure(len(picks), 1, height=2.3 * len(picks) + 0.6, squeeze=False)
-    for ax, (label, d) in zip(axes[:, 0], picks, strict=True):
-        ax.plot(d.t, d.angle, color=MEASURED, lw=0.0, marker=".", ms=2.5, label="measured")
-        for name in ("linear", "combined"):
-            s = MODEL_STYLE[name]
+            m = SESSION_MARKERS[si % len(SESSION_MARKERS)]
+            st_ = [d for d in ds if d.steady.steady]
+            un = [d for d in ds if not d.steady.steady]
             ax.plot(
-                d.t, st.prediction(name, d).theta, color=s["color"], ls=s["ls"], lw=1.0, label=s["label"].split(" (")[0]
+                [d.omega for d in st_],
+                [d.steady.amplitude for d in st_],
+                ls="none",
+                marker=m,
+                color=col,
+                ms=4,
+                label=f"brake {b}, session {sess}",
             )
-        ax.set_title(f"session {d.session}, run {d.run}, ω = {d.omega:.3g} rad/s ({label})")
-        ax.set_ylabel(r"$\theta$ (rad)")
-        lo, hi = ax.get_ylim()
-        ax.set_ylim(lo, hi + 0.6 * (hi - lo))
-        place_legend(ax, ncols=3)
-    axes[-1, 0].set_xlabel("$t$ (s)")
-    words = panel_words(fig) or ["the panel"]
-    parts = [f"{w}: session {d.session}, run {d.run} at ω = {d.omega:.3g} rad/s ({label})"
-             for w, (label, d) in zip(words, picks, strict=True)]  # fmt: skip
+            ax.plot(
+                [d.omega for d in un],
+                [d.steady.amplitude for d in un],
+                ls="none",
+                marker=m,
+                mfc="none",
+                color=col,
+                ms=4,
+            )
+    shown = []
+    top = max((d.steady.amplitude for d in st.driven), default=1.0)
+    for (b, law), p in st.predictions.items():
+        if b != brakes[0]:
+            continue
+        ws = np.linspace(min(d.omega for d in st.driven) * 0.95, max(d.omega for d in st.driven) * 1.05, 300)
+        u = float(np.nanmean([d.drive_amp for d in st.driven if d.run.brake == b]))
+        amp = law_amplitude(st.settings[names.index(b)].fits[law], ws, p.gain * u)
+        sty = LAW_STYLE[law]
+        ax.plot(
+            ws, np.where(np.isfinite(amp), amp, np.nan), color=sty["color"], ls=sty["ls"], lw=1.1, label=sty["label"]
+        )
+        shown.append(law)
+    ax.set_ylim(0.0, 1.4 * top)
+    ax.set_xlabel(r"drive frequency $\omega$ (rad/s)")
+    ax.set_ylabel("late amplitude (rad)")
+    place_legend(ax, outside=True, fontsize=7)
+    n_st = sum(d.steady.steady for d in st.driven)
     caption = (
-        "Measured wheel angle θ (grey dots) and the angle both models predict from the drive alone, with the "
-        "parameters of the free decays and the drive gain of the calibration runs: linear viscous (blue, "
-        "dashed) and viscous + Coulomb (green, solid). " + "; ".join(parts) + "."
+        f"Late amplitude of the {len(st.driven)} driven runs against drive frequency (filled: the {n_st} steady runs; "
+        "open: drifting or beating), with each law's steady amplitude by harmonic balance at its calibrated gain "
+        f"and the mean measured drive (lines, brake {brakes[0]})."
     )
-    caption = caption[0].upper() + caption[1:]
-    alt = "Driven oscillations of the wheel angle against time with the two models' predictions overlaid."
-    return Captioned(fig, caption, "fig-real-prediction", alt)
+    return Captioned(
+        fig, caption, "fig-real-resonance", "Resonance curve of the wheel with measured points and model curves."
+    )
+
+
+def gain_figure(st: RealOscillatorStudy) -> Captioned:
+    """The pooled prediction error of every law against the drive gain (times its calibrated value)."""
+    fig, ax = figure(1, 1, height=3.2)
+    for (b, law), p in st.predictions.items():
+        f = [x for x, _ in p.sensitivity]
+        e = [100 * y if math.isfinite(y) else np.nan for _, y in p.sensitivity]
+        sty = LAW_STYLE[law]
+        ax.plot(f, e, color=sty["color"], ls=sty["ls"], marker=".", label=f"{sty['label']}, brake {b}")
+    ax.set_yscale("log")
+    ax.set_xlabel("drive gain / calibrated gain")
+    ax.set_ylabel("pooled rms error (%)")
+    place_legend(ax, outside=True, fontsize=7)
+    caption = (
+        "Sensitivity of each law's pooled prediction error (rms relative error of the predicted steady "
+        "amplitudes, logarithmic axis) to the drive gain, from 0.8 to 1.2 times its calibrated value."
+    )
+    return Captioned(fig, caption, "fig-real-gain", "Prediction error against drive gain, one curve per law.")
+
+
+def drift_figure(st: RealOscillatorStudy) -> Captioned:
+    """Late drift of every driven run against drive frequency, with the tolerance band."""
+    fig, ax = figure(1, 1, height=3.2)
+    tol = st.params.tolerance
+    ax.axhspan(-100 * tol, 100 * tol, color="0.9", zorder=0)
+    sessions = list(dict.fromkeys(d.run.session for d in st.driven))
+    for si, sess in enumerate(sessions):
+        ds = [d for d in st.driven if d.run.session == sess]
+        col = setting_color(si + 3)
+        ax.errorbar(
+            [d.omega for d in ds],
+            [100 * d.steady.drift for d in ds],
+            yerr=[200 * d.steady.drift_stderr for d in ds],
+            ls="none",
+            marker=SESSION_MARKERS[si % len(SESSION_MARKERS)],
+            ms=3,
+            color=col,
+            label=f"session {sess}",
+        )
+    ax.set_xlabel(r"drive frequency $\omega$ (rad/s)")
+    ax.set_ylabel("late drift (%)")
+    place_legend(ax)
+    caption = (
+        f"Relative change of each driven run's amplitude over its last {st.params.periods} drive periods, with two "
+        f"standard errors; shaded: the tolerance ±{100 * tol:g} %, within which (or within its errors) a run "
+        "counts as steady."
+    )
+    return Captioned(fig, caption, "fig-real-drift", "Late drift of each run against frequency, most inside a band.")
+
+
+@dataclass(frozen=True, kw_only=True, eq=False)
+class TypicalDecay:
+    """A free decay for the panel: samples, run number and its Coulomb + viscous fit."""
+
+    t: np.ndarray
+    angle: np.ndarray
+    run: int
+    combined: FreeDecayFit
+
+
+def typical_decay(st: RealOscillatorStudy, brake: str = "on") -> TypicalDecay:
+    """The run of median Coulomb + viscous residual of a brake setting (the last setting if ``brake`` is absent)."""
+    s = next((x for x in st.settings if x.brake == brake), st.settings[-1])
+    pooled = s.fits["coulomb+viscous"]
+    order = sorted(range(len(s.runs)), key=lambda i: pooled.fits[i].residual_rms)
+    i = order[len(order) // 2]
+    r = s.runs[i]
+    return TypicalDecay(t=np.asarray(r.t), angle=np.asarray(r.angle), run=r.run, combined=pooled.fits[i])
+
+
+__all__ = [
+    "LAWS",
+    "LAW_STYLE",
+    "MODEL_STYLE",
+    "current_figure",
+    "damping_figure",
+    "drift_figure",
+    "gain_figure",
+    "resonance_figure",
+    "typical_decay",
+]

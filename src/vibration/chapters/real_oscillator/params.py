@@ -1,70 +1,54 @@
 """The chapter's parameters, declared once (name, symbol, default, unit, range, meaning).
 
-The ranges keep every accepted combination under about a minute and the prose true: windows of
-at least one whole drive period, calibration on at most the six slowest runs (the two lowest
-motor voltages, far below resonance), a steady-state test at 1 to 10 standard errors.
+Every parameter applies to any laboratory's folder: the folder itself (``lab_data``, with its
+manifest), the late window and tolerance of the steadiness test, the grouping of driven runs by
+measured drive frequency, and the calibration subset's distance from resonance.
 
 Examples
 --------
->>> Params().n_late, Params.from_values({"n_late": 4}).n_late
-(6, 4)
->>> Params.from_values({"n_early": 5, "n_late": 3})  # doctest: +ELLIPSIS
-Traceback (most recent call last):
-...
-vibration.physics.model.ParameterError: n_early = 5 is out of range: allowed n_early <= n_late = 3 ...
+>>> Params().periods, Params.from_values({"periods": 4}).periods
+(3, 4)
 """
 
 from __future__ import annotations
 
-from vibration.physics.model import ParameterError
 from vibration.presentation.schema import Param, Schema
 
-
-def _early_not_longer(values: dict) -> None:
-    if values["n_early"] > values["n_late"]:
-        raise ParameterError(
-            f"n_early = {values['n_early']} is out of range: allowed n_early <= n_late = {values['n_late']} "
-            "(the early window may not be longer than the late one)"
-        )
-
+#: The default folder (the package's copy of data/lab_oscillator).
+DEFAULT_LAB = "data/lab_oscillator"
 
 SCHEMA = Schema(
     "12_real_oscillator",
     (
-        Param("n_late", "n_late", 6, "", 1, 12, "whole drive periods in the late window (the end of each run)"),
-        Param("n_early", "n_early", 2, "", 1, 6, "whole drive periods in the early window (the start of each run)"),
-        Param("n_calibration", "n_cal", 3, "", 1, 6, "lowest-frequency driven runs that calibrate the drive gain g"),
         Param(
-            "z_steady",
-            "z_steady",
-            3.0,
+            "lab_data",
+            "lab_data",
+            DEFAULT_LAB,
             "",
-            1.0,
-            10.0,
-            "standard errors by which early and late amplitudes may differ in a steady run",
+            meaning="folder of logger files with a manifest runs.csv (and optionally rig.csv)",
+            path=True,
+        ),
+        Param("periods", "n_late", 3, "", 2, 10, "final drive periods over which a steady run may drift"),
+        Param("tolerance", "tol", 0.02, "", 0.005, 0.2, "largest relative late drift of a steady run"),
+        Param(
+            "frequency_tolerance",
+            "tol_ω",
+            0.01,
+            "",
+            0.001,
+            0.05,
+            "relative spread of measured drive frequency within one group of driven runs",
         ),
         Param(
-            "brake",
-            "brake",
-            "on",
+            "calibration_detuning",
+            "r_cal",
+            0.1,
             "",
-            meaning="free decays whose fits predict the driven runs: with the magnetic brake (on) or without (off)",
-            choices=("on", "off"),
-        ),
-        Param(
-            "decay_runs", "runs", "all", "", meaning="free-decay runs used in each file", choices=("all", "1-5", "6-10")
-        ),
-        Param(
-            "spread_ratio_max",
-            "s_max",
-            2.0,
-            "",
-            1.0,
-            10.0,
-            "largest ratio of run-to-run scatter to a run's standard error that still counts as covered",
+            0.02,
+            0.5,
+            "smallest |ω/ω_n − 1| of the runs that calibrate the drive gain (off resonance)",
         ),
     ),
-    together=(_early_not_longer,),
 )
 
 

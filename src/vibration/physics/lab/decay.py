@@ -32,7 +32,7 @@ import numpy as np
 from scipy import optimize, stats
 
 from vibration.physics.lab._checks import as_series, time_and_signal
-from vibration.physics.lab.peaks import LAWS, MIN_HALF_PERIODS, PeakDecayFit, _peaks, _start, peak_decay_fit
+from vibration.physics.lab.peaks import MIN_HALF_PERIODS, PeakDecayFit, _peaks, _start, peak_decay_fit
 from vibration.physics.model import ParameterError, check_real
 
 #: Largest number of half cycles the exact response evaluates.
@@ -138,30 +138,323 @@ def free_decay_response(t, omega_n, zeta, friction, offset=0.0, theta0=1.0, t0=0
     return _response(ta, omega_n, zeta, friction, offset, theta0, t0)
 
 
+# ----------------------------------------------------------------------------- amplitude-dependent laws
+
+#: The damping terms a law may combine, in their canonical order.
+TERMS = ("coulomb", "viscous", "quadratic", "power")
+#: Aliases of laws kept from earlier versions.
+ALIASES = {"combined": "coulomb+viscous"}
+#: Bounds of the fitted exponent p of the power term.
+POWER_EXPONENT_RANGE = (0.5, 8.0)
+
+
+def parse_law(law) -> tuple[str, ...]:
+    """The damping terms of a law string, in canonical order (``"combined"`` is ``"coulomb+viscous"``).
+
+    Parameters
+    ----------
+    law : str
+        ``+``-joined terms out of ``viscous``, ``coulomb``, ``quadratic``, ``power``; not both
+        ``quadratic`` and ``power`` (the power term with p = 2 is the quadratic one).
+
+    Returns
+    -------
+    tuple of str
+        The terms, each once, in the order of :data:`TERMS`.
+
+    Examples
+    --------
+    >>> parse_law("viscous+coulomb"), parse_law("combined")
+    (('coulomb', 'viscous'), ('coulomb', 'viscous'))
+    """
+    if not isinstance(law, str):
+        raise ParameterError(f"law = {law!r} is not a string: allowed '+'-joined terms out of {TERMS}")
+    name = ALIASES.get(law.strip(), law.strip())
+    parts = [p.strip() for p in name.split("+")]
+    if not parts or any(p not in TERMS for p in parts) or len(set(parts)) != len(parts):
+        raise ParameterError(
+            f"law = {law!r} is out of range: allowed '+'-joined distinct terms out of {TERMS} (or 'combined')"
+        )
+    if "quadratic" in parts and "power" in parts:
+        raise ParameterError(
+            f"law = {law!r} is out of range: 'quadratic+power' is refused (the power term with p = 2 is the "
+            "quadratic one, so the two are not identifiable together)"
+        )
+    return tuple(t for t in TERMS if t in parts)
+
+
+def law_name(terms) -> str:
+    """The canonical law string of a set of terms (``"coulomb+viscous"``, ...)."""
+    return "+".join(t for t in TERMS if t in terms)
+
+
+def _sine_power_integral(m: float) -> float:
+    """int_0^pi sin(u)^m du for m > -1."""
+    return math.sqrt(math.pi) * math.exp(math.lgamma((m + 1.0) / 2.0) - math.lgamma(m / 2.0 + 1.0))
+
+
+def _coefficients_checked(amplitude, omega_n, zeta, quadratic, power, power_exponent) -> np.ndarray:
+    if isinstance(amplitude, (str, bytes, bool)):
+        raise ParameterError(f"amplitude = {amplitude!r} is not a number: allowed amplitudes >= 0 (rad)")
+    try:
+        x = np.asarray(amplitude, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"amplitude = {amplitude!r:.80} is not a number: allowed amplitudes >= 0 (rad)") from None
+    if x.ndim > 1 or not np.all(np.isfinite(x)) or np.any(x < 0):
+        raise ParameterError(f"amplitude = {amplitude!r:.80} is out of range: allowed finite amplitudes >= 0 (rad)")
+    check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
+    check_real("zeta", zeta, low=0.0, high=10.0)
+    check_real("quadratic", quadratic, low=0.0, high=1e6, unit="1/rad")
+    check_real("power", power, low=0.0, high=1e6)
+    check_real("power_exponent", power_exponent, low=0.0, high=20.0)
+    return x
+
+
+def equivalent_zeta(amplitude, omega_n, *, zeta=0.0, quadratic=0.0, power=0.0, power_exponent=2.0):
+    r"""Equivalent viscous damping ratio of the velocity-dependent terms at a half-period amplitude.
+
+    Over a half period of :math:`\theta = X\cos\omega_n t` the terms
+    :math:`2\zeta\omega_n\dot\theta + b\dot\theta|\dot\theta| + a|\dot\theta|^p\,\mathrm{sgn}\,\dot\theta`
+    dissipate as much energy as a viscous term of ratio
+
+    .. math::
+
+        \zeta_{eq}(X) = \zeta + \frac{4 b X}{3\pi} + \frac{a\,\omega_n^{p-2} I_{p+1} X^{p-1}}{\pi},
+        \qquad I_m = \int_0^\pi \sin^m u\,du .
+
+    Parameters
+    ----------
+    amplitude : float or array_like
+        Amplitude X (rad), >= 0.
+    omega_n : float
+        Natural angular frequency (rad/s), > 0.
+    zeta, quadratic, power, power_exponent : float
+        Viscous ratio, quadratic coefficient b (1/rad), power coefficient a (rad^(1-p) s^(p-2)) and
+        its exponent p.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The equivalent damping ratio (the Coulomb term is not included: it has no viscous equivalent).
+
+    Examples
+    --------
+    >>> round(float(equivalent_zeta(1.0, 4.5, power=9.0, power_exponent=1.0)), 12)  # a = 2 zeta omega_n
+    1.0
+    """
+    x = _coefficients_checked(amplitude, omega_n, zeta, quadratic, power, power_exponent)
+    out = zeta + 4.0 * quadratic * x / (3.0 * math.pi)
+    if power:
+        out = (
+            out
+            + power
+            * omega_n ** (power_exponent - 2.0)
+            * _sine_power_integral(power_exponent + 1.0)
+            * np.power(x, power_exponent - 1.0)
+            / math.pi
+        )
+    return out
+
+
+def _half_cycles(theta0, offset, omega_n, zeta, friction, quad, power, p, t_span):
+    """Half cycles of the energy-balance model: start times, extrema, centres, ratios and the stop index."""
+    cap = 0.9
+    n_max = MAX_HALF_CYCLES
+    T = [0.0]
+    e = [theta0]
+    centre: list[float] = []
+    zk: list[float] = []
+    stop = None
+    kp = _sine_power_integral(p + 1.0) * omega_n ** (p - 2.0) / math.pi if power else 0.0
+
+    def z_of(a):
+        z = zeta + 4.0 * quad * a / (3.0 * math.pi)
+        if power:
+            z += power * kp * a ** (p - 1.0)
+        return min(z, cap)
+
+    while T[-1] <= t_span:
+        if len(centre) >= n_max:
+            raise ParameterError(
+                f"t spans more than {n_max} half periods which is out of range: allowed at most {n_max} (omega_n * "
+                "duration too large)"
+            )
+        d = e[-1] - offset
+        if abs(d) <= friction:
+            stop = len(centre)
+            break
+        c = offset + math.copysign(friction, d)
+        a = abs(e[-1] - c)
+        z = z_of(a)
+        q = math.exp(-math.pi * z / math.sqrt(1.0 - z * z))
+        z = z_of(0.5 * (a + q * a))  # corrector: the ratio at the half period's mean amplitude
+        q = math.exp(-math.pi * z / math.sqrt(1.0 - z * z))
+        centre.append(c)
+        zk.append(z)
+        e.append(c - q * (e[-1] - c))
+        T.append(T[-1] + math.pi / (omega_n * math.sqrt(1.0 - z * z)))
+    n = len(centre)
+    return np.asarray(T), np.asarray(e), np.asarray(centre), np.asarray(zk), (n if stop is None else stop)
+
+
+def _response_general(t, omega_n, zeta, friction, quad, power, p, offset, theta0, t0):
+    """The trace of the energy-balance model (exactly the closed form when quad = power = 0)."""
+    if quad == 0.0 and power == 0.0:
+        return _response(t, omega_n, zeta, friction, offset, theta0, t0)
+    T, e, centre, zk, stop = _half_cycles(theta0, offset, omega_n, zeta, friction, quad, power, p, float(t[-1] - t0))
+    out = np.empty_like(t)
+    before = t < t0
+    z0 = float(zk[0]) if zk.size else zeta
+    if before.any():
+        tau = t[before] - t0
+        d = theta0 - offset
+        c_prev = offset - math.copysign(friction, d) if d != 0 else offset
+        wd = omega_n * math.sqrt(1.0 - z0 * z0)
+        r = z0 / math.sqrt(1.0 - z0 * z0)
+        h = np.exp(-z0 * omega_n * tau) * (np.cos(wd * tau) + r * np.sin(wd * tau))
+        out[before] = c_prev + (theta0 - c_prev) * h
+    after = ~before
+    tau_all = t[after] - t0
+    if zk.size == 0:
+        out[after] = theta0
+        return out
+    k = np.clip(np.searchsorted(T, tau_all, side="right") - 1, 0, zk.size - 1)
+    tau = tau_all - T[k]
+    z = zk[k]
+    wd = omega_n * np.sqrt(1.0 - z * z)
+    r = z / np.sqrt(1.0 - z * z)
+    h = np.exp(-z * omega_n * tau) * (np.cos(wd * tau) + r * np.sin(wd * tau))
+    val = centre[k] + (e[k] - centre[k]) * h
+    stopped = tau_all >= (T[stop] if stop < T.size else np.inf)
+    out[after] = np.where(stopped, e[min(stop, e.size - 1)], val)
+    return out
+
+
+def damping_ode(
+    t_eval,
+    *,
+    omega_n,
+    zeta=0.0,
+    friction=0.0,
+    quadratic=0.0,
+    power=0.0,
+    power_exponent=2.0,
+    offset=0.0,
+    theta0=1.0,
+    rtol=1e-10,
+    atol=1e-12,
+    max_steps=2_000_000,
+):
+    r"""The free decay of the full law integrated numerically (an independent check of the fits' model).
+
+    Integrates :math:`\ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\Delta\,\mathrm{sgn}\dot\theta +
+    b\dot\theta|\dot\theta| + a|\dot\theta|^p\mathrm{sgn}\dot\theta + \omega_n^2(\theta-\theta_0) = 0` from
+    rest at ``theta0`` with :func:`scipy.integrate.solve_ivp` (DOP853), event by event between velocity
+    reversals; the wheel sticks at a reversal inside the dead band.
+
+    Parameters
+    ----------
+    t_eval : array_like
+        Increasing times (s) from 0, at most 1 000 000.
+    omega_n, zeta, friction, quadratic, power, power_exponent, offset, theta0 : float
+        The law's coefficients (rad/s, -, rad, 1/rad, rad^(1-p) s^(p-2), -), the resting angle and
+        the start angle (rad).
+    rtol, atol : float
+        Tolerances of the integrator.
+    max_steps : int
+        Budget of right-hand-side evaluations over the whole run.
+
+    Returns
+    -------
+    numpy.ndarray
+        Angle (rad) at ``t_eval``.
+    """
+    from scipy import integrate
+
+    te = as_series("t_eval", t_eval, unit="s", min_size=2)
+    if not np.all(np.diff(te) > 0) or te[0] < 0:
+        raise ParameterError("t_eval is not increasing from t >= 0: allowed increasing times (s) from 0")
+    omega_n = check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
+    _coefficients_checked(0.0, omega_n, zeta, quadratic, power, power_exponent)
+    friction = check_real("friction", friction, low=0.0, high=1e6, unit="rad")
+    offset = check_real("offset", offset, low=-1e6, high=1e6, unit="rad")
+    theta0 = check_real("theta0", theta0, low=-1e6, high=1e6, unit="rad")
+    w2 = omega_n * omega_n
+    out = np.full(te.size, np.nan)
+    t_now, y_now, v_now = 0.0, float(theta0), 0.0
+    used = 0
+    while t_now < te[-1]:
+        d = y_now - offset
+        if abs(v_now) < 1e-12 and abs(d) <= friction:
+            out[te >= t_now] = y_now
+            break
+        s = -math.copysign(1.0, d) if abs(v_now) < 1e-12 else math.copysign(1.0, v_now)
+
+        def rhs(_t, x, s=s):
+            v = x[1]
+            damp = 2.0 * zeta * omega_n * v + quadratic * v * abs(v) + power * abs(v) ** power_exponent * s
+            return [v, -w2 * (x[0] - offset) - w2 * friction * s - damp]
+
+        def reversal(_t, x, s=s, t_from=t_now):
+            return x[1] if _t > t_from + 1e-9 else s
+
+        reversal.terminal = True
+        reversal.direction = -s
+        mask = te >= t_now
+        sol = integrate.solve_ivp(
+            rhs,
+            (t_now, float(te[-1])),
+            [y_now, v_now],
+            method="DOP853",
+            rtol=rtol,
+            atol=atol,
+            events=reversal,
+            dense_output=True,
+        )
+        used += sol.nfev
+        if used > max_steps:
+            raise ParameterError(f"max_steps = {max_steps} is out of range: the integration needed more")
+        t_end = float(sol.t_events[0][0]) if sol.t_events[0].size else float(te[-1])
+        seg = mask & (te <= t_end)
+        out[seg] = sol.sol(te[seg])[0]
+        t_now, y_now, v_now = t_end, float(sol.sol(t_end)[0]), 0.0
+        if not sol.t_events[0].size:
+            break
+    return out
+
+
 # ----------------------------------------------------------------------------- whole-trace fit
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class FreeDecayFit:
-    """Least-squares fit of the exact free-decay response to a whole trace.
+    """Least-squares fit of a damping law's free decay to a whole trace.
 
     Attributes
     ----------
     law : str
-        "viscous" (friction fixed at 0), "coulomb" (zeta fixed at 0) or "combined".
+        Canonical ``+``-joined terms (``"coulomb+viscous"``, ``"coulomb+quadratic"``, ...).
     omega_n : float
         Natural angular frequency (rad/s).
     zeta : float
-        Damping ratio.
+        Viscous damping ratio (0 when the law has no viscous term).
     friction : float
-        Coulomb friction angle Delta (rad).
+        Coulomb friction angle Delta (rad; 0 without the Coulomb term).
     offset : float
-        Resting angle c (rad).
+        Resting angle theta_0 of the spring (rad).
     theta0, t0 : float
         Angle (rad) and time (s) of the first extremum, where the fit starts.
+    quadratic : float
+        Quadratic coefficient b (1/rad) of b theta'|theta'| (0 when absent).
+    power, power_exponent : float
+        Coefficient a (rad^(1-p) s^(p-2)) and exponent p of a |theta'|^p sgn theta' (0 when absent).
+    coefficients : dict
+        The fitted terms only: "viscous" (zeta), "coulomb" (Delta, rad), "quadratic" (b, 1/rad),
+        "power" (a) and "power_exponent" (p).
     stderr : dict
-        Standard errors reported, keyed "omega_n", "zeta", "friction", "offset", "theta0", "t0"
-        (0 for a fixed parameter): the larger of ``stderr_naive`` and ``stderr_hac``.
+        Standard errors keyed "omega_n", "zeta", "friction", "offset", "theta0", "t0", "quadratic",
+        "power", "power_exponent" (0 for a fixed parameter): the larger of ``stderr_naive`` and
+        ``stderr_hac``.
     stderr_naive, stderr_hac : dict
         From ``s^2 (J^T J)^-1``, and the Newey-West (Bartlett, one half period of lags) sandwich
         that allows for correlated residuals.
@@ -177,8 +470,7 @@ class FreeDecayFit:
     t_start, t_end : float
         The fitted window (s).
     durbin_watson : float
-        Durbin-Watson statistic of the residuals (about 2 for white residuals, towards 0 for
-        positively correlated ones).
+        Durbin-Watson statistic of the residuals.
     ljung_box_p : float
         p-value of the Ljung-Box test of white residuals (20 lags or n/5).
     converged : bool
@@ -209,18 +501,60 @@ class FreeDecayFit:
     ljung_box_p: float
     converged: bool
     residuals: np.ndarray = field(repr=False)
+    quadratic: float = 0.0
+    power: float = 0.0
+    power_exponent: float = 0.0
+    coefficients: dict = field(default_factory=dict, repr=False)
 
     def predict(self, t) -> np.ndarray:
-        """Fitted angle (rad) at the times ``t`` (s), by :func:`free_decay_response`."""
-        return free_decay_response(t, self.omega_n, self.zeta, self.friction, self.offset, self.theta0, self.t0)
+        """Fitted angle (rad) at the times ``t`` (s)."""
+        ta = as_series("t", t, unit="s", min_size=1)
+        if ta.size > 1 and not np.all(np.diff(ta) > 0):
+            raise ParameterError("t is not strictly increasing: allowed strictly increasing time (s)")
+        return _response_general(
+            ta,
+            self.omega_n,
+            self.zeta,
+            self.friction,
+            self.quadratic,
+            self.power,
+            self.power_exponent,
+            self.offset,
+            self.theta0,
+            self.t0,
+        )
+
+    def zeta_eq(self, amplitude):
+        """Equivalent viscous damping ratio at the half-period amplitude X (rad), Coulomb term included
+        as its energy-balance equivalent 2 Delta / (pi X)."""
+        x = np.asarray(amplitude, dtype=float)
+        z = equivalent_zeta(
+            x,
+            self.omega_n,
+            zeta=self.zeta,
+            quadratic=self.quadratic,
+            power=self.power,
+            power_exponent=self.power_exponent or 2.0,
+        )
+        with np.errstate(divide="ignore"):
+            return z + np.where(x > 0, 2.0 * self.friction / (math.pi * np.maximum(x, 1e-300)), np.inf)
 
 
-_ALL = ("omega_n", "zeta", "friction", "offset", "theta0", "t0")
-_FREE = {
-    "combined": _ALL,
-    "viscous": ("omega_n", "zeta", "offset", "theta0", "t0"),
-    "coulomb": ("omega_n", "friction", "offset", "theta0", "t0"),
+_ALL = ("omega_n", "zeta", "friction", "offset", "theta0", "t0", "quadratic", "power", "power_exponent")
+_TERM_PARAMS = {
+    "viscous": ("zeta",),
+    "coulomb": ("friction",),
+    "quadratic": ("quadratic",),
+    "power": ("power", "power_exponent"),
 }
+
+
+def _free_params(terms) -> tuple[str, ...]:
+    free = ["omega_n"]
+    for term in TERMS:
+        if term in terms:
+            free.extend(_TERM_PARAMS[term])
+    return tuple(free) + ("offset", "theta0", "t0")
 
 
 def _whiteness(r: np.ndarray) -> tuple[float, float]:
@@ -244,39 +578,63 @@ def _hac_cov(J: np.ndarray, r: np.ndarray, lags: int, bread: np.ndarray) -> np.n
     return bread @ meat @ bread
 
 
-def fit_free_decay(t, theta, law: str = "combined") -> FreeDecayFit:
-    r"""Fit the exact piecewise free decay with viscous and/or Coulomb friction to a whole trace.
+def _curve_guess(peaks, k0, omega):
+    """Starting values of Delta, zeta, b from the loss per half period against the amplitude (least squares)."""
+    e = peaks.theta[k0:]
+    if e.size < 4:
+        return 0.0, 0.0, 0.0
+    x = np.abs(np.diff(e)) / 2.0
+    loss = x[:-1] - x[1:]
+    xa = x[:-1]
+    X = np.column_stack([np.full_like(xa, 2.0), math.pi * xa, 4.0 / 3.0 * xa * xa])
+    try:
+        coef, *_ = np.linalg.lstsq(X, loss, rcond=None)
+    except np.linalg.LinAlgError:
+        return 0.0, 0.0, 0.0
+    return float(max(coef[0], 0.0)), float(max(coef[1], 0.0)), float(max(coef[2], 0.0))
 
-    The model (module docstring) is evaluated in closed form half cycle by half cycle, with no
-    numerical integrator, and fitted to every sample by nonlinear least squares
-    (:func:`scipy.optimize.least_squares`, trust-region reflective, bounds zeta >= 0 and
-    Delta >= 0). The fit starts at the first extremum after the sample of largest
-    ``|theta - median(theta)|`` (so that a hand push before the release is left out); there the
-    velocity is zero and the free parameters are omega_n, zeta, Delta, the offset c, and the angle
-    and time of that extremum. The window ends half a half period after the last extremum detected
-    by :func:`~vibration.physics.lab.peaks.free_decay_peaks`: the rest of the record, with the
-    wheel (nearly) at rest, repeats one quantised value whose rounding error is the same in every
-    sample; fitted, it biases zeta and Delta far beyond their standard errors (checked on
-    synthetic quantised decays). The solver is started from the estimates of
-    :func:`~vibration.physics.lab.peaks.peak_decay_fit` for each of the three laws and from the
-    median half period, and the best of these local solutions is kept.
 
-    Uncertainties. ``stderr_naive`` is ``s^2 (J^T J)^-1`` with ``s^2 = RSS / (n - p)``, valid for
-    independent residuals. Encoder data are quantised (1 degree = 0.01745 rad here): the rounding
-    error is a deterministic function of the angle, correlated from sample to sample where the
-    wheel moves slowly (near the extrema and at rest), and the model is never exact; then the
-    naive errors are too small. The reported ``stderr`` is therefore the larger of the naive and
-    of a Newey-West (Bartlett kernel, one half period of lags) sandwich estimate. The Durbin-Watson
-    statistic and the Ljung-Box p-value tell how far the residuals are from white.
+def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
+    r"""Fit a damping law's free decay to a whole trace.
+
+    The law is any sum of the terms of
+
+    .. math::
+
+        \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\Delta\,\mathrm{sgn}\dot\theta
+        + b\,\dot\theta|\dot\theta| + a|\dot\theta|^p\mathrm{sgn}\dot\theta + \omega_n^2(\theta-\theta_0) = 0
+
+    (viscous zeta, Coulomb Delta in rad, quadratic b in 1/rad, power a with p fitted; ``quadratic+power``
+    is refused). Viscous and Coulomb terms alone have a piecewise closed-form solution, which is fitted
+    exactly. With a quadratic or power term the trace is the half-period energy-balance model: every
+    half cycle between velocity reversals is the closed-form viscous half cycle about the Coulomb
+    centre, with the equivalent damping ratio :func:`equivalent_zeta` of the half cycle's mean
+    amplitude (first order in the damping; checked against :func:`damping_ode`). All samples are fitted
+    by nonlinear least squares (:func:`scipy.optimize.least_squares`, trust-region reflective, every
+    coefficient >= 0, p in [0.5, 8]).
+
+    The fit starts at the first extremum after the sample of largest ``|theta - median(theta)|``
+    (so that a hand push before the release is left out); there the velocity is zero and the free
+    parameters are omega_n, the law's coefficients, the resting angle, and the angle and time of
+    that extremum. The window ends half a half period after the last extremum detected by
+    :func:`~vibration.physics.lab.peaks.free_decay_peaks` (the rest, at rest, repeats one quantised
+    value whose rounding error would bias the fit). Starts: the estimates of
+    :func:`~vibration.physics.lab.peaks.peak_decay_fit`, the least-squares line of the loss per half
+    period against the amplitude, and the median half period; the best local solution is kept.
+
+    Uncertainties. ``stderr_naive`` is ``s^2 (J^T J)^-1``; encoder rounding errors are correlated
+    where the wheel moves slowly, so the reported ``stderr`` is the larger of it and a Newey-West
+    (Bartlett kernel, one half period of lags) sandwich estimate.
 
     Parameters
     ----------
     t : array_like
-        Times (s), strictly increasing (uniform sampling not needed), at most 1 000 000 samples.
+        Times (s), strictly increasing, at most 1 000 000 samples.
     theta : array_like
         Angles (rad), same length, finite, not constant.
-    law : {"viscous", "coulomb", "combined"}
-        Friction law: Delta fixed at 0, zeta fixed at 0, or both fitted.
+    law : str
+        ``+``-joined terms out of "viscous", "coulomb", "quadratic", "power" ("combined" is an alias of
+        "coulomb+viscous").
 
     Returns
     -------
@@ -287,8 +645,7 @@ def fit_free_decay(t, theta, law: str = "combined") -> FreeDecayFit:
     Raises
     ------
     ParameterError
-        Bad inputs (named), an unknown law, or fewer than 4 half periods after the largest
-        excursion.
+        Bad inputs (named), an unknown law, or fewer than 4 half periods after the largest excursion.
 
     Examples
     --------
@@ -299,8 +656,7 @@ def fit_free_decay(t, theta, law: str = "combined") -> FreeDecayFit:
     >>> round(f.omega_n, 6), round(f.zeta, 6), round(f.friction, 6), round(f.offset, 6)
     (4.5, 0.01, 0.02, 0.05)
     """
-    if law not in LAWS:
-        raise ParameterError(f"law = {law!r} is out of range: allowed one of {LAWS}")
+    terms = parse_law(law)
     ta, ya = time_and_signal(t, theta, t_name="t", y_name="theta", y_unit="rad")
     peaks = _peaks(ta, ya)
     k0 = _start(ta, ya, peaks)
@@ -318,6 +674,8 @@ def fit_free_decay(t, theta, law: str = "combined") -> FreeDecayFit:
         except ParameterError:  # the extrema do not fit this law's recursion: not a usable start
             pass
     guesses.append(PeakDecayFit("combined", math.pi / half, 0.01, 0.0, float(np.median(ya)), {}, n_ext))
+    g_fric, g_zeta, g_quad = _curve_guess(peaks, k0, math.pi / half)
+    guesses.append(PeakDecayFit("combined", math.pi / half, g_zeta, g_fric, float(np.median(ya)), {}, n_ext))
     t_start = float(ta[peaks.index[k0]])
     t_end = min(float(ta[-1]), float(peaks.t[-1]) + 0.5 * half)
     w = (ta >= t_start) & (ta <= t_end)
@@ -328,6 +686,9 @@ def fit_free_decay(t, theta, law: str = "combined") -> FreeDecayFit:
         "omega_n": 0.5 * w_half,
         "zeta": 0.0,
         "friction": 0.0,
+        "quadratic": 0.0,
+        "power": 0.0,
+        "power_exponent": POWER_EXPONENT_RANGE[0],
         "offset": float(ya.min()),
         "theta0": float(ya.min()) - span,
         "t0": float(peaks.t[k0]) - 0.25 * half,
@@ -336,50 +697,100 @@ def fit_free_decay(t, theta, law: str = "combined") -> FreeDecayFit:
         "omega_n": 2.0 * w_half,
         "zeta": 0.5,
         "friction": span,
+        "quadratic": 10.0 / max(span, 1e-9),
+        "power": 0.5,  # fitted as the equivalent ratio at 1 rad, below
+        "power_exponent": POWER_EXPONENT_RANGE[1],
         "offset": float(ya.max()),
         "theta0": float(ya.max()) + span,
         "t0": float(peaks.t[k0]) + 0.25 * half,
     }
-    free = _FREE[law]
-    base = {"friction": 0.0, "zeta": 0.0}
+    free = _free_params(terms)
+    base = {"friction": 0.0, "zeta": 0.0, "quadratic": 0.0, "power": 0.0, "power_exponent": 0.0}
 
     def params(x):
         p = dict(base)
         p.update(zip(free, x, strict=True))
+        if "power" in terms:  # the fitted value is the power term's equivalent ratio at X = 1 rad
+            pe = p["power_exponent"]
+            p["power"] = p["power"] * math.pi / (_sine_power_integral(pe + 1.0) * p["omega_n"] ** (pe - 2.0))
         return p
 
     def resid(x):
         p = params(x)
-        return _response(tw, p["omega_n"], p["zeta"], p["friction"], p["offset"], p["theta0"], p["t0"]) - yw
+        return (
+            _response_general(
+                tw,
+                p["omega_n"],
+                p["zeta"],
+                p["friction"],
+                p["quadratic"],
+                p["power"],
+                p["power_exponent"],
+                p["offset"],
+                p["theta0"],
+                p["t0"],
+            )
+            - yw
+        )
 
     lb = np.array([lo[k] for k in free])
     ub = np.array([hi[k] for k in free])
     sol = None
+    extra = [{}]
+    if "power" in terms:
+        extra = [{"power_exponent": pe} for pe in (2.0, 4.0)]
     for g in guesses:  # a few starts: the least-squares surface of an oscillation has local minima
-        start = {
-            "omega_n": g.omega_n,
-            "zeta": min(max(g.zeta, 1e-4), 0.4),
-            "friction": min(max(g.friction, 1e-3 * span), 0.4 * span),
-            "offset": g.offset,
-            "theta0": float(peaks.theta[k0]),
-            "t0": float(peaks.t[k0]),
-        }
-        x0 = np.array([start[k] for k in free])
-        x0 = np.clip(x0, lb + 1e-9 * (ub - lb), ub - 1e-9 * (ub - lb))
-        trial = optimize.least_squares(resid, x0, bounds=(lb, ub), x_scale="jac", max_nfev=MAX_NFEV, method="trf")
-        if sol is None or trial.cost < sol.cost:
-            sol = trial
+        for ex in extra:
+            start = {
+                "omega_n": g.omega_n,
+                "zeta": min(max(g.zeta, 1e-4), 0.4),
+                "friction": min(max(g.friction, 1e-3 * span), 0.4 * span),
+                "quadratic": max(g_quad, 1e-4),
+                "power": max(3.0 * g_quad / (4.0 * math.pi) * 4.0 / 3.0, 1e-4),
+                "power_exponent": 2.0,
+                "offset": g.offset,
+                "theta0": float(peaks.theta[k0]),
+                "t0": float(peaks.t[k0]),
+            }
+            start.update(ex)
+            x0 = np.array([start[k] for k in free])
+            x0 = np.clip(x0, lb + 1e-9 * (ub - lb), ub - 1e-9 * (ub - lb))
+            trial = optimize.least_squares(resid, x0, bounds=(lb, ub), x_scale="jac", max_nfev=MAX_NFEV, method="trf")
+            if sol is None or trial.cost < sol.cost:
+                sol = trial
     x = sol.x
     r = resid(x)
-    # central-difference Jacobian at the solution
-    J = np.empty((r.size, x.size))
-    scale = np.array([max(abs(v), 1e-3) for v in x])
-    for j in range(x.size):
+    # central-difference Jacobian at the solution, in the physical parameters
+    phys = params(x)
+    xp0 = np.array([phys[k] for k in free])
+
+    def resid_phys(v):
+        p = dict(base)
+        p.update(zip(free, v, strict=True))
+        return (
+            _response_general(
+                tw,
+                p["omega_n"],
+                p["zeta"],
+                p["friction"],
+                p["quadratic"],
+                p["power"],
+                p["power_exponent"],
+                p["offset"],
+                p["theta0"],
+                p["t0"],
+            )
+            - yw
+        )
+
+    J = np.empty((r.size, xp0.size))
+    scale = np.array([max(abs(v), 1e-3) for v in xp0])
+    for j in range(xp0.size):
         h = 1e-6 * scale[j]
-        xp, xm = x.copy(), x.copy()
+        xp, xm = xp0.copy(), xp0.copy()
         xp[j] += h
-        xm[j] -= h
-        J[:, j] = (resid(xp) - resid(xm)) / (2.0 * h)
+        xm[j] = max(xm[j] - h, 0.0) if free[j] in base else xm[j] - h
+        J[:, j] = (resid_phys(xp) - resid_phys(xm)) / (xp[j] - xm[j])
     n, p_free = r.size, x.size
     rss = float(r @ r)
     s2 = rss / max(1, n - p_free)
@@ -397,18 +808,28 @@ def fit_free_decay(t, theta, law: str = "combined") -> FreeDecayFit:
     kpar = p_free + 1
     m2ll = n * math.log(2.0 * math.pi * max(rss, 1e-300) / n) + n
     dw, lb_p = _whiteness(r)
-    p = params(x)
+    p = phys
+    coefficients = {}
+    for term, key in (("viscous", "zeta"), ("coulomb", "friction"), ("quadratic", "quadratic"), ("power", "power")):
+        if term in terms:
+            coefficients[term] = float(p[key])
+    if "power" in terms:
+        coefficients["power_exponent"] = float(p["power_exponent"])
     in_window = (peaks.t >= t_start - 1e-12) & (peaks.t <= t_end)
     res = -r
     res.flags.writeable = False
     return FreeDecayFit(
-        law=law,
+        law=law_name(terms),
         omega_n=float(p["omega_n"]),
         zeta=float(p["zeta"]),
         friction=float(p["friction"]),
         offset=float(p["offset"]),
         theta0=float(p["theta0"]),
         t0=float(p["t0"]),
+        quadratic=float(p["quadratic"]),
+        power=float(p["power"]),
+        power_exponent=float(p["power_exponent"]),
+        coefficients=coefficients,
         stderr=se,
         stderr_naive=se_n,
         stderr_hac=se_h,

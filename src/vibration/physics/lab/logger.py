@@ -85,6 +85,9 @@ class LoggerRun:
     drive_angle, voltage, current : numpy.ndarray or None
         Angle of the drive, channel 3+4 (rad); motor supply voltage (V); motor current (A).
         ``None`` when the file has no such column for this run.
+    drive_unit : str
+        Unit of ``drive_angle``: "rad" (an encoder on the drive) or "V" (the exciter's signal of a
+        logger that records it as a voltage).
     """
 
     run: int
@@ -93,6 +96,7 @@ class LoggerRun:
     drive_angle: np.ndarray | None
     voltage: np.ndarray | None
     current: np.ndarray | None
+    drive_unit: str = "rad"
 
     @property
     def n(self) -> int:
