@@ -260,12 +260,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
         cells.insert(at, nbformat.v4.new_markdown_cell(banner))
     if page.number == FRONT and page.parameters:
         cells.append(nbformat.v4.new_markdown_cell("## Parameters of this run\n\n" + parameters_table(page.parameters)))
-    if page.elapsed_s is not None:
-        cells.append(
-            nbformat.v4.new_markdown_cell(
-                f'<p class="vib-footer">This chapter was executed by papermill in {page.elapsed_s:.1f} s.</p>'
-            )
-        )
+    # The execution time stays in the runner's log and return value, not in the reader's text.
     nb.cells = cells
     return nb
 
@@ -349,7 +344,7 @@ html_copy_source = False
 html_last_updated_fmt = None
 html_math_renderer = "mathml"
 html_search_language = "en"
-html_show_search_summary = False
+html_show_search_summary = True
 html_theme_options = {{
     "show_toc_level": 2,
     "use_download_button": False,
