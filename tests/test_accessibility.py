@@ -46,7 +46,7 @@ def violations(browser, path: Path, mode: str) -> list[str]:
 
 
 @pytest.mark.browser
-@pytest.mark.parametrize("mode", ["light", "dark"])
+@pytest.mark.parametrize("mode", ["light", "dark"], ids=["lightmode", "darkmode"])  # "light" alone marks slow
 def test_sample_pages_have_no_axe_violations(browser, site, mode):
     found = [v for name in SAMPLE for v in violations(browser, site / name, mode)]
     assert not found, "\n".join(found)
@@ -54,7 +54,7 @@ def test_sample_pages_have_no_axe_violations(browser, site, mode):
 
 @pytest.mark.slow
 @pytest.mark.browser
-@pytest.mark.parametrize("mode", ["light", "dark"])
+@pytest.mark.parametrize("mode", ["light", "dark"], ids=["lightmode", "darkmode"])  # "light" alone marks slow
 def test_every_page_has_no_axe_violations(browser, site, mode):
     found = [v for path in sorted(site.glob("*.html")) for v in violations(browser, path, mode)]
     assert not found, "\n".join(found)

@@ -33,6 +33,7 @@ Examples
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 
 from ..physics.model import ParameterError
@@ -258,9 +259,13 @@ class Approx:
             parts.append(f"a{self.atol:g}")
         return ",".join(parts)
 
+    def number(self) -> float:
+        """The value as a float (a value given as text in the book's format is read back with :func:`parse`)."""
+        return parse(self.value) if isinstance(self.value, str) else float(self.value)
+
     def plain(self) -> str:
         """The machine form for the plain-text table, which the numeric plugin compares."""
-        return f"⟪{float(self.value):.6g} {self.tolerance()}⟫"
+        return f"⟪{self.number():.6g} {self.tolerance()}⟫"
 
     def html(self, text: str) -> str:
         """The reader's ``text`` of the value in a span that carries the value and its tolerance.
@@ -274,6 +279,22 @@ class Approx:
         return (
             f'<span class="vib-approx" data-value="{float(self.value):.6g}" data-tol="{self.tolerance()}">{text}</span>'
         )
+
+
+def parse(text: str) -> float:
+    """A number written in the book's format read back: true minus, ×10ⁿ, "∞".
+
+    >>> parse("−1.273×10⁵"), parse("10⁻¹²"), parse("0.1542"), parse("−∞")
+    (-127300.0, 1e-12, 0.1542, -inf)
+    """
+    t = str(text).strip().replace(MINUS, "-").replace("∞", "inf")
+    m = re.fullmatch(r"(?:([-+]?[\d.]+)×)?([-+]?)10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)", t)
+    if m:
+        return float(f"{m.group(1) or m.group(2) + '1'}e{m.group(3).translate(_FROM_SUPERSCRIPT)}")
+    return float(t)
+
+
+_FROM_SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
 
 
 def approx(value: float, digits: int = 4, **tolerance: float) -> str:
