@@ -22,6 +22,9 @@ from hypothesis import HealthCheck, settings
 
 import vibration
 
+#: pytester runs nbval with the numeric plugin on small notebooks (tests/test_portable.py).
+pytest_plugins = ["pytester"]
+
 settings.register_profile(
     "vibration",
     deadline=None,
@@ -38,6 +41,14 @@ settings.register_profile(
     print_blob=True,
 )
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "vibration"))
+
+
+def pytest_configure(config):
+    """Beside strict nbval, compare the machine-dependent table values within their declared tolerances."""
+    if config.pluginmanager.hasplugin("nbval"):
+        import nbval_numeric
+
+        nbval_numeric.install()
 
 
 _NO_VALUE = object()

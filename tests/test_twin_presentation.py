@@ -54,7 +54,13 @@ def test_tables_and_sentences_follow_the_results(small):
     det = repr(tables.detection_table(small))
     assert "sudden drop" in det and "slow decline" in det
     s = text.identification_sentence(small)
-    assert f"{fit.k:.5g}" in s and "standard errors" in s
+    assert "standard errors" in s
+    # the sentence states k with its standard error, rounded to the error's last digit
+    shown = re.search(r"k = (\d+\.?\d*) ± (\d+\.?\d*) N/m", s)
+    assert shown, s
+    k, err = float(shown.group(1)), float(shown.group(2))
+    last = 10.0 ** -len(shown.group(2).partition(".")[2])
+    assert abs(k - fit.k) <= 0.5 * last + 1e-12 and abs(err - fit.stderr[2]) <= 0.5 * last + 1e-12
     checks = repr(tables.checks_table(small))
     assert "measured difference" in checks and "yes" in checks
 

@@ -218,3 +218,16 @@ class Captioned:
 
     def __repr__(self) -> str:
         return f"Figure {self.name}: {self.caption}"
+
+
+def web_only(text: str, print_text: str = "") -> str:
+    """Words that hold only on the screen (a layout, a button), with the printed edition's own words.
+
+    Both are inline HTML spans in the Markdown: the print style sheet hides ``vib-web-only`` and shows
+    ``vib-print-only``; the screen does the opposite.
+
+    >>> web_only(" on a wide page", print_text=" here")
+    '<span class="vib-web-only"> on a wide page</span><span class="vib-print-only"> here</span>'
+    """
+    out = f'<span class="vib-web-only">{text}</span>'
+    return out + (f'<span class="vib-print-only">{print_text}</span>' if print_text else "")

@@ -19,6 +19,7 @@ import math
 
 from ..physics.model import Oscillator, SineForce
 from ..physics.paper import paper_defaults
+from .numbers import column, sig
 from .parameters import SHARED
 from .tables import fmt
 
@@ -44,39 +45,18 @@ PARAMETER_TEXT = {name: (tex(p.symbol), p.unit) for name, p in SHARED.items()}
 
 
 def g(value: float, digits: int = 4) -> str:
-    """A number for a sentence: ``digits`` significant figures, "∞" for infinity.
+    """A number for a sentence (:func:`vibration.presentation.numbers.sig`): ``digits`` significant figures.
 
     Examples
     --------
-    >>> g(2.23703819), g(78.2345, 3), g(float("inf"))
-    ('2.237', '78.2', '∞')
+    >>> g(2.23703819), g(78.2345, 3), g(float("inf")), g(-0.25)
+    ('2.237', '78.2', '∞', '−0.25')
     """
-    return fmt(float(value), digits)
+    return sig(float(value), digits)
 
 
-def sig(value: float, digits: int = 4) -> str:
-    """Like :func:`g`, with the typographic minus sign (for prose).
-
-    Examples
-    --------
-    >>> sig(-0.25), sig(-2.43e-5, 3)
-    ('−0.25', '−2.43×10⁻⁵')
-    """
-    return g(value, digits).replace("-", "−")
-
-
-def fixed(value: float, digits: int = 4) -> str:
-    """A table cell with exactly ``digits`` significant figures, trailing zeros kept (one precision per column).
-
-    Examples
-    --------
-    >>> fixed(9.9996), fixed(2.23703819), fixed(15.0, 3), fixed(2.43e-5, 3), fixed(float("inf")), fixed(0.0)
-    ('10.00', '2.237', '15.0', '2.43×10⁻⁵', '∞', '0')
-    """
-    v = float(value)
-    if not math.isfinite(v) or v == 0:
-        return g(v)  # an exact zero has no significant figures to show
-    return fmt(v, digits, zeros=True)
+#: The table-cell form, one precision per column (:func:`vibration.presentation.numbers.column`).
+fixed = column
 
 
 def parameters_sentence(**values: float) -> str:

@@ -67,6 +67,33 @@ OKABE_ITO = {
     "grey": "#7F7F7F",
 }
 
+#: The one word every caption and sentence uses for each colour of the palette (plain names a reader
+#: tells apart: vermillion is never also called red, orange is never called yellow).
+COLOUR_WORDS = {
+    OKABE_ITO["black"]: "black",
+    OKABE_ITO["orange"]: "orange",
+    OKABE_ITO["sky blue"]: "sky blue",
+    OKABE_ITO["bluish green"]: "green",
+    OKABE_ITO["yellow"]: "yellow",
+    OKABE_ITO["blue"]: "blue",
+    OKABE_ITO["vermillion"]: "vermillion",
+    OKABE_ITO["reddish purple"]: "purple",
+    OKABE_ITO["grey"]: "grey",
+}
+
+
+def colour_word(color: str) -> str:
+    """The palette's one word for ``color`` (a hex code of :data:`OKABE_ITO`).
+
+    >>> colour_word("#d55e00"), colour_word(OKABE_ITO["bluish green"])
+    ('vermillion', 'green')
+    """
+    for code, word in COLOUR_WORDS.items():
+        if code.lower() == str(color).lower():
+            return word
+    raise KeyError(f"{color!r} is not a colour of the book's palette")
+
+
 #: One colour, line style and marker per case for the whole book: a case keeps its look in every
 #: chapter. The paper's three dampings (light, nominal, heavy) and its reference run come first;
 #: the passive plant of Part II is the nominal damping, so it is drawn as the nominal case; a closed

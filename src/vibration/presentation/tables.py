@@ -43,10 +43,11 @@ from pathlib import Path
 
 import numpy as np
 
+from .numbers import Approx, minus, plain_width, sig
+from .numbers import bound as _bound
+
 TABLES_ENV = "VIBRATION_TABLES_DIR"
 DASH = "—"
-#: Text width reserved for an ≈ cell in the plain-text table ("≈-1.234e-10").
-APPROX_WIDTH = 11
 _MARKS = "abcdefghijklmnopqrstuvwxyz"
 
 
@@ -55,30 +56,6 @@ class Missing:
     """A quantity that does not exist in this case, and why (shown as a footnote)."""
 
     reason: str
-
-
-@dataclass(frozen=True)
-class Approx:
-    """A number whose printed digits depend on the machine: shown as "≈value", not compared by nbval.
-
-    Adaptive step controllers at loose tolerances amplify last-bit differences of floating-point
-    rounding (CPU, vector maths library, BLAS build) into different step sequences, so their step
-    counts and errors differ between machines in the second or third digit. Such a cell prints as
-    ``≈2829``; the nbval sanitizer (``tests/nbval_sanitize.cfg``) masks it, and a test compares it
-    with the reference within a stated relative tolerance instead.
-
-    >>> fmt(Approx(2829)), fmt(Approx(0.0338123), 3)
-    ('≈2829', '≈0.0338')
-    """
-
-    value: float
-
-
-#: The footnote that explains a table's ≈ cells.
-APPROX_NOTE = (
-    "≈: these digits depend on the machine's floating-point rounding (the text says why), so they differ "
-    "between computers and are not part of the regression comparison."
-)
 
 
 @dataclass(frozen=True)
@@ -92,50 +69,42 @@ class Column:
 
 
 def fmt(value, digits: int = 4, zeros: bool = False) -> str:
-    """Fixed-precision text of a cell: floats to ``digits`` significant figures.
+    """Text of a cell: floats in the book's number format (:func:`vibration.presentation.numbers.sig`).
+
+    An :class:`Approx` cell reads like any other number (its tolerance goes to the plain-text form only).
 
     Examples
     --------
     >>> fmt(2.23703819), fmt(0.000123456), fmt(True), fmt(None), fmt(float("nan")), fmt("overdamped")
     ('2.237', '0.0001235', 'yes', '—', '—', 'overdamped')
-    >>> fmt(1.273e5, 4), fmt(-2.5e-9, 2), fmt(1e-12), fmt(31540.0, 3)
-    ('1.273×10⁵', '−2.5×10⁻⁹', '10⁻¹²', '3.15×10⁴')
-    >>> fmt(-0.1), fmt(-1e-9)
-    ('−0.1', '−10⁻⁹')
+    >>> fmt(1.273e5, 4), fmt(-2.5e-9, 2), fmt(1e-12), fmt(31540.0, 3), fmt(Approx(2829.0, rtol=0.25))
+    ('1.273×10⁵', '−2.5×10⁻⁹', '10⁻¹²', '3.15×10⁴', '2829')
+    >>> fmt(-0.1), fmt(-1e-9), fmt(-3)
+    ('−0.1', '−10⁻⁹', '−3')
     >>> fmt(0.1, 3, zeros=True), fmt(15.0, 3, zeros=True), fmt(2.0e-5, 2, zeros=True), fmt(1234.0, 3, zeros=True)
     ('0.100', '15.0', '2.0×10⁻⁵', '1.23×10³')
     """
     if value is None or isinstance(value, Missing):
         return DASH
     if isinstance(value, Approx):
-        return "≈" + fmt(value.value, digits, zeros)
+        return fmt(value.value, digits, zeros)
     if isinstance(value, bool | np.bool_):
         return "yes" if value else "no"
     if isinstance(value, int | np.integer):
-        return str(int(value))
+        return minus(str(int(value)))
     if isinstance(value, float | np.floating):
-        v = float(value)
-        if math.isnan(v):
-            return DASH
-        if math.isinf(v):
-            return "∞" if v > 0 else "−∞"
-        text = f"{v:#.{digits}g}" if zeros else f"{v:.{digits}g}"
-        if zeros:
-            text = text.rstrip(".") if "e" not in text else text.replace(".e", "e")
-        if "e" in text:  # the book's number format: a power of ten, never e-notation
-            mant, exp = text.split("e")
-            power = "10" + str(int(exp)).translate(_SUPERSCRIPT)
-            text = power if mant == "1" else f"-{power}" if mant == "-1" else f"{mant}×{power}"
-        return text.replace("-", "−", 1) if text.startswith("-") else text  # a true minus sign
+        return sig(float(value), digits, zeros=zeros)
     return str(value)
-
-
-_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 #: A subscript in a header or caption: word characters (and ∞), so "|x − x_exact| (m)", "M(ω_ref)",
 #: "t_s, 2 %" and "ω_1," end it at the bar, bracket or comma.
 _SUB = re.compile(r"_([\w∞]+)")
+
+
+#: A MyST cross-reference in a caption (``{numref}`tab-x```), or a subscript.
+_ROLE_OR_SUB = re.compile(r"(?P<role>\{(?:numref|ref|eq)\}`[^`]+`)|_(?P<sub>[\w∞]+)")
+_ROLE = re.compile(r"\{(?:numref|ref|eq)\}`([^`]+)`")
 
 
 def _sub_html(text: str) -> str:
@@ -145,8 +114,17 @@ def _sub_html(text: str) -> str:
     --------
     >>> _sub_html("max |x − x_exact| (m)")
     'max |x − x<sub>exact</sub>| (m)'
+    >>> _sub_html("split in {numref}`tab-energy`")
+    "split in <a href='#tab-energy'>the table</a>"
     """
-    return _SUB.sub(lambda m: f"<sub>{m.group(1)}</sub>", html.escape(text))
+    parts, last = [], 0
+    for m in _ROLE.finditer(text):  # a cross-reference: a link to the table or figure it names
+        parts.append(_SUB.sub(lambda s: f"<sub>{s.group(1)}</sub>", html.escape(text[last : m.start()])))
+        word = "the figure" if m.group(1).startswith("fig") else "the table"
+        parts.append(f"<a href='#{html.escape(m.group(1))}'>{word}</a>")
+        last = m.end()
+    parts.append(_SUB.sub(lambda s: f"<sub>{s.group(1)}</sub>", html.escape(text[last:])))
+    return "".join(parts)
 
 
 def _sub_myst(text: str) -> str:
@@ -160,11 +138,18 @@ def _sub_myst(text: str) -> str:
     ('M(ω{sub}`ref`)', 't{sub}`s`, 2 % (s)', 'J{sub}`∞` (s)')
     >>> _sub_myst("Bands ω_1, ω_2 (rad/s).")
     'Bands ω{sub}`1`, ω{sub}`2` (rad/s).'
+    >>> _sub_myst("Split in {numref}`tab-a_b` (x_ss).")
+    'Split in {numref}`tab-a_b` (x{sub}`ss`).'
     """
     out, last = [], 0
-    for m in _SUB.finditer(text):
+    for m in _ROLE_OR_SUB.finditer(text):
+        if m.group("role"):  # a cross-reference stays a MyST role, so the book numbers it
+            out.append(_escape_md(text[last : m.start()]))
+            out.append(m.group(0))
+            last = m.end()
+            continue
         out.append(_escape_md(text[last : m.start()]))
-        out.append("{sub}`" + m.group(1) + "`")
+        out.append("{sub}`" + m.group("sub") + "`")
         last = m.end()
     out.append(_escape_md(text[last:]))
     return "".join(out)
@@ -203,39 +188,58 @@ class Table:
         self._marks = reasons
 
     # -- cells ---------------------------------------------------------------
-    def cells(self) -> list[list[str]]:
-        """Text of every cell (footnote marks appended to missing values)."""
+    def cells(self, *, plain: bool = False) -> list[list[str]]:
+        """Text of every cell, as the reader sees it (``plain=False``) or as nbval compares it.
+
+        The reader's form writes :class:`Approx` cells like any other number and leaves the footnote
+        marks of missing values to the renderer (:meth:`_mark`); the plain form appends the mark
+        (``—a``) and writes an Approx cell with its declared tolerance (``⟪2829 r0.25⟫``).
+        """
         out = []
         for row in self.rows:
             line = []
             for c in self.columns:
                 v = row[c.key]
-                text = fmt(v, c.digits, c.zeros)
-                if isinstance(v, Missing):
+                if plain and isinstance(v, Approx):
+                    text = v.plain()
+                else:
+                    text = fmt(v, c.digits, c.zeros)
+                if plain and isinstance(v, Missing):
                     text += self._marks[v.reason]
                 line.append(text)
             out.append(line)
         return out
 
+    def _mark(self, row: int, col: int) -> str:
+        """The footnote mark of a missing cell (``""`` for every other cell)."""
+        v = self.rows[row][self.columns[col].key]
+        return self._marks[v.reason] if isinstance(v, Missing) else ""
+
+    def _reader(self, row: int, col: int, text: str) -> str:
+        """A cell's text for the reader; an :class:`Approx` cell wrapped in its invisible tolerance span."""
+        v = self.rows[row][self.columns[col].key]
+        return v.html(text) if isinstance(v, Approx) else text
+
     def footnotes(self) -> list[str]:
-        """The Missing reasons (``a: ...``), the note on ≈ cells if any, then the notes."""
-        approx = any(isinstance(row[c.key], Approx) for row in self.rows for c in self.columns)
-        return (
-            [f"{mark}: {reason}" for reason, mark in self._marks.items()]
-            + ([APPROX_NOTE] if approx else [])
-            + list(self.notes)
-        )
+        """The Missing reasons (``a: ...``), then the notes."""
+        return [f"{mark}: {reason}" for reason, mark in self._marks.items()] + list(self.notes)
+
+    def _notes_html(self) -> list[str]:
+        """The footnotes for the reader: each mark as a superscript before its reason."""
+        return [f"<sup>{m}</sup> {html.escape(r)}" for r, m in self._marks.items()] + [
+            html.escape(n) for n in self.notes
+        ]
 
     # -- representations -----------------------------------------------------
     def __repr__(self) -> str:
         heads = [c.header for c in self.columns]
-        cells = self.cells()
-        # An ≈ cell counts with a fixed width, so that its machine-dependent digits cannot move the layout.
+        cells = self.cells(plain=True)
+        # An Approx cell counts with a fixed width, so that its machine-dependent digits cannot move the layout.
         widths = [
             max(
                 len(h),
                 *(
-                    APPROX_WIDTH if isinstance(row[c.key], Approx) else len(r[i])
+                    plain_width(row[c.key]) if isinstance(row[c.key], Approx) else len(r[i])
                     for row, r in zip(self.rows, cells, strict=True)
                 ),
             )
@@ -250,8 +254,16 @@ class Table:
 
     def _repr_html_(self) -> str:
         head = "".join(f"<th>{_sub_html(c.header)}</th>" for c in self.columns)
-        body = "".join("<tr>" + "".join(f"<td>{html.escape(v)}</td>" for v in r) + "</tr>" for r in self.cells())
-        notes = "".join(f"<p class='vib-table-note'>{html.escape(n)}</p>" for n in self.footnotes())
+        body = "".join(
+            "<tr>"
+            + "".join(
+                f"<td>{self._reader(i, j, html.escape(v))}{f'<sup>{m}</sup>' if (m := self._mark(i, j)) else ''}</td>"
+                for j, v in enumerate(r)
+            )
+            + "</tr>"
+            for i, r in enumerate(self.cells())
+        )
+        notes = "".join(f"<p class='vib-table-note'>{n}</p>" for n in self._notes_html())
         return (
             f"<div class='vib-table' id='{html.escape(self.name)}'><table>"
             f"<caption>{_sub_html(self.caption)}</caption>"
@@ -267,12 +279,19 @@ class Table:
         lines.append(":class: vib-table")
         lines.append("")
         lines.append("* - " + "\n  - ".join(_sub_myst(c.header) for c in self.columns))
-        for r in self.cells():
-            lines.append("* - " + "\n  - ".join(_escape_md(v) for v in r))
+        for i, r in enumerate(self.cells()):
+            lines.append(
+                "* - "
+                + "\n  - ".join(
+                    self._reader(i, j, _escape_md(v)) + (f"{{sup}}`{m}`" if (m := self._mark(i, j)) else "")
+                    for j, v in enumerate(r)
+                )
+            )
         lines.append(fence)
-        if self.footnotes():
+        notes = self._notes_html()
+        if notes:
             lines.append("")
-            lines.append("<div class='vib-table-notes'>" + "<br>".join(map(html.escape, self.footnotes())) + "</div>")
+            lines.append("<div class='vib-table-notes'>" + "<br>".join(notes) + "</div>")
         return "\n".join(lines)
 
     def _repr_mimebundle_(self, include=None, exclude=None):
@@ -296,19 +315,17 @@ class Table:
 
 
 def bound(value: float, tol: float) -> str | Missing:
-    """A check against its stated tolerance: ``"< tol"`` when it holds, else the value and the tolerance.
-
-    The printed tolerance, not the value's order of magnitude, is what reproduces on every machine:
-    a rounding-level difference of 3e-15 on one CPU may be 1.2e-14 on another.
+    """A check against its stated tolerance (:func:`vibration.presentation.numbers.bound`) as a table cell.
 
     >>> bound(3e-15, 1e-12), bound(2.5e-9, 1e-12), bound(float("nan"), 1e-12)
     ('< 10⁻¹²', '2.5×10⁻⁹ (above 10⁻¹²)', Missing(reason='not computed for this case'))
+    >>> bound(float("inf"), 1e-12)
+    Missing(reason='infinite')
     """
-    if not math.isfinite(value):
-        return Missing("not computed for this case") if math.isnan(value) else Missing("infinite")
-    if abs(value) < tol:
-        return f"< {fmt(tol)}"
-    return f"{fmt(abs(value), 2)} (above {fmt(tol)})"
+    if math.isinf(value):
+        return Missing("infinite")
+    text = _bound(value, tol)
+    return Missing("not computed for this case") if text is None else text
 
 
 def _csv_cell(value) -> str:

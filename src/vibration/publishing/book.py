@@ -261,12 +261,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
         cells.insert(at, nbformat.v4.new_markdown_cell(banner))
     if page.number == FRONT and page.parameters:
         cells.append(nbformat.v4.new_markdown_cell("## Parameters of this run\n\n" + parameters_table(page.parameters)))
-    if page.elapsed_s is not None:
-        cells.append(
-            nbformat.v4.new_markdown_cell(
-                f'<p class="vib-footer">This chapter was executed by papermill in {page.elapsed_s:.1f} s.</p>'
-            )
-        )
+    # The execution time stays in the runner's log and return value, not in the reader's text.
     nb.cells = cells
     return nb
 

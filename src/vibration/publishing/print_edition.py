@@ -25,12 +25,19 @@ _PRINT_CSS = """
     min-height: 200mm; text-align: center; }
   .vib-title-page h1.vib-book-title { font-size: 2.4em; margin-bottom: 0.6em; border: none; }
   .vib-title-page p { font-size: 1.1em; color: #333; max-width: 34em; margin: 0.4em auto; }
+  .vib-title-page p.vib-edition { font-size: 0.95em; margin-top: 2.5em; }
   .vib-contents { break-after: page; }
   .vib-contents h2 { font-size: 1.6em; margin-bottom: 0.8em; }
   .vib-contents ol { list-style: none; padding: 0; }
   .vib-contents li { display: flex; align-items: baseline; margin: 0.25em 0; }
   .vib-contents li.vib-part { font-weight: 600; margin-top: 0.8em; }
   .vib-contents li .vib-dots { flex: 1; border-bottom: 1px dotted #888; margin: 0 0.4em; }
+  .vib-list { break-before: page; font-size: 0.9em; }
+  .vib-list li { display: block; margin: 0.15em 0; }
+  .vib-list a { color: inherit; text-decoration: none; }
+  h1, h2, h3, h4 { break-after: avoid-page; }
+  figure, .cell_output:has(img) { break-inside: avoid-page; }
+  figcaption, table > caption { break-before: avoid-page; }
   input, select, button, .vib-reset, .vro-reset, .jupyter-widgets, .widget-output { display: none !important; }
   .vib-print-note { display: block !important; font-size: 0.85em; color: #555; font-style: italic; }
   .vib-page-mark { display: block !important; color: #fff; font-size: 1px; line-height: 1px; height: 1px; }
@@ -40,7 +47,7 @@ _PRINT_CSS = """
 """
 
 _SETUP_JS = """
-([css, title, subtitle, note, parts]) => {
+([css, title, subtitle, note, parts, edition]) => {
   const style = document.createElement('style'); style.textContent = css; document.head.appendChild(style);
   // the front page's title, then each document's first heading (Sphinx's single page demotes them)
   const first = document.querySelector('article h1') || document.querySelector('h1');
@@ -48,7 +55,8 @@ _SETUP_JS = """
     .map(s => s.querySelector('h1, h2, h3'));
   const heads = [first, ...docs].filter(h => h);
   const front = document.createElement('div');
-  front.innerHTML = `<div class="vib-title-page"><h1 class="vib-book-title">${title}</h1><p>${subtitle}</p></div>
+  front.innerHTML = `<div class="vib-title-page"><h1 class="vib-book-title">${title}</h1><p>${subtitle}</p>
+    <p class="vib-edition">${edition}</p></div>
     <nav class="vib-contents"><h2>Contents</h2><ol></ol></nav>`;
   const list = front.querySelector('ol');
   heads.forEach((h, i) => {
@@ -68,12 +76,48 @@ _SETUP_JS = """
     mark.className = 'vib-page-mark'; mark.setAttribute('aria-hidden', 'true');
     mark.textContent = `vibdoc${i}mark`; h.parentNode.insertBefore(mark, h);
   });
+  // each document's sections (its heading's next level), marked like the documents, for the PDF's bookmarks
+  const clean = h => h.textContent.replace(/[#¶]\\s*$/, '').trim();
+  const sections = [];
+  [...document.querySelectorAll('span[id^="document-"] + section')].forEach(doc => {
+    const d = heads.indexOf(doc.querySelector('h1, h2, h3'));
+    if (d < 0) return;
+    doc.querySelectorAll(':scope > section > h1, :scope > section > h2, :scope > section > h3, :scope > section > h4')
+      .forEach(h => {
+        const mark = document.createElement('span');
+        mark.className = 'vib-page-mark'; mark.setAttribute('aria-hidden', 'true');
+        mark.textContent = `vibsec${sections.length}mark`; h.parentNode.insertBefore(mark, h);
+        sections.push([d, clean(h)]);
+      });
+  });
+  // lists of figures and tables after the contents: number and caption's first sentence, linked
+  const lists = document.createElement('div');
+  [['List of figures', 'figure', 'figcaption'], ['List of tables', 'table', 'caption']].forEach(([name, sel, cap]) => {
+    const items = [...document.querySelectorAll(`article ${sel}`)].map(el => {
+      const c = el.querySelector(cap); if (!c) return null;
+      const num = c.querySelector('.caption-number'); if (!num) return null;
+      const rest = c.textContent.replace(num.textContent, '').replace(/[#¶]\\s*$/, '').trim();
+      const first = rest.split(/(?<=[.:])\\s/)[0];
+      const id = el.id || (el.closest('[id]') || {}).id || '';
+      return [num.textContent.trim(), first, id];
+    }).filter(x => x);
+    if (!items.length) return;
+    const nav = document.createElement('nav'); nav.className = 'vib-contents vib-list';
+    nav.innerHTML = `<h2>${name}</h2><ol></ol>`;
+    items.forEach(([n, text, id]) => {
+      const li = document.createElement('li'); const a = document.createElement('a');
+      a.textContent = `${n} ${text}`; if (id) a.href = `#${id}`;
+      li.appendChild(a); nav.querySelector('ol').appendChild(li);
+    });
+    lists.appendChild(nav);
+  });
+  front.appendChild(lists);
   document.querySelectorAll('.vib-panel, .vro-panel, [class$="-panel"]').forEach(p => {
     if (p.querySelector('input, select, button')) {
       const n = document.createElement('p'); n.className = 'vib-print-note'; n.textContent = note; p.appendChild(n);
     }
   });
-  return heads.map((h, i) => i === 0 ? 'Overview and findings' : h.textContent.replace(/[#¶]\\s*$/, '').trim());
+  return {titles: heads.map((h, i) => i === 0 ? 'Overview and findings' : clean(h)), sections};
 }
 """
 
@@ -81,7 +125,43 @@ _FILL_JS = """
 (pages) => { document.querySelectorAll('.vib-contents .vib-page').forEach((s, i) => { s.textContent = pages[i]; }); }
 """
 
+_CLEAR_JS = """
+() => { document.querySelectorAll('.vib-page-mark').forEach(m => { m.textContent = '\\u00a0'; }); }
+"""
+
+
+def _marks_left(pdf: Path) -> bool:
+    """Whether any page of ``pdf`` still carries a page mark in its text."""
+    from pypdf import PdfReader
+
+    return any(re.search(r"vib(doc|sec)\d", p.extract_text() or "") for p in PdfReader(str(pdf)).pages)
+
+
 NOTE = "In print: the panel at its starting values. The online book's sliders move it."
+
+
+def commit_date(root: Path | None = None) -> str | None:
+    """The date (YYYY-MM-DD) of the commit the book is built from, or ``None`` outside a git checkout."""
+    import subprocess
+
+    root = root or Path(__file__).resolve().parents[3]
+    try:
+        out = subprocess.run(
+            ["git", "-C", str(root), "log", "-1", "--format=%cs"], capture_output=True, text=True, timeout=20
+        )
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    date = out.stdout.strip()
+    return date if out.returncode == 0 and re.fullmatch(r"\d{4}-\d{2}-\d{2}", date) else None
+
+
+def edition_text(root: Path | None = None) -> str:
+    """The title page's edition line: the package version and the date of the commit it was built from."""
+    from .. import __version__
+
+    date = commit_date(root)
+    built = f"built from the commit of {date}" if date else "built outside a version-controlled copy"
+    return f"Edition {__version__}, {built}"
 
 
 @dataclass(frozen=True)
@@ -93,17 +173,19 @@ class Edition:
     page_count: int
 
 
-def chapter_pages(pdf: Path, count: int) -> list[int]:
-    """1-based page on which each of ``count`` documents opens, from the invisible marks the print carries."""
+def chapter_pages(pdf: Path, count: int, kind: str = "doc") -> list[int]:
+    """1-based page on which each of ``count`` documents (``kind="doc"``) or sections (``"sec"``) opens,
+    from the invisible marks the print carries."""
     from pypdf import PdfReader
 
     found: dict[int, int] = {}
     for number, page in enumerate(PdfReader(str(pdf)).pages, start=1):
-        for m in re.finditer(r"vibdoc(\d+)mark", (page.extract_text() or "").replace(" ", "")):
+        for m in re.finditer(rf"vib{kind}(\d+)mark", (page.extract_text() or "").replace(" ", "")):
             found.setdefault(int(m.group(1)), number)
     missing = [i for i in range(count) if i not in found]
     if missing:
-        raise RuntimeError(f"the print edition lost the start of documents {missing}: no page carries their mark")
+        what = "documents" if kind == "doc" else "sections"
+        raise RuntimeError(f"the print edition lost the start of {what} {missing}: no page carries their mark")
     return [found[i] for i in range(count)]
 
 
@@ -114,21 +196,38 @@ def print_book(page, pdf_path: Path, title: str, parts: list[tuple[str, int]], p
     """
     from pypdf import PdfReader
 
-    titles = page.evaluate(_SETUP_JS, [_PRINT_CSS, html.escape(title), html.escape(SUBTITLE), NOTE, parts])
+    setup = [_PRINT_CSS, html.escape(title), html.escape(SUBTITLE), NOTE, parts, html.escape(edition_text())]
+    found = page.evaluate(_SETUP_JS, setup)
+    titles, sections = found["titles"], [(int(d), str(t)) for d, t in found["sections"]]
     options = {**pdf_options, "path": str(pdf_path), "tagged": True}
     page.pdf(**options)
     pages = chapter_pages(pdf_path, len(titles))
+    section_pages = chapter_pages(pdf_path, len(sections), "sec")
     page.evaluate(_FILL_JS, [str(p) for p in pages])
     page.pdf(**options)
     check = chapter_pages(pdf_path, len(titles))
     if check != pages:
         raise RuntimeError(f"the print edition's pages moved between passes: {pages} then {check}")
-    add_bookmarks(pdf_path, titles, pages, parts)
+    count = len(PdfReader(str(pdf_path)).pages)
+    # The last pass empties the marks, so they leave the PDF's text layer; their boxes keep their height.
+    page.evaluate(_CLEAR_JS)
+    page.pdf(**options)
+    if len(PdfReader(str(pdf_path)).pages) != count or _marks_left(pdf_path):
+        raise RuntimeError("the print edition changed when its page marks were cleared")
+    marked = [(d, t, p) for (d, t), p in zip(sections, section_pages, strict=True)]
+    add_bookmarks(pdf_path, titles, pages, parts, marked)
     return Edition(tuple(titles), tuple(pages), len(PdfReader(str(pdf_path)).pages))
 
 
-def add_bookmarks(pdf: Path, titles: list[str], pages: list[int], parts: list[tuple[str, int]]) -> None:
-    """PDF bookmarks: the title page, the contents, each part with its chapters, the appendices."""
+def add_bookmarks(
+    pdf: Path,
+    titles: list[str],
+    pages: list[int],
+    parts: list[tuple[str, int]],
+    sections: list[tuple[int, str, int]] = (),
+) -> None:
+    """PDF bookmarks: the title page, the contents, each part with its chapters and their sections
+    (``sections``: document index, title, 1-based page), the appendices."""
     import logging
 
     from pypdf import PdfReader, PdfWriter
@@ -144,7 +243,10 @@ def add_bookmarks(pdf: Path, titles: list[str], pages: list[int], parts: list[tu
             parent = writer.add_outline_item(title=starts[i], page_number=page - 1)
         elif parent is not None and i > max(starts, default=0) and not _is_chapter(title):
             parent = None  # the appendices after the last part stand on their own
-        writer.add_outline_item(title=title, page_number=page - 1, parent=parent)
+        item = writer.add_outline_item(title=title, page_number=page - 1, parent=parent)
+        for d, sec_title, sec_page in sections:
+            if d == i:
+                writer.add_outline_item(title=sec_title, page_number=sec_page - 1, parent=item)
     writer.page_mode = "/UseOutlines"
     with open(pdf, "wb") as fh:
         writer.write(fh)

@@ -69,4 +69,55 @@ def setup(app):
         "mathml", inline_renderers=(_visit_math, None), block_renderers=(_visit_displaymath, None)
     )
     app.connect("env-get-updated", _prefix_numbers, priority=900)
+    app.connect("build-finished", _accessible_pages)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}
+
+
+#: Fixes of the theme's markup, applied to every written page (each one an axe-core finding):
+#: one search control instead of an icon beside the field; accessible names that contain the visible
+#: text (a button reading "Search Ctrl+K" named "Search", a toggle reading "Show code cell source" named
+#: "Toggle hidden content"); the primary sidebar (the book's title link) inside a landmark.
+PAGE_FIXES = (
+    (
+        re.compile(
+            r'<button class="btn btn-sm pst-navbar-icon search-button search-button__button pst-js-only"[^>]*>'
+            r'\s*<i class="fa-solid fa-magnifying-glass fa-lg"></i>\s*</button>'
+        ),
+        "",
+    ),
+    (
+        re.compile(
+            r'(<button class="btn search-button-field search-button__button pst-js-only" title="Search")'
+            r' aria-label="Search"'
+        ),
+        r"\1",
+    ),
+    (re.compile(r'(<summary[^>]*?) aria-label="Toggle hidden content"'), r"\1"),
+    (
+        re.compile(r'<div id="pst-primary-sidebar" class="bd-sidebar-primary bd-sidebar">'),
+        '<div id="pst-primary-sidebar" class="bd-sidebar-primary bd-sidebar" role="complementary" aria-label="Book">',
+    ),
+)
+
+
+def fix_page(text: str) -> str:
+    """One written page with :data:`PAGE_FIXES` applied.
+
+    >>> fix_page('<summary aria-label="Toggle hidden content">')
+    '<summary>'
+    """
+    for pattern, replace in PAGE_FIXES:
+        text = pattern.sub(replace, text)
+    return text
+
+
+def _accessible_pages(app, exception) -> None:
+    if exception is not None or app.builder.format != "html":
+        return
+    from pathlib import Path
+
+    for page in Path(app.outdir).rglob("*.html"):
+        text = page.read_text(encoding="utf-8")
+        fixed = fix_page(text)
+        if fixed != text:
+            page.write_text(fixed, encoding="utf-8")

@@ -319,6 +319,8 @@ def transmissibility_figure(study: ControlStudy) -> Captioned:
         ax.set_xlabel(r"$\omega/\omega_n$")
     for ax in axes[:, 0]:
         ax.set_ylabel(r"max$|x|/Y$")
+    # the semi-active curves are drawn in the other panels: their style gets an entry in the one legend
+    axes[0, 0].plot([], [], lw=1.5, label="semi-active law (its panel)", **case_style("semi-active"))
     place_legend(axes[0, 0], fontsize=7.5)
     lines = _lines(axes[0, 0])
     word = dict(zip(range(4), panel_words(fig), strict=True))

@@ -1,9 +1,7 @@
 """How the chapter writes its numbers and names its cases, in prose, tables and figures.
 
-* :func:`num`: a number for a sentence or caption, ``digits`` significant figures, powers of ten as
-  ×10ⁿ (never e-notation), a typeset minus sign.
-* :func:`cell`: a number for a table column, always ``digits`` significant figures (trailing zeros
-  kept), so one column never mixes 16 with 17.42.
+* :func:`num`, :func:`cell`, :func:`pct`: the book's number format
+  (:mod:`vibration.presentation.numbers`) at this chapter's three significant figures.
 * :data:`LABELS`: the designs' names in tables and sentences (plain text, no code names).
 
 Examples
@@ -16,9 +14,26 @@ Examples
 
 from __future__ import annotations
 
-import math
+from vibration.presentation.numbers import column, sig, signed_percent
+from vibration.presentation.numbers import percent as pct
 
-_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+__all__ = ["LABELS", "cell", "num", "pct", "signed_pct"]
+
+
+def num(value: float, digits: int = 3) -> str:
+    """A number for prose, three significant figures unless told (:func:`vibration.presentation.numbers.sig`)."""
+    return sig(value, digits)
+
+
+def cell(value: float, digits: int = 3) -> str:
+    """A table cell, three significant figures unless told (:func:`vibration.presentation.numbers.column`)."""
+    return column(value, digits)
+
+
+def signed_pct(fraction: float) -> str:
+    """A relative error with its sign, whole percent: ``0.1`` -> ``+10 %``."""
+    return signed_percent(fraction, 0)
+
 
 #: The designs and runs as a reader reads them (tables, sentences).
 LABELS = {
@@ -38,50 +53,3 @@ LABELS = {
     "clamping": "limited, clamping",
     "back-calculation": "limited, back-calculation",
 }
-
-
-def _power(text: str) -> str:
-    """``1.2e-05`` as ``1.2×10⁻⁵`` (``1e-12`` as ``10⁻¹²``); ``-`` as the typeset minus sign."""
-    if "e" in text:
-        mant, exp = text.split("e")
-        power = f"10{str(int(exp)).translate(_SUPERSCRIPT)}"
-        text = power if mant in ("1", "-1") else f"{mant}×{power}"
-        text = f"-{text}" if mant == "-1" else text
-    return text.replace("-", "−", 1) if text.startswith("-") else text
-
-
-def num(value: float, digits: int = 3) -> str:
-    """A number for prose: ``digits`` significant figures, trailing zeros dropped; ∞ and — where not finite."""
-    v = float(value)
-    if math.isnan(v):
-        return "—"
-    if math.isinf(v):
-        return "∞" if v > 0 else "−∞"
-    return _power(f"{v:.{digits}g}")
-
-
-def cell(value: float, digits: int = 3) -> str:
-    """A number for a table column: exactly ``digits`` significant figures (an exact zero reads 0)."""
-    v = float(value)
-    if math.isnan(v):
-        return "—"
-    if math.isinf(v):
-        return "∞" if v > 0 else "−∞"
-    if v == 0.0:
-        return "0"
-    text = f"{v:#.{digits}g}"
-    if "e" in text:
-        mant, exp = text.split("e")
-        text = f"{mant.rstrip('.')}e{exp}"
-    return _power(text.rstrip(".") if "e" not in text else text)
-
-
-def pct(fraction: float, digits: int = 3) -> str:
-    """A fraction as a percentage for prose: ``0.1434`` -> ``14.3 %``."""
-    return f"{num(100.0 * fraction, digits)} %"
-
-
-def signed_pct(fraction: float) -> str:
-    """A relative error with its sign, whole percent: ``0.1`` -> ``+10 %``."""
-    text = f"{100.0 * fraction:+.0f} %"
-    return text.replace("-", "−")

@@ -137,7 +137,8 @@ def key_findings(study: ControlStudy) -> list[str]:
         f"({_margin(a.designs[order[0]].costs.delay_margin)}), the **{LABELS[order[-1]]}** the longest "
         f"({_margin(a.designs[order[-1]].costs.delay_margin)}).",
         f"A PID move to $x_\\mathrm{{ref}}$ = {num(a.x_ref)} m with a ±{num(a.u_max)} N actuator: {move}.",
-        f"A clipped-skyhook damper, which needs no power source, transmits {num(t['clipped'])} of the base motion at "
+        "A clipped-skyhook damper, which needs power only to set its valve, never to drive the mass, transmits "
+        f"{num(t['clipped'])} of the base motion at "
         f"$\\omega_n$: {iso}.",
         f"With the model's $\\omega_n$ {signed_pct(sh.freq_error)} off, a ZVD-shaped move keeps "
         f"{pct(sh.residual['ZVD'])} of the unshaped ringing (ZV: {pct(sh.residual['ZV'])}) and arrives "
@@ -320,7 +321,9 @@ def flutter_sentence(study: ControlStudy) -> str:
     return (
         f"With c = {num(c)} N s/m {state}; velocity feedback adds $K_v$ to the damping, so the smallest stabilising "
         f"gain is exactly $K_v^*$ = {num(a.kd_star)} N s/m (an open bound: at $K_v^*$ the poles sit on the imaginary "
-        f"axis at ±{num(a.flutter.natural_frequency, 4)} rad/s)."
+        f"axis at ±{num(a.flutter.natural_frequency, 4)} rad/s). This chapter's flutter plant has its own damping, "
+        "$c_f$, set apart from chapter 6's $c_u$, so that the loop has a growth to remove that is clearly visible "
+        "within the window; the two chapters' values therefore need not agree."
     )
 
 
@@ -412,10 +415,10 @@ def passivity_sentence(study: ControlStudy) -> str:
         head = f"The on-off and clipped runs deliver at most {num(s.worst_power)} W at some instant."
     return head + (
         " A device that can only dissipate cannot add energy to the suspension, so no semi-active law, however badly "
-        "tuned or fed by a faulty sensor, can destabilise it: the worst it can do is damp badly. The MR damper has no "
-        f"power source either (its coil only changes how hard it resists; {num(s.metrics['mr'].energy)} J exchanged "
-        "over the window). The ideal skyhook needs an actuator, which supplies energy, so its loop can be "
-        "destabilised like any active loop."
+        "tuned or fed by a faulty sensor, can destabilise it: the worst it can do is damp badly. The MR damper "
+        "supplies no power to the suspension either (its coil only changes how hard it resists; "
+        f"{num(s.metrics['mr'].energy)} J exchanged over the window). The ideal skyhook needs an actuator, which "
+        "supplies energy, so its loop can be destabilised like any active loop."
     )
 
 
@@ -501,8 +504,8 @@ def summary(study: ControlStudy) -> str:
     if f.t_res["clipped"] < 1.0:
         lines.append(
             "**Semi-active damping is the safe middle ground.** A clipped-skyhook damper does near resonance what no "
-            "passive damper can, needs only power for its valve, and, being unable to supply energy, can never "
-            "destabilise the suspension."
+            "passive damper can, needs power only to set its valve, never to drive the mass, and, being unable to "
+            "supply energy, can never destabilise the suspension."
         )
     else:
         lines.append(

@@ -15,7 +15,8 @@ from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
 from vibration.chapters.digital_twin.study import MIN_ALARMS, DigitalTwinStudy
 from vibration.presentation.captions import Captioned, panel_words
-from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
+from vibration.presentation.numbers import sig
+from vibration.presentation.style import OKABE_ITO, case_style, colour_word, figure, place_legend
 
 #: The faults of the detection experiments: colour (and its caption word) and marker.
 FAULT_STYLE = {
@@ -173,9 +174,10 @@ def tracking_figure(st: DigitalTwinStudy) -> Captioned:
     top, bottom = panel_words(fig)
     sc = st.scenario
     alarm = (
-        f"; the red line marks the alarm at t = {det.alarm_time:.4g} s" if det.alarm_time is not None else
-        "; no alarm is raised"
-    )  # fmt: skip
+        f"; the {colour_word(red)} line marks the alarm at t = {sig(det.alarm_time, 4)} s"
+        if det.alarm_time is not None
+        else "; no alarm is raised"
+    )
     caption = (
         f"{_cap(top)}: the Kalman filter's stiffness estimate (blue) with two standard deviations (shaded) and the "
         f"true stiffness (black dashed): healthy to {sc.decline_start:g} s, then a slow decline and a drop at "

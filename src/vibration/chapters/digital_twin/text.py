@@ -12,31 +12,20 @@ import numpy as np
 from scipy.stats import chi2
 
 from vibration.chapters.digital_twin.study import HALFWIDTH_TARGET, MIN_ALARMS, DigitalTwinStudy
-from vibration.chapters.digital_twin.tables import flag_halfwidth, pm
+from vibration.chapters.digital_twin.tables import flag_halfwidth
 from vibration.physics.twin import cusum_variance_ratio
+from vibration.presentation.numbers import pm, sig
 
 NAMES = ("m", "c", "k")
-_SUPER = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
 def sci(value: float, digits: int = 2) -> str:
-    """A number for prose: plain when moderate, else ``1.2 × 10⁵`` (never e-notation).
+    """A number for prose, two significant figures unless told (:func:`vibration.presentation.numbers.sig`).
 
     >>> sci(123456.0), sci(0.5), sci(3.2e-7, 2), sci(512.3)
-    ('1.2 × 10⁵', '0.50', '3.2 × 10⁻⁷', '510')
+    ('1.2×10⁵', '0.5', '3.2×10⁻⁷', '5.1×10²')
     """
-    if value == 0 or not math.isfinite(value):
-        return f"{value:g}"
-    exp = int(math.floor(math.log10(abs(value))))
-    if -3 <= exp < 4:
-        decimals = digits - 1 - exp  # negative: round to tens, hundreds, ... (2 figures of 512 read 510)
-        return f"{round(value, decimals):.{max(decimals, 0)}f}"
-    mant = value / 10**exp
-    text = f"{mant:.{digits}g}"
-    if text.startswith("10"):
-        mant, exp = mant / 10, exp + 1
-        text = f"{mant:.{digits}g}"
-    return f"{text} × 10{str(exp).translate(_SUPER)}"
+    return sig(value, digits)
 
 
 def _signed(value: float, digits: int = 2) -> str:
@@ -65,7 +54,7 @@ def key_results(st: DigitalTwinStudy) -> str:
     const = next(c for c in st.kalman if c.truth == "constant")
     walk = next(c for c in st.kalman if c.truth == "random walk")
     j = st.threshold_index
-    delays = ", ".join(f"{float(ex.mean_delay[j]):.3g} s for the {label}" for label, ex in st.detection.items())
+    delays = ", ".join(f"{sig(float(ex.mean_delay[j]), 3)} s for the {label}" for label, ex in st.detection.items())
     rl = st.run_lengths
     i = int(np.argmin(np.abs(rl.thresholds - st.params.threshold)))
     arl_h = rl.theory[i] * rl.dt / 3600.0
@@ -75,16 +64,16 @@ def key_results(st: DigitalTwinStudy) -> str:
         else "the mean time to a false alarm is beyond the Markov chain's numerical reach"
     )
     lines = [
-        f"A {fit.n * fit.dt:.3g} s broadband test identifies the stiffness as k = {fit.k:.5g} ± "
-        f"{fit.stderr[2]:.2g} N/m (true {st.asset.k:g} N/m); over {cov.runs} noisy repeats its 95 % intervals "
-        f"cover the truth in {pm(cov.coverage[2], cov.coverage_uncertainty[2], 3)} of the runs.",
+        f"A {sig(fit.n * fit.dt, 3)} s broadband test identifies the stiffness as k = "
+        f"{pm(fit.k, fit.stderr[2])} N/m (true {sig(st.asset.k, 6)} N/m); over {cov.runs} noisy repeats its 95 % "
+        f"intervals cover the truth in {pm(cov.coverage[2], cov.coverage_uncertainty[2])} of the runs.",
         f"When the records break an assumption the coverage drops, down to "
         f"{float(np.min(a[worst_label].coverage)):.2f} "
         f"({worst_label}); the residual whiteness test flags at least {_pct(flagged, 0)} of those records.",
         f"The Kalman filter's stated σ of k is honest when k wanders as the filter assumes (actual/stated "
-        f"{pm(walk.ratio, walk.halfwidth)}) and {1 / const.ratio:.2g} times too cautious when k is constant.",
+        f"{pm(walk.ratio, walk.halfwidth)}) and {sig(1 / const.ratio, 2)} times too cautious when k is constant.",
         f"At the threshold h = {st.params.threshold:g} the CUSUM finds the faults after {delays}; {arl_text}, "
-        f"and {next(iter(st.detection.values())).monitored_hours * len(st.detection):.3g} h of healthy records "
+        f"and {sig(next(iter(st.detection.values())).monitored_hours * len(st.detection), 3)} h of healthy records "
         "agree with it.",
     ]
     return "\n".join(["> **Key results**", ">"] + [f"> * {s}" for s in lines])
@@ -103,10 +92,10 @@ def identification_sentence(st: DigitalTwinStudy) -> str:
         "all three 95 % intervals" if inside == 3 else f"{('none', 'one', 'two')[inside]} of the three 95 % intervals"
     )
     return (
-        f"From {fit.n} samples ({(fit.n - 1) * fit.dt:.4g} s at {1 / fit.dt:.4g} Hz) the least-squares fit gives "
-        f"m = {fit.m:.4g} ± {fit.stderr[0]:.2g} kg, c = {fit.c:.4g} ± {fit.stderr[1]:.2g} N s/m and "
-        f"k = {fit.k:.5g} ± {fit.stderr[2]:.2g} N/m (± one standard error). The estimates sit "
-        f"{np.abs(z).max():.2g} standard errors or less from the truth, and {which} contain it. The residual's "
+        f"From {fit.n} samples ({sig((fit.n - 1) * fit.dt, 4)} s at {sig(1 / fit.dt, 4)} Hz) the least-squares fit "
+        f"gives m = {pm(fit.m, fit.stderr[0])} kg, c = {pm(fit.c, fit.stderr[1])} N s/m and "
+        f"k = {pm(fit.k, fit.stderr[2])} N/m (± one standard error). The estimates sit "
+        f"{sig(np.abs(z).max(), 2)} standard errors or less from the truth, and {which} contain it. The residual's "
         f"standard deviation, {sci(fit.sigma, 3)} m, is the estimated sensor noise."
     )
 
@@ -120,15 +109,15 @@ def frf_sentence(st: DigitalTwinStudy) -> str:
     if not fd:
         return (
             "Neither frequency-domain estimate exists on this record (the resonance peak is not resolved), so the "
-            f"time-domain fit, {100 * ls:.2g} % off in k, stands alone."
+            f"time-domain fit, {sig(100 * ls, 2)} % off in k, stands alone."
         )
     best = min(fd, key=fd.get)
     verdict = "more" if fd[best] > ls else "less"
     return (
         "The frequency-domain estimates need a resolved resonance peak, so they read a record "
         f"{st.frf_record / (fit.n * fit.dt):.0f} times longer than the test. Even so the better of them, the "
-        f"{best} estimate, is {100 * fd[best]:.2g} % off in k, {verdict} than the time-domain fit's "
-        f"{100 * ls:.2g} % on the short record ({{numref}}`tab-twin-identified`)."
+        f"{best} estimate, is {sig(100 * fd[best], 2)} % off in k, {verdict} than the time-domain fit's "
+        f"{sig(100 * ls, 2)} % on the short record ({{numref}}`tab-twin-identified`)."
     )
 
 
@@ -171,7 +160,7 @@ def coverage_sentence(st: DigitalTwinStudy) -> str:
     )
     return (
         f"Over {main.runs} noisy realisations the 95 % intervals contained the true m, c and k in "
-        f"{pm(cov[0], hw[0], 3)}, {pm(cov[1], hw[1], 3)} and {pm(cov[2], hw[2], 3)} of the runs, {verdict}. The "
+        f"{pm(cov[0], hw[0])}, {pm(cov[1], hw[1])} and {pm(cov[2], hw[2])} of the runs, {verdict}. The "
         f"stiffness error grows as the noise level to the power {_signed(p_s)} ± {u_s:.2f} (least-squares theory: 1, "
         f"{_within(p_s, u_s, 1.0)}) and falls as the record length to the power {_signed(p_d)} ± {u_d:.2f} (theory "
         f"for a stationary random force: −0.5, {_within(p_d, u_d, -0.5)}); every point of both sweeps draws its "
@@ -248,9 +237,9 @@ def alarm_sentence(st: DigitalTwinStudy) -> str:
     loss = 100.0 * (1.0 - float(sc.k[i]) / float(sc.k[0]))
     when = "after" if det.alarm_time >= start else "before"
     return (
-        f"On this record the alarm comes at t = {det.alarm_time:.4g} s, {abs(det.alarm_time - start):.3g} s "
-        f"{when} the fault starts ({start:g} s), when the stiffness has lost {loss:.2g} %; the CUSUM's last "
-        f"restart puts the onset at {det.change_time:.4g} s."
+        f"On this record the alarm comes at t = {sig(det.alarm_time, 4)} s, {sig(abs(det.alarm_time - start), 3)} s "
+        f"{when} the fault starts ({start:g} s), when the stiffness has lost {sig(loss, 2)} %; the CUSUM's last "
+        f"restart puts the onset at {sig(det.change_time, 4)} s."
     )
 
 
@@ -262,16 +251,17 @@ def kalman_sentence(st: DigitalTwinStudy) -> str:
     cautious = const.ratio + const.halfwidth < 1.0
     first = (
         f"When the stiffness wanders as a random walk of the filter's own intensity, the actual rms error of k is "
-        f"{walk.actual:.3g} N/m against a stated {walk.stated:.3g} N/m: the ratio {pm(walk.ratio, walk.halfwidth)} "
+        f"{sig(walk.actual, 3)} N/m against a stated {sig(walk.stated, 3)} N/m: the ratio "
+        f"{pm(walk.ratio, walk.halfwidth)} "
         + ("is one within its uncertainty, so the filter's noise model (the calibrated sensor variance and the "
            "linearised step) is not mis-specified." if honest else
            "is not one within its uncertainty, so the filter's noise model is mis-specified.")
     )  # fmt: skip
     second = (
-        f"When the stiffness is constant the error is {const.actual:.3g} N/m against the same kind of statement, "
-        f"{const.stated:.3g} N/m (ratio {pm(const.ratio, const.halfwidth)})"
+        f"When the stiffness is constant the error is {sig(const.actual, 3)} N/m against the same kind of statement, "
+        f"{sig(const.stated, 3)} N/m (ratio {pm(const.ratio, const.halfwidth)})"
         + (
-            f": the stated σ is then {1 / const.ratio:.2g} times too cautious. That is the price of the random "
+            f": the stated σ is then {sig(1 / const.ratio, 2)} times too cautious. That is the price of the random "
             "walk, an allowance for changes nobody announced; it is what lets the estimate follow a sudden drop, "
             "so read the band as an upper bound on a healthy asset's error."
             if cautious
@@ -295,11 +285,11 @@ def cusum_sentence(st: DigitalTwinStudy) -> str:
     return (
         f"With ν = {st.drift:g} the increment r²/σ² − 1 − ν is the log-likelihood ratio of a Gaussian residual "
         f"whose variance grows by the factor ρ with ln ρ / (1 − 1/ρ) = 1 + ν: the detector is tuned to a "
-        f"{rho:.3g}-fold increase of the residual power, not a doubling (a doubling needs ν = "
-        f"{2 * math.log(2) - 1:.3f}). Over {2 * ex.runs} healthy records ({hours:.3g} h monitored) it raised "
-        f"{alarms} false alarm{'s' if alarms != 1 else ''} at h = {h:g}: a rate below {upper:.2g} per hour at 95 % "
-        f"confidence. The highest value the statistic reached on a healthy record was {peak:.3g}, "
-        + (f"so the threshold has a margin of {margin:.2g} times." if margin >= 1 else "above the threshold.")
+        f"{sig(rho, 3)}-fold increase of the residual power, not a doubling (a doubling needs ν = "
+        f"{2 * math.log(2) - 1:.3f}). Over {2 * ex.runs} healthy records ({sig(hours, 3)} h monitored) it raised "
+        f"{alarms} false alarm{'s' if alarms != 1 else ''} at h = {h:g}: a rate below {sig(upper, 2)} per hour at 95 % "
+        f"confidence. The highest value the statistic reached on a healthy record was {sig(peak, 3)}, "
+        + (f"so the threshold has a margin of {sig(margin, 2)} times." if margin >= 1 else "above the threshold.")
     )
 
 
@@ -321,7 +311,7 @@ def run_length_sentence(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> s
     chosen = rl.theory[i] * rl.dt / 3600.0
     tail = (
         f" At the chosen threshold the chain predicts one false alarm per {sci(chosen)} h of healthy monitoring; "
-        f"the {rl.samples * rl.dt / 3600:.3g} h simulated can only bound it, and their {int(rl.alarms[i])} "
+        f"the {sig(rl.samples * rl.dt / 3600, 3)} h simulated can only bound it, and their {int(rl.alarms[i])} "
         f"alarm{'s' if rl.alarms[i] != 1 else ''} agree{'s' if rl.alarms[i] == 1 else ''} with it."
         if math.isfinite(chosen)
         else " At the chosen threshold the run length is beyond the chain's numerical reach."
@@ -329,7 +319,7 @@ def run_length_sentence(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> s
     return (
         f"Where the healthy records raise at least {min_alarms} false alarms ({int(np.count_nonzero(rows))} "
         f"thresholds) and for both faults' delays at h = {st.params.threshold:g}, the Markov chain of Brook and "
-        f"Evans (1972) predicts the Monte Carlo to within {worst:.2g} standard errors "
+        f"Evans (1972) predicts the Monte Carlo to within {sig(worst, 2)} standard errors "
         f"({{numref}}`tab-twin-arl`, {{numref}}`fig-twin-tradeoff`)." + tail
     )
 
@@ -347,9 +337,10 @@ def summary(st: DigitalTwinStudy) -> str:
     bullets = []
     if fd:
         bullets.append(
-            f"For identification, fit the exact discrete model in the time domain: on a {test:.3g} s test it misses "
-            f"k by {100 * ls:.2g} %, where the better frequency-domain method, given {st.frf_record / test:.0f} "
-            f"times the data, misses by {100 * best:.2g} %."
+            "For identification, fit the exact discrete model in the time domain: on a "
+            f"{sig(test, 3)} s test it misses "
+            f"k by {sig(100 * ls, 2)} %, where the better frequency-domain method, given {st.frf_record / test:.0f} "
+            f"times the data, misses by {sig(100 * best, 2)} %."
         )
     broken = {k: v for k, v in st.assumptions.experiments.items() if k != "as assumed"}
     low = min(float(np.min(v.coverage)) for v in broken.values())
@@ -359,7 +350,7 @@ def summary(st: DigitalTwinStudy) -> str:
     )
     const = next(c for c in st.kalman if c.truth == "constant")
     bullets.append(
-        f"Read the tracker's band as cautious by about {1 / const.ratio:.2g} times on a steady asset and as exact "
+        f"Read the tracker's band as cautious by about {sig(1 / const.ratio, 2)} times on a steady asset and as exact "
         "only when the stiffness really drifts at random."
     )
     j = st.threshold_index
@@ -367,8 +358,8 @@ def summary(st: DigitalTwinStudy) -> str:
     fast = min(float(ex.mean_delay[j]) for ex in st.detection.values())
     bullets.append(
         f"Size the CUSUM threshold with the Markov chain rather than by trial: it gives the false-alarm rate a "
-        f"field trial could not measure in its duration, while the delays it costs stay between {fast:.2g} s and "
-        f"{slow:.3g} s for the faults studied here."
+        f"field trial could not measure in its duration, while the delays it costs stay between {sig(fast, 2)} s and "
+        f"{sig(slow, 3)} s for the faults studied here."
     )
     return "\n".join(f"* {b}" for b in bullets)
 

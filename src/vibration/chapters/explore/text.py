@@ -22,7 +22,8 @@ import math
 from vibration.chapters.explore.figure import build_figure, figure_words
 from vibration.chapters.explore.panel import OMEGA_STEP, panel_facts
 from vibration.chapters.explore.study import C_MAX, C_MIN, ExploreStudy
-from vibration.presentation.narrative import g
+from vibration.presentation.captions import web_only
+from vibration.presentation.numbers import sig as num
 from vibration.presentation.tables import Column, Table
 
 W_N = r"$\omega_n$"
@@ -31,16 +32,6 @@ W_N = r"$\omega_n$"
 DAMPING_SETS = 1.8
 #: ... and below which it "hardly matters".
 DAMPING_IRRELEVANT = 1.05
-
-
-def num(value: float, digits: int = 4) -> str:
-    """A number for prose: ``digits`` significant figures, a typographic minus, "∞" for infinity.
-
-    >>> num(2.2370381), num(-0.5), num(float("inf"))
-    ('2.237', '−0.5', '∞')
-    """
-    text = g(value, digits)
-    return "−" + text[1:] if text.startswith("-") else text
 
 
 def _settles(r) -> str:
@@ -92,7 +83,7 @@ def start_text(study: ExploreStudy) -> str:
 
 
 def controls_text(study: ExploreStudy) -> str:
-    """Which controls exist where: JupyterLab (all of them) and the rendered book (ω, c and reset)."""
+    """Which controls exist where: JupyterLab (all of them) and the online book (ω, c and reset)."""
     return (
         "* **In JupyterLab** (a running kernel): the forcing frequency ω (rad/s, the Hz value beside it) and the "
         f"damping c (N s/m, logarithmic, from {num(C_MIN)} to {num(C_MAX)} N s/m, through critical damping) redraw "
@@ -100,7 +91,12 @@ def controls_text(study: ExploreStudy) -> str:
         r"$t_\mathrm{end}$ (s) apply when Enter is pressed (a value out of range is reported in red and the figure "
         "keeps the last valid state); a check box overlays the paper's RK45 solution and its largest deviation "
         "from the exact displacement.\n"
-        "* **In the rendered book** (no kernel): the same closed form runs in the browser with exactly three "
+        + "* "
+        + web_only(
+            "**In the online book** (no kernel)",
+            print_text="**In the online book** (no kernel; this printed copy shows its starting state)",
+        )
+        + ": the same closed form runs in the browser with exactly three "
         f"controls, the forcing frequency ω (steps of {num(OMEGA_STEP)} rad/s), the damping c (logarithmic, at "
         f"least {num(C_MIN)} to {num(C_MAX)} N s/m) and a reset button; m, k, $F_0$, the window and the RK45 "
         "overlay stay at this run's values."
@@ -128,8 +124,9 @@ def layout_text(study: ExploreStudy) -> str:
         f"ω ({freq_axis}) with {W_N} {w['natural']} and the operating point as a dot; with the check box on, the "
         f"paper's RK45 solution is drawn {w['rk45']} over x(t) and v(t).\n\n"
         f"The book's panel draws the same three plots {styles}: the two time plots first, the magnification "
-        f"plot{log} beside them on a page wider than {f.stack_below_px} px and below them on a narrower one; its "
-        f"frequency axis is {panel_axis}."
+        f"plot{log} beside them"
+        + web_only(f" on a page wider than {f.stack_below_px} px and below them on a narrower one")
+        + f"; its frequency axis is {panel_axis}."
     )
 
 

@@ -17,24 +17,15 @@ from vibration.chapters.frequency_response.text import listing, num
 from vibration.physics.exact import steady_state
 from vibration.presentation.captions import Captioned, panel_words
 from vibration.presentation.findings import case_name
-from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
+from vibration.presentation.style import COLOUR_WORDS, OKABE_ITO, case_style, figure, place_legend
 
 TWO_PI = 2.0 * math.pi
 
 #: Two curves closer than this (largest relative difference) are said to coincide.
 COINCIDE = 0.01
 
-#: The word a caption uses for each colour of the book's palette.
-COLOUR_WORD = {
-    OKABE_ITO["vermillion"]: "red",
-    OKABE_ITO["blue"]: "blue",
-    OKABE_ITO["bluish green"]: "green",
-    OKABE_ITO["orange"]: "orange",
-    OKABE_ITO["sky blue"]: "sky blue",
-    OKABE_ITO["reddish purple"]: "purple",
-    OKABE_ITO["black"]: "black",
-    OKABE_ITO["grey"]: "grey",
-}
+#: The word a caption uses for each colour of the book's palette (the palette's own words).
+COLOUR_WORD = COLOUR_WORDS
 
 #: Colours of the energy terms (not cases of the book): black, the damper's grey, the stored energy's sky blue.
 ENERGY_STYLE = {

@@ -18,7 +18,8 @@ import math
 
 from vibration.chapters.frequency_response.keyresults import KEY_RESULTS
 from vibration.chapters.frequency_response.study import TOL_ESTIMATE, FrequencyStudy
-from vibration.presentation.narrative import g, regime_clause
+from vibration.presentation.narrative import regime_clause
+from vibration.presentation.numbers import sig as num
 
 #: Residual of the energy balance (relative to the largest work) above which a simulation is unfit for audits.
 AUDIT = 1e-4
@@ -26,17 +27,6 @@ AUDIT = 1e-4
 W_RES = r"$\omega_\mathrm{res}$"
 W_REF = r"$\omega_\mathrm{ref}$"
 W_N = r"$\omega_n$"
-
-
-def num(value: float, digits: int = 4) -> str:
-    """A number for prose: ``digits`` significant figures in the book's format (powers of ten as ×10ⁿ, never
-    e-notation) with a typographic minus.
-
-    >>> num(2.6e-05, 2), num(1e-06), num(4526), num(-0.25)
-    ('2.6×10⁻⁵', '10⁻⁶', '4526', '−0.25')
-    """
-    text = g(value, digits)
-    return "−" + text[1:] if text.startswith("-") else text
 
 
 def listing(items: list[str]) -> str:

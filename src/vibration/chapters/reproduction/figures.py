@@ -102,10 +102,9 @@ def damping_figure(st: ReproductionStudy) -> Captioned:
     axes[0, 0].set_ylabel(r"$x$ (m)")
     axes[1, 0].set_ylabel(r"$v$ (m/s)")
     handles = [
-        Line2D([], [], lw=1.2, **case_style(CASE_OF[DAMPING_IDS[0]]), label="RK45 (the paper's method), case colour"),
-        Line2D([], [], lw=0.8, **case_style("exact"), label="exact"),
-    ]
-    fig.legend(handles=handles, loc="outside upper center", ncols=2, frameon=False)
+        Line2D([], [], lw=1.2, **case_style(CASE_OF[sid]), label=f"RK45, {case_name(sid)}") for sid in DAMPING_IDS
+    ] + [Line2D([], [], lw=0.8, **case_style("exact"), label="exact")]
+    fig.legend(handles=handles, loc="outside upper center", ncols=len(handles), frameon=False)
     words = panel_words(fig)
     cols = [words[j].split()[-1] for j in range(3)]  # left, middle, right
     rows = [words[0].split()[0], words[3].split()[0]]  # top, bottom

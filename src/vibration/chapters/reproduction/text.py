@@ -121,8 +121,8 @@ def key_results(st: ReproductionStudy) -> str:
         else "large enough that the solver's tolerances matter with these parameters"
     )
     items.append(
-        f"The paper's own solver agrees with the exact solution to {g(100 * worst.rel_err, 2)} % of each run's "
-        f"largest displacement or better, {verdict}."
+        f"The paper's own solver's worst displacement error, measured against the exact solution and relative to "
+        f"each run's largest displacement, is {g(100 * worst.rel_err, 2)} % or less, {verdict}."
     )
     for sid in ("damping_low", "damping_high"):
         items.append(_key_damping(st, sid))

@@ -17,24 +17,20 @@ from __future__ import annotations
 
 from vibration.chapters.solver_accuracy.study import LATE, SolverStudy
 from vibration.presentation.narrative import g
+from vibration.presentation.numbers import approx
+from vibration.presentation.numbers import sig as num
 from vibration.presentation.tables import Approx, Column, Table
 
 #: The paper's method's worst error, relative to the peak displacement, below which it is called small.
 SMALL = 0.01
 
+#: Tolerances of a machine-dependent method's cells in the regression comparison: evaluations within
+#: 25 %, errors within a factor of 5 (a last-bit change of the input moves them by up to 10 % and 4 times).
+NFEV_RTOL = 0.25
+ERROR_FACTOR = 5.0
+
 #: The pair the paper names ("Runge-Kutta-Fehlberg (RK45)", section 2.2).
 PAPER_PAIR = "Runge-Kutta-Fehlberg 4(5)"
-
-
-def num(value: float, digits: int = 4) -> str:
-    """A number for prose: ``digits`` significant figures in the book's format (powers of ten as ×10ⁿ, never
-    e-notation) with a typographic minus.
-
-    >>> num(2.6e-05, 2), num(1e-06), num(4526), num(-0.25)
-    ('2.6×10⁻⁵', '10⁻⁶', '4526', '−0.25')
-    """
-    text = g(value, digits)
-    return "−" + text[1:] if text.startswith("-") else text
 
 
 def listing(items: list[str]) -> str:
@@ -48,7 +44,8 @@ def listing(items: list[str]) -> str:
 
 
 def _count(study: SolverStudy, method: str, n: int) -> str:
-    return f"≈{n}" if any(r.machine_dependent for r in study.ladder(method)) else str(n)
+    """Evaluations for a sentence; a machine-dependent method's count carries its regression tolerance."""
+    return approx(n, 6, rtol=NFEV_RTOL) if any(r.machine_dependent for r in study.ladder(method)) else str(n)
 
 
 # -- tables ------------------------------------------------------------------------------------
@@ -66,16 +63,19 @@ def ladder_table(study: SolverStudy) -> Table:
     """
     rows = []
     for r in study.runs:
-        mark = Approx if r.machine_dependent else (lambda v: v)
+        # A machine-dependent method's counts scatter by up to about 10 % and its errors by a factor of
+        # up to 4 between machines (see MACHINE_DEPENDENT): the tolerances of the regression comparison.
+        count = (lambda v: Approx(v, rtol=NFEV_RTOL)) if r.machine_dependent else (lambda v: v)
+        error = (lambda v: Approx(v, factor=ERROR_FACTOR)) if r.machine_dependent else (lambda v: v)
         rows.append(
             {
                 "method": r.method,
                 "rtol": r.rtol,
                 "atol": r.atol,
-                "nfev": mark(r.nfev),
-                "ex": mark(r.err_x),
-                "ev": mark(r.err_v),
-                "rel": mark(r.rel_err_x),
+                "nfev": count(r.nfev),
+                "ex": error(r.err_x),
+                "ev": error(r.err_v),
+                "rel": error(r.rel_err_x),
             }
         )
     return Table(
@@ -96,6 +96,12 @@ def ladder_table(study: SolverStudy) -> Table:
             "paper's method."
         ),
         name="tab-solvers-ladder",
+        notes=tuple(
+            f"{m} picks its formulas and order as it goes, so its steps change with the last bit of the "
+            "arithmetic: on another computer its evaluations differ by up to about 10 % and its errors by up to a "
+            "factor of 4."
+            for m in sorted({r.method for r in study.runs if r.machine_dependent})
+        ),
     )
 
 

@@ -13,7 +13,7 @@ import math
 import numpy as np
 
 from vibration.chapters.stability.study import BAND, LABELS, StabilityStudy, StepMetrics
-from vibration.chapters.stability.words import WN_CELL, num, pole_text, sig
+from vibration.chapters.stability.words import WN_CELL, pole_text, sig
 from vibration.physics.exact import steady_state
 from vibration.physics.model import Oscillator
 from vibration.physics.stability import (
@@ -27,7 +27,7 @@ from vibration.physics.stability import (
     white_noise_variance,
     white_noise_velocity_variance,
 )
-from vibration.presentation.tables import Column, Missing, Table
+from vibration.presentation.tables import Column, Missing, Table, bound
 
 #: Reasons shown in tables (as "—" with a footnote).
 WHY_UNDAMPED_PEAK = Missing(f"unbounded: with c = 0 a force at {WN_CELL} grows the response like t")
@@ -359,22 +359,6 @@ def cost_table(st: StabilityStudy) -> Table:
 
 
 # ----------------------------------------------------------------------------- self-checks
-
-
-def bound(value: float, tol: float) -> str | Missing:
-    """A check against its stated tolerance (a power of ten): ``"< 10⁻¹²"`` when it holds, else the value too.
-
-    The printed tolerance, not the value's order of magnitude, is what reproduces on every machine.
-
-    >>> bound(3e-15, 1e-12), bound(2.5e-9, 1e-12)
-    ('< 10⁻¹²', '2.5 × 10⁻⁹ (above 10⁻¹²)')
-    """
-    if not math.isfinite(value):
-        return Missing("not computed for this case") if math.isnan(value) else Missing("infinite")
-    limit = num(tol, 1).removeprefix("1 × ")
-    if abs(value) < tol:
-        return f"< {limit}"
-    return f"{num(abs(value), 2)} (above {limit})"
 
 
 def checks_table(st: StabilityStudy) -> Table:

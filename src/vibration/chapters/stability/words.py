@@ -1,25 +1,24 @@
 """How the chapter writes numbers, dampings and symbols: for sentences, captions and table cells.
 
 Sentences and captions are MyST Markdown, so a symbol with a subscript is maths (``$\\omega_n$``);
-table cells are escaped text, so they use Unicode (ωₙ). Numbers never use e-notation: a power of
-ten reads ``1.27 × 10⁵``. A table column shows one number of significant figures for every row
-(trailing zeros kept: 0.100, 15.0, 6.97).
+table cells are escaped text, so they use Unicode (ωₙ). Numbers are the book's
+(:mod:`vibration.presentation.numbers`): a power of ten reads ``1.27×10⁵``; a table column shows one
+number of significant figures for every row (trailing zeros kept: 0.100, 15.0, 6.97).
 
 Examples
 --------
 >>> num(127000.0, 3), num(-0.05), num(0.1, 3), sig(0.1, 3), sig(15.0, 3), sig(-2.5e-7, 2)
-('1.27 × 10⁵', '−0.05', '0.1', '0.100', '15.0', '−2.5 × 10⁻⁷')
+('1.27×10⁵', '−0.05', '0.1', '0.100', '15.0', '−2.5×10⁻⁷')
 >>> join(["a"]), join(["a", "b", "c"])
 ('a', 'a, b and c')
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
-_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+from vibration.presentation.numbers import column
+from vibration.presentation.numbers import sig as _sig
 
 #: Symbols in sentences and captions (MyST maths).
 WN = r"$\omega_n$"
@@ -32,38 +31,14 @@ SX = r"$\sigma_x$"
 WN_CELL = "ωₙ"
 
 
-def _power(mant: str, exp: int) -> str:
-    return f"{mant} × 10{str(exp).translate(_SUPERSCRIPT)}"
-
-
 def num(value: float, digits: int = 3) -> str:
-    """A number for a sentence or caption: ``digits`` significant figures, trailing zeros dropped."""
-    v = float(value)
-    if math.isnan(v):
-        return "—"
-    if math.isinf(v):
-        return "∞" if v > 0 else "−∞"
-    text = f"{v:.{digits}g}"
-    if "e" in text:
-        mant, exp = text.split("e")
-        text = _power(mant, int(exp))
-    return text.replace("-", "−")
+    """A number for a sentence or caption (:func:`vibration.presentation.numbers.sig`), three figures unless told."""
+    return _sig(value, digits)
 
 
 def sig(value: float, digits: int = 3) -> str:
-    """A number for a table cell: exactly ``digits`` significant figures (trailing zeros kept)."""
-    v = float(value)
-    if not math.isfinite(v):
-        return num(v)
-    if v == 0.0:
-        return "0" if digits == 1 else "0." + "0" * (digits - 1)
-    exp = math.floor(math.log10(abs(float(f"{v:.{digits - 1}e}"))))
-    if -4 <= exp < digits:
-        text = f"{v:#.{digits}g}".rstrip(".")
-    else:
-        mant = f"{v / 10.0**exp:#.{digits}g}".rstrip(".")
-        text = _power(mant, exp)
-    return text.replace("-", "−")
+    """A table cell, exactly ``digits`` significant figures (:func:`vibration.presentation.numbers.column`)."""
+    return column(value, digits)
 
 
 def c_text(c: float) -> str:

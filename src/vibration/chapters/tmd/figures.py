@@ -389,3 +389,33 @@ def building_frf_figure(st: TMDStudy) -> Captioned:
 def building_ground_figure(st: TMDStudy) -> Captioned:
     """Roof displacement relative to the ground per ground acceleration, with and without the roof absorber."""
     return _building_figure(st, ground=True)
+
+
+#: Storeys the building schematic can draw legibly.
+SCHEMATIC_STOREYS = (2, 8)
+
+
+def building_schematic(st: TMDStudy) -> Captioned:
+    """The schematic of this run's shear building: its own number of storeys, drawn with at most eight.
+
+    >>> from vibration.chapters.tmd.study import tmd_study
+    >>> st = tmd_study(n_storeys=3, n_points=201)
+    >>> building_schematic(st).caption.startswith("The 3-storey shear building")
+    True
+    >>> building_schematic(tmd_study(n_storeys=12, n_points=201)).caption.split(". ")[0]
+    'The 12-storey shear building of chapter 8 with its roof absorber (drawn with 8 storeys)'
+    """
+    from vibration.presentation.schematics import shear_building
+
+    n = st.building.n
+    low, high = SCHEMATIC_STOREYS
+    drawn = min(max(n, low), high)
+    cap = shear_building(drawn)
+    if drawn == n:
+        return cap
+    head = f"The {drawn}-storey shear building of chapter 8 with its roof absorber."
+    caption = cap.caption.replace(
+        head, f"The {n}-storey shear building of chapter 8 with its roof absorber (drawn with {drawn} storeys).", 1
+    )
+    alt = cap.alt.replace(f"A {drawn}-storey frame", f"A {n}-storey frame (drawn with {drawn} storeys)", 1)
+    return Captioned(cap.fig, caption, cap.name, alt)
