@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_array
 from ..model import N_POINTS_MAX, ParameterError, check_real
 
 #: Newton polishing steps applied to every closed-form root of the amplitude cubic.
@@ -35,36 +36,26 @@ RK4_STABILITY = 2.78
 
 
 def _real_array(name: str, value, *, unit: str = "", min_size: int = 1, max_size: int = N_POINTS_MAX) -> np.ndarray:
-    """``value`` as a finite float array, or :class:`ParameterError`.
+    """``value`` as a finite float array of any shape, or :class:`ParameterError` (see :func:`check_array`).
 
-    Refuses strings, bools, complex numbers, objects that are not real numbers, ragged
-    sequences, non-finite values and sizes outside ``[min_size, max_size]``; the message names
-    the parameter, its value and what is allowed.
+    An object array whose elements are all real numbers (not bools) is accepted as floats, as read
+    from a CSV file or built from a list of Python numbers mixed with numpy scalars.
     """
-    allowed = f"an array of finite real numbers{f' ({unit})' if unit else ''}, {min_size} to {max_size} values"
-    if isinstance(value, (str, bytes)):
-        raise ParameterError(f"{name} = {value!r:.60} is a string: allowed {allowed}")
-    try:
-        arr = np.asarray(value)
-    except (TypeError, ValueError):
-        raise ParameterError(f"{name} = {value!r:.60} is not an array of numbers: allowed {allowed}") from None
-    if arr.dtype.kind == "O" and all(
-        isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in arr.reshape(-1)
-    ):
-        arr = arr.astype(float)
-    if arr.dtype.kind not in "iuf":
-        raise ParameterError(
-            f"{name} = {value!r:.60} has values of type {arr.dtype} (not real numbers: bool, complex, string "
-            f"or object): allowed {allowed}"
-        )
-    if not min_size <= arr.size <= max_size:
-        raise ParameterError(f"{name} has {arr.size} values: allowed {allowed}")
-    arr = arr.astype(float)
-    bad = np.flatnonzero(~np.isfinite(arr))
-    if bad.size:
-        i = int(bad[0])
-        raise ParameterError(f"{name}[{i}] = {arr.reshape(-1)[i]!r} is not finite: allowed {allowed}")
-    return arr
+    if not isinstance(value, (str, bytes, np.ndarray)):
+        try:
+            arr = np.asarray(value)
+        except (TypeError, ValueError):
+            arr = None
+        if (
+            arr is not None
+            and arr.dtype.kind == "O"
+            and all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in arr.reshape(-1))
+        ):
+            value = arr.astype(float)
+    elif isinstance(value, np.ndarray) and value.dtype.kind == "O":
+        if all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in value.reshape(-1)):
+            value = value.astype(float)
+    return check_array(name, value, ndim=tuple(range(33)), min_size=min_size, max_size=max_size, unit=unit)
 
 
 class _OverBudget(Exception):
@@ -258,12 +249,12 @@ def duffing_response(
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-3)
     if not isinstance(sine, (bool, np.bool_)):
         raise ParameterError(f"sine = {sine!r:.60} is not a bool: allowed True or False")
-    tt = _real_array("t", t, unit="s").reshape(-1)
-    if np.any(np.diff(tt) < 0) or tt[0] < 0:
-        raise ParameterError(f"t = {t!r:.60} is out of range: allowed non-empty, increasing, t >= 0 s, finite")
+    tt = check_array("t", t, low=0.0, ndim=(0, 1), increasing=True, unit="s").reshape(-1)
     m, c, k, k3 = d.m, d.c, d.k, d.k3
     trig = math.sin if sine else math.cos
     t_end = float(tt[-1])
+    if t_end == 0.0:  # t = [0]: the initial state
+        return np.array([x0]), np.array([v0])
     xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
     # DOP853 needs h lambda within its stability interval (about 6) and takes 12 evaluations a step
     lam = _linear_rate(d, max(abs(x0), xr))

@@ -13,7 +13,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_derived
 from ..model import ParameterError, check_int, check_real
+
+#: Smallest static deflection F0/k (m) a sweep integrates: below it the tolerances underflow.
+XREF_MIN = 1e-150
 from .model import (
     MAX_SCIPY_SWEEP_STEPS,
     MAX_SWEEP_STEPS,
@@ -380,7 +384,18 @@ def frequency_sweep(
     v0 = check_real("v0", v0, unit="m/s")
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-2)
     xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
-    atol = rtol * xr if atol is None else check_real("atol", atol, low=0.0, low_open=True, unit="m")
+    if F0 > 0 and not xr >= XREF_MIN:
+        raise ParameterError(
+            f"F0 = {F0!r} N gives a static deflection F0/k = {xr:.3g} m, below {XREF_MIN:g} m where the tolerances "
+            f"underflow: allowed F0 = 0 or F0 >= {XREF_MIN:g} k (N)"
+        )
+    check_derived(
+        "the initial energy (m v0^2 + k x0^2 + k3 x0^4 / 2) / 2 (J)",
+        0.5 * (d.m * v0 * v0 + d.k * x0 * x0 + 0.5 * d.k3 * (x0 * x0) * (x0 * x0)),
+        inputs={"x0": x0, "v0": v0},
+        allowed="x0 and v0 whose energy is a finite float (|x0|, |v0| below about 1e75)",
+    )
+    atol = rtol * xr if atol is None else check_real("atol", atol, low=XREF_MIN * 1e-13, unit="m")
     steady_tol = check_real("steady_tol", steady_tol, low=1e-12, high=0.1)
     max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
     if not isinstance(integrator, str) or integrator not in ("compiled", "scipy"):
