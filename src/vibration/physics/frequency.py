@@ -12,6 +12,7 @@ import numpy as np
 from scipy.integrate import cumulative_simpson
 from scipy.optimize import brentq
 
+from .checks import check_array
 from .exact import Response, _grid_exp, _kernels, _roots, _uniform, exact_response, steady_state
 from .model import (
     N_POINTS_MAX,
@@ -52,24 +53,16 @@ def _array(values, name: str, unit: str) -> np.ndarray:
         raise ParameterError(f"{name} = {values!r} is not an array of numbers: allowed a 1-D array in {unit}") from None
 
 
-def _increasing(values, name: str, unit: str, size: int | None = None, min_size: int = 1) -> np.ndarray:
-    """A finite, strictly increasing 1-D array (of ``size`` samples if given)."""
+def _increasing(
+    values, name: str, unit: str, size: int | None = None, min_size: int = 1, low: float | None = None
+) -> np.ndarray:
+    """A finite, strictly increasing 1-D array (of ``size`` samples if given, each >= ``low`` if given)."""
     a = _array(values, name, unit)
     if a.ndim != 1 or a.size < min_size:
         raise ParameterError(f"{name} has shape {a.shape}: allowed a 1-D array of at least {min_size} values in {unit}")
     if size is not None and a.size != size:
         raise ParameterError(f"{name} has {a.size} values: allowed as many as the {size} samples it goes with")
-    if not np.all(np.isfinite(a)):
-        bad = float(a[~np.isfinite(a)][0])
-        raise ParameterError(f"{name} contains {bad!r}: allowed finite values in {unit}")
-    if a.size > 1 and not np.all(np.diff(a) > 0.0):
-        i = int(np.nonzero(np.diff(a) <= 0.0)[0][0])
-        raise ParameterError(
-            f"{name} is not strictly increasing ({name}[{i}] = {float(a[i])!r}, "
-            f"{name}[{i + 1}] = {float(a[i + 1])!r}): "
-            f"allowed a strictly increasing array in {unit}"
-        )
-    return a
+    return check_array(name, a, low=low, ndim=(1,), min_size=min_size, increasing=True, unit=unit)
 
 
 def _omegas(omegas, name: str = "omegas") -> np.ndarray:
@@ -233,7 +226,7 @@ def log_decrement(t, x) -> tuple[float, float]:
         raise ParameterError(f"x has shape {x.shape}: allowed a 1-D array of at least 3 displacements in m")
     if not np.all(np.isfinite(x)):
         raise ParameterError(f"x contains {float(x[~np.isfinite(x)][0])!r}: allowed finite displacements in m")
-    t = _increasing(t, "t", "s", size=x.size)
+    t = _increasing(t, "t", "s", size=x.size, low=0.0)
     idx = np.nonzero((x[1:-1] > x[:-2]) & (x[1:-1] >= x[2:]) & (x[1:-1] > 0))[0] + 1
     if idx.size < 2:
         raise ParameterError("x has fewer than two positive peaks: allowed an oscillating free decay")
@@ -416,9 +409,7 @@ def peak_displacement_map(
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
     w = _omegas(omegas)
-    c = np.asarray(dampings, dtype=float)
-    if c.ndim != 1 or c.size == 0 or not np.all(np.isfinite(c)):
-        raise ParameterError(f"dampings = {dampings!r}: allowed a non-empty 1-D array of finite values in N s/m")
+    c = check_array("dampings", dampings, ndim=(1,), unit="N s/m")
     for name, size in (("omegas", w.size), ("dampings", c.size)):
         if size * n_points > MAP_CELLS_MAX:
             raise ParameterError(

@@ -319,7 +319,8 @@ def simulate_controlled(
         raise _over_budget(math.nan, t_end, "controlled loop") from None
     if sol.status != 0:
         raise ParameterError(
-            f"t_end = {t_end!r} s: the solver (DOP853) stopped at t = {sol.t[-1] if sol.t.size else 0.0:g} s ({sol.message}); "
+            f"t_end = {t_end!r} s: the solver (DOP853) stopped at t = {sol.t[-1] if sol.t.size else 0.0:g} s "
+            f"({sol.message}); "
             "allowed inputs for which the loop can be integrated"
         )
     x, v = sol.y

@@ -9,6 +9,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..checks import check_choice
 from ..model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real
 from ..stability import _check_osc, transmissibility
 from ._common import _finite, _omegas
@@ -519,13 +520,12 @@ def semi_active_controller(
     >>> round(f(0.0, 0.0, 1.0), 12)     # N: v (v - v_b) = 1 (1 - 1.1175) < 0, so c_min
     0.05875
     """
-    if law not in SEMI_ACTIVE_LAWS[:4]:
-        raise ParameterError(f"law = {law!r} is not supported: allowed one of {', '.join(SEMI_ACTIVE_LAWS[:4])}")
+    law = check_choice("law", law, SEMI_ACTIVE_LAWS[:4])
     c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
     c_min = check_real("c_min", c_min, low=0.0, unit="N s/m")
     c_max = check_real("c_max", c_max, low=c_min, unit="N s/m")
     Y = check_real("Y", Y, low=0.0, unit="m")
-    w = check_real("omega", omega, low=0.0, unit="rad/s")
+    w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")  # the base moves: omega > 0
     if not math.isfinite(max(c_max, c_sky, 1.0) * Y * max(w, 1.0)):
         raise ParameterError(
             f"Y = {Y!r} m, omega = {w!r} rad/s: the base velocity times the damping overflows; allowed a finite force"

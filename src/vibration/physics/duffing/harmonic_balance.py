@@ -388,6 +388,14 @@ def response_curve(duffing: Duffing, F0: float, omega_max: float, n: int = 801, 
             f"F0 = {F0!r} N with k3 = {d.k3!r} N/m^3 overflows the response curve (A up to {a_top:.3g} m): "
             "allowed smaller F0 or |k3|"
         )
+    if omega.size < 2:
+        with np.errstate(all="ignore"):
+            w_all = _curve_points(m, c, k, kap, F0, math.inf, a_low + (a_top - a_low) * s)[0]
+        lowest = float(np.sort(w_all)[1]) if w_all.size >= 2 else math.nan
+        raise ParameterError(
+            f"omega_max = {omega_max!r} rad/s leaves {omega.size} point(s) of the response curve: allowed omega_max "
+            f"above its lowest frequencies (omega_max > {lowest:.6g} rad/s)"
+        )
     return omega, A, stable
 
 

@@ -15,9 +15,6 @@ import numpy as np
 
 from ..checks import check_derived
 from ..model import ParameterError, check_int, check_real
-
-#: Smallest static deflection F0/k (m) a sweep integrates: below it the tolerances underflow.
-XREF_MIN = 1e-150
 from .model import (
     MAX_SCIPY_SWEEP_STEPS,
     MAX_SWEEP_STEPS,
@@ -31,6 +28,9 @@ from .model import (
     _real_array,
     _x_ref,
 )
+
+#: Smallest static deflection F0/k (m) a sweep integrates: below it the tolerances underflow.
+XREF_MIN = 1e-150
 
 # ------------------------------------------------------------------------------ compiled kernel
 

@@ -325,7 +325,7 @@ def mistuned_peak(tuning: TMDTuning, stiffness_error, zeta_p=None) -> np.ndarray
     if not isinstance(tuning, TMDTuning):
         raise ParameterError(f"tuning = {tuning!r} is not a TMDTuning: allowed den_hartog(...), hinf_tuning(...)")
     zp = tuning.zeta_p if zeta_p is None else _zeta("zeta_p", zeta_p)
-    eps = check_array("stiffness_error", stiffness_error, low=-0.9, high=9.0, ndim=(0, 1, 2), max_size=MISTUNED_MAX)
+    eps = check_array("stiffness_error", stiffness_error, low=-0.9, high=9.0, ndim=(0, 1), max_size=MISTUNED_MAX)
     flat = eps.ravel()
     out = np.empty(flat.shape)
     for i, e in enumerate(flat):

@@ -11,7 +11,7 @@ from ..model import Oscillator, ParameterError, check_int, check_real
 from .identification import identify
 from .measurements import MIN_SAMPLES, _check_osc, _check_seed, _check_sensor, _grid_size, _signal, _work
 from .sampled import random_force, stiffness_profile, synthetic_measurements
-from .tracking import CALIBRATION, CUSUM_DRIFT, detect_change
+from .tracking import CALIBRATION, CUSUM_DRIFT, DRIFT_MAX, detect_change
 from .validation import (
     WHITENESS_LAGS,
     _ar1,
@@ -477,6 +477,7 @@ def detection_experiment(
     if thr is None or np.any(thr <= 0.0):
         raise ParameterError(f"thresholds = {thresholds!r}: allowed a 1-D array of positive numbers")
     noise = check_real("noise", noise, low=0.0, low_open=True)
+    drift = check_real("drift", drift, low=0.0, low_open=True, high=DRIFT_MAX)
     stiffness = _signal("stiffness", stiffness, t.size)
     healthy = synthetic_measurements(osc, t, force, sensor=sensor)
     faulty = synthetic_measurements(osc, t, force, sensor=sensor, stiffness=stiffness)
