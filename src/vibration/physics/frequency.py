@@ -54,15 +54,32 @@ def _array(values, name: str, unit: str) -> np.ndarray:
 
 
 def _increasing(
-    values, name: str, unit: str, size: int | None = None, min_size: int = 1, low: float | None = None
+    values,
+    name: str,
+    unit: str,
+    size: int | None = None,
+    min_size: int = 1,
+    low: float | None = None,
+    partner: str = "",
 ) -> np.ndarray:
     """A finite, strictly increasing 1-D array (of ``size`` samples if given, each >= ``low`` if given)."""
     a = _array(values, name, unit)
     if a.ndim != 1 or a.size < min_size:
         raise ParameterError(f"{name} has shape {a.shape}: allowed a 1-D array of at least {min_size} values in {unit}")
     if size is not None and a.size != size:
-        raise ParameterError(f"{name} has {a.size} values: allowed as many as the {size} samples it goes with")
+        raise ParameterError(
+            f"{name} has {a.size} values: allowed as many as the {size} samples it goes with"
+            + (f" ({partner} has {size})" if partner else "")
+        )
     return check_array(name, a, low=low, ndim=(1,), min_size=min_size, increasing=True, unit=unit)
+
+
+def _damped(m: float, c: float, k: float) -> Oscillator:
+    """The oscillator of one entry of ``dampings``, or :class:`ParameterError` naming ``dampings``."""
+    try:
+        return Oscillator(m, c, k)
+    except ParameterError as exc:
+        raise ParameterError(f"dampings contains {c!r} N s/m: {exc}") from None
 
 
 def _omegas(omegas, name: str = "omegas") -> np.ndarray:
@@ -182,7 +199,8 @@ def half_power_points(omegas, mags) -> HalfPower:
     below_right = np.nonzero(g[i:] < level)[0]
     if below_left.size == 0 or below_right.size == 0:
         raise ParameterError(
-            "omegas does not bracket both half-power points: widen the frequency range around the peak"
+            "omegas does not bracket both half-power points of mags: allowed omegas and mags whose peak has both "
+            "half-power crossings (mags falls below peak/sqrt(2) on both sides; widen the frequency range)"
         )
     j = below_left[-1]
     lo = np.interp(level, [g[j], g[j + 1]], [w[j], w[j + 1]])
@@ -226,7 +244,7 @@ def log_decrement(t, x) -> tuple[float, float]:
         raise ParameterError(f"x has shape {x.shape}: allowed a 1-D array of at least 3 displacements in m")
     if not np.all(np.isfinite(x)):
         raise ParameterError(f"x contains {float(x[~np.isfinite(x)][0])!r}: allowed finite displacements in m")
-    t = _increasing(t, "t", "s", size=x.size, low=0.0)
+    t = _increasing(t, "t", "s", size=x.size, low=0.0, partner="x")
     idx = np.nonzero((x[1:-1] > x[:-2]) & (x[1:-1] >= x[2:]) & (x[1:-1] > 0))[0] + 1
     if idx.size < 2:
         raise ParameterError("x has fewer than two positive peaks: allowed an oscillating free decay")
@@ -426,7 +444,7 @@ def peak_displacement_map(
         kc = np.empty((c.size, n_points))  # P of the free response x = x0 P + (v0 + a x0) g
         g = np.empty((c.size, n_points))
         coef = np.empty(c.size)  # a, 1/s
-        roots = [_roots(Oscillator(m, float(ci), k)) for ci in c]
+        roots = [_roots(_damped(m, float(ci), k)) for ci in c]
         osc_rows = [i for i, ro in enumerate(roots) if ro.kind == "osc"]
         if osc_rows:  # underdamped: exp((-sigma + i wd) t) for all of them at once
             s1 = np.array([complex(-roots[i].sigma, roots[i].wd) for i in osc_rows])

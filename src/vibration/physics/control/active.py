@@ -55,7 +55,13 @@ def pd_oscillator(osc: Oscillator, kp: float, kd: float) -> Oscillator:
     _check_osc(osc)
     kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
     kd = check_real("kd", kd, unit="N s/m")
-    return Oscillator(osc.m, osc.c + kd, osc.k + kp)
+    try:
+        return Oscillator(osc.m, osc.c + kd, osc.k + kp)
+    except ParameterError as exc:
+        raise ParameterError(
+            f"kp = {kp!r} N/m and kd = {kd!r} N s/m make the closed loop (m, c + kd, k + kp) invalid ({exc}); allowed "
+            "kp and kd whose closed loop is an Oscillator"
+        ) from None
 
 
 def stabilising_velocity_gain(osc: Oscillator) -> float:

@@ -377,7 +377,13 @@ def response_curve(duffing: Duffing, F0: float, omega_max: float, n: int = 801, 
     else:
         a_top = amplitude_max
         a_top = a_top or 1.5 * (d.barrier if math.isfinite(d.barrier) else max(hb_amplitudes(d, F0, omega_max))[0])
-    a_low = min(hb_amplitudes(d, F0, omega_max))[0]
+    try:
+        a_low = min(hb_amplitudes(d, F0, omega_max))[0]
+    except ParameterError:
+        raise ParameterError(
+            f"omega_max = {omega_max!r} rad/s overflows the amplitude equation there (m omega_max^2 = "
+            f"{m * omega_max * omega_max:.3g} N/m): allowed omega_max whose (k - m omega_max^2)^2 is a finite float"
+        ) from None
     a_low = min(a_low, 0.999 * a_top)
     # denser near the peak, where the two branches turn: cosine spacing in A
     s = 0.5 * (1 - np.cos(np.linspace(0.0, np.pi, n)))

@@ -8,13 +8,14 @@ DOP853) for a response in time. See :mod:`vibration.physics.duffing` for the cha
 from __future__ import annotations
 
 import functools
+import inspect
 import math
 import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_array
+from ..checks import check_array, check_derived
 from ..model import N_POINTS_MAX, ParameterError, check_real
 
 #: Newton polishing steps applied to every closed-form root of the amplitude cubic.
@@ -93,13 +94,43 @@ def _overflow_is_error(fun):
         try:
             return fun(*args, **kwargs)
         except (OverflowError, ZeroDivisionError) as exc:
-            shown = ", ".join([repr(a) for a in args] + [f"{k}={v!r}" for k, v in kwargs.items()])
+            try:
+                bound = inspect.signature(fun).bind(*args, **kwargs).arguments
+                shown = ", ".join(f"{k} = {v!r}" for k, v in bound.items())
+            except TypeError:
+                shown = ", ".join([repr(a) for a in args] + [f"{k}={v!r}" for k, v in kwargs.items()])
             raise ParameterError(
                 f"{fun.__name__}({shown:.200}) overflows a float ({exc}): allowed parameters whose amplitudes, "
                 "frequencies and their powers are finite floats"
             ) from None
 
     return wrapper
+
+
+#: Smallest static deflection F0/k (m) integrated: below it the tolerances (relative to it) underflow.
+XREF_MIN = 1e-150
+
+
+def _check_scales(d: Duffing, F0: float, x0: float, v0: float, xr: float) -> None:
+    """Refuse, naming the arguments, a force or initial state beyond floating point for a time integration."""
+    if F0 > 0 and not xr >= XREF_MIN:
+        raise ParameterError(
+            f"F0 = {F0!r} N gives a static deflection F0/k = {xr:.3g} m, below {XREF_MIN:g} m where the tolerances "
+            f"underflow: allowed F0 = 0 or F0 >= {XREF_MIN:g} k (N)"
+        )
+    check_derived(
+        "the linearised rate (1/s) at the amplitude max(|x0|, F0/k)",
+        _linear_rate(d, max(abs(x0), xr)),
+        inputs={"F0": F0, "x0": x0},
+        allowed="F0 and |x0| whose cubic stiffness k3 x^2 stays finite (|x0|, F0/k below about 1e100)",
+    )
+    x2 = x0 * x0
+    check_derived(
+        "the initial energy (m v0^2 + k x0^2 + k3 x0^4 / 2) / 2 (J)",
+        0.5 * (d.m * v0 * v0 + d.k * x2 + 0.5 * d.k3 * x2 * x2),
+        inputs={"x0": x0, "v0": v0},
+        allowed="x0 and v0 whose energy is a finite float (|x0|, |v0| below about 1e75)",
+    )
 
 
 def _rates(d: Duffing) -> str:
@@ -256,6 +287,7 @@ def duffing_response(
     if t_end == 0.0:  # t = [0]: the initial state
         return np.array([x0]), np.array([v0])
     xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
+    _check_scales(d, F0, x0, v0, xr)
     # DOP853 needs h lambda within its stability interval (about 6) and takes 12 evaluations a step
     lam = _linear_rate(d, max(abs(x0), xr))
     need = 12.0 * t_end * max(lam, w) / 6.0

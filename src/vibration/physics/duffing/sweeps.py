@@ -18,9 +18,11 @@ from ..model import ParameterError, check_int, check_real
 from .model import (
     MAX_SCIPY_SWEEP_STEPS,
     MAX_SWEEP_STEPS,
+    XREF_MIN,
     Duffing,
     _check_damped,
     _check_duffing,
+    _check_scales,
     _Counted,
     _linear_rate,
     _OverBudget,
@@ -28,9 +30,6 @@ from .model import (
     _real_array,
     _x_ref,
 )
-
-#: Smallest static deflection F0/k (m) a sweep integrates: below it the tolerances underflow.
-XREF_MIN = 1e-150
 
 # ------------------------------------------------------------------------------ compiled kernel
 
@@ -384,17 +383,11 @@ def frequency_sweep(
     v0 = check_real("v0", v0, unit="m/s")
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-2)
     xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
-    if F0 > 0 and not xr >= XREF_MIN:
-        raise ParameterError(
-            f"F0 = {F0!r} N gives a static deflection F0/k = {xr:.3g} m, below {XREF_MIN:g} m where the tolerances "
-            f"underflow: allowed F0 = 0 or F0 >= {XREF_MIN:g} k (N)"
-        )
+    _check_scales(d, F0, x0, v0, xr)
     check_derived(
-        "the initial energy (m v0^2 + k x0^2 + k3 x0^4 / 2) / 2 (J)",
-        0.5 * (d.m * v0 * v0 + d.k * x0 * x0 + 0.5 * d.k3 * (x0 * x0) * (x0 * x0)),
-        inputs={"x0": x0, "v0": v0},
-        allowed="x0 and v0 whose energy is a finite float (|x0|, |v0| below about 1e75)",
-    )
+        "the longest forcing period 2π/min(omegas) (s)", 2.0 * math.pi / max(float(np.min(w)), 1e-320),
+        inputs={"min(omegas)": float(np.min(w))}, allowed="omegas >= 1e-300 rad/s (omegas > 0)",
+    )  # fmt: skip
     atol = rtol * xr if atol is None else check_real("atol", atol, low=XREF_MIN * 1e-13, unit="m")
     steady_tol = check_real("steady_tol", steady_tol, low=1e-12, high=0.1)
     max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)

@@ -36,6 +36,11 @@ def modal_damping_matrix(M, K, zeta) -> np.ndarray:
     """
     model = MDOF(M, np.zeros_like(_matrix("M", M, None)), K)
     z = check_array("zeta", zeta, low=0.0, high=ZETA_MAX, ndim=(0, 1), max_size=N_DOF_MAX)
+    if np.any((z > 0.0) & (z < ZETA_MIN)):
+        raise ParameterError(
+            f"zeta contains {float(z[(z > 0.0) & (z < ZETA_MIN)][0])!r}: allowed zeta = 0 or {ZETA_MIN:g} <= zeta <= "
+            f"{ZETA_MAX:g} (a smaller damping ratio underflows the damping matrix)"
+        )
     if z.size not in (1, model.n):
         raise ParameterError(f"zeta has {z.size} values: allowed 1 or one per mode ({model.n})")
     z = np.broadcast_to(z, (model.n,))
@@ -250,6 +255,9 @@ def ground_acceleration_load(model: MDOF) -> np.ndarray:
         raise ParameterError(f"model = {model!r} is not an MDOF: allowed MDOF(M, C, K)")
     return -(model.M @ np.ones(model.n))
 
+
+#: Smallest non-zero modal damping ratio (the damping matrix's entries stay normal floats).
+ZETA_MIN = 1e-50
 
 #: Frequencies of the grid of :func:`frf_peak` before the refinement.
 N_FRF_GRID = 2001

@@ -166,6 +166,8 @@ def load_measurements(path) -> Measurements:
     ...
     vibration.physics.model.ParameterError: column x_m, row 3002 (line 3003): 'nan' is not a finite number: ...
     """
+    if not isinstance(path, str | os.PathLike) or isinstance(path, bytes):
+        raise ParameterError(f"path = {path!r:.80} is not a file name: allowed a str or os.PathLike naming a CSV file")
     path = Path(os.fspath(path))
     try:
         size = path.stat().st_size
