@@ -46,6 +46,7 @@ Examples
 from __future__ import annotations
 
 import importlib
+from typing import TYPE_CHECKING
 
 from .physics.exact import Response, SteadyState, exact_response, steady_state
 from .physics.frequency import (
@@ -62,6 +63,10 @@ from .physics.frequency import (
 from .physics.model import N_POINTS_MAX, REGIMES, Oscillator, ParameterError, SineForce
 from .physics.numerics import METHODS, simulate
 from .physics.paper import Scenario, load_claims, load_scenarios, paper_defaults
+
+if TYPE_CHECKING:  # never run: it shows the lazy modules to static import graphs (the report's cache, linters)
+    from .physics import control, duffing, lab, learning, stability, tmd, twin
+    from .physics.learning import disturbance, env
 
 __version__ = "0.1.0"
 

@@ -1,12 +1,18 @@
 """``vibration.learn``: the short name of :mod:`vibration.physics.learning.env` (needs the ``learn`` extra).
 
-The environment, its registration and the learners live in the physics layer; this module is that
-module itself (``vibration.learn is vibration.physics.learning.env``), kept so that
+The environment, its registration and the learners live in the physics layer; this module only forwards
+to that one (``vibration.learn.train is vibration.physics.learning.env.train``), so that
 ``import vibration.learn as learn`` reads as the chapter's examples do.
 """
 
-import sys
-
 from .physics.learning import env as _env
 
-sys.modules[__name__] = _env
+__all__ = list(_env.__all__)
+
+
+def __getattr__(name: str):
+    return getattr(_env, name)
+
+
+def __dir__() -> list[str]:
+    return sorted(set(__all__) | set(dir(_env)))

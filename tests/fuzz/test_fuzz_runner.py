@@ -1,9 +1,8 @@
 """The runner's ``-p`` combinations that used to start a kernel first (issue 32) are refused by the chapters'
-schema rules, through the runner's own validation, before any kernel starts."""
+schema rules, through the runner's own validation, before any kernel starts (chapters 6, 10 and 11; chapter 8's
+extreme storey rates are not covered: its study finishes at both extremes, the failing cell is not identified)."""
 
 from __future__ import annotations
-
-import math
 
 import pytest
 
@@ -33,9 +32,6 @@ REFUSED = [
     # chapter 6: exp(-c_u t_g / 2m) = exp(1e7) cannot be drawn
     ("06", [("c_unstable", "-10000"), ("t_growth", "2000")], "t_growth", "allowed (-c_unstable/2m) t_growth <= 50"),
     ("06", [("c_unstable", "-1"), ("t_growth", "101")], "t_growth", "t_growth <= 100 s"),
-    # chapter 8: storey rates beyond the time grid (too fast to resolve, too slow for one period)
-    ("08", [("storey_mass", "0.001"), ("storey_stiffness", "1e12")], "storey_stiffness", "Nyquist"),
-    ("08", [("storey_mass", "1e9"), ("storey_stiffness", "0.001")], "storey_mass", "one period"),
     # chapter 10: a monitored record too short for its filter and its drop
     ("10", [("t_monitor", "5")], "t_monitor", "allowed t_monitor >= 66.67 s"),
     ("10", [("t_monitor", "1"), ("dt", "0.1")], "t_monitor", "allowed t_monitor >= 32 dt"),
@@ -58,7 +54,6 @@ def test_the_combination_is_refused_before_any_kernel(chapters, no_kernel, stem,
     ("stem", "pairs"),
     [
         ("06", [("c_unstable", "-1"), ("t_growth", "100")]),  # exp(50): the largest growth allowed
-        ("08", [("storey_mass", "45359.237"), ("storey_stiffness", "5523500")]),
         ("10", [("t_monitor", "66.7")]),
         ("11", [("dt", "0.3125")]),
     ],
@@ -71,16 +66,3 @@ def test_the_edge_of_each_rule_is_accepted(chapters, no_kernel, stem, pairs):
 def test_the_monitoring_rule_reads_the_study_constants():
     assert twin_params.MONITOR_SETTLE == twin_study.KALMAN_SETTLE
     assert twin_params.MONITOR_BLOCK == twin_study.KALMAN_BLOCK
-
-
-def test_the_storey_rule_bounds_are_the_shear_building_frequencies():
-    """The closed form ω_j = 2 √(k/m) sin((2j − 1)π / (2(2n + 1))) against the eigenvalues of the building."""
-    import numpy as np
-
-    from vibration.physics.tmd import shear_building
-
-    n, m, k = 5, 45359.237, 5523500.0
-    w = shear_building([m] * n, [k] * n, zeta=0.0).natural_frequencies
-    j = np.arange(1, n + 1)
-    closed = 2.0 * math.sqrt(k / m) * np.sin((2 * j - 1) * math.pi / (2 * (2 * n + 1)))
-    np.testing.assert_allclose(w, closed, rtol=1e-10)

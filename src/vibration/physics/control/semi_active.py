@@ -199,7 +199,8 @@ def _sa_params(osc, law, c_sky, c_min, c_max, damper):
     c_max = check_real("c_max", c_max, low=0.0, unit="N s/m")
     if c_max < c_min:
         raise ParameterError(
-            f"c_max = {c_max!r} N s/m is below c_min = {c_min!r} N s/m: allowed 0 <= c_min <= c_max (finite)"
+            f"c_max = {c_max!r} N s/m is below c_min = {c_min!r} N s/m: allowed c_max >= {c_min:g} N s/m "
+            "(0 <= c_min <= c_max, finite)"
         )
     d = damper if damper is not None else SPENCER_1997
     if not isinstance(d, MRDamper):
@@ -532,7 +533,8 @@ def semi_active_controller(
     c_max = check_real("c_max", c_max, low=0.0, unit="N s/m")
     if c_max < c_min:
         raise ParameterError(
-            f"c_max = {c_max!r} N s/m is below c_min = {c_min!r} N s/m: allowed 0 <= c_min <= c_max (finite)"
+            f"c_max = {c_max!r} N s/m is below c_min = {c_min!r} N s/m: allowed c_max >= {c_min:g} N s/m "
+            "(0 <= c_min <= c_max, finite)"
         )
     Y = check_real("Y", Y, low=0.0, unit="m")
     w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")  # the base moves: omega > 0
