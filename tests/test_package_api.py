@@ -1,13 +1,18 @@
-"""The package's top level: every public name of every chapter, once, from the module that defines it."""
+"""The package's top level: an explicit ``__all__`` (no star imports), namespaces for the rest, lazy extras."""
 
 from __future__ import annotations
 
+import ast
+import subprocess
+import sys
 from collections import Counter
+from pathlib import Path
 
 import vibration
-from vibration.physics import control, duffing, learning, stability, tmd, twin
+from vibration.physics import control, duffing, lab, learning, stability, tmd, twin
 
-CHAPTERS = (stability, control, tmd, duffing, twin, learning)
+INIT = Path(vibration.__file__)
+CHAPTERS = (stability, control, tmd, duffing, twin, learning, lab)
 
 #: The names the issues say acceptance checks call at the top level.
 REQUIRED = {
@@ -19,19 +24,27 @@ REQUIRED = {
 }
 
 
-def test_no_public_name_is_exported_twice():
-    names = Counter(n for module in CHAPTERS for n in module.__all__)
-    core = set(vibration.__all__) - {n for module in CHAPTERS for n in module.__all__}
-    twice = {n: c for n, c in names.items() if c > 1}
-    assert twice == {}, f"exported by two chapters: {twice}"
-    assert not (core & set(names)), f"chapter names shadow core names: {core & set(names)}"
+def test_the_top_level_has_no_star_import_and_lists_each_name_once():
+    tree = ast.parse(INIT.read_text(encoding="utf-8"))
+    stars = [n for n in ast.walk(tree) if isinstance(n, ast.ImportFrom) and any(a.name == "*" for a in n.names)]
+    assert stars == []
+    twice = {n: c for n, c in Counter(vibration.__all__).items() if c > 1}
+    assert twice == {}
 
 
-def test_every_chapter_name_reaches_the_top_level_from_its_module():
-    for module in CHAPTERS:
-        for name in module.__all__:
-            assert getattr(vibration, name) is getattr(module, name), (module.__name__, name)
-            assert name in vibration.__all__
+def test_every_public_name_resolves_to_the_object_its_module_exports():
+    for name in vibration.__all__:
+        value = getattr(vibration, name)
+        module = sys.modules[vibration._WHERE[name]] if name in vibration._WHERE else None
+        if module is not None:
+            assert value is getattr(module, name), name
+            assert name in getattr(module, "__all__", [name]) or module.__name__.endswith(("env", "disturbance"))
+
+
+def test_every_lab_name_reaches_the_top_level():
+    for name in lab.__all__:
+        assert name in vibration.__all__, name
+        assert getattr(vibration, name) is getattr(lab, name)
 
 
 def test_the_names_the_issues_ask_for_exist():
@@ -41,11 +54,46 @@ def test_the_names_the_issues_ask_for_exist():
             assert callable(getattr(vibration, name)), name
 
 
+def test_the_rest_is_in_its_namespace_and_a_moved_name_says_where():
+    assert vibration.tmd is tmd and vibration.control is control and vibration.lab is lab
+    assert "residual_amplitude" not in vibration.__all__
+    try:
+        vibration.residual_amplitude  # noqa: B018
+    except AttributeError as exc:
+        assert "vibration.control.residual_amplitude" in str(exc)
+    else:
+        raise AssertionError("a namespaced name must not be a top-level attribute")
+
+
+def test_import_vibration_needs_no_extra():
+    code = (
+        "import sys; import vibration; "
+        "extras = ('gymnasium', 'cma', 'control', 'matplotlib', 'ipywidgets', 'papermill'); "
+        "bad = {m for m in extras if m in sys.modules}; "
+        "assert not bad, bad; print(len(vibration.__all__))"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert int(done.stdout) == len(vibration.__all__)
+
+
+def test_a_missing_extra_is_named():
+    code = (
+        "import sys; sys.modules['gymnasium'] = None; import vibration\n"
+        "try:\n    vibration.OscillatorEnv\nexcept ImportError as exc:\n    print(exc)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert "'learn'" in done.stdout and "vibration[learn]" in done.stdout, done.stdout
+
+
 def test_learning_module_registers_the_environment():
     import gymnasium
 
     import vibration.learn
+    from vibration.physics.learning import env
 
+    assert vibration.learn.OscillatorEnv is env.OscillatorEnv and vibration.learn.__all__ == env.__all__
     assert "vibration/Oscillator-v0" in gymnasium.registry
     assert callable(vibration.learn.train) and callable(vibration.learn.lqr_reference)
-    assert vibration.learn.OscillatorEnv.__name__ == "OscillatorEnv"
+    assert vibration.OscillatorEnv is env.OscillatorEnv

@@ -38,11 +38,57 @@ def test_an_installed_wheel_reads_its_own_data(tmp_path):
     target = tmp_path / "site"
     zipfile.ZipFile(wheel).extractall(target)  # what pip installs, without touching the environment
     code = (
-        "import vibration.physics.paper as p; d = p.data_dir(); "
-        "assert 'site' in str(d), d; print(len(p.load_claims()) if hasattr(p, 'load_claims') else 1)"
+        "import vibration.physics.paper as p; d = p.data_dir(); assert 'site' in str(d), d; print(len(p.load_claims()))"
     )
     env = {k: v for k, v in os.environ.items() if k != "VIBRATION_DATA"} | {"PYTHONPATH": str(target)}
     done = subprocess.run(
         [sys.executable, "-c", code], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120
     )
     assert done.returncode == 0, done.stderr[-2000:]
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(1800)
+def test_the_wheel_installs_with_its_dependencies_in_a_fresh_venv_and_imports_every_public_name(tmp_path):
+    """pip installs the wheel and its declared dependencies (every extra) at the pinned versions, nothing else."""
+    subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pip",
+            "wheel",
+            str(ROOT),
+            "--no-deps",
+            "--no-build-isolation",
+            "-q",
+            "-w",
+            str(tmp_path),
+        ],
+        check=True,
+        timeout=300,
+    )
+    wheel = next(tmp_path.glob("vibration-*.whl"))
+    venv = tmp_path / "venv"
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True, timeout=300)
+    py = venv / "bin" / "python"
+    done = subprocess.run(
+        [str(py), "-m", "pip", "install", "-q", f"{wheel}[all]", "-c", str(ROOT / "environment.txt")],
+        capture_output=True,
+        text=True,
+        timeout=1500,
+    )
+    assert done.returncode == 0, done.stderr[-3000:]
+    code = (
+        "import vibration, vibration.learn; missing = [n for n in vibration.__all__ if getattr(vibration, n, None) "
+        "is None]; assert not missing, missing; "
+        "import gymnasium; assert 'vibration/Oscillator-v0' in gymnasium.registry; "
+        "from importlib.metadata import entry_points; "
+        "assert [e.value for e in entry_points(group='gymnasium.envs') if e.name == 'vibration'] == "
+        "['vibration.physics.learning.env:register']; print(len(vibration.__all__))"
+    )
+    env = {k: v for k, v in os.environ.items() if k not in ("VIBRATION_DATA", "PYTHONPATH")}
+    ran = subprocess.run([str(py), "-c", code], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600)
+    assert ran.returncode == 0, ran.stderr[-3000:]
+    import vibration
+
+    assert int(ran.stdout) == len(vibration.__all__)

@@ -41,7 +41,7 @@ ratios = st.floats(1e-3, 20.0)
 def test_public_api_is_at_the_top_level():
     for name in ("poles", "transmissibility", "step_metrics", "white_noise_variance", "stability_class"):
         assert getattr(vibration, name) is getattr(stab, name)
-    assert set(stab.__all__) <= set(vibration.__all__)
+    assert vibration.stability is stab  # the rest of the chapter's names are in its namespace
 
 
 # ----------------------------------------------------------------------------- poles and stability
@@ -202,7 +202,8 @@ def test_damping_helps_below_and_hurts_above_the_crossing():
 def test_transmissibility_shapes_and_limits():
     osc = Oscillator(1.0, 0.5, 20.0)
     assert isinstance(stab.transmissibility(osc, 3.0), float)
-    assert stab.transmissibility(osc, np.ones((2, 3))).shape == (2, 3)
+    with pytest.raises(vibration.ParameterError, match="omegas has shape"):  # 1-D grids only (issue 32)
+        stab.transmissibility(osc, np.ones((2, 3)))
     assert stab.transmissibility(osc, 0.0) == 1.0
     far = stab.transmissibility(osc, 1e200)  # no overflow: T -> 2 zeta omega_n / omega
     assert far == pytest.approx(2.0 * osc.damping_ratio * osc.natural_frequency / 1e200, rel=1e-12)

@@ -24,21 +24,19 @@ from scipy.optimize import brentq, minimize_scalar
 import vibration
 from vibration import (
     MDOF,
-    DampingNotClassical,
     ParameterError,
     add_absorber,
     den_hartog,
-    h2_norm,
     h2_tuning,
     hinf_tuning,
     mistuned_peak,
-    modal_damping_matrix,
     shear_building,
     tmd_fixed_points,
     tmd_magnification,
     tmd_peak,
     tmd_system,
 )
+from vibration.physics.tmd import DampingNotClassical, h2_norm, modal_damping_matrix
 
 
 def brute_peak(mu, f, za, zp=0.0, r_max=4.0, r_min=0.0):

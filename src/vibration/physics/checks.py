@@ -1,4 +1,13 @@
-"""Array arguments: one checker that refuses what a real-valued, finite sample array cannot be.
+"""The shared validators of the physics layer (one module: every package imports these).
+
+Scalars: :func:`check_real`, :func:`check_int`, :func:`check_choice` and :func:`check_records`
+(re-exported from :mod:`vibration.physics.model`, where the records that use them live).
+Derived quantities: :func:`check_derived` (a number computed from the arguments must be finite) and
+:func:`check_count` (a step or sample count computed from the arguments must be finite and within a
+budget), so that an input beyond floating point is refused naming the arguments, never an
+``OverflowError`` or a silent nan.
+
+Array arguments: one checker that refuses what a real-valued, finite sample array cannot be.
 
 :func:`check_array` complements :func:`vibration.physics.model.check_real` (scalars) for
 arguments such as time grids, frequency grids and sampled responses. It refuses strings,
@@ -9,17 +18,18 @@ parameter, what it was and what is allowed.
 
 from __future__ import annotations
 
+import math
 import numbers
 
 import numpy as np
 
-from .model import N_POINTS_MAX, ParameterError
+from .model import N_POINTS_MAX, ParameterError, check_int, check_real, check_records
 
-__all__ = ["check_array"]
+__all__ = ["check_array", "check_choice", "check_count", "check_derived", "check_int", "check_real", "check_records"]
 
 
 def _show(value) -> str:
-    text = repr(value)
+    text = " ".join(repr(value).split())
     return text if len(text) <= 80 else text[:77] + "..."
 
 
@@ -88,9 +98,14 @@ def check_array(
             f"{name} = {_show(value)} is not an array of real numbers (dtype {arr.dtype}): allowed real numbers{u}"
         )
     if arr.ndim not in ndim:
-        raise ParameterError(f"{name} has shape {arr.shape}: allowed {' or '.join(f'{d}-D' for d in ndim)}")
+        dims = " or ".join(f"{d}-D" for d in ndim) if len(ndim) <= 4 else f"at most {max(ndim)}-D"
+        raise ParameterError(f"{name} has shape {arr.shape} ({name} = {_show(value)}): allowed {dims}")
     if not min_size <= arr.size <= max_size:
-        raise ParameterError(f"{name} has {arr.size} elements: allowed {min_size} to {max_size}")
+        raise ParameterError(
+            f"{name} has {arr.size} elements ({name} = {_show(value)}): allowed "
+            + ("a non-empty array, " if arr.size == 0 else "")
+            + f"{min_size} to {max_size} elements"
+        )
     out = arr.astype(float)
     bad = ~np.isfinite(out)
     if bad.any():
@@ -111,3 +126,74 @@ def check_array(
             "allowed strictly increasing values"
         )
     return out + 0.0
+
+
+def _inputs(inputs: dict) -> str:
+    return ", ".join(f"{k} = {_show(v)}" for k, v in inputs.items())
+
+
+def check_choice(name: str, value, choices) -> str:
+    """Return ``value`` when it is one of ``choices`` (strings), or raise :class:`ParameterError`.
+
+    Examples
+    --------
+    >>> check_choice("rule", "H2", ("H∞", "H2"))
+    'H2'
+    >>> check_choice("rule", ["H2"], ("H∞", "H2"))
+    Traceback (most recent call last):
+    ...
+    vibration.physics.model.ParameterError: rule = ['H2'] is not one of the allowed values: allowed 'H∞' or 'H2'
+    """
+    allowed = " or ".join(repr(c) for c in choices)
+    if not isinstance(value, str) or value not in choices:
+        raise ParameterError(f"{name} = {_show(value)} is not one of the allowed values: allowed {allowed}")
+    return value
+
+
+def check_derived(what: str, value: float, *, inputs: dict, allowed: str) -> float:
+    """Return ``value`` (a number computed from the arguments) when finite, or raise :class:`ParameterError`.
+
+    Parameters
+    ----------
+    what : str
+        The derived quantity, with its unit, as the message names it (``"the forcing period 2π/omega (s)"``).
+    value : float
+        Its value.
+    inputs : dict
+        The arguments it came from, by name: the message shows each with its value.
+    allowed : str
+        What the arguments may be.
+
+    Examples
+    --------
+    >>> check_derived("T (s)", float("inf"), inputs={"omega": 1e-320}, allowed="omega >= 1e-300")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    vibration.physics.model.ParameterError: omega = 1e-320 makes T (s) inf, beyond floating point: allowed ...
+    """
+    v = float(value)
+    if not math.isfinite(v):
+        raise ParameterError(f"{_inputs(inputs)} makes {what} {v!r}, beyond floating point: allowed {allowed}")
+    return v
+
+
+def check_count(what: str, value: float, *, inputs: dict, high: int, advice: str = "") -> int:
+    """Return ``ceil(value)`` (a step or sample count computed from the arguments), or raise :class:`ParameterError`.
+
+    The count must be finite and at most ``high``: an input beyond floating point (a step of
+    1e-320 s, a rate of 1e300 1/s) is refused naming the arguments, never an ``OverflowError``.
+
+    Examples
+    --------
+    >>> check_count("RK4 steps", 1234.2, inputs={"t_end": 12.342, "dt": 0.01}, high=10**6)
+    1235
+    >>> check_count("RK4 steps", float("inf"), inputs={"dt": 1e-320}, high=10**6)
+    Traceback (most recent call last):
+    ...
+    vibration.physics.model.ParameterError: dt = 1e-320 needs inf RK4 steps: allowed at most 1000000
+    """
+    v = float(value)
+    if not (math.isfinite(v) and v <= high):
+        tail = f" ({advice})" if advice else ""
+        raise ParameterError(f"{_inputs(inputs)} needs {v:.4g} {what}: allowed at most {high}{tail}")
+    return max(int(math.ceil(v)), 0)

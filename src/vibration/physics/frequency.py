@@ -12,6 +12,7 @@ import numpy as np
 from scipy.integrate import cumulative_simpson
 from scipy.optimize import brentq
 
+from .checks import check_array
 from .exact import Response, _grid_exp, _kernels, _roots, _uniform, exact_response, steady_state
 from .model import (
     N_POINTS_MAX,
@@ -52,24 +53,33 @@ def _array(values, name: str, unit: str) -> np.ndarray:
         raise ParameterError(f"{name} = {values!r} is not an array of numbers: allowed a 1-D array in {unit}") from None
 
 
-def _increasing(values, name: str, unit: str, size: int | None = None, min_size: int = 1) -> np.ndarray:
-    """A finite, strictly increasing 1-D array (of ``size`` samples if given)."""
+def _increasing(
+    values,
+    name: str,
+    unit: str,
+    size: int | None = None,
+    min_size: int = 1,
+    low: float | None = None,
+    partner: str = "",
+) -> np.ndarray:
+    """A finite, strictly increasing 1-D array (of ``size`` samples if given, each >= ``low`` if given)."""
     a = _array(values, name, unit)
     if a.ndim != 1 or a.size < min_size:
         raise ParameterError(f"{name} has shape {a.shape}: allowed a 1-D array of at least {min_size} values in {unit}")
     if size is not None and a.size != size:
-        raise ParameterError(f"{name} has {a.size} values: allowed as many as the {size} samples it goes with")
-    if not np.all(np.isfinite(a)):
-        bad = float(a[~np.isfinite(a)][0])
-        raise ParameterError(f"{name} contains {bad!r}: allowed finite values in {unit}")
-    if a.size > 1 and not np.all(np.diff(a) > 0.0):
-        i = int(np.nonzero(np.diff(a) <= 0.0)[0][0])
         raise ParameterError(
-            f"{name} is not strictly increasing ({name}[{i}] = {float(a[i])!r}, "
-            f"{name}[{i + 1}] = {float(a[i + 1])!r}): "
-            f"allowed a strictly increasing array in {unit}"
+            f"{name} has {a.size} values: allowed as many as the {size} samples it goes with"
+            + (f" ({partner} has {size})" if partner else "")
         )
-    return a
+    return check_array(name, a, low=low, ndim=(1,), min_size=min_size, increasing=True, unit=unit)
+
+
+def _damped(m: float, c: float, k: float) -> Oscillator:
+    """The oscillator of one entry of ``dampings``, or :class:`ParameterError` naming ``dampings``."""
+    try:
+        return Oscillator(m, c, k)
+    except ParameterError as exc:
+        raise ParameterError(f"dampings contains {c!r} N s/m: {exc}") from None
 
 
 def _omegas(omegas, name: str = "omegas") -> np.ndarray:
@@ -189,7 +199,8 @@ def half_power_points(omegas, mags) -> HalfPower:
     below_right = np.nonzero(g[i:] < level)[0]
     if below_left.size == 0 or below_right.size == 0:
         raise ParameterError(
-            "omegas does not bracket both half-power points: widen the frequency range around the peak"
+            "omegas does not bracket both half-power points of mags: allowed omegas and mags whose peak has both "
+            "half-power crossings (mags falls below peak/sqrt(2) on both sides; widen the frequency range)"
         )
     j = below_left[-1]
     lo = np.interp(level, [g[j], g[j + 1]], [w[j], w[j + 1]])
@@ -233,7 +244,7 @@ def log_decrement(t, x) -> tuple[float, float]:
         raise ParameterError(f"x has shape {x.shape}: allowed a 1-D array of at least 3 displacements in m")
     if not np.all(np.isfinite(x)):
         raise ParameterError(f"x contains {float(x[~np.isfinite(x)][0])!r}: allowed finite displacements in m")
-    t = _increasing(t, "t", "s", size=x.size)
+    t = _increasing(t, "t", "s", size=x.size, low=0.0, partner="x")
     idx = np.nonzero((x[1:-1] > x[:-2]) & (x[1:-1] >= x[2:]) & (x[1:-1] > 0))[0] + 1
     if idx.size < 2:
         raise ParameterError("x has fewer than two positive peaks: allowed an oscillating free decay")
@@ -416,9 +427,7 @@ def peak_displacement_map(
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
     w = _omegas(omegas)
-    c = np.asarray(dampings, dtype=float)
-    if c.ndim != 1 or c.size == 0 or not np.all(np.isfinite(c)):
-        raise ParameterError(f"dampings = {dampings!r}: allowed a non-empty 1-D array of finite values in N s/m")
+    c = check_array("dampings", dampings, ndim=(1,), unit="N s/m")
     for name, size in (("omegas", w.size), ("dampings", c.size)):
         if size * n_points > MAP_CELLS_MAX:
             raise ParameterError(
@@ -435,7 +444,7 @@ def peak_displacement_map(
         kc = np.empty((c.size, n_points))  # P of the free response x = x0 P + (v0 + a x0) g
         g = np.empty((c.size, n_points))
         coef = np.empty(c.size)  # a, 1/s
-        roots = [_roots(Oscillator(m, float(ci), k)) for ci in c]
+        roots = [_roots(_damped(m, float(ci), k)) for ci in c]
         osc_rows = [i for i, ro in enumerate(roots) if ro.kind == "osc"]
         if osc_rows:  # underdamped: exp((-sigma + i wd) t) for all of them at once
             s1 = np.array([complex(-roots[i].sigma, roots[i].wd) for i in osc_rows])

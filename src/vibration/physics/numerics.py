@@ -117,6 +117,10 @@ def simulate(
         raise ParameterError(f"method = {method!r} is not supported: allowed one of {', '.join(METHODS)}")
     rtol = check_real("rtol", rtol, low=RTOL_MIN)  # solve_ivp would raise a smaller one silently
     atol = check_real("atol", atol, low=0.0, low_open=True)
+    if not isinstance(t_eval, bool | np.bool_):
+        raise ParameterError(
+            f"t_eval = {t_eval!r:.60} is not a bool: allowed True (n_points samples) or False (the solver's steps)"
+        )
 
     _check_window(osc, force, t_end, method)
 

@@ -6,8 +6,22 @@ cell against it, and the chapter's computation takes a :class:`Params` record bu
 
 from __future__ import annotations
 
-from vibration.presentation.parameters import shared
+from vibration.physics.model import ParameterError
+from vibration.presentation.parameters import MAX_GROWTH, shared
 from vibration.presentation.schema import Param, Schema
+
+
+def growth_window(p: dict) -> None:
+    """The growth comparison's window stays within what a float holds for the flutter model's negative damping."""
+    c, m, t = p["c_unstable"], p["m"], p["t_growth"]
+    exponent = -c / (2.0 * m) * t
+    if exponent > MAX_GROWTH:
+        raise ParameterError(
+            f"t_growth = {t!r} s with c_unstable = {c!r} N s/m and m = {m!r} kg grows the response like "
+            f"exp({exponent:.3g}): allowed (-c_unstable/2m) t_growth <= {MAX_GROWTH:g} "
+            f"(t_growth <= {MAX_GROWTH * 2.0 * m / -c:.4g} s)"
+        )
+
 
 SCHEMA = Schema(
     "06_stability",
@@ -44,7 +58,7 @@ SCHEMA = Schema(
         Param("n_paths", "N_paths", 200, "", 2, 5000, "Monte Carlo paths per damping"),
         Param("seed", "s", 1, "", 0, 2147483647, "seed of the Monte Carlo generator"),
     ),
-    together=(),
+    together=(growth_window,),
 )
 
 Params = SCHEMA.record_type()

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_array
+from ..checks import check_array, check_derived
 from ..model import Oscillator, ParameterError, SineForce, check_real
 from ..stability import _check_osc
 from ._common import (
@@ -55,7 +55,13 @@ def pd_oscillator(osc: Oscillator, kp: float, kd: float) -> Oscillator:
     _check_osc(osc)
     kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
     kd = check_real("kd", kd, unit="N s/m")
-    return Oscillator(osc.m, osc.c + kd, osc.k + kp)
+    try:
+        return Oscillator(osc.m, osc.c + kd, osc.k + kp)
+    except ParameterError as exc:
+        raise ParameterError(
+            f"kp = {kp!r} N/m and kd = {kd!r} N s/m make the closed loop (m, c + kd, k + kp) invalid ({exc}); allowed "
+            "kp and kd whose closed loop is an Oscillator"
+        ) from None
 
 
 def stabilising_velocity_gain(osc: Oscillator) -> float:
@@ -282,6 +288,12 @@ def simulate_controlled(
     grid = _grid(t_end, n_points)
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
+    check_derived(
+        "the initial energy (m v0^2 + |k| x0^2) / 2 (J)",
+        0.5 * (osc.m * v0 * v0 + abs(osc.k) * x0 * x0),
+        inputs={"x0": x0, "v0": v0},
+        allowed="x0 and v0 whose energy is a finite float",
+    )
     rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
     atol = check_real("atol", atol, low=0.0, low_open=True)
     step = math.inf if max_step is None else check_real("max_step", max_step, low=0.0, low_open=True, unit="s")
@@ -313,7 +325,8 @@ def simulate_controlled(
         raise _over_budget(math.nan, t_end, "controlled loop") from None
     if sol.status != 0:
         raise ParameterError(
-            f"t_end = {t_end!r} s: the solver (DOP853) stopped at t = {sol.t[-1]:g} s ({sol.message}); "
+            f"t_end = {t_end!r} s: the solver (DOP853) stopped at t = {sol.t[-1] if sol.t.size else 0.0:g} s "
+            f"({sol.message}); "
             "allowed inputs for which the loop can be integrated"
         )
     x, v = sol.y

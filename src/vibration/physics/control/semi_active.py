@@ -9,6 +9,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..checks import check_choice
 from ..model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real
 from ..stability import _check_osc, transmissibility
 from ._common import _finite, _omegas
@@ -195,7 +196,12 @@ def _sa_params(osc, law, c_sky, c_min, c_max, damper):
         raise ParameterError(f"law = {law!r} is not supported: allowed one of {', '.join(SEMI_ACTIVE_LAWS)}")
     c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
     c_min = check_real("c_min", c_min, low=0.0, unit="N s/m")
-    c_max = check_real("c_max", c_max, low=c_min, unit="N s/m")
+    c_max = check_real("c_max", c_max, low=0.0, unit="N s/m")
+    if c_max < c_min:
+        raise ParameterError(
+            f"c_max = {c_max!r} N s/m is below c_min = {c_min!r} N s/m: allowed c_max >= {c_min:g} N s/m "
+            "(0 <= c_min <= c_max, finite)"
+        )
     d = damper if damper is not None else SPENCER_1997
     if not isinstance(d, MRDamper):
         raise ParameterError(f"damper = {damper!r} is not an MRDamper: allowed None or MRDamper(...)")
@@ -234,7 +240,8 @@ def _sa_rate_check(p: np.ndarray, dt: float, w: float, spp: int) -> None:
     if not dt * rate <= 1.0:
         raise ParameterError(
             f"omega = {w!r} rad/s with steps_per_period = {spp}: the RK4 step {dt:.3g} s is {dt * rate:.3g} times the "
-            f"plant's fastest time scale 1/{rate:.3g} s; allowed at most 1 (raise the frequency or steps_per_period)"
+            f"plant's fastest time scale 1/{rate:.3g} s (sqrt(k/m) + (|c| + max(c_sky = {c_sky!r}, c_max = {c_max!r}))"
+            "/m); allowed at most 1 (raise the frequency or steps_per_period, or lower c_sky and c_max)"
         )
 
 
@@ -325,8 +332,8 @@ def semi_active_response(
     _sa_rate_check(p, dt, w, spp)
     if not t_end / dt <= RK4_STEPS_MAX:
         raise ParameterError(
-            f"t_end = {t_end!r} s needs {t_end / dt:.3g} RK4 steps of {dt:.3g} s: allowed at most {RK4_STEPS_MAX} "
-            "(shorten t_end or lower steps_per_period)"
+            f"t_end = {t_end!r} s at omega = {w!r} rad/s needs {t_end / dt:.3g} RK4 steps of {dt:.3g} s: allowed at "
+            f"most {RK4_STEPS_MAX} (shorten t_end, lower omega or steps_per_period)"
         )
     n_steps = max(1, math.ceil(t_end / dt))
     stride = max(1, n_steps // (n_points - 1))
@@ -478,7 +485,8 @@ def semi_active_sweep(
         bad = ws[~np.all(np.isfinite(st), axis=1)][0]
         raise ParameterError(
             f"omegas contains {bad!r} rad/s: the RK4 run overflowed even at a step of {dts[ws == bad][0]:.3g} s "
-            f"(too long for the device; allowed a smaller dt_max = {dt_max!r} s or more steps_per_period = {spp})"
+            f"with Y = {Y!r} m (too long for the device; allowed a smaller dt_max = {dt_max!r} s or more "
+            f"steps_per_period = {spp}, or a smaller Y)"
         )
     n, span = st[:, 6], periods * 2.0 * np.pi / ws
     out = np.stack(
@@ -519,13 +527,17 @@ def semi_active_controller(
     >>> round(f(0.0, 0.0, 1.0), 12)     # N: v (v - v_b) = 1 (1 - 1.1175) < 0, so c_min
     0.05875
     """
-    if law not in SEMI_ACTIVE_LAWS[:4]:
-        raise ParameterError(f"law = {law!r} is not supported: allowed one of {', '.join(SEMI_ACTIVE_LAWS[:4])}")
+    law = check_choice("law", law, SEMI_ACTIVE_LAWS[:4])
     c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
     c_min = check_real("c_min", c_min, low=0.0, unit="N s/m")
-    c_max = check_real("c_max", c_max, low=c_min, unit="N s/m")
+    c_max = check_real("c_max", c_max, low=0.0, unit="N s/m")
+    if c_max < c_min:
+        raise ParameterError(
+            f"c_max = {c_max!r} N s/m is below c_min = {c_min!r} N s/m: allowed c_max >= {c_min:g} N s/m "
+            "(0 <= c_min <= c_max, finite)"
+        )
     Y = check_real("Y", Y, low=0.0, unit="m")
-    w = check_real("omega", omega, low=0.0, unit="rad/s")
+    w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")  # the base moves: omega > 0
     if not math.isfinite(max(c_max, c_sky, 1.0) * Y * max(w, 1.0)):
         raise ParameterError(
             f"Y = {Y!r} m, omega = {w!r} rad/s: the base velocity times the damping overflows; allowed a finite force"
@@ -588,12 +600,17 @@ def skyhook_power(osc: Oscillator, c_sky: float, Y: float, omega: float) -> Skyh
     P_rel = F * np.conj(V - Vb)  # p = Re(F e^{iwt}) Re(Vr e^{iwt}) = Re(F conj(Vr))/2 + Re(F Vr e^{2iwt})/2
     a = float(0.5 * P_rel.real)
     b = float(0.5 * abs(F * (V - Vb)))
+    if not (math.isfinite(a) and math.isfinite(b)):
+        raise ParameterError(
+            f"c_sky = {c_sky!r} N s/m, Y = {Y!r} m, omega = {w!r} rad/s overflow the skyhook power: allowed c_sky, Y "
+            "and omega whose power c_sky (omega Y)^2 is a finite float"
+        )
     if b <= abs(a):
         pos = max(a, 0.0)
     else:
         theta = math.acos(-a / b)
         pos = (a * theta + b * math.sin(theta)) / math.pi
-    removed = float(0.5 * c_sky * abs(V) ** 2)
+    removed = float(0.5 * c_sky * abs(V) * abs(V))
     out = SkyhookPower(removed=removed, net=a, supplied=pos, gross=2.0 * pos - a)
     _finite("Y, omega", [out.removed, out.net, out.gross], "the skyhook power")
     return out

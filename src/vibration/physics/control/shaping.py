@@ -7,11 +7,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_array
+from ..checks import check_array, check_choice
 from ..exact import exact_response
 from ..model import Oscillator, ParameterError, SineForce, check_real
 from ..stability import _check_osc
 from ._common import _finite, _grid
+
+#: Most impulses a :class:`Shaper` may have.
+SHAPER_IMPULSES_MAX = 64
 
 
 @dataclass(frozen=True)
@@ -23,6 +26,29 @@ class Shaper:
     omega_n: float  # design natural frequency, rad/s
     zeta: float  # design damping ratio, 1
     kind: str  # "ZV" or "ZVD"
+
+    def __post_init__(self) -> None:
+        t = check_array(
+            "times", self.times, low=0.0, ndim=(1,), max_size=SHAPER_IMPULSES_MAX, increasing=True, unit="s"
+        )
+        if t[0] != 0.0:
+            raise ParameterError(f"times = {t.tolist()!r} s starts at {t[0]!r} s: allowed a first impulse at 0 s")
+        a = check_array("amplitudes", self.amplitudes, ndim=(1,), max_size=SHAPER_IMPULSES_MAX)
+        if a.size != t.size:
+            raise ParameterError(
+                f"amplitudes has {a.size} values and times {t.size}: allowed one amplitude per impulse time"
+            )
+        if abs(float(a.sum()) - 1.0) > 1e-9:
+            raise ParameterError(
+                f"amplitudes = {a.tolist()!r} sum to {float(a.sum())!r}: allowed amplitudes summing to 1 (within 1e-9)"
+            )
+        t.setflags(write=False)
+        a.setflags(write=False)
+        object.__setattr__(self, "times", t)
+        object.__setattr__(self, "amplitudes", a)
+        object.__setattr__(self, "omega_n", check_real("omega_n", self.omega_n, low=0.0, low_open=True, unit="rad/s"))
+        object.__setattr__(self, "zeta", check_real("zeta", self.zeta, low=0.0, high=1.0, unit=""))
+        object.__setattr__(self, "kind", check_choice("kind", self.kind, ("ZV", "ZVD")))
 
     @property
     def duration(self) -> float:

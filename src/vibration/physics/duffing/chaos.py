@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_count, check_derived
 from ..model import ParameterError, check_int, check_real
 from .model import MAX_RK4_STEPS, RK4_STABILITY, Duffing, _check_duffing, _linear_rate, _rates, _x_ref
 
@@ -155,11 +156,24 @@ def _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_perio
             f"steps: allowed at most {MAX_RK4_STEPS} "
             "((n_periods + n_transient) steps_per_period)"
         )
-    T = 2.0 * math.pi / w
+    T = check_derived(
+        "the forcing period 2π/omega (s)", 2.0 * math.pi / w, inputs={"omega": w}, allowed="omega >= 1e-300 rad/s"
+    )
     h = T / spp
-    lam = _linear_rate(d, max(abs(x0), _x_ref(d, F0) if F0 > 0 else 0.0))
+    lam = check_derived(
+        "the linearised rate (1/s) at the amplitude max(|x0|, F0/k)",
+        _linear_rate(d, max(abs(x0), _x_ref(d, F0) if F0 > 0 else 0.0)),
+        inputs={"F0": F0, "x0": x0},
+        allowed="F0 and |x0| whose cubic stiffness k3 x^2 stays finite (|x0|, F0/k below about 1e100)",
+    )
     if h * lam > RK4_STABILITY:
-        need = math.ceil(T * lam / RK4_STABILITY)
+        need = check_count(
+            "steps_per_period for a stable RK4 step",
+            T * lam / RK4_STABILITY,
+            inputs={"omega": w, "F0": F0, "x0": x0},
+            high=10**15,
+            advice="a higher omega, a smaller F0 or |x0|, or a less stiff oscillator",
+        )
         raise ParameterError(
             f"steps_per_period = {spp} at omega = {w!r} rad/s gives a step of {h:.3g} s, and the fixed-step RK4 is "
             f"unstable for h lambda > {RK4_STABILITY} with lambda = {lam:.3g} 1/s ({_rates(d)}): allowed "

@@ -377,7 +377,13 @@ def response_curve(duffing: Duffing, F0: float, omega_max: float, n: int = 801, 
     else:
         a_top = amplitude_max
         a_top = a_top or 1.5 * (d.barrier if math.isfinite(d.barrier) else max(hb_amplitudes(d, F0, omega_max))[0])
-    a_low = min(hb_amplitudes(d, F0, omega_max))[0]
+    try:
+        a_low = min(hb_amplitudes(d, F0, omega_max))[0]
+    except ParameterError:
+        raise ParameterError(
+            f"omega_max = {omega_max!r} rad/s overflows the amplitude equation there (m omega_max^2 = "
+            f"{m * omega_max * omega_max:.3g} N/m): allowed omega_max whose (k - m omega_max^2)^2 is a finite float"
+        ) from None
     a_low = min(a_low, 0.999 * a_top)
     # denser near the peak, where the two branches turn: cosine spacing in A
     s = 0.5 * (1 - np.cos(np.linspace(0.0, np.pi, n)))
@@ -387,6 +393,14 @@ def response_curve(duffing: Duffing, F0: float, omega_max: float, n: int = 801, 
         raise ParameterError(
             f"F0 = {F0!r} N with k3 = {d.k3!r} N/m^3 overflows the response curve (A up to {a_top:.3g} m): "
             "allowed smaller F0 or |k3|"
+        )
+    if omega.size < 2:
+        with np.errstate(all="ignore"):
+            w_all = _curve_points(m, c, k, kap, F0, math.inf, a_low + (a_top - a_low) * s)[0]
+        lowest = float(np.sort(w_all)[1]) if w_all.size >= 2 else math.nan
+        raise ParameterError(
+            f"omega_max = {omega_max!r} rad/s leaves {omega.size} point(s) of the response curve: allowed omega_max "
+            f"above its lowest frequencies (omega_max > {lowest:.6g} rad/s)"
         )
     return omega, A, stable
 

@@ -8,12 +8,14 @@ DOP853) for a response in time. See :mod:`vibration.physics.duffing` for the cha
 from __future__ import annotations
 
 import functools
+import inspect
 import math
 import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_array, check_derived
 from ..model import N_POINTS_MAX, ParameterError, check_real
 
 #: Newton polishing steps applied to every closed-form root of the amplitude cubic.
@@ -35,36 +37,26 @@ RK4_STABILITY = 2.78
 
 
 def _real_array(name: str, value, *, unit: str = "", min_size: int = 1, max_size: int = N_POINTS_MAX) -> np.ndarray:
-    """``value`` as a finite float array, or :class:`ParameterError`.
+    """``value`` as a finite float array of any shape, or :class:`ParameterError` (see :func:`check_array`).
 
-    Refuses strings, bools, complex numbers, objects that are not real numbers, ragged
-    sequences, non-finite values and sizes outside ``[min_size, max_size]``; the message names
-    the parameter, its value and what is allowed.
+    An object array whose elements are all real numbers (not bools) is accepted as floats, as read
+    from a CSV file or built from a list of Python numbers mixed with numpy scalars.
     """
-    allowed = f"an array of finite real numbers{f' ({unit})' if unit else ''}, {min_size} to {max_size} values"
-    if isinstance(value, (str, bytes)):
-        raise ParameterError(f"{name} = {value!r:.60} is a string: allowed {allowed}")
-    try:
-        arr = np.asarray(value)
-    except (TypeError, ValueError):
-        raise ParameterError(f"{name} = {value!r:.60} is not an array of numbers: allowed {allowed}") from None
-    if arr.dtype.kind == "O" and all(
-        isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in arr.reshape(-1)
-    ):
-        arr = arr.astype(float)
-    if arr.dtype.kind not in "iuf":
-        raise ParameterError(
-            f"{name} = {value!r:.60} has values of type {arr.dtype} (not real numbers: bool, complex, string "
-            f"or object): allowed {allowed}"
-        )
-    if not min_size <= arr.size <= max_size:
-        raise ParameterError(f"{name} has {arr.size} values: allowed {allowed}")
-    arr = arr.astype(float)
-    bad = np.flatnonzero(~np.isfinite(arr))
-    if bad.size:
-        i = int(bad[0])
-        raise ParameterError(f"{name}[{i}] = {arr.reshape(-1)[i]!r} is not finite: allowed {allowed}")
-    return arr
+    if not isinstance(value, (str, bytes, np.ndarray)):
+        try:
+            arr = np.asarray(value)
+        except (TypeError, ValueError):
+            arr = None
+        if (
+            arr is not None
+            and arr.dtype.kind == "O"
+            and all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in arr.reshape(-1))
+        ):
+            value = arr.astype(float)
+    elif isinstance(value, np.ndarray) and value.dtype.kind == "O":
+        if all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in value.reshape(-1)):
+            value = value.astype(float)
+    return check_array(name, value, ndim=tuple(range(33)), min_size=min_size, max_size=max_size, unit=unit)
 
 
 class _OverBudget(Exception):
@@ -102,13 +94,43 @@ def _overflow_is_error(fun):
         try:
             return fun(*args, **kwargs)
         except (OverflowError, ZeroDivisionError) as exc:
-            shown = ", ".join([repr(a) for a in args] + [f"{k}={v!r}" for k, v in kwargs.items()])
+            try:
+                bound = inspect.signature(fun).bind(*args, **kwargs).arguments
+                shown = ", ".join(f"{k} = {v!r}" for k, v in bound.items())
+            except TypeError:
+                shown = ", ".join([repr(a) for a in args] + [f"{k}={v!r}" for k, v in kwargs.items()])
             raise ParameterError(
                 f"{fun.__name__}({shown:.200}) overflows a float ({exc}): allowed parameters whose amplitudes, "
                 "frequencies and their powers are finite floats"
             ) from None
 
     return wrapper
+
+
+#: Smallest static deflection F0/k (m) integrated: below it the tolerances (relative to it) underflow.
+XREF_MIN = 1e-150
+
+
+def _check_scales(d: Duffing, F0: float, x0: float, v0: float, xr: float) -> None:
+    """Refuse, naming the arguments, a force or initial state beyond floating point for a time integration."""
+    if F0 > 0 and not xr >= XREF_MIN:
+        raise ParameterError(
+            f"F0 = {F0!r} N gives a static deflection F0/k = {xr:.3g} m, below {XREF_MIN:g} m where the tolerances "
+            f"underflow: allowed F0 = 0 or F0 >= {XREF_MIN:g} k (N)"
+        )
+    check_derived(
+        "the linearised rate (1/s) at the amplitude max(|x0|, F0/k)",
+        _linear_rate(d, max(abs(x0), xr)),
+        inputs={"F0": F0, "x0": x0},
+        allowed="F0 and |x0| whose cubic stiffness k3 x^2 stays finite (|x0|, F0/k below about 1e100)",
+    )
+    x2 = x0 * x0
+    check_derived(
+        "the initial energy (m v0^2 + k x0^2 + k3 x0^4 / 2) / 2 (J)",
+        0.5 * (d.m * v0 * v0 + d.k * x2 + 0.5 * d.k3 * x2 * x2),
+        inputs={"x0": x0, "v0": v0},
+        allowed="x0 and v0 whose energy is a finite float (|x0|, |v0| below about 1e75)",
+    )
 
 
 def _rates(d: Duffing) -> str:
@@ -258,13 +280,14 @@ def duffing_response(
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-3)
     if not isinstance(sine, (bool, np.bool_)):
         raise ParameterError(f"sine = {sine!r:.60} is not a bool: allowed True or False")
-    tt = _real_array("t", t, unit="s").reshape(-1)
-    if np.any(np.diff(tt) < 0) or tt[0] < 0:
-        raise ParameterError(f"t = {t!r:.60} is out of range: allowed non-empty, increasing, t >= 0 s, finite")
+    tt = check_array("t", t, low=0.0, ndim=(0, 1), increasing=True, unit="s").reshape(-1)
     m, c, k, k3 = d.m, d.c, d.k, d.k3
     trig = math.sin if sine else math.cos
     t_end = float(tt[-1])
+    if t_end == 0.0:  # t = [0]: the initial state
+        return np.array([x0]), np.array([v0])
     xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
+    _check_scales(d, F0, x0, v0, xr)
     # DOP853 needs h lambda within its stability interval (about 6) and takes 12 evaluations a step
     lam = _linear_rate(d, max(abs(x0), xr))
     need = 12.0 * t_end * max(lam, w) / 6.0

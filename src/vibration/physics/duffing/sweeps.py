@@ -13,13 +13,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_derived
 from ..model import ParameterError, check_int, check_real
 from .model import (
     MAX_SCIPY_SWEEP_STEPS,
     MAX_SWEEP_STEPS,
+    XREF_MIN,
     Duffing,
     _check_damped,
     _check_duffing,
+    _check_scales,
     _Counted,
     _linear_rate,
     _OverBudget,
@@ -380,7 +383,12 @@ def frequency_sweep(
     v0 = check_real("v0", v0, unit="m/s")
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-2)
     xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
-    atol = rtol * xr if atol is None else check_real("atol", atol, low=0.0, low_open=True, unit="m")
+    _check_scales(d, F0, x0, v0, xr)
+    check_derived(
+        "the longest forcing period 2π/min(omegas) (s)", 2.0 * math.pi / max(float(np.min(w)), 1e-320),
+        inputs={"min(omegas)": float(np.min(w))}, allowed="omegas >= 1e-300 rad/s (omegas > 0)",
+    )  # fmt: skip
+    atol = rtol * xr if atol is None else check_real("atol", atol, low=XREF_MIN * 1e-13, unit="m")
     steady_tol = check_real("steady_tol", steady_tol, low=1e-12, high=0.1)
     max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
     if not isinstance(integrator, str) or integrator not in ("compiled", "scipy"):

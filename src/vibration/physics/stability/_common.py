@@ -23,11 +23,11 @@ def _check_stable(osc: Oscillator, what: str) -> None:
 
 
 def _frequencies(omegas, name: str = "omegas") -> np.ndarray:
-    return check_array(name, omegas, low=0.0, ndim=(0, 1, 2), unit="rad/s")
+    return check_array(name, omegas, low=0.0, ndim=(0, 1), unit="rad/s")
 
 
 def _times(t, name: str = "t", max_size: int = N_POINTS_MAX) -> np.ndarray:
-    return check_array(name, t, low=0.0, ndim=(0, 1, 2), max_size=max_size, unit="s")
+    return check_array(name, t, low=0.0, ndim=(0, 1), max_size=max_size, unit="s")
 
 
 def _out(values: np.ndarray, like: np.ndarray):

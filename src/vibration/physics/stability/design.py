@@ -68,8 +68,8 @@ def damper_load(osc: Oscillator, F0: float, omegas) -> DamperLoad:
     if not (np.all(np.isfinite(amp)) and np.all(np.isfinite(power))):
         bad = float(w[~(np.isfinite(amp) & np.isfinite(power))].ravel()[0])
         raise ParameterError(
-            f"omegas contains {bad!r} rad/s: with c = {osc.c!r} N s/m the steady amplitude there is not finite "
-            "(undamped resonance or overflow); allowed frequencies with a finite steady state"
+            f"omegas contains {bad!r} rad/s: with c = {osc.c!r} N s/m and F0 = {F0!r} N the steady amplitude there "
+            "is not finite (undamped resonance or overflow); allowed frequencies and F0 with a finite steady state"
         )
     return DamperLoad(omega=w, amplitude=amp, force_amplitude=force, mean_power=power)
 

@@ -210,6 +210,12 @@ def simulate_white_noise(
     den = [1.0, -(phi[0, 0] + phi[1, 1]), phi[0, 0] * phi[1, 1] - phi[0, 1] * phi[1, 0]]
     x = lfilter([0.0, 1.0, -phi[1, 1]], den, w1, axis=-1) + lfilter([0.0, 0.0, phi[0, 1]], den, w2, axis=-1)
     v = lfilter([0.0, 0.0, phi[1, 0]], den, w1, axis=-1) + lfilter([0.0, 1.0, -phi[0, 0]], den, w2, axis=-1)
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
+        raise ParameterError(
+            f"S0 = {S0!r} N^2 s/rad on the oscillator (m = {osc.m!r} kg, c = {osc.c!r} N s/m, k = {osc.k!r} N/m) "
+            f"overflows the sampled response (stationary variance pi S0/(k c) = {math.pi * S0 / (osc.k * osc.c):.3g}"
+            " m^2): allowed S0 and m, c, k whose noise covariance and its square root are finite floats"
+        )
     t = np.arange(n) * dt
     return t, x, v
 

@@ -27,7 +27,7 @@ def transmissibility(osc: Oscillator, omegas):
     osc : Oscillator
         m (kg), c (N s/m), k (N/m).
     omegas : float or array_like
-        Excitation frequencies, rad/s (finite, >= 0), any shape.
+        Excitation frequencies, rad/s (finite, >= 0), a scalar or a 1-D array.
 
     Returns
     -------

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import inspect
 
 import numpy as np
 
@@ -28,6 +29,12 @@ MISTUNED_MAX = 10_000
 #: Largest work of one frequency-response or time-response call, in units of n³ (one n x n solve each):
 #: ``len(omegas) n³`` for :meth:`MDOF.frf`, ``len(t) (2n + 2)³`` for the matrix exponentials of :meth:`MDOF.response`.
 WORK_MAX = 2e9
+#: Range of the magnitude of every non-zero entry of M, C, K (kg, N s/m, N/m) and of the physical inputs that
+#: build them: their products and eigenvalues stay finite, normal floats (a subnormal entry stops LAPACK's SVD).
+ENTRY_MIN, ENTRY_MAX = 1e-100, 1e100
+#: Largest ratio of the largest to the smallest floor mass or storey stiffness of a shear building: beyond it the
+#: smallest eigenvalue of K is lost in the rounding of the largest.
+SPREAD_MAX = 1e12
 #: Largest number of entries (len(t) times 2n) of one response array.
 ENTRIES_MAX = 20_000_000
 
@@ -50,9 +57,15 @@ def _no_nan(fn):
         except (TypeError, ValueError):  # a tuple of arrays of different shapes
             arr = np.concatenate([np.ravel(np.asarray(v, dtype=float)) for v in values])
         if np.any(np.isnan(arr)):
+            try:
+                bound = inspect.signature(fn).bind(*args, **kwargs).arguments
+                shown = ", ".join(f"{k} = {v!r:.60}" for k, v in bound.items())
+            except TypeError:
+                shown = f"{args!r:.200}"
             raise ParameterError(
-                f"{fn.__name__}{args!r}: the result is not defined in floating point (overflow or underflow of "
-                "the inputs' products); allowed inputs well inside their ranges"
+                f"{fn.__name__} with {shown}: the result is not defined in floating point (an overflow or "
+                f"underflow of these arguments' products); allowed mu in [{MU_MIN:g}, {MU_MAX:g}], f in (0, "
+                f"{F_MAX:g}], damping ratios in [0, {ZETA_MAX:g}] whose products stay finite"
             )
         return out
 

@@ -10,7 +10,7 @@ import scipy.linalg as sla
 
 from ..checks import check_array
 from ..model import ParameterError, check_real
-from ._limits import ENTRIES_MAX, N_DOF_MAX, SYM_TOL, WORK_MAX
+from ._limits import ENTRIES_MAX, ENTRY_MAX, ENTRY_MIN, N_DOF_MAX, SYM_TOL, WORK_MAX
 
 
 class DampingNotClassical(ParameterError):
@@ -38,6 +38,13 @@ def _matrix(name: str, A, n: int | None) -> np.ndarray:
         raise ParameterError(f"{name} has {arr.shape[0]} rows: allowed 1 <= n <= {N_DOF_MAX}")
     if not np.all(np.isfinite(arr)):
         raise ParameterError(f"{name} = {arr.tolist()!r} has non-finite entries: allowed finite entries")
+    mag = np.abs(arr[arr != 0.0])
+    if mag.size and not (mag.min() >= ENTRY_MIN and mag.max() <= ENTRY_MAX):
+        bad = float(mag.min()) if mag.min() < ENTRY_MIN else float(mag.max())
+        raise ParameterError(
+            f"{name} has an entry of magnitude {bad!r}: allowed entries 0 or {ENTRY_MIN:g} <= |{name}_ij| <= "
+            f"{ENTRY_MAX:g} (SI units)"
+        )
     scale = float(np.max(np.abs(arr))) if arr.size else 0.0
     asym = float(np.max(np.abs(arr - arr.T)))
     if asym > SYM_TOL * scale:
@@ -50,7 +57,13 @@ def _matrix(name: str, A, n: int | None) -> np.ndarray:
 
 
 def _positive_definite(name: str, A: np.ndarray, semi: bool = False) -> None:
-    w = np.linalg.eigvalsh(A)
+    try:
+        w = np.linalg.eigvalsh(A)
+    except np.linalg.LinAlgError:
+        raise ParameterError(
+            f"{name}: its eigenvalues do not converge in floating point: allowed a symmetric matrix whose entries "
+            f"span fewer than about 1e100"
+        ) from None
     scale = max(float(np.max(np.abs(w))), np.finfo(float).tiny)
     ok = w.min() >= -SYM_TOL * scale if semi else w.min() > 0.0
     if not ok:
@@ -102,7 +115,13 @@ class MDOF:
 
     @cached_property
     def _eig(self):
-        w2, phi = sla.eigh(self.K, self.M)  # phiᵀ M phi = I
+        try:
+            w2, phi = sla.eigh(self.K, self.M)  # phiᵀ M phi = I
+        except (np.linalg.LinAlgError, ValueError):
+            raise ParameterError(
+                "M and K: the generalised eigenproblem K φ = ω² M φ does not converge in floating point: allowed "
+                "M and K whose entries span fewer than about 1e100"
+            ) from None
         w = np.sqrt(np.maximum(w2, 0.0))
         if self.is_classically_damped:  # rotate within repeated frequencies so that phiᵀ C phi is diagonal
             i = 0

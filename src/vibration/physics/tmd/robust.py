@@ -94,7 +94,7 @@ def bare_peak(zeta_p, stiffness_error=0.0) -> np.ndarray:
     8.9583
     """
     zp = _zeta("zeta_p", zeta_p)
-    eps = check_array("stiffness_error", stiffness_error, low=-0.9, high=9.0, ndim=(0, 1, 2))
+    eps = check_array("stiffness_error", stiffness_error, low=-0.9, high=9.0, ndim=(0, 1))
     z = zp / np.sqrt(1.0 + eps)
     with np.errstate(divide="ignore"):
         h = np.where(z < 2**-0.5, 1.0 / (2.0 * z * np.sqrt(np.maximum(1.0 - z * z, 0.0))), 1.0)

@@ -6,9 +6,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_array
+from ..checks import check_array, check_choice
 from ..model import ParameterError, check_real
-from ._limits import N_DOF_MAX, ZETA_MAX, ZETA_P_OPT_MAX
+from ._limits import ENTRY_MAX, ENTRY_MIN, N_DOF_MAX, SPREAD_MAX, ZETA_MAX, ZETA_P_OPT_MAX
 from .mdof import MDOF, _matrix
 from .tuning import TMDTuning, den_hartog, h2_tuning, hinf_tuning
 
@@ -36,6 +36,11 @@ def modal_damping_matrix(M, K, zeta) -> np.ndarray:
     """
     model = MDOF(M, np.zeros_like(_matrix("M", M, None)), K)
     z = check_array("zeta", zeta, low=0.0, high=ZETA_MAX, ndim=(0, 1), max_size=N_DOF_MAX)
+    if np.any((z > 0.0) & (z < ZETA_MIN)):
+        raise ParameterError(
+            f"zeta contains {float(z[(z > 0.0) & (z < ZETA_MIN)][0])!r}: allowed zeta = 0 or {ZETA_MIN:g} <= zeta <= "
+            f"{ZETA_MAX:g} (a smaller damping ratio underflows the damping matrix)"
+        )
     if z.size not in (1, model.n):
         raise ParameterError(f"zeta has {z.size} values: allowed 1 or one per mode ({model.n})")
     z = np.broadcast_to(z, (model.n,))
@@ -70,8 +75,20 @@ def shear_building(masses, stiffnesses, zeta=0.05) -> MDOF:
     >>> b.K.tolist()
     [[2.0, -1.0], [-1.0, 1.0]]
     """
-    m = np.atleast_1d(check_array("masses", masses, low=0.0, low_open=True, max_size=N_DOF_MAX, unit="kg"))
-    k = np.atleast_1d(check_array("stiffnesses", stiffnesses, low=0.0, low_open=True, max_size=N_DOF_MAX, unit="N/m"))
+    m = np.atleast_1d(
+        check_array("masses", masses, low=ENTRY_MIN, high=ENTRY_MAX, ndim=(0, 1), max_size=N_DOF_MAX, unit="kg")
+    )
+    k = np.atleast_1d(
+        check_array(
+            "stiffnesses", stiffnesses, low=ENTRY_MIN, high=ENTRY_MAX, ndim=(0, 1), max_size=N_DOF_MAX, unit="N/m"
+        )
+    )
+    for name, arr, unit in (("masses", m, "kg"), ("stiffnesses", k, "N/m")):
+        if arr.max() > SPREAD_MAX * arr.min():
+            raise ParameterError(
+                f"{name} spans {arr.min():.3g} to {arr.max():.3g} {unit}, a ratio of {arr.max() / arr.min():.3g}: "
+                f"allowed a largest-to-smallest ratio of at most {SPREAD_MAX:g}"
+            )
     if k.shape != m.shape:
         raise ParameterError(
             f"masses has {m.size} values and stiffnesses {k.size}: "
@@ -117,9 +134,11 @@ def add_absorber(model: MDOF, dof: int, m_a, k_a, c_a) -> MDOF:
     if isinstance(dof, bool) or not isinstance(dof, int | np.integer) or not -n <= dof < n:
         raise ParameterError(f"dof = {dof!r} is out of range: allowed an integer -{n} <= dof < {n}")
     j = int(dof) % n
-    m_a = check_real("m_a", m_a, low=0.0, low_open=True, unit="kg")
-    k_a = check_real("k_a", k_a, low=0.0, low_open=True, unit="N/m")
-    c_a = check_real("c_a", c_a, low=0.0, unit="N s/m")
+    m_a = check_real("m_a", m_a, low=ENTRY_MIN, high=ENTRY_MAX, unit="kg")
+    k_a = check_real("k_a", k_a, low=ENTRY_MIN, high=ENTRY_MAX, unit="N/m")
+    c_a = check_real("c_a", c_a, low=0.0, high=ENTRY_MAX, unit="N s/m")
+    if 0.0 < c_a < ENTRY_MIN:
+        raise ParameterError(f"c_a = {c_a!r} N s/m is out of range: allowed c_a = 0 or {ENTRY_MIN:g} <= c_a N s/m")
     M, C, K = (np.zeros((n + 1, n + 1)) for _ in range(3))
     M[:n, :n], C[:n, :n], K[:n, :n] = model.M, model.C, model.K
     M[n, n] = m_a
@@ -144,10 +163,20 @@ def tmd_system(m, c, k, tuning: TMDTuning) -> MDOF:
     """
     if not isinstance(tuning, TMDTuning):
         raise ParameterError(f"tuning = {tuning!r} is not a TMDTuning: allowed den_hartog(...), hinf_tuning(...)")
-    m = check_real("m", m, low=0.0, low_open=True, unit="kg")
-    c = check_real("c", c, low=0.0, unit="N s/m")
-    k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
-    return add_absorber(MDOF([[m]], [[c]], [[k]]), 0, *tuning.absorber(m, k))
+    m = check_real("m", m, low=ENTRY_MIN, high=ENTRY_MAX, unit="kg")
+    c = check_real("c", c, low=0.0, high=ENTRY_MAX, unit="N s/m")
+    k = check_real("k", k, low=ENTRY_MIN, high=ENTRY_MAX, unit="N/m")
+    if 0.0 < c < ENTRY_MIN:
+        raise ParameterError(f"c = {c!r} N s/m is out of range: allowed c = 0 or {ENTRY_MIN:g} <= c N s/m")
+    m_a, k_a, c_a = tuning.absorber(m, k)
+    for name, value, unit in (("m_a", m_a, "kg"), ("k_a", k_a, "N/m"), ("c_a", c_a, "N s/m")):
+        if not (ENTRY_MIN <= value <= ENTRY_MAX or (name == "c_a" and value == 0.0)):
+            raise ParameterError(
+                f"m = {m!r} kg, k = {k!r} N/m and the tuning (mu = {tuning.mu!r}, f = {tuning.f!r}, zeta_a = "
+                f"{tuning.zeta_a!r}) give the absorber's {name} = {value:.3g} {unit}: allowed {ENTRY_MIN:g} to "
+                f"{ENTRY_MAX:g} {unit}"
+            )
+    return add_absorber(MDOF([[m]], [[c]], [[k]]), 0, m_a, k_a, c_a)
 
 
 @dataclass(frozen=True)
@@ -197,8 +226,7 @@ def first_mode_absorber(model: MDOF, mu, dof: int = -1, rule: str = "H∞") -> M
     if isinstance(dof, bool) or not isinstance(dof, int | np.integer) or not -n <= dof < n:
         raise ParameterError(f"dof = {dof!r} is out of range: allowed an integer -{n} <= dof < {n}")
     rules = {"H∞": hinf_tuning, "Den Hartog": den_hartog, "H2": h2_tuning}
-    if rule not in rules:
-        raise ParameterError(f"rule = {rule!r} is not known: allowed 'H∞', 'Den Hartog', 'H2'")
+    rule = check_choice("rule", rule, tuple(rules))
     phi = model.modes[:, 0]
     if phi[dof] == 0.0:
         raise ParameterError(f"dof = {dof}: the first mode does not move there, allowed a moving degree of freedom")
@@ -227,6 +255,9 @@ def ground_acceleration_load(model: MDOF) -> np.ndarray:
         raise ParameterError(f"model = {model!r} is not an MDOF: allowed MDOF(M, C, K)")
     return -(model.M @ np.ones(model.n))
 
+
+#: Smallest non-zero modal damping ratio (the damping matrix's entries stay normal floats).
+ZETA_MIN = 1e-50
 
 #: Frequencies of the grid of :func:`frf_peak` before the refinement.
 N_FRF_GRID = 2001

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -26,6 +27,25 @@ class TMDTuning:
     peak: float  # max_r |X_p| / (F0 / k_p) on that primary, 1
     r_peak: float  # forcing ratio ω/ω_p of the peak (one of two at an H∞ optimum), 1
     converged: bool = True  # the numerical optimiser met its tolerances within its iteration limit (closed forms: True)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.rule, str) or not self.rule:
+            raise ParameterError(f"rule = {self.rule!r:.80} is not a name: allowed a non-empty string")
+        object.__setattr__(self, "mu", _mu(self.mu))
+        object.__setattr__(self, "f", _f(self.f))
+        object.__setattr__(self, "zeta_a", _zeta("zeta_a", self.zeta_a))
+        object.__setattr__(self, "zeta_p", _zeta("zeta_p", self.zeta_p))
+        peak = self.peak
+        if isinstance(peak, bool) or not isinstance(peak, numbers.Real) or not float(peak) >= 0.0:
+            raise ParameterError(
+                f"peak = {peak!r:.80} is not a peak magnification: allowed a real number peak >= 0 (inf at an "
+                "undamped absorber)"
+            )
+        object.__setattr__(self, "peak", float(peak))
+        object.__setattr__(self, "r_peak", check_real("r_peak", self.r_peak, low=0.0, unit="(ω/ω_p)"))
+        if not isinstance(self.converged, bool | np.bool_):
+            raise ParameterError(f"converged = {self.converged!r:.80} is not a boolean: allowed True or False")
+        object.__setattr__(self, "converged", bool(self.converged))
 
     def _finite_fields(self) -> list[float]:
         """The numbers a nan check covers (see ``_no_nan``)."""
@@ -305,7 +325,7 @@ def mistuned_peak(tuning: TMDTuning, stiffness_error, zeta_p=None) -> np.ndarray
     if not isinstance(tuning, TMDTuning):
         raise ParameterError(f"tuning = {tuning!r} is not a TMDTuning: allowed den_hartog(...), hinf_tuning(...)")
     zp = tuning.zeta_p if zeta_p is None else _zeta("zeta_p", zeta_p)
-    eps = check_array("stiffness_error", stiffness_error, low=-0.9, high=9.0, ndim=(0, 1, 2), max_size=MISTUNED_MAX)
+    eps = check_array("stiffness_error", stiffness_error, low=-0.9, high=9.0, ndim=(0, 1), max_size=MISTUNED_MAX)
     flat = eps.ravel()
     out = np.empty(flat.shape)
     for i, e in enumerate(flat):

@@ -7,11 +7,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..model import Oscillator, ParameterError, check_int, check_real
+from ..checks import check_array
+from ..model import RATE_MAX, RATE_MIN, Oscillator, ParameterError, check_int, check_real
 from .identification import identify
-from .measurements import MIN_SAMPLES, _check_osc, _check_seed, _check_sensor, _grid_size, _signal, _work
+from .measurements import MAX_ABS, MIN_SAMPLES, _check_osc, _check_seed, _check_sensor, _grid_size, _signal, _work
 from .sampled import random_force, stiffness_profile, synthetic_measurements
-from .tracking import CALIBRATION, CUSUM_DRIFT, detect_change
+from .tracking import CALIBRATION, CUSUM_DRIFT, DRIFT_MAX, detect_change
 from .validation import (
     WHITENESS_LAGS,
     _ar1,
@@ -461,7 +462,7 @@ def detection_experiment(
     ([1.0, 1.0], [0.0, 0.0])
     """
     _check_osc(osc)
-    t = _signal("t", t)
+    t = check_array("t", _signal("t", t), low=0.0, ndim=(1,), min_size=MIN_SAMPLES, increasing=True, unit="s")
     runs = check_int("runs", runs, low=2, high=10_000)
     seed = _check_seed(seed)
     sensor = _check_sensor(sensor)
@@ -476,8 +477,12 @@ def detection_experiment(
     thr = _signal("thresholds", thresholds) if np.ndim(thresholds) == 1 else None
     if thr is None or np.any(thr <= 0.0):
         raise ParameterError(f"thresholds = {thresholds!r}: allowed a 1-D array of positive numbers")
-    noise = check_real("noise", noise, low=0.0, low_open=True)
-    stiffness = _signal("stiffness", stiffness, t.size)
+    noise = check_real("noise", noise, low=0.0, low_open=True, high=MAX_ABS, unit="(sensor units)")
+    drift = check_real("drift", drift, low=0.0, low_open=True, high=DRIFT_MAX)
+    stiffness = check_array(
+        "stiffness", _signal("stiffness", stiffness, t.size), low=osc.m * RATE_MIN**2, high=osc.m * RATE_MAX**2,
+        ndim=(1,), unit="N/m",
+    )  # fmt: skip
     healthy = synthetic_measurements(osc, t, force, sensor=sensor)
     faulty = synthetic_measurements(osc, t, force, sensor=sensor, stiffness=stiffness)
     peaks = np.empty(runs)
@@ -679,7 +684,12 @@ def fault_scenario(k: float, t_monitor: float, dt: float, decline_rate: float, d
     (40.0, 70.0, 16.92)
     """
     t_monitor = check_real("t_monitor", t_monitor, low=0.0, low_open=True, unit="s")
-    dt = check_real("dt", dt, low=0.0, low_open=True, high=t_monitor / MIN_SAMPLES, unit="s")
+    dt = check_real("dt", dt, low=0.0, low_open=True, unit="s")
+    if dt > t_monitor / MIN_SAMPLES:
+        raise ParameterError(
+            f"dt = {dt!r} s with t_monitor = {t_monitor!r} s gives fewer than {MIN_SAMPLES} samples: allowed dt <= "
+            f"t_monitor / {MIN_SAMPLES} (t_monitor >= {MIN_SAMPLES} dt)"
+        )
     t = np.arange(_grid_size(t_monitor, dt, "t_monitor")) * dt
     start, when = 0.4 * t_monitor, 0.7 * t_monitor
     return FaultScenario(t, stiffness_profile(t, k, start, decline_rate, drop_time=when, drop=drop), start, when)
@@ -715,7 +725,12 @@ def detection_study(
     """
     _check_osc(osc)
     t_monitor = check_real("t_monitor", t_monitor, low=0.0, low_open=True, unit="s")
-    dt = check_real("dt", dt, low=0.0, low_open=True, high=t_monitor / MIN_SAMPLES, unit="s")
+    dt = check_real("dt", dt, low=0.0, low_open=True, unit="s")
+    if dt > t_monitor / MIN_SAMPLES:
+        raise ParameterError(
+            f"dt = {dt!r} s with t_monitor = {t_monitor!r} s gives fewer than {MIN_SAMPLES} samples: allowed dt <= "
+            f"t_monitor / {MIN_SAMPLES} (t_monitor >= {MIN_SAMPLES} dt)"
+        )
     noise = check_real("noise", noise, low=0.0, low_open=True, high=10.0)
     decline_rate = check_real("decline_rate", decline_rate, low=0.0, unit="1/s")
     drop = check_real("drop", drop, low=0.0, high=0.9)

@@ -166,6 +166,8 @@ def load_measurements(path) -> Measurements:
     ...
     vibration.physics.model.ParameterError: column x_m, row 3002 (line 3003): 'nan' is not a finite number: ...
     """
+    if not isinstance(path, str | os.PathLike) or isinstance(path, bytes):
+        raise ParameterError(f"path = {path!r:.80} is not a file name: allowed a str or os.PathLike naming a CSV file")
     path = Path(os.fspath(path))
     try:
         size = path.stat().st_size
@@ -325,13 +327,13 @@ def _check_osc(osc) -> Oscillator:
 
 def _grid_size(duration: float, dt: float, what: str = "duration") -> int:
     """Samples of ``arange(round(duration / dt) + 1) * dt``, refused above ``N_POINTS_MAX`` before allocating."""
-    n = round(duration / dt) + 1
-    if n > N_POINTS_MAX:
+    n = duration / dt + 1.0
+    if not n <= N_POINTS_MAX:
         raise ParameterError(
             f"{what} = {duration!r} s with dt = {dt!r} s makes {n:.3g} samples: allowed at most {N_POINTS_MAX} "
             f"({what} / dt <= {N_POINTS_MAX - 1})"
         )
-    return int(n)
+    return int(round(duration / dt)) + 1
 
 
 def _work(name: str, value, work: float, limit: float, what: str) -> None:

@@ -20,6 +20,8 @@ __all__ = [
     "track_stiffness",
 ]
 
+#: Largest CUSUM drift accepted, in units of the noise variance (a detector that can never alarm beyond it).
+DRIFT_MAX = 100.0
 #: Default CUSUM drift (in units of the noise variance) and threshold of :func:`detect_change`.
 CUSUM_DRIFT = 1.0
 CUSUM_THRESHOLD = 40.0
@@ -229,7 +231,7 @@ def cusum_variance_ratio(drift: float) -> float:
     """
     from scipy.optimize import brentq
 
-    drift = check_real("drift", drift, low=0.0, low_open=True, high=100.0)
+    drift = check_real("drift", drift, low=0.0, low_open=True, high=DRIFT_MAX)
 
     def f(rho):
         return math.log(rho) / (1.0 - 1.0 / rho) - 1.0 - drift
@@ -298,7 +300,7 @@ def detect_change(
     """
     t, h, force, y, sensor = _record(t, force, x, a)
     threshold = check_real("threshold", threshold, low=0.0, low_open=True)
-    drift = check_real("drift", drift, low=0.0, low_open=True)
+    drift = check_real("drift", drift, low=0.0, low_open=True, high=DRIFT_MAX)
     n = t.size
     n_cal = _calibration(calibration, n)
     osc, _ = _reference(reference, t, force, y, sensor, n_cal)
