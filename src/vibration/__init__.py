@@ -121,7 +121,7 @@ _LAZY: dict[str, tuple[str | None, list[str]]] = {
     "vibration.physics.duffing": (
         None,
         ["Duffing", "duffing_response", "folds", "frequency_sweep", "hb_amplitudes", "lyapunov_benettin"]
-        + ["lyapunov_estimate", "lyapunov_qr", "poincare_section", "response_curve", "sweep"],
+        + ["lyapunov_estimate", "lyapunov_qr", "poincare_section", "response_curve"],
     ),
     "vibration.physics.twin": (
         None,
@@ -137,8 +137,14 @@ _LAZY: dict[str, tuple[str | None, list[str]]] = {
         ["DecayPeaks", "FreeDecayFit", "HarmonicFit", "LoggerRun", "PeakDecayFit", "fit_free_decay"]
         + ["free_decay_peaks", "free_decay_response", "friction_forced_amplitude", "friction_forced_amplitude_hb"]
         + ["half_period_losses", "harmonic_fit", "load_logger_runs", "peak_decay_fit"]
-        + ["simulate_friction_oscillator"],
+        + ["simulate_friction_oscillator"]
+        + ["DampingCurve", "DampingDifference", "JointBrakeFit", "LabCheck", "LabData", "LabRun", "PooledDecayFit"]
+        + ["Rig", "Steadiness", "check_lab_data", "compare_damping", "damping_ode", "damping_vs_amplitude"]
+        + ["equivalent_zeta", "fit_free_decays", "joint_brake_fit", "law_forced_amplitude", "load_cassy_runs"]
+        + ["load_lab_data", "parse_law", "steadiness"],
     ),
+    # runs at scale: a chapter's study over a grid of parameters, gathered into an xarray Dataset
+    "vibration.publishing.sweep": ("scale", ["sweep"]),
 }
 
 #: Namespaces reachable as ``vibration.<name>``: module and the extra it needs.
@@ -154,7 +160,7 @@ _NAMESPACES: dict[str, tuple[str, str | None]] = {
 }
 
 #: Third-party packages of each extra (the message of a missing one names the extra and them).
-EXTRAS = {"learn": ("gymnasium", "cma"), "control": ("control",), "book": ("matplotlib", "ipywidgets", "papermill")}
+EXTRAS = {"scale": ("dask", "distributed", "xarray", "h5netcdf"), "learn": ("gymnasium", "cma"), "control": ("control",), "book": ("matplotlib", "ipywidgets", "papermill")}
 
 _WHERE = {name: module for module, (_, names) in _LAZY.items() for name in names}
 

@@ -85,6 +85,22 @@ BUILDING = v.shear_building([1.0, 1.0], [100.0, 100.0])
 LAB_T = np.linspace(0.0, 30.0, 3001)
 LAB_THETA = 1.2 * np.exp(-0.05 * LAB_T) * np.cos(3.0 * LAB_T)
 PEAKS = v.free_decay_peaks(LAB_T, LAB_THETA)
+
+
+def _cassy_file() -> Path:
+    """A small CASSY Lab 2 export (German headers, ``;``, decimal comma, BOM) of a free decay at 10 Hz."""
+    import tempfile
+
+    t = np.arange(0.0, 60.0, 0.1)
+    theta = 2.0 * np.exp(-0.03 * t) * np.cos(3.0 * t)
+    header = "Zeit t / s;Weg &b_A1 / rad;Spannung U_B1 / V"
+    rows = [";".join(f"{x:.4f}".replace(".", ",") for x in (a, b, 0.002)) for a, b in zip(t, theta, strict=True)]
+    path = Path(tempfile.mkdtemp(prefix="fuzz-cassy-")) / "frei.csv"
+    path.write_bytes(("\ufeff" + "\r\n".join([header, *rows]) + "\r\n").encode("utf-8"))
+    return path
+
+
+CASSY_FILE = _cassy_file()
 TASK = v.OscillatorTask(n_steps=50)
 
 # the core
@@ -171,7 +187,6 @@ fuzz(v.hb_amplitudes, duffing=D, F0=5.0, omega=5.0)
 fuzz(v.folds, duffing=D, F0=5.0)
 fuzz(v.response_curve, duffing=D, F0=5.0, omega_max=8.0, n=50)
 fuzz(v.duffing_response, duffing=D, F0=5.0, omega=4.47, t=T, sine=True, x0=0.0, v0=0.0)
-fuzz(v.sweep, duffing=D, F0=5.0, omegas=W[:3], direction="up")
 fuzz(v.frequency_sweep, duffing=D, F0=5.0, omegas=W[:3], direction="up", x0=0.0, v0=0.0, max_periods=200)
 _CHAOS = {"duffing": D, "F0": 5.0, "omega": 4.47, "x0": 0.0, "v0": 0.0, "steps_per_period": 100}
 fuzz(v.poincare_section, **_CHAOS, n_periods=20, n_transient=5)
@@ -213,6 +228,31 @@ fuzz(v.friction_forced_amplitude, r=np.linspace(0.5, 1.5, 11), zeta=0.05, fricti
 fuzz(v.friction_forced_amplitude_hb, r=np.linspace(0.5, 1.5, 11), zeta=0.05, friction_ratio=0.1)
 fuzz(v.simulate_friction_oscillator, t=LAB_T[:301], drive=0.1 * np.sin(3.0 * LAB_T[:301]), omega_n=3.0, zeta=0.05,
      friction=0.01, gain=1.0, substeps=5)  # fmt: skip
+LAB_RUNS = [(LAB_T, LAB_THETA), (LAB_T, 1.1 * LAB_THETA), (LAB_T, 0.9 * LAB_THETA)]
+LAB_DRIVEN = 0.5 * np.sin(3.0 * LAB_T) * (1.0 - np.exp(-0.5 * LAB_T))
+fuzz(v.damping_vs_amplitude, t=LAB_T, theta=LAB_THETA)
+fuzz(v.fit_free_decays, runs=LAB_RUNS, law="coulomb+viscous")
+fuzz(v.compare_damping, runs_a=LAB_RUNS, runs_b=LAB_RUNS[:2], band=(0.2, 1.0))
+fuzz(v.joint_brake_fit, runs_a=LAB_RUNS, runs_b=LAB_RUNS[:2])
+fuzz(v.steadiness, t=LAB_T, theta=LAB_DRIVEN, omega=3.0, periods=3, tolerance=0.02)
+fuzz(v.parse_law, law="coulomb+quadratic", check=lambda out: isinstance(out, tuple))
+fuzz(v.equivalent_zeta, amplitude=np.linspace(0.5, 3.0, 6), omega_n=3.0, zeta=0.01, quadratic=0.01)
+fuzz(v.law_forced_amplitude, omega=np.linspace(2.5, 3.5, 5), omega_n=3.0, force=0.1, zeta=0.02, friction=0.005)
+fuzz(v.damping_ode, t_eval=LAB_T[:301], omega_n=3.0, zeta=0.02, friction=0.01, theta0=1.0)
+LAB_FOLDER = ROOT / "data" / "lab_oscillator"
+fuzz(v.load_lab_data, folder=LAB_FOLDER, kinds={"folder": "path"}, check=lambda out: out is not None)
+fuzz(v.check_lab_data, folder=LAB_FOLDER, kinds={"folder": "path"}, check=lambda out: out is not None)
+fuzz(v.load_cassy_runs, path=CASSY_FILE, kinds={"path": "path"})
+for _rec in (v.DampingCurve, v.DampingDifference, v.JointBrakeFit, v.LabCheck, v.LabData, v.LabRun):
+    fuzz(_rec, record=True, why="a result record the library builds and returns")
+for _rec in (v.PooledDecayFit, v.Rig, v.Steadiness):
+    fuzz(_rec, record=True, why="a result record the library builds and returns")
+
+# runs at scale: a chapter's study over a grid (the chapter and grid battery is in tests/test_sweep.py)
+fuzz(v.sweep, chapter="04_frequency_response", grid={"c_nominal": [0.5, 1.0]}, params=None, client=None,
+     serial=True, skip=("chapter", "grid", "params", "client"), check=lambda out: out is not None,
+     why="chapter, grid, params: validated against the chapter's schema, refused naming the parameter in "
+     "tests/test_sweep.py; client: a dask Client or None")  # fmt: skip
 for _rec in (v.DecayPeaks, v.FreeDecayFit, v.HarmonicFit, v.LoggerRun, v.PeakDecayFit):
     fuzz(_rec, record=True, why="a result record the library builds and returns")
 fuzz(v.ParameterError, record=True, why="the exception the battery expects")
