@@ -506,6 +506,11 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv[:1] == ["exercises"]:  # a subcommand: exercise sheets, no notebook run (no chapter takes that name)
+        from .sheets import main as exercises_main
+
+        return exercises_main(argv[1:])
     parser = argparse.ArgumentParser(prog="python -m vibration.report", description=__doc__.split("\n\n")[0])
     parser.add_argument("chapters", nargs="*", help="chapters to run (default: all)")
     parser.add_argument(
@@ -528,7 +533,7 @@ def main(argv: list[str] | None = None) -> int:
         "--new-chapter", metavar="NN_topic", help="write a new chapter from the template (package, notebook, test)"
     )
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
-    args = parser.parse_args(_protect_negative_values(sys.argv[1:] if argv is None else list(argv)))
+    args = parser.parse_args(_protect_negative_values(argv))
     previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         if args.new_chapter:
