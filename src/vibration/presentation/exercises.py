@@ -250,9 +250,9 @@ def tolerance_text(answer: Answer) -> str:
     """The tolerance a check allows, in words (``within 1 %``, ``within 0.01 m``)."""
     parts = []
     if answer.rtol:
-        parts.append(f"{answer.rtol * 100:.3g} %")
+        parts.append(f"{fmt(answer.rtol * 100, 3)} %")
     if answer.atol:
-        parts.append(f"{answer.atol:.3g}{' ' + answer.unit if answer.unit else ''}")
+        parts.append(f"{fmt(answer.atol, 3)}{' ' + answer.unit if answer.unit else ''}")
     return "within " + " + ".join(parts)
 
 
@@ -327,6 +327,19 @@ def section_text(exercises) -> str:
     return "\n".join(lines)
 
 
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
 def fmt(x: float, digits: int = 4) -> str:
-    """``x`` to ``digits`` significant digits, as the worked answers print it (``4.465``, ``1.2e-05``)."""
-    return f"{x:.{digits}g}"
+    """``x`` to ``digits`` significant digits as the book writes numbers: a true minus, powers of ten as ×10ⁿ.
+
+    >>> fmt(4.46514), fmt(-0.05), fmt(1.2e-5), fmt(1e-9), fmt(2.5e7)
+    ('4.465', '−0.05', '1.2×10⁻⁵', '10⁻⁹', '2.5×10⁷')
+    """
+    text = f"{x:.{digits}g}"
+    if "e" in text:
+        mant, exp = text.split("e")
+        power = "10" + str(int(exp)).translate(_SUPERSCRIPT)
+        text = power if mant in ("1", "-1") else f"{mant}×{power}"
+        text = ("-" + text) if mant == "-1" else text
+    return text.replace("-", "−", 1) if text.startswith("-") else text

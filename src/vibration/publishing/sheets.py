@@ -439,3 +439,86 @@ def main(argv: list[str]) -> int:
         return 1
     print(f"wrote {len(students)} sheet(s) and their keys to {Path(args.out) / 'sheets'}, answers to {path}")
     return 0
+
+
+# ---------------------------------------------------------------------------------------------------------
+# The book: chapter blurbs, the course plan, downloads
+
+#: Weeks of a suggested one-semester course: (weeks, chapters, exercises, what).
+COURSE_PLAN = (
+    ("1-2", "1", "01.1-01.5", "the model, its exact solution and the paper's method"),
+    ("3", "2", "02.1-02.5", "reading a paper's claims against the exact solution"),
+    ("4", "3", "03.1-03.4", "what a numerical solution's error depends on"),
+    ("5-6", "4", "04.1-04.5", "frequency response, bandwidth, quality factor, energy"),
+    ("7", "5", "05.1-05.4", "exploring the response with the sliders; a sheet per student"),
+    ("8-12 (optional)", "6-8", "06.1-08.3", "advanced: stability and design, control, absorbers"),
+)
+
+
+def chapter_blurb(stem: str) -> str:
+    """ "(core) Question?" for the front page: the chapter's question and level, or "" when it has none."""
+    mod = _modules().get(stem)
+    if mod is None or not hasattr(mod, "QUESTION"):
+        return ""
+    return f"*{mod.LEVEL}*: {mod.QUESTION}"
+
+
+def course_plan_markdown() -> str:
+    """The suggested course plan: Part I as a second-year course, then optional advanced chapters."""
+    lines = [
+        "### A suggested course",
+        "",
+        "Part I (chapters 1-5) is the core course, for second-year engineering students who know Newton's second "
+        "law and linear ordinary differential equations; Parts II and III are advanced (graduate) material. "
+        "Every chapter opens with its learning objectives and ends with exercises whose answers follow the run's "
+        "parameters; the runner writes each student a sheet with their own numbers and a key.",
+        "",
+        "| weeks | chapters | exercises | topic |",
+        "|---|---|---|---|",
+    ]
+    lines += [f"| {w} | {c} | {e} | {t} |" for w, c, e, t in COURSE_PLAN]
+    return "\n".join(lines)
+
+
+def wheel_name() -> str:
+    """The file name of the package's wheel as the book offers it."""
+    from importlib.metadata import version
+
+    return f"vibration-{version('vibration')}-py3-none-any.whl"
+
+
+def download_cell(stem: str):
+    """The Markdown cell under a chapter's title: its notebook and the package, as downloads of the book."""
+    import nbformat
+
+    return nbformat.v4.new_markdown_cell(
+        f'<p class="vib-downloads">Download <a href="_static/downloads/{stem}.ipynb" download>this chapter\'s '
+        f'notebook</a> (with its outputs) and <a href="_static/downloads/{wheel_name()}" download>the package</a> '
+        '(see "Using the package").</p>'
+    )
+
+
+def write_downloads(pages, folder: Path) -> list[Path]:
+    """Each chapter's executed notebook and the package's wheel in ``folder`` (copied into the book)."""
+    import subprocess
+
+    import nbformat
+
+    from .report import project_root
+
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    for p in pages:
+        nb = nbformat.from_dict(p.notebook)
+        nb.metadata.pop("papermill", None)
+        path = folder / f"{p.name}.ipynb"
+        nbformat.write(nb, path)
+        written.append(path)
+    wheel = folder / wheel_name()
+    if not wheel.exists():
+        cmd = [sys.executable, "-m", "pip", "wheel", str(project_root()), "--no-deps", "--no-build-isolation", "-q"]
+        done = subprocess.run([*cmd, "-w", str(folder)], capture_output=True, text=True, timeout=300)
+        if done.returncode != 0 or not wheel.exists():
+            raise RuntimeError(f"the package's wheel was not built: {done.stderr.strip()[-400:]}")
+    written.append(wheel)
+    return written

@@ -20,6 +20,10 @@ CHAPTER = "02_claims_audit"
 #: The paper's resonance amplitude, m ("a level of ±5.0 meters in the resonance case").
 PAPER_RESONANCE_AMPLITUDE = 5.0
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "Which of the paper's quantitative claims hold, and which reading of its numbers explains the rest?"
+LEVEL = "core"
+
 OBJECTIVES = (
     "Compute the static deflection F<sub>0</sub>/k and the magnification M of a forced response.",
     "Decide whether a claimed amplitude is a steady amplitude, a peak-to-peak swing or a window peak.",
@@ -152,8 +156,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 kind="explore",
                 text=(
                     "Rerun the chapter with larger values of the low damping (`-p c_low VALUE`). Which smallest "
-                    f"c_low (N s/m) lets that run settle (2 %) inside the {g(p.t_end)} s window, so that the audit "
-                    "stops seeing a growing envelope?"
+                    f"c<sub>low</sub> (N s/m) lets that run settle (2 %) inside the {g(p.t_end)} s window, so that "
+                    "the audit stops seeing a growing envelope?"
                 ),
                 worked=(
                     f"The settling time falls as c grows: {g(_settle(p, p.c_low))} s at c = {g(p.c_low)} N s/m. "

@@ -16,6 +16,10 @@ CHAPTER = "07_control"
 #: The damping ratio asked of the loop in exercise 07.3.
 ZETA_TARGET = 0.7
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "How far can feedback, semi-active dampers and input shaping do better than a passive damper?"
+LEVEL = "advanced"
+
 OBJECTIVES = (
     "Compute the natural frequency and damping ratio of a PD-controlled oscillator.",
     "Compute the smallest velocity feedback that stabilises negative damping.",

@@ -12,6 +12,10 @@ from .params import Params
 
 CHAPTER = "10_digital_twin"
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "Can a twin identify the oscillator from noisy records and detect a loss of stiffness in time?"
+LEVEL = "advanced"
+
 OBJECTIVES = (
     "Compute what a sampled record can resolve: its Nyquist frequency and its frequency resolution.",
     "Compute how a loss of stiffness moves the natural frequency a twin tracks.",
@@ -36,18 +40,20 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             chapter=CHAPTER,
             kind="numerical",
             text=(
-                f"The sensors sample every Δt = {g(p.dt)} s for T = {g(p.t_record)} s. Compute the Nyquist frequency "
-                "(Hz) and the frequency resolution 1/T (Hz) of one record."
+                f"The sensors sample every Δt = {g(p.dt)} s for T<sub>rec</sub> = {g(p.t_record)} s. Compute the "
+                "Nyquist frequency "
+                "(Hz) and the frequency resolution 1/T<sub>rec</sub> (Hz) of one record."
             ),
             worked=(
-                f"f<sub>Nyquist</sub> = 1/(2Δt) = 1/(2 × {g(p.dt)}) = {g(nyq)} Hz; 1/T = 1/{g(p.t_record)} = "
+                f"f<sub>Nyquist</sub> = 1/(2Δt) = 1/(2 × {g(p.dt)}) = {g(nyq)} Hz; 1/T<sub>rec</sub> = "
+                f"1/{g(p.t_record)} = "
                 f"{g(df)} Hz. The natural frequency ω<sub>n</sub>/(2π) = {g(f0)} Hz is "
                 + ("below" if f0 < nyq else "above")
                 + " the Nyquist frequency."
             ),
             answers=(
                 Answer(quantity="f_nyquist", symbol="f<sub>Nyquist</sub>", value=nyq, unit="Hz", rtol=2e-3),
-                Answer(quantity="df", symbol="1/T", value=df, unit="Hz", rtol=2e-3),
+                Answer(quantity="df", symbol="1/T<sub>rec</sub>", value=df, unit="Hz", rtol=2e-3),
             ),
         ),
         Exercise(

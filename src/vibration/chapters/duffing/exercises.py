@@ -12,6 +12,10 @@ from .params import Params
 
 CHAPTER = "09_duffing"
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "What changes when the spring is not linear: jumps, folds and chaos?"
+LEVEL = "advanced"
+
 OBJECTIVES = (
     "Compute the backbone frequency of a cubic spring at a given amplitude.",
     "Compute the amplitude up to which the linear model's resonance can be trusted.",

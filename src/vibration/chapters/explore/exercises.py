@@ -16,6 +16,10 @@ CHAPTER = "05_explore"
 #: The magnification a designer allows at resonance in exercise 05.2.
 M_ALLOWED = 5.0
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "What happens to the response as the forcing frequency and the damping move?"
+LEVEL = "core"
+
 OBJECTIVES = (
     "Predict how the steady amplitude moves when the forcing frequency or the damping changes.",
     "Compute the damping needed to hold the resonant magnification below a limit.",

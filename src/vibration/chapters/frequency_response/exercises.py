@@ -14,6 +14,10 @@ from .params import Params
 
 CHAPTER = "04_frequency_response"
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "How does the steady amplitude depend on the forcing frequency and the damping?"
+LEVEL = "core"
+
 OBJECTIVES = (
     "Compute the steady amplitude X and the phase lag φ at any forcing frequency.",
     "Compute the half-power bandwidth and the quality factor Q from the damping.",

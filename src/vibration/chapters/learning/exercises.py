@@ -13,6 +13,10 @@ from .params import Params
 
 CHAPTER = "11_learning"
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "Does a controller learned by trial and error come close to the optimal linear one?"
+LEVEL = "advanced"
+
 OBJECTIVES = (
     "Compute an episode's length in time and in samples per natural period.",
     "Compute the continuous-time LQR gains that a learning controller is scored against.",
@@ -42,11 +46,12 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 "in one natural period 2π/ω<sub>n</sub>?"
             ),
             worked=(
-                f"T = N Δt = {p.n_steps} × {g(p.dt)} = {g(t_ep)} s. ω<sub>n</sub> = {g(wn)} rad/s, so 2π/ω<sub>n</sub> "
+                f"The episode lasts N Δt = {p.n_steps} × {g(p.dt)} = {g(t_ep)} s. ω<sub>n</sub> = {g(wn)} rad/s, so "
+                "2π/ω<sub>n</sub> "
                 f"= {g(2 * math.pi / wn)} s holds {g(per)} steps."
             ),
             answers=(
-                Answer(quantity="T", symbol="T", value=t_ep, unit="s", rtol=2e-3),
+                Answer(quantity="T", symbol="N Δt", value=t_ep, unit="s", rtol=2e-3),
                 Answer(quantity="steps", symbol="steps per period", value=per, unit="", rtol=2e-3),
             ),
         ),
@@ -55,15 +60,16 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             chapter=CHAPTER,
             kind="explore",
             text=(
-                "The stage cost is x² + v² + r u² with r = "
+                "The stage cost is x² + v² + q<sub>u</sub> u² with q<sub>u</sub> = "
                 f"{g(p.r_weight)} 1/N². Compute the continuous-time LQR gains k<sub>x</sub> (N/m) and k<sub>v</sub> "
                 "(N s/m) of u = −k<sub>x</sub> x − k<sub>v</sub> v. Rerun the chapter with ten times the weight "
                 f"(`-p r_weight {g(10 * p.r_weight)}`): do the gains rise or fall?"
             ),
             worked=(
-                "The Riccati equation S'P + PS − PBr⁻¹B'P + W = 0 with the state matrix S = [[0, 1], [−k/m, −c/m]], "
-                f"the input B = [0, 1/m]', the weights W = diag(1, 1) and r = {g(p.r_weight)} gives "
-                f"K = r⁻¹B'P = [{g(k1)} N/m, {g(k2)} N s/m]. A larger r "
+                "The Riccati equation S'P + PS − PB q<sub>u</sub>⁻¹ B'P + diag(q<sub>x</sub>, q<sub>v</sub>) = 0 "
+                "with the state matrix S = [[0, 1], [−k/m, −c/m]], "
+                f"the input B = [0, 1/m]', q<sub>x</sub> = q<sub>v</sub> = 1 and q<sub>u</sub> = {g(p.r_weight)} gives "
+                f"K = q<sub>u</sub>⁻¹B'P = [{g(k1)} N/m, {g(k2)} N s/m]. A larger q<sub>u</sub> "
                 "makes force dearer: the gains fall."
             ),
             answers=(

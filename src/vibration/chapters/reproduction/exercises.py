@@ -13,6 +13,10 @@ from .params import Params
 
 CHAPTER = "01_reproduction"
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "Does the paper's RK45 solution of the forced oscillator match the exact one, figure by figure?"
+LEVEL = "core"
+
 OBJECTIVES = (
     "Compute the natural frequency ω<sub>n</sub>, the damping ratio ζ and the damped frequency ω<sub>d</sub> "
     "from m, c and k.",

@@ -13,6 +13,10 @@ from .params import Params
 
 CHAPTER = "03_solver_accuracy"
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "How accurate is the paper's solver, and what does its accuracy cost?"
+LEVEL = "core"
+
 OBJECTIVES = (
     "Compute how many forcing periods and samples per period a simulated window holds.",
     "Explain what sets the error of an adaptive Runge-Kutta solver, and what does not.",
@@ -41,13 +45,14 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 "period?"
             ),
             worked=(
-                f"The period is T = 2π/ω = {g(2 * math.pi / p.omega_res)} s, so the window holds t<sub>end</sub>/T = "
+                f"The period is T<sub>f</sub> = 2π/ω = {g(2 * math.pi / p.omega_res)} s, so the window holds "
+                "t<sub>end</sub>/T<sub>f</sub> = "
                 f"{g(periods)} periods. The spacing is Δt = t<sub>end</sub>/(N − 1) = {g(dt)} s, so one period holds "
-                f"T/Δt = {g(per_period)} samples."
+                f"T<sub>f</sub>/Δt = {g(per_period)} samples."
             ),
             answers=(
-                Answer(quantity="periods", symbol="t<sub>end</sub>/T", value=periods, unit="", rtol=2e-3),
-                Answer(quantity="samples", symbol="T/Δt", value=per_period, unit="", rtol=2e-3),
+                Answer(quantity="periods", symbol="t<sub>end</sub>/T<sub>f</sub>", value=periods, unit="", rtol=2e-3),
+                Answer(quantity="samples", symbol="T<sub>f</sub>/Δt", value=per_period, unit="", rtol=2e-3),
             ),
         ),
         Exercise(
@@ -106,10 +111,10 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             ),
             worked=(
                 f"Δt doubles to {g(2 * p.t_end / (p.n_points - 1))} s, so one period "
-                f"T = {g(2 * math.pi / p.omega_res)} s "
+                f"T<sub>f</sub> = {g(2 * math.pi / p.omega_res)} s "
                 f"holds {g(per_period / 2)} samples, half as many; the solver's own steps do not change."
             ),
-            answers=(Answer(quantity="samples", symbol="T/Δt", value=per_period / 2, unit="", rtol=2e-3),),
+            answers=(Answer(quantity="samples", symbol="T<sub>f</sub>/Δt", value=per_period / 2, unit="", rtol=2e-3),),
         )
     )
     return tuple(out)

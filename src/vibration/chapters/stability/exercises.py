@@ -13,6 +13,10 @@ from .params import Params
 
 CHAPTER = "06_stability"
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "Is light damping a risk to stability, and what does a designer trade by adding damping?"
+LEVEL = "advanced"
+
 OBJECTIVES = (
     "Decide stability from the poles of m s² + c s + k, and tell bounded resonance from instability.",
     "Compute the overshoot and the settling time of the step response from ζ.",

@@ -12,6 +12,10 @@ from .params import Params
 
 CHAPTER = "08_tmd"
 
+#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
+QUESTION = "How should a tuned mass damper be chosen, and how does it protect a building?"
+LEVEL = "advanced"
+
 OBJECTIVES = (
     "Compute Den Hartog's tuning ratio and absorber damping for a given mass ratio.",
     "Size an absorber's mass, stiffness and damper for a given primary.",
