@@ -191,14 +191,32 @@ def test_check_right_wrong_and_hints():
     assert sheets.check("04.2", 0.8 / 2.0, params={"m": 2.0, "c_nominal": 0.8}, quantity="bandwidth").correct
 
 
-def test_notebook_blocks_hide_answers_in_text():
+def test_notebook_blocks_hide_answers_and_the_book_folds_them():
+    import nbformat
+
     block = sheets.exercise_section("04_frequency_response", {"c_nominal": 0.7})
-    assert "<details" in block._repr_markdown_() and "Worked answer" in block._repr_markdown_()
+    md, meta = block._repr_markdown_()
+    assert "<details" not in md and "Worked" not in md and "0.7 N s/m" in md  # the questions, with the run's values
     assert "0.7" in repr(block) and "Worked" not in repr(block)
+    # no answer in the notebook: the bandwidth c/m = 0.7 rad/s appears only in the question's damping
+    assert "= 0.7 rad/s" not in md and "8.944" not in md
     # a later check without params uses the section's parameters
     assert sheets.check("04.2", 0.7, quantity="bandwidth").correct
     sheets._RUN_PARAMS.clear()
     assert "Learning objectives" in sheets.objectives("04")._repr_markdown_()
+    # the book build folds the worked answers back, recomputed from the recorded parameters
+    nb = nbformat.v4.new_notebook()
+    cell = nbformat.v4.new_code_cell("exercise_section(...)")
+    cell.outputs = [
+        nbformat.v4.new_output(
+            "execute_result", data={"text/markdown": md, "text/plain": repr(block)}, metadata={"text/markdown": meta}
+        )
+    ]
+    nb.cells = [cell]
+    assert sheets.fold_answers(nb) == 1
+    folded = cell.outputs[0]["data"]["text/markdown"]
+    assert folded.count('<details class="exercise-answer">') == len(sheets.exercises("04", params={"c_nominal": 0.7}))
+    assert "c/m = 0.7/1 = 0.7 rad/s" in folded
 
 
 def _csv(path):

@@ -81,9 +81,10 @@ def test_appendices_in_book_order():
 
 
 def test_answers_appendix_gathers_the_folded_answers():
-    block = sheets.exercise_section("04", None)
-    sheets._RUN_PARAMS.clear()
-    md = answers_markdown([("4. Frequency response and design", "04_frequency_response", [block.markdown])])
+    from vibration.presentation.exercises import section_markdown
+
+    folded = section_markdown(sheets.exercises("04"))
+    md = answers_markdown([("4. Frequency response and design", "04_frequency_response", [folded])])
     ids = re.findall(r"^\*\*(\d\d\.\d)\.\*\*", md, re.M)
     assert ids == [e.id for e in sheets.exercises("04")]
     assert "<details" not in md and "0.4504 m" in md  # the default run's amplitude at 3 rad/s, unfolded

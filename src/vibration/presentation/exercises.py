@@ -260,14 +260,15 @@ def objectives_markdown(objectives, prerequisites) -> str:
     """The chapter's objectives and prerequisites as a Markdown block."""
     lines = ["**Learning objectives.** After this chapter you can:", ""]
     lines += [f"- {o}" for o in objectives]
-    lines += ["", "**Prerequisites.** " + "; ".join(prerequisites) + "."]
+    needs = "; ".join(prerequisites)
+    lines += ["", "**Prerequisites.** " + needs[:1].upper() + needs[1:] + "."]
     return "\n".join(lines)
 
 
 def objectives_text(objectives, prerequisites) -> str:
     """The same block as plain text."""
     return "\n".join(
-        ["Learning objectives:"] + [f"- {o}" for o in objectives] + ["Prerequisites: " + "; ".join(prerequisites)]
+        ["Learning objectives:"] + [f"- {o}" for o in objectives] + ["Prerequisites: " + "; ".join(prerequisites) + "."]
     )
 
 

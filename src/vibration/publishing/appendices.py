@@ -228,6 +228,29 @@ LICENCES = """# Licences
 """
 
 
+_PROVENANCE = re.compile(r"repository\s+`([\w.-]+/[\w.-]+)`, folder `([^`]+)`, commit\s+`([0-9a-f]{40})`")
+
+
+def lab_data_source() -> tuple[str, str, str]:
+    """(repository, folder, commit) of the lab measurements, read from their README (the one statement of it)."""
+    readme = files("vibration").joinpath("_data", "lab_oscillator", "README.md").read_text(encoding="utf-8")
+    found = _PROVENANCE.search(" ".join(readme.split()))
+    if not found:
+        raise RuntimeError("data/lab_oscillator/README.md no longer states its repository, folder and commit")
+    return found.group(1), found.group(2), found.group(3)
+
+
 def licences_markdown() -> str:
-    """The Licences page."""
-    return LICENCES
+    """The Licences page, with the lab data's source repository and commit.
+
+    >>> "/tree/450ede098ea5bcfd3f51e0d5e36f97752548f206/" in licences_markdown()
+    True
+    """
+    repo, folder, commit = lab_data_source()
+    url = f"https://github.com/{repo}/tree/{commit}/{folder.strip('/')}"
+    return LICENCES + (
+        "\n## The laboratory data\n\n"
+        f"The measurements of Part III come from the public repository [{repo}]({url}), folder `{folder}`, "
+        f"commit `{commit}`; the files are reproduced byte for byte under new names. That repository states no "
+        "licence: cite it, with the commit, wherever the data are used.\n"
+    )

@@ -483,10 +483,12 @@ def write_source(pages: list[ChapterPage], src: Path) -> None:
     nb.cells.insert(at + 1, nbformat.v4.new_markdown_cell(contents_markdown(chapters)))
     nb.cells.append(nbformat.v4.new_markdown_cell(_toctree(chapters)))
     nbformat.write(nb, src / "index.ipynb")
-    write_appendices(src, chapters)
-    from .sheets import download_cell, write_downloads
+    from .sheets import download_cell, fold_answers, write_downloads
 
-    write_downloads(chapters, src / "_static" / "downloads")
+    write_downloads(chapters, src / "_static" / "downloads")  # the notebooks as students get them: no answers
+    for p in chapters:
+        fold_answers(p.notebook)  # the book folds each worked answer under its exercise
+    write_appendices(src, chapters)
     for p in chapters:
         book_nb = prepare(p, changes)
         book_nb.cells.insert(1, download_cell(p.name))

@@ -54,6 +54,7 @@ __all__ = [
     "TEACHING_RANGES",
     "check",
     "exercise_section",
+    "fold_answers",
     "exercises",
     "main",
     "objectives",
@@ -173,13 +174,13 @@ def check(exercise_id: str, answer, *, params=None, quantity: str | None = None)
 
 
 class _Block:
-    """A notebook output: Markdown for the book, plain text (without answers) for the text view."""
+    """A notebook output: Markdown, plain text and (optionally) metadata the book build reads."""
 
-    def __init__(self, markdown: str, text: str) -> None:
-        self.markdown, self.text = markdown, text
+    def __init__(self, markdown: str, text: str, metadata: dict | None = None) -> None:
+        self.markdown, self.text, self.metadata = markdown, text, metadata
 
-    def _repr_markdown_(self) -> str:
-        return self.markdown
+    def _repr_markdown_(self):
+        return (self.markdown, self.metadata) if self.metadata else self.markdown
 
     def __repr__(self) -> str:
         return self.text
@@ -193,21 +194,48 @@ def objectives(chapter: str) -> _Block:
     )
 
 
-_SECTION_INTRO = (
-    'Every number below follows this run\'s parameters. In JupyterLab, `check("{first}", answer)` (from '
-    "`vibration`) says whether an answer is right within the stated tolerance and gives a hint if not; the "
-    "worked answers are folded under each exercise."
+_INTRO = (
+    'Every number below follows this run\'s parameters. In JupyterLab, `check("{first}", answer)` says whether '
+    "an answer is right within the stated tolerance and gives a hint if not, without giving the answer away. "
 )
+_INTRO_NOTEBOOK = _INTRO + "The worked answers are in the book, folded under each exercise, and in its appendix."
+_INTRO_BOOK = _INTRO + "The worked answers are folded under each exercise."
+
+#: Key of the exercise section's output metadata: the chapter and the parameters it was shown with.
+SECTION_KEY = "vibration-exercises"
 
 
 def exercise_section(chapter: str, params=None) -> _Block:
-    """The chapter's closing exercises for the run's ``params``; later :func:`check` calls use them."""
+    """The chapter's closing exercises for the run's ``params``, questions only; later :func:`check` calls use them.
+
+    The output's metadata records the chapter and its parameters, so that the book build folds each
+    worked answer under its question (:func:`fold_answers`); the notebook itself stores no answer.
+    """
     stem, _ = _module(chapter)
     record = _params(stem, params)
     _RUN_PARAMS[stem] = record
     exs = exercises(stem, params=record)
-    md = "## Exercises\n\n" + _SECTION_INTRO.format(first=exs[0].id) + "\n\n" + section_markdown(exs)
-    return _Block(md, "Exercises\n" + section_text(exs))
+    md = _INTRO_NOTEBOOK.format(first=exs[0].id) + "\n\n" + section_markdown(exs, folded=False)
+    meta = {SECTION_KEY: {"chapter": stem, "params": record.as_dict()}}
+    return _Block(md, "Exercises\n" + section_text(exs), meta)
+
+
+def fold_answers(nb) -> int:
+    """Replace each exercise section's output in ``nb`` by its questions with their worked answers folded.
+
+    The answers are recomputed from the parameters the section recorded. Returns how many sections
+    were folded.
+    """
+    done = 0
+    for cell in nb.cells:
+        for out in cell.get("outputs", []) if cell.cell_type == "code" else []:
+            info = out.get("metadata", {}).get("text/markdown", {}).get(SECTION_KEY)
+            if not info:
+                continue
+            exs = exercises(info["chapter"], params=dict(info["params"]))
+            out["data"]["text/markdown"] = _INTRO_BOOK.format(first=exs[0].id) + "\n\n" + section_markdown(exs)
+            done += 1
+    return done
 
 
 # ---------------------------------------------------------------------------------------------------------
