@@ -275,15 +275,15 @@ def objectives_text(objectives, prerequisites) -> str:
 def question_markdown(ex: Exercise) -> str:
     """The question of ``ex`` (its options for a conceptual one), without its answer."""
     label = {"numerical": "", "conceptual": " (multiple choice)", "explore": " (sliders or a run)"}[ex.kind]
-    out = [f"**Exercise {ex.id}**{label}. {ex.text}"]
+    if ex.answers:
+        asked = ", ".join(f"{a.symbol or a.quantity} ({a.unit or 'dimensionless'})" for a in ex.answers)
+        how = f"*Answer:* {asked}, {tolerance_text(ex.answers[0])}."
+    else:
+        how = "*Answer:* the letter of one option."
+    out = [f"**Exercise {ex.id}**{label}. {ex.text} {how}"]  # one paragraph: no line repeats on a page
     if ex.choices:
         out.append("")
         out += [f"- ({c.key}) {c.text}" for c in ex.choices]
-    if ex.answers:
-        asked = ", ".join(f"{a.symbol or a.quantity} ({a.unit or 'dimensionless'})" for a in ex.answers)
-        out += ["", f"*Answer:* {asked}, {tolerance_text(ex.answers[0])}."]
-    else:
-        out += ["", "*Answer:* the letter of one option."]
     return "\n".join(out)
 
 

@@ -198,7 +198,7 @@ def answers_markdown(chapters: list[tuple[str, str, list[str]]]) -> str:
 
     >>> md = '**Exercise 04.1**. Q?\\n\\n<details class="exercise-answer">\\n<summary>Worked answer 04.1</summary>'
     >>> print(answers_markdown([("4. Frequency", "04_x", [md + "\\n\\nX = 1 m.\\n\\n</details>"])]).splitlines()[-1])
-    X = 1 m.
+    **04.1.** X = 1 m.
     """
     lines = [
         "# Answers to the exercises",
@@ -206,13 +206,13 @@ def answers_markdown(chapters: list[tuple[str, str, list[str]]]) -> str:
         "The worked answers of every chapter's exercises, with the numbers of this run (folded under each "
         "exercise on the chapter's page). A run with other parameters recomputes them.",
     ]
-    for title, name, outputs in chapters:
+    for title, _name, outputs in chapters:
         found = [(m.group(1), m.group(2).strip()) for text in outputs for m in _DETAILS.finditer(text)]
         if not found:
             continue
         lines += ["", f"## {title}", ""]
         for ex_id, body in found:
-            lines += [f"**{ex_id}.** ({name}.ipynb)", "", body, ""]
+            lines += [f"**{ex_id}.** {body}", ""]  # the id opens the answer's first paragraph
     return "\n".join(lines).rstrip() + "\n"
 
 
