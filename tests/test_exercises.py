@@ -233,7 +233,7 @@ def test_sheets_for_a_roster(tmp_path):
     for sid, (m, c, k) in {"ann": (1.5, 0.4, 20.0), "bob": (2.0, 0.9, 35.0), "cy": (0.8, 0.25, 15.0)}.items():
         page = (tmp_path / "o" / "sheets" / f"{sid}.html").read_text()
         key = (tmp_path / "o" / "sheets" / f"{sid}-answers.html").read_text()
-        assert "c_nominal" in page and repr(c) in page and "Worked" not in page
+        assert "c_nominal" in page and f"<strong>{c:g}</strong>" in page and "Worked" not in page
         bw = [r for r in rows if r[0] == sid and r[2] == "04.2" and r[3] == "bandwidth"]
         assert float(bw[0][4]) == pytest.approx(c / m) and bw[0][5] == "rad/s"
         assert f"{c / m:.6g}" in key

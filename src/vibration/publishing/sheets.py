@@ -255,16 +255,30 @@ _STYLE = (
 )
 
 
-def _params_table(values: Mapping) -> str:
-    if not values:
-        return "<p>Parameters: the book's defaults.</p>"
-    rows = "".join(f"<tr><td>{html.escape(k)}</td><td>{html.escape(repr(v))}</td></tr>" for k, v in values.items())
-    return f"<table><tr><th>parameter</th><th>value</th></tr>{rows}</table>"
+def _params_table(stems: list[str], values: Mapping) -> str:
+    """Every parameter of the sheet's chapters with this sheet's value (bold where it is not the book's)."""
+    seen, rows = set(), []
+    for stem in stems:
+        schema = importlib.import_module(f"vibration.chapters.{_packages()[stem]}.params").SCHEMA
+        for p in schema.params:
+            if p.name in seen:
+                continue
+            seen.add(p.name)
+            value = values.get(p.name, p.default)
+            shown = html.escape(f"{value:g}" if isinstance(value, float) else str(value))
+            shown = f"<strong>{shown}</strong>" if p.name in values else shown
+            rows.append(
+                f"<tr><td>{html.escape(p.symbol)}</td><td>{shown}</td><td>{html.escape(p.unit)}</td>"
+                f"<td>{html.escape(p.meaning)}</td><td><code>{html.escape(p.name)}</code></td></tr>"
+            )
+    head = "<tr><th>symbol</th><th>value</th><th>unit</th><th>meaning</th><th>name</th></tr>"
+    return f"<table>{head}{''.join(rows)}</table>"
 
 
 def _sheet_html(sid: str, values: Mapping, sections: list[tuple[str, list[Exercise]]], *, key: bool) -> str:
     title = f"Exercises: {sid}" + (" (answers)" if key else "")
-    body = [f"<h1>{html.escape(title)}</h1>", "<h2>Your parameters</h2>", _params_table(values)]
+    stems = [stem for stem, _ in sections]
+    body = [f"<h1>{html.escape(title)}</h1>", "<h2>Your parameters</h2>", _params_table(stems, values)]
     for stem, exs in sections:
         body.append(f"<h2>{html.escape(stem)}</h2>")
         for ex in exs:
