@@ -318,10 +318,12 @@ def test_the_print_edition_has_a_title_page_contents_and_bookmarks(printed):
     assert texts[0].startswith(BOOK_TITLE), texts[0][:200]
     contents = next(i for i, t in enumerate(texts) if t.startswith("Contents"))
     listing = texts[contents].removeprefix("Contents").split(f" {BOOK_TITLE} ")[0]  # the header line ends it
-    stop = r"(?= (?:\d+\. |Part |Table |Using |References|Overview)|$)"
+    stop = r"(?= (?:\d+\. |Part |Table |Glossary |Running |Using |Answers |Licences|References|Overview)|$)"
     entries = [(t.strip(), p) for t, p in re.findall(r"(.+?) (\d{1,3})" + stop, listing)]
     entries = [(re.sub(r"^Part [IVX]+: .*? (?=\d+\. )", "", t), p) for t, p in entries]
-    assert len(entries) == len(CHAPTERS) + 4, entries  # the front page, the chapters, three appendices
+    from vibration.publishing.appendices import APPENDICES
+
+    assert len(entries) == len(CHAPTERS) + 1 + len(APPENDICES), entries  # the front page, the chapters, appendices
     assert entries[0][0].replace("\ufb01", "fi") == "Overview and findings", entries[0]
     for title, page in entries[1:]:
         opened = texts[int(page) - 1]
@@ -386,3 +388,55 @@ def test_every_cited_work_is_in_the_references(site):
             ):
                 missing.add((page.name, surname, year))
     assert missing == set()
+
+
+# ------------------------------------------------------------------ teaching: downloads, exercises, tracks (issue 28)
+
+
+def test_every_chapter_page_offers_its_notebook_and_the_package(site):
+    """Each chapter's download links resolve inside the build: its notebook with outputs, and the wheel."""
+    import zipfile
+
+    import nbformat
+
+    wheels = list((site / "_static" / "downloads").glob("vibration-*.whl"))
+    assert len(wheels) == 1 and "vibration/__init__.py" in zipfile.ZipFile(wheels[0]).namelist()
+    for page in CHAPTERS:
+        html = (site / f"{page}.html").read_text(encoding="utf-8")
+        links = re.findall(r'href="(_static/downloads/[^"]+)"', html)
+        assert f"_static/downloads/{page}.ipynb" in links and f"_static/downloads/{wheels[0].name}" in links, page
+        nb = nbformat.read(site / "_static" / "downloads" / f"{page}.ipynb", as_version=4)
+        assert any(c.get("outputs") for c in nb.cells if c.cell_type == "code"), page
+        assert "Worked answer" not in nbformat.writes(nb), f"{page}: a student's notebook stores no answer"
+    using = (site / "using.html").read_text(encoding="utf-8")
+    plain = re.sub(r"<[^>]+>", "", using)
+    assert f'href="_static/downloads/{wheels[0].name}"' in using and f"pip install {wheels[0].name}" in plain
+
+
+def test_exercises_fold_their_answers_and_the_appendices_gather_them(site):
+    answers = (site / "answers.html").read_text(encoding="utf-8")
+    for page in CHAPTERS:
+        html = (site / f"{page}.html").read_text(encoding="utf-8")
+        if "exercise_section" not in (ROOT / "notebooks" / f"{page}.ipynb").read_text(encoding="utf-8"):
+            continue  # chapters 9 and 12 get their cells at merge time
+        assert "Learning objectives" in html and "Prerequisites" in html, page
+        folded = re.findall(r'<details class="exercise-answer">\s*<summary>Worked answer (\d\d\.\d)</summary>', html)
+        assert len(folded) >= (4 if int(page[:2]) <= 5 else 2), page
+        for ex_id in folded:
+            assert f"<strong>{ex_id}.</strong>" in answers, ex_id
+    glossary = (site / "glossary.html").read_text(encoding="utf-8")
+    assert "quality factor" in glossary and "damped natural frequency" in glossary
+    assert "Running the chapters with other parameters" in (site / "symbols.html").read_text(encoding="utf-8")
+    assert "CC BY 4.0" in (site / "licences.html").read_text(encoding="utf-8")
+
+
+def test_front_page_marks_the_core_course_and_the_advanced_parts(site):
+    front = (site / "index.html").read_text(encoding="utf-8")
+    assert "Part I: the paper, reproduced and audited (core course)" in front
+    assert "Part II: beyond the paper (advanced)" in front and "A suggested course" in front
+    text = re.sub(r"<[^>]+>", "", front)
+    for page in CHAPTERS[:11]:  # the contents: "N. Title: level: question?"
+        level = "core" if int(page[:2]) <= 5 else "advanced"
+        entries = [ln for ln in text.splitlines() if ln.strip().startswith(f"{int(page[:2])}. ") and f"{level}:" in ln]
+        assert entries and entries[0].rstrip().endswith("?"), page
+    assert "Authors, venue and year not stated" in (site / "references.html").read_text(encoding="utf-8")

@@ -31,7 +31,24 @@ from typing import Literal
 
 from ..physics.model import ParameterError
 
-__all__ = ["KINDS", "Answer", "Checked", "Choice", "Exercise"]
+__all__ = [
+    "KINDS",
+    "Answer",
+    "Checked",
+    "Choice",
+    "Exercise",
+    "answer_markdown",
+    "check_answer",
+    "exercise_markdown",
+    "fmt",
+    "numeric_hint",
+    "objectives_markdown",
+    "objectives_text",
+    "question_markdown",
+    "section_markdown",
+    "section_text",
+    "tolerance_text",
+]
 
 #: The kinds of exercise: a number to compute, a multiple-choice question, one using sliders or a ``-p`` run.
 KINDS = ("numerical", "conceptual", "explore")
@@ -46,6 +63,7 @@ class Answer:
     unit: str  # SI unit as the book writes it ("rad/s", "m"); "" when dimensionless
     rtol: float = 1e-2  # relative tolerance of a check
     atol: float = 0.0  # absolute tolerance of a check, in `unit`
+    symbol: str = ""  # how the book writes the quantity ("ω<sub>d</sub>"); `quantity` when empty
 
     def __post_init__(self) -> None:
         if not isinstance(self.quantity, str) or not self.quantity:
@@ -105,3 +123,224 @@ class Checked:
 
     correct: bool
     hint: str
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Checking a student's answer
+
+
+#: Relative closeness under which a slip (a factor 2π, 2, 180/π, ...) is named in a hint.
+_SLIP_RTOL = 0.03
+
+_SLIPS: tuple[tuple[float, str, tuple[str, ...]], ...] = (
+    # (given / answer, hint, units it applies to: () for any)
+    (1.0 / (2.0 * math.pi), "This looks like a frequency in Hz; the answer is asked in rad/s (ω = 2π f).", ("rad/s",)),
+    (2.0 * math.pi, "This looks like a frequency in rad/s; the answer is asked in Hz (f = ω/2π).", ("Hz",)),
+    (180.0 / math.pi, "This looks like an angle in degrees; the answer is asked in rad.", ("rad",)),
+    (math.pi / 180.0, "This looks like an angle in rad; the answer is asked in degrees.", ("°", "deg")),
+    (2.0, "This is about twice the answer: a peak-to-peak value? The amplitude is half the peak-to-peak swing.", ()),
+    (0.5, "This is about half the answer: check the factor 2 (amplitude against peak-to-peak, 2ζω_n, 2m).", ()),
+    (2.0 * math.pi, "A factor 2π away: check rad/s against Hz, or a period against an angular frequency.", ()),
+    (1.0 / (2.0 * math.pi), "A factor 2π away: check rad/s against Hz, or a period against an angular frequency.", ()),
+    (-1.0, "The size is right, the sign is not.", ()),
+)
+
+
+def _near(given: float, target: float) -> bool:
+    return target != 0 and abs(given - target) <= _SLIP_RTOL * abs(target)
+
+
+def numeric_hint(answer: Answer, given: float) -> str:
+    """A hint for a wrong number: the usual slip it looks like, else the direction; never the answer."""
+    a = answer.value
+    for factor, hint, units in _SLIPS:
+        if (not units or answer.unit in units) and _near(given, factor * a):
+            return hint
+    for power in (-6, -3, 3, 6):
+        if _near(given, a * 10.0**power):
+            return f"Off by a factor 10^{power}: check the units ({answer.unit or 'dimensionless'}) and their prefixes."
+    unit = f" ({answer.unit})" if answer.unit else " (dimensionless)"
+    side = "too large" if given > a else "too small"
+    return f"Not within the tolerance{unit}: the number is {side}. Redo the steps with the run's parameters."
+
+
+def _as_number(value, what: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        try:
+            import numpy as np  # a numpy scalar or 0-d array is a number too
+
+            if isinstance(value, np.generic | np.ndarray) and np.ndim(value) == 0:
+                return float(value)
+        except ImportError:  # pragma: no cover
+            pass
+        raise ParameterError(f"answer = {value!r} must be a number ({what})")
+    return float(value)
+
+
+def check_answer(exercise: Exercise, given, *, quantity: str | None = None) -> Checked:
+    """Whether ``given`` answers ``exercise``, with a hint that does not reveal the answer.
+
+    Parameters
+    ----------
+    exercise : Exercise
+        The exercise, its answers computed for the run's parameters.
+    given : float, str, dict or sequence
+        A number (one answer, or the one named by ``quantity``), the key of an option (conceptual), a
+        mapping quantity -> number, or numbers in the order of the exercise's answers.
+    quantity : str, optional
+        Which of several answers ``given`` is.
+
+    Examples
+    --------
+    >>> ex = Exercise(id="01.1", chapter="01_x", kind="numerical", text="ω_d?", worked="...",
+    ...               answers=(Answer(quantity="omega_d", value=4.465, unit="rad/s", rtol=1e-3),))
+    >>> check_answer(ex, 4.4652).correct
+    True
+    >>> print(check_answer(ex, 0.7107).hint)
+    This looks like a frequency in Hz; the answer is asked in rad/s (ω = 2π f).
+    """
+    if exercise.kind == "conceptual":
+        key = str(given).strip().lower().strip("()")
+        keys = [c.key for c in exercise.choices]
+        if key not in keys:
+            return Checked(correct=False, hint=f"Answer with the key of an option: one of {', '.join(keys)}.")
+        if key == exercise.correct:
+            return Checked(correct=True, hint="Right.")
+        return Checked(correct=False, hint=f"Not option {key}. Compute each reading with this run's parameters.")
+    answers = {a.quantity: a for a in exercise.answers}
+    if isinstance(given, dict):
+        pairs = list(given.items())
+    elif isinstance(given, (list, tuple)):
+        if len(given) != len(exercise.answers):
+            raise ParameterError(
+                f"answer = {given!r} gives {len(given)} numbers: exercise {exercise.id} asks for "
+                f"{len(exercise.answers)} ({', '.join(answers)})"
+            )
+        pairs = [(a.quantity, g) for a, g in zip(exercise.answers, given, strict=True)]
+    elif quantity is not None:
+        pairs = [(quantity, given)]
+    elif len(exercise.answers) == 1:
+        pairs = [(exercise.answers[0].quantity, given)]
+    else:
+        raise ParameterError(
+            f"exercise {exercise.id} asks for {len(answers)} quantities ({', '.join(answers)}): name one with "
+            "quantity=..., or give them all as a dict or in that order"
+        )
+    verdicts = []
+    for name, value in pairs:
+        if name not in answers:
+            raise ParameterError(
+                f"quantity = {name!r} is not asked in exercise {exercise.id}: allowed {', '.join(answers)}"
+            )
+        a = answers[name]
+        number = _as_number(value, f"{name} in {a.unit or 'dimensionless'}")
+        ok = a.accepts(number)
+        verdicts.append((name, ok, "Right." if ok else numeric_hint(a, number)))
+    correct = all(ok for _, ok, _ in verdicts)
+    if len(verdicts) == 1:
+        return Checked(correct=correct, hint=verdicts[0][2])
+    return Checked(correct=correct, hint=" ".join(f"{name}: {hint}" for name, _, hint in verdicts))
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Rendering
+
+
+def tolerance_text(answer: Answer) -> str:
+    """The tolerance a check allows, in words (``within 1 %``, ``within 0.01 m``)."""
+    parts = []
+    if answer.rtol:
+        parts.append(f"{fmt(answer.rtol * 100, 3)} %")
+    if answer.atol:
+        parts.append(f"{fmt(answer.atol, 3)}{' ' + answer.unit if answer.unit else ''}")
+    return "within " + " + ".join(parts)
+
+
+def objectives_markdown(objectives, prerequisites) -> str:
+    """The chapter's objectives and prerequisites as a Markdown block."""
+    lines = ["**Learning objectives.** After this chapter you can:", ""]
+    lines += [f"- {o}" for o in objectives]
+    needs = "; ".join(prerequisites)
+    lines += ["", "**Prerequisites.** " + needs[:1].upper() + needs[1:] + "."]
+    return "\n".join(lines)
+
+
+def objectives_text(objectives, prerequisites) -> str:
+    """The same block as plain text."""
+    return "\n".join(
+        ["Learning objectives:"] + [f"- {o}" for o in objectives] + ["Prerequisites: " + "; ".join(prerequisites) + "."]
+    )
+
+
+def question_markdown(ex: Exercise) -> str:
+    """The question of ``ex`` (its options for a conceptual one), without its answer."""
+    label = {"numerical": "", "conceptual": " (multiple choice)", "explore": " (sliders or a run)"}[ex.kind]
+    if ex.answers:
+        asked = ", ".join(f"{a.symbol or a.quantity} ({a.unit or 'dimensionless'})" for a in ex.answers)
+        how = f"*Answer:* {asked}, {tolerance_text(ex.answers[0])}."
+    else:
+        how = "*Answer:* the letter of one option."
+    out = [f"**Exercise {ex.id}**{label}. {ex.text} {how}"]  # one paragraph: no line repeats on a page
+    if ex.choices:
+        out.append("")
+        out += [f"- ({c.key}) {c.text}" for c in ex.choices]
+    return "\n".join(out)
+
+
+def answer_markdown(ex: Exercise) -> str:
+    """The worked answer of ``ex``: its steps with the run's numbers, then the result."""
+    out = [ex.worked]
+    if ex.kind == "conceptual":
+        choice = next(c for c in ex.choices if c.key == ex.correct)
+        out += ["", f"**Answer:** ({choice.key}) {choice.text}"]
+    return "\n".join(out)
+
+
+def exercise_markdown(ex: Exercise, *, folded: bool = True) -> str:
+    """The question of ``ex`` and its worked answer, folded under a ``<details>`` element when ``folded``."""
+    if not folded:
+        return question_markdown(ex)
+    return "\n".join(
+        [
+            question_markdown(ex),
+            "",
+            '<details class="exercise-answer">',
+            f"<summary>Worked answer {ex.id}</summary>",
+            "",
+            answer_markdown(ex),
+            "",
+            "</details>",
+        ]
+    )
+
+
+def section_markdown(exercises, *, folded: bool = True) -> str:
+    """Every exercise of a chapter, each question followed by its folded worked answer."""
+    return "\n\n".join(exercise_markdown(ex, folded=folded) for ex in exercises)
+
+
+def section_text(exercises) -> str:
+    """The questions as plain text (no answers): what a notebook's text output holds."""
+    lines = []
+    for ex in exercises:
+        lines.append(f"Exercise {ex.id} ({ex.kind}): {ex.text}")
+        lines += [f"  ({c.key}) {c.text}" for c in ex.choices]
+    return "\n".join(lines)
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def fmt(x: float, digits: int = 4) -> str:
+    """``x`` to ``digits`` significant digits as the book writes numbers: a true minus, powers of ten as ×10ⁿ.
+
+    >>> fmt(4.46514), fmt(-0.05), fmt(1.2e-5), fmt(1e-9), fmt(2.5e7)
+    ('4.465', '−0.05', '1.2×10⁻⁵', '10⁻⁹', '2.5×10⁷')
+    """
+    text = f"{x:.{digits}g}"
+    if "e" in text:
+        mant, exp = text.split("e")
+        power = "10" + str(int(exp)).translate(_SUPERSCRIPT)
+        text = power if mant in ("1", "-1") else f"{mant}×{power}"
+        text = ("-" + text) if mant == "-1" else text
+    return text.replace("-", "−", 1) if text.startswith("-") else text

@@ -1,6 +1,7 @@
 """The book's bibliography: every work the text cites, one record each.
 
-The audited paper's text names no authors, venue or year, so it is cited by its title alone.
+The audited paper's text names no authors, venue or year, so it is cited by its title and by what
+its text shows (:data:`PAPER_KNOWN`).
 :func:`bibliography_markdown` writes the book's References page; :func:`find` tells a test
 whether a citation in the text (a surname and a year) is in the list.
 
@@ -44,9 +45,16 @@ class Reference:
 
 PAPER_TITLE = "The Effect of Resonance and Damping on Dynamic System Stability: A Numerical Approach"
 
+#: What is known of the audited paper beyond its title: its text names no authors, venue or year.
+PAPER_KNOWN = (
+    "Authors, venue and year not stated: the text names none and has no reference list. It has an abstract, "
+    "sections 2 to 5 (Material and Method to Conclusion) and a closing section on application areas, and solves "
+    "its model with SciPy's initial-value solver, which first appeared in SciPy 1.0 (2017): the paper dates from "
+    "2017 or later"
+)
+
 REFERENCES: tuple[Reference, ...] = (
-    Reference("paper", "(no authors named)", None, PAPER_TITLE,
-              "the audited study; its text names no authors, venue or year", "Part I"),
+    Reference("paper", "(no authors named)", None, PAPER_TITLE, PAPER_KNOWN, "Part I"),
     Reference("den-hartog-1931", "Den Hartog J. P.", 1931,
               "Forced vibrations with combined Coulomb and viscous friction",
               "Transactions of the ASME 53 (APM-53-9), 107–115", "chapter 12"),
@@ -129,7 +137,7 @@ def find(surname: str, year: int) -> Reference | None:
 def bibliography_markdown() -> str:
     """The book's References page (MyST Markdown), in author order, the audited paper first."""
     lines = ["# References", "", "Every work the book cites. The audited paper's text names no authors, venue or "
-             "year; it is cited by its title.", ""]  # fmt: skip
+             "year; it is cited by its title and by what its text shows.", ""]  # fmt: skip
     paper, rest = REFERENCES[0], sorted(REFERENCES[1:], key=lambda r: (r.authors.lower(), r.year or 0))
     for ref in (paper, *rest):
         year = f" ({ref.year})" if ref.year else ""
@@ -137,3 +145,8 @@ def bibliography_markdown() -> str:
         used = f" Used in {ref.note}." if ref.note else ""
         lines.append(f"(ref-{ref.key})=\n{who}*{ref.title}*. {ref.venue}.{used}\n")
     return "\n".join(lines)
+
+
+def paper_citation() -> str:
+    """The audited paper's full citation as far as it is known (front page, print edition)."""
+    return f"*{PAPER_TITLE}*. {PAPER_KNOWN}."

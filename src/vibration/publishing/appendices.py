@@ -1,6 +1,8 @@
-"""The book's appendices, generated: the table of symbols (from the chapters' parameter schemas),
-the references (:mod:`vibration.presentation.references`) and "Using the package" (each chapter
-package's ``usage.md``).
+"""The book's appendices, generated: the glossary (from the notation registry
+:mod:`vibration.presentation.notation`), "Running the chapters with other parameters" (from the
+chapters' parameter schemas), "Using the package" (each chapter package's ``usage.md``), the answers
+to the exercises (gathered from the chapters as this run computed them), the licences and the
+references (:mod:`vibration.presentation.references`).
 
 Examples
 --------
@@ -12,15 +14,20 @@ Examples
 
 from __future__ import annotations
 
+import re
 from importlib.resources import files
 
+from ..presentation.notation import SETTLED, SYMBOLS
 from ..presentation.references import bibliography_markdown
 from ..presentation.tables import symbol_myst
 
 #: (document name, title) of the appendices, in book order.
 APPENDICES = (
-    ("symbols", "Table of symbols"),
+    ("glossary", "Glossary of symbols"),
+    ("symbols", "Running the chapters with other parameters"),
     ("using", "Using the package"),
+    ("answers", "Answers to the exercises"),
+    ("licences", "Licences"),
     ("references", "References"),
 )
 
@@ -69,11 +76,13 @@ def symbols_markdown(schemas: dict) -> str:
             row = rows.setdefault(key, {"param": p, "chapters": []})
             row["chapters"].append(_number(notebook))
     lines = [
-        "# Table of symbols",
+        "# Running the chapters with other parameters",
         "",
         "Every parameter a reader can change, as the book writes it, with its unit, its allowed range and "
-        "the name that sets it in a run of the report (`python -m vibration.report -p NAME VALUE`). A "
-        "symbol used by several chapters with one meaning is listed once.",
+        "the name that sets it in a run of the report (`python -m vibration.report -p NAME VALUE`; "
+        "`python -m vibration.report exercises -p NAME VALUE --out DIR` writes the exercise sheets and their "
+        "answers for the same values). A symbol used by several chapters with one meaning is listed once; "
+        "the {doc}`glossary` defines the physical symbols.",
         "",
         "```{list-table} The book's parameters.",
         ":header-rows: 1",
@@ -102,11 +111,23 @@ def symbols_markdown(schemas: dict) -> str:
 
 def usage_markdown(packages: list[str]) -> str:
     """The appendix "Using the package": each chapter package's ``usage.md``, in chapter order."""
+    from importlib.metadata import version
+
+    wheel = f"vibration-{version('vibration')}-py3-none-any.whl"
     parts = [
         "# Using the package",
         "",
-        "The chapters call the package `vibration`; these short examples show the same calls outside the "
-        "book, one per chapter. Each runs on its own in a fresh Python session (a test runs them).",
+        f'Install the package from this book\'s download, <a href="_static/downloads/{wheel}" download>{wheel}</a> '
+        "(Python 3.11), into a fresh environment:",
+        "",
+        "```sh",
+        "python -m venv .venv && . .venv/bin/activate",
+        f"pip install {wheel}",
+        "```",
+        "",
+        "Each chapter page offers its notebook, with its outputs, to open in JupyterLab beside it. The chapters "
+        "call the package `vibration`; these short examples show the same calls outside the book, one per "
+        "chapter. Each runs on its own in a fresh Python session (a test runs them).",
         "",
     ]
     for pkg in packages:
@@ -120,3 +141,116 @@ def usage_markdown(packages: list[str]) -> str:
 def references_markdown() -> str:
     """The References page."""
     return bibliography_markdown()
+
+
+def _sym(text: str) -> str:
+    """A registry symbol ("ω_n", "Δk/k") typeset for MyST (subscripts as ``{sub}``)."""
+    return symbol_myst(text) if "_" in text else text
+
+
+def glossary_markdown() -> str:
+    """The glossary: every symbol of the notation registry with meaning, unit, defining equation, first chapter."""
+    lines = [
+        "# Glossary of symbols",
+        "",
+        "Every physical symbol of the book, with its meaning, its SI unit, the equation or relation that "
+        "defines it and the chapter where it first appears (0 is the front page). Each symbol means one "
+        "thing throughout; the letters that meant two things are settled below the table.",
+        "",
+        "```{list-table} The book's symbols.",
+        ":header-rows: 1",
+        ":name: tab-glossary",
+        "",
+        "* - symbol",
+        "  - meaning",
+        "  - unit",
+        "  - defined by",
+        "  - first in chapter",
+    ]
+    for s in sorted(SYMBOLS, key=lambda s: s.first_chapter):
+        lines += [
+            f"* - {_sym(s.symbol)}",
+            f"  - {s.meaning}",
+            f"  - {s.unit}",
+            f"  - {_equation(s.equation)}",
+            f"  - {s.first_chapter}",
+        ]
+    lines += ["```", "", "**Letters with one meaning each.**", ""]
+    lines += [f"- {letter}: {_equation(kept)}; {_equation(moved)}." for letter, (kept, moved) in SETTLED.items()]
+    return "\n".join(lines)
+
+
+def _equation(text: str) -> str:
+    """Subscripts of a plain-text equation ("ω_n = √(k/m)") as MyST ``{sub}`` roles."""
+    return re.sub(r"(?<=[^\s(,/])_([A-Za-z0-9]+)", lambda m: f"{{sub}}`{m.group(1)}`", text)
+
+
+_DETAILS = re.compile(
+    r'<details class="exercise-answer">\s*<summary>Worked answer ([0-9.]+)</summary>(.*?)</details>', re.S
+)
+
+
+def answers_markdown(chapters: list[tuple[str, str, list[str]]]) -> str:
+    """The answers appendix: each chapter's worked answers, as its exercise section showed them.
+
+    ``chapters`` holds (title, page name, Markdown outputs of the chapter) in book order; the worked
+    answers are the folded blocks of the chapter's exercise section, so they carry this run's numbers.
+
+    >>> md = '**Exercise 04.1**. Q?\\n\\n<details class="exercise-answer">\\n<summary>Worked answer 04.1</summary>'
+    >>> print(answers_markdown([("4. Frequency", "04_x", [md + "\\n\\nX = 1 m.\\n\\n</details>"])]).splitlines()[-1])
+    **04.1.** X = 1 m.
+    """
+    lines = [
+        "# Answers to the exercises",
+        "",
+        "The worked answers of every chapter's exercises, with the numbers of this run (folded under each "
+        "exercise on the chapter's page). A run with other parameters recomputes them.",
+    ]
+    for title, _name, outputs in chapters:
+        found = [(m.group(1), m.group(2).strip()) for text in outputs for m in _DETAILS.finditer(text)]
+        if not found:
+            continue
+        lines += ["", f"## {title}", ""]
+        for ex_id, body in found:
+            lines += [f"**{ex_id}.** {body}", ""]  # the id opens the answer's first paragraph
+    return "\n".join(lines).rstrip() + "\n"
+
+
+LICENCES = """# Licences
+
+- **Code**: the package `vibration`, the notebooks' code and the build scripts are under the MIT License
+  (the file `LICENSE` of the source tree).
+- **Text and figures**: the chapters' prose, tables and figures are under the Creative Commons Attribution
+  4.0 International licence, CC BY 4.0 (the file `LICENSE-text`): share and adapt them, with credit.
+- **Data**: the paper's scenarios and claims are transcribed from the audited paper; the measurements of
+  the torsional oscillator in `data/lab_oscillator/` keep the provenance and terms stated in their own
+  README, which these licences do not replace.
+"""
+
+
+_PROVENANCE = re.compile(r"repository\s+`([\w.-]+/[\w.-]+)`, folder `([^`]+)`, commit\s+`([0-9a-f]{40})`")
+
+
+def lab_data_source() -> tuple[str, str, str]:
+    """(repository, folder, commit) of the lab measurements, read from their README (the one statement of it)."""
+    readme = files("vibration").joinpath("_data", "lab_oscillator", "README.md").read_text(encoding="utf-8")
+    found = _PROVENANCE.search(" ".join(readme.split()))
+    if not found:
+        raise RuntimeError("data/lab_oscillator/README.md no longer states its repository, folder and commit")
+    return found.group(1), found.group(2), found.group(3)
+
+
+def licences_markdown() -> str:
+    """The Licences page, with the lab data's source repository and commit.
+
+    >>> "/tree/450ede098ea5bcfd3f51e0d5e36f97752548f206/" in licences_markdown()
+    True
+    """
+    repo, folder, commit = lab_data_source()
+    url = f"https://github.com/{repo}/tree/{commit}/{folder.strip('/')}"
+    return LICENCES + (
+        "\n## The laboratory data\n\n"
+        f"The measurements of Part III come from the public repository [{repo}]({url}), folder `{folder}`, "
+        f"commit `{commit}`; the files are reproduced byte for byte under new names. That repository states no "
+        "licence: cite it, with the commit, wherever the data are used.\n"
+    )

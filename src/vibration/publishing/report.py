@@ -599,6 +599,7 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
 #: ``module:function`` that takes the remaining arguments and returns the exit status.
 SUBCOMMANDS = {
     "sweep": "vibration.publishing.sweep:main",
+    "exercises": "vibration.publishing.sheets:main",
 }
 
 
