@@ -145,6 +145,8 @@ _LAZY: dict[str, tuple[str | None, list[str]]] = {
     ),
     # runs at scale: a chapter's study over a grid of parameters, gathered into an xarray Dataset
     "vibration.publishing.sweep": ("scale", ["sweep"]),
+    # teaching: every chapter's exercises with answers computed from a run's parameters, and their check
+    "vibration.publishing.sheets": ("book", ["check", "exercise_section", "exercises", "objectives"]),
 }
 
 #: Namespaces reachable as ``vibration.<name>``: module and the extra it needs.
@@ -160,7 +162,12 @@ _NAMESPACES: dict[str, tuple[str, str | None]] = {
 }
 
 #: Third-party packages of each extra (the message of a missing one names the extra and them).
-EXTRAS = {"scale": ("dask", "distributed", "xarray", "h5netcdf"), "learn": ("gymnasium", "cma"), "control": ("control",), "book": ("matplotlib", "ipywidgets", "papermill")}
+EXTRAS = {
+    "scale": ("dask", "distributed", "xarray", "h5netcdf"),
+    "learn": ("gymnasium", "cma"),
+    "control": ("control",),
+    "book": ("matplotlib", "ipywidgets", "papermill"),
+}
 
 _WHERE = {name: module for module, (_, names) in _LAZY.items() for name in names}
 

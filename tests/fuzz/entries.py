@@ -250,9 +250,19 @@ for _rec in (v.PooledDecayFit, v.Rig, v.Steadiness):
 
 # runs at scale: a chapter's study over a grid (the chapter and grid battery is in tests/test_sweep.py)
 fuzz(v.sweep, chapter="04_frequency_response", grid={"c_nominal": [0.5, 1.0]}, params=None, client=None,
-     serial=True, skip=("chapter", "grid", "params", "client"), check=lambda out: out is not None,
+     serial=True, skip=("chapter", "grid", "params", "client", "serial"), check=lambda out: out is not None,
      why="chapter, grid, params: validated against the chapter's schema, refused naming the parameter in "
-     "tests/test_sweep.py; client: a dask Client or None")  # fmt: skip
+     "tests/test_sweep.py; client: a dask Client or None; serial: computes in this process, "
+     "not on a cluster")  # fmt: skip
+# teaching: exercises and their check (chapter names and parameters are validated against the schemas)
+fuzz(v.exercises, chapter="04_frequency_response", params={"c_nominal": 0.8},
+     check=lambda out: len(out) >= 4)  # fmt: skip
+fuzz(v.check, exercise_id="01.1", answer=1.0, params=None, quantity="omega_n",
+     skip=("answer", "quantity"), check=lambda out: isinstance(out.correct, bool),
+     why="answer: any number, mapping or option letter is judged, not refused; quantity: None or a name")  # fmt: skip
+fuzz(v.objectives, chapter="04_frequency_response", check=lambda out: out is not None)
+fuzz(v.exercise_section, chapter="04_frequency_response", params=None,
+     check=lambda out: out is not None)  # fmt: skip
 for _rec in (v.DecayPeaks, v.FreeDecayFit, v.HarmonicFit, v.LoggerRun, v.PeakDecayFit):
     fuzz(_rec, record=True, why="a result record the library builds and returns")
 fuzz(v.ParameterError, record=True, why="the exception the battery expects")

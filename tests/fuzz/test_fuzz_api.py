@@ -26,6 +26,12 @@ KNOWN = {
     ("friction_forced_amplitude_hb", "zeta", "0"): "inf amplitudes at resonance without a documented field",
     ("friction_forced_amplitude_hb", "zeta", "subnormal"): "inf amplitudes at resonance",
     ("load_logger_runs", "path", "missing"): "the message does not say what is allowed",
+    ("load_cassy_runs", "path", "missing"): "the message does not say what is allowed",
+    ("steadiness", "omega", "subnormal"): "the message names the record length, not omega",
+    ("law_forced_amplitude", "omega", "huge"): "ValueError from the root finder",
+    ("law_forced_amplitude", "zeta", "0"): "inf amplitude at resonance without a documented field",
+    ("law_forced_amplitude", "zeta", "subnormal"): "inf amplitude at resonance without a documented field",
+    ("damping_ode", "omega_n", "subnormal"): "ValueError: need at least one array to concatenate",
 }
 VALUES = {(entry.name, name, label): value for entry in ENTRIES.values() for name, label, value in cases(entry)}
 

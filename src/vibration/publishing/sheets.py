@@ -133,7 +133,9 @@ def _params(stem: str, params):
     if hasattr(params, "as_dict"):
         params = params.as_dict()
     if not isinstance(params, Mapping):
-        raise ParameterError(f"params = {params!r} must be a mapping of parameter names to values or a Params record")
+        raise ParameterError(
+            f"params = {params!r} is not allowed: allowed a mapping of names to values, a Params record or None"
+        )
     names = set(Params.SCHEMA.names())
     return Params.from_values({k: v for k, v in params.items() if k in names})
 
