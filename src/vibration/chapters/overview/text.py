@@ -78,13 +78,14 @@ def part1_findings(st: OverviewStudy | None = None, **values) -> list[str]:
     )
     if st.solver_gap < SMALL_GAP:
         out.append(
-            "None of the gaps comes from the paper's numerical method: RK45 at SciPy's default tolerances gives "
-            f"the audited numbers to within {g(100 * st.solver_gap, 2)} % of the exact ones (chapters 1 and 3)."
+            "None of the gaps comes from the paper's numerical method: each audited number that RK45 at SciPy's "
+            f"default tolerances gives lies within {g(100 * st.solver_gap, 2)} % of its exact value (chapter 1 "
+            "measures the whole trajectory instead, against its largest displacement; chapter 3 says why)."
         )
     else:
         out.append(
-            f"With these parameters the paper's numerical method itself strays by up to {g(100 * st.solver_gap, 2)} % "
-            "from the exact values (chapters 1 and 3)."
+            "With these parameters the paper's numerical method itself strays: an audited number that RK45 gives "
+            f"differs from its exact value by up to {g(100 * st.solver_gap, 2)} % (chapters 1 and 3)."
         )
     paper_high = PAPER_SAYS["high_damping"][1]
     close = abs(st.peak_high - paper_high) <= 0.5 * paper_high

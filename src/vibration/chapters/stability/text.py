@@ -87,7 +87,7 @@ def key_results(st: StabilityStudy) -> str:
     third = (
         f"Damping is a trade-off only where the load allows one: under base motion at {st.isolation_ratio:g} {WN} "
         f"the damper of {num(ch, 3)} N s/m passes {num(isolation_ratio_of(st), 3)} times the motion that "
-        f"{num(cl, 3)} N s/m passes; under a force on the mass more damping is always better."
+        f"{num(cl, 3)} N s/m passes; under a force on the mass more damping always lowers the displacement."
     )
     fourth = (
         f"A step load settles (2 %) soonest at {ZSTAR} = {st.zeta_star:.3f}, in {num(st.star_step.settling_time, 3)} s "
