@@ -34,9 +34,8 @@ from vibration import (
     poincare_section,
     response_curve,
     steady_state,
-    sweep,
 )
-from vibration.physics.duffing import backbone, linear_trust_amplitude, locate_jump, periodic_orbit
+from vibration.physics.duffing import backbone, linear_trust_amplitude, locate_jump, periodic_orbit, sweep
 
 HARD = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)  # the paper's oscillator with a modest hardening spring
 SOFT = Duffing(m=1.0, c=0.5, k=20.0, k3=-1.0)  # ... and a softening one

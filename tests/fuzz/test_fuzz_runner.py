@@ -25,7 +25,8 @@ def no_kernel(monkeypatch):
         raise AssertionError("a kernel was started")
 
     monkeypatch.setattr(papermill, "execute_notebook", boom)
-    monkeypatch.setattr(report, "notebook_pool", boom)
+    monkeypatch.setattr(report, "run_chapter", boom)
+    monkeypatch.setattr(report, "_execute_all", boom)
 
 
 REFUSED = [
