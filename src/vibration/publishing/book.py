@@ -345,6 +345,7 @@ copyright = ""
 extensions = ["myst_nb", "vibration.publishing.sphinx_ext"]
 root_doc = "index"
 exclude_patterns = ["_build", "_static"]
+templates_path = []  # a list of this build's own: the themes append their folders to it (not to a shared default)
 html_theme = "sphinx_book_theme"
 html_title = {title!r}
 html_static_path = ["_static"]

@@ -29,6 +29,7 @@ import csv
 import html
 import importlib
 import math
+import os
 import sys
 import time
 from collections.abc import Mapping
@@ -561,7 +562,10 @@ def write_downloads(pages, folder: Path) -> list[Path]:
     wheel = folder / wheel_name()
     if not wheel.exists():
         cmd = [sys.executable, "-m", "pip", "wheel", str(project_root()), "--no-deps", "--no-build-isolation", "-q"]
-        done = subprocess.run([*cmd, "-w", str(folder)], capture_output=True, text=True, timeout=300)
+        # the same sources give the same bytes (zip times from SOURCE_DATE_EPOCH), so an unchanged package leaves
+        # the book's downloads, and so the book, unchanged
+        env = {**os.environ, "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "315532800")}
+        done = subprocess.run([*cmd, "-w", str(folder)], capture_output=True, text=True, timeout=300, env=env)
         if done.returncode != 0 or not wheel.exists():
             raise RuntimeError(f"the package's wheel was not built: {done.stderr.strip()[-400:]}")
     written.append(wheel)

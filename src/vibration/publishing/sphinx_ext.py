@@ -64,11 +64,24 @@ def _prefix_numbers(app, env):
     return []
 
 
+def _stable_build_info(app) -> None:
+    """Record the HTML configuration after the themes have set theirs, so an unchanged book is not rewritten.
+
+    The HTML builder hashes its configuration before the ``builder-inited`` handlers run, and the themes
+    append their template folders to ``templates_path`` there; a persistent build folder then finds the hash
+    of the previous build (taken with those folders, from its pickled environment) different every time and
+    rewrites every page. Taken after the themes (priority 900), the hash is the same from build to build.
+    """
+    if hasattr(app.builder, "create_build_info"):
+        app.builder.build_info = app.builder.create_build_info()
+
+
 def setup(app):
     app.add_html_math_renderer(
         "mathml", inline_renderers=(_visit_math, None), block_renderers=(_visit_displaymath, None)
     )
     app.connect("env-get-updated", _prefix_numbers, priority=900)
+    app.connect("builder-inited", _stable_build_info, priority=900)
     app.connect("build-finished", _accessible_pages)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}
 
