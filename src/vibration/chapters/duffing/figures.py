@@ -12,10 +12,11 @@ import math
 
 import numpy as np
 
-from vibration.chapters.duffing.notation import forcing_term, sig, within
+from vibration.chapters.duffing.notation import forcing_term, k3_text, within
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 from vibration.physics.duffing import backbone
 from vibration.presentation.captions import Captioned, panel_words
+from vibration.presentation.numbers import sig
 from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
 
 STABLE_LS, UNSTABLE_LS = "-", "--"
@@ -30,7 +31,7 @@ COINCIDE = 1e-3
 
 
 def _k3(case: SpringCase) -> str:
-    return f"k₃ = {case.duffing.k3:g} N/m³".replace("-", "−")
+    return k3_text(case.duffing.k3)
 
 
 def plot_curve(ax, omega, amplitude, stable, color, label) -> bool:
@@ -225,7 +226,8 @@ def paper_figure(study: DuffingStudy) -> Captioned:
         else ""
     )
     caption = (
-        f"The paper's resonance scenario from rest, forced at ω = {p.omega_res:g} rad/s for {p.t_end:g} s: "
+        f"The paper's resonance scenario from rest, forced by its F₀ sin ωt at ω = {p.omega_res:g} rad/s for "
+        f"{p.t_end:g} s: "
         f"displacement with the linear spring ({COLOUR_WORD['linear']}, the paper's model) and with the hardening "
         f"spring {_k3(hard)} ({COLOUR_WORD['hardening']}).{lines}"
     )
