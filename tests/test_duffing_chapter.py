@@ -169,16 +169,16 @@ def _reader(text_: str) -> str:
 
 
 def test_a_chaotic_exponent_reads_plainly_and_carries_its_tolerances():
-    text_ = apm(0.10417, 0.00093)
+    text_ = apm(0.10417, 0.00093, 20_000)
     assert _reader(text_) == "0.1042 ± 0.0009" and "≈" not in text_
     spans = SPAN.findall(text_)
     assert [(float(v), tol) for v, tol, _ in spans] == [
-        (0.10417, f"a{notation.EXPONENT_SE * 0.00093:g}"),
+        (0.10417, f"a{float(f'{notation.EXPONENT_SPREAD / 20_000**0.5:.2g}'):g}"),
         (0.00093, f"f{notation.ERROR_FACTOR:g}"),
     ]
     # a power of ten is factored out once, outside both spans
-    assert _reader(apm(5.12e-5, 2.7e-6)) == "(5.1 ± 0.3)×10⁻⁵"
-    assert _reader(apm(0.104, float("nan"))) == "0.104"
+    assert _reader(apm(5.12e-5, 2.7e-6, 1000)) == "(5.1 ± 0.3)×10⁻⁵"
+    assert _reader(apm(0.104, float("nan"), 1000)) == "0.104"
     assert within(0.004) == "0.5 %" and within(0.00037) == "0.1 %" and within(0.03) == "5 %"
 
 
@@ -293,7 +293,7 @@ def _check_verdicts(study) -> None:
     verdict = {1: "the motion is chaotic", -1: "the motion is not chaotic", 0: "not distinguishable from zero"}
     assert verdict[study.pooled.sign] in lyap
     assert ("agree within their errors" in lyap) == study.pooled.consistent
-    assert apm(study.pooled.mean, study.pooled.standard_error) in lyap
+    assert apm(study.pooled.mean, study.pooled.standard_error, sum(e.n_periods for e in study.lyap_runs)) in lyap
     for where, para in _everything(study):
         assert not re.search(r"≈\s*[−+-]?\d|[=±]\s*≈", para), (where, para[:120])
     pub = text.published_sentence(study)

@@ -22,8 +22,8 @@ Examples
 --------
 >>> within(0.00037), within(0.0042), within(0.03)
 ('0.1 %', '0.5 %', '5 %')
->>> apm(0.10417, 0.00093)  # doctest: +ELLIPSIS
-'<span ... data-value="0.10417" data-tol="a0.00465">0.1042</span> ± <span ... data-tol="f3">0.0009</span>'
+>>> apm(0.10417, 0.00093, 20_000)  # doctest: +ELLIPSIS
+'<span ... data-value="0.10417" data-tol="a0.0042">0.1042</span> ± <span ... data-tol="f3">0.0009</span>'
 """
 
 from __future__ import annotations
@@ -33,8 +33,12 @@ import re
 
 from vibration.presentation.numbers import Approx, minus, percent, pm, sig
 
-#: A chaotic run's exponent may move by this many of its own standard errors (measured: up to 0.9).
-EXPONENT_SE = 5.0
+#: A chaotic run's exponent over N periods scatters with standard deviation σ₁/√N, σ₁ up to 0.18 1/s
+#: (measured from the batch means); it may move by this many 1/s over √N, about five standard errors
+#: (measured: up to 0.9 of one). The tolerance depends on N alone, so it reads the same on every machine.
+EXPONENT_SPREAD = 0.6
+#: Relative tolerance of a time inversely proportional to the pooled exponent (1/λ₁; measured 0.5 %).
+INVERSE_RTOL = 0.05
 #: Factor tolerance of a standard error by batch means (measured: up to 1.9).
 ERROR_FACTOR = 3.0
 #: Factor tolerance of the runs' χ² for 5 degrees of freedom (measured 5.1 to 11; a factor 10 around 5
@@ -50,30 +54,32 @@ DIFFERENCE_FACTOR = 2.5
 LENGTH_FACTOR = 10.0
 
 
-def exponent_approx(value: float, se: float) -> Approx:
-    """A chaotic run's exponent (or λ₂ = −c/m − λ₁) whose standard error is ``se``: within ``EXPONENT_SE`` of it."""
-    return Approx(value, atol=EXPONENT_SE * se)
+def exponent_approx(value: float, n_periods: float) -> Approx:
+    """A chaotic exponent (or λ₂ = −c/m − λ₁) from ``n_periods`` forcing periods, with its tolerance."""
+    return Approx(value, atol=float(f"{EXPONENT_SPREAD / math.sqrt(n_periods):.2g}"))
 
 
-def exponent(value: float, se: float, digits: int = 4) -> str:
-    """A chaotic run's exponent for a sentence (:func:`~vibration.presentation.numbers.sig`), with its tolerance."""
-    return exponent_approx(value, se).html(sig(value, digits))
+def exponent(value: float, n_periods: float, digits: int = 4) -> str:
+    """A chaotic exponent for a sentence (:func:`~vibration.presentation.numbers.sig`), with its tolerance."""
+    return exponent_approx(value, n_periods).html(sig(value, digits))
 
 
-def inverse(numerator: float, exponent_: float, se: float, digits: int = 2) -> str:
-    """A time ``numerator / exponent_`` (1/λ₁, ln 10/λ₁, s) with the exponent's relative tolerance."""
+def inverse(numerator: float, exponent_: float, digits: int = 2) -> str:
+    """A time ``numerator / exponent_`` (1/λ₁, ln 10/λ₁, s) of the pooled exponent, with its tolerance."""
     value = numerator / exponent_
-    return Approx(value, rtol=EXPONENT_SE * se / abs(exponent_)).html(sig(value, digits))
+    return Approx(value, rtol=INVERSE_RTOL).html(sig(value, digits))
 
 
-def apm(value: float, se: float) -> str:
-    """A chaotic run's exponent ± its standard error (:func:`~vibration.presentation.numbers.pm`), each part
-    with its tolerance; without a finite standard error the exponent alone, to three figures."""
+def apm(value: float, se: float, n_periods: float) -> str:
+    """A chaotic exponent from ``n_periods`` periods ± its standard error
+    (:func:`~vibration.presentation.numbers.pm`), each part with its tolerance; without a finite standard
+    error the exponent alone, to three figures."""
     if not (math.isfinite(se) and se > 0):
-        return Approx(value, factor=ERROR_FACTOR).html(sig(value, 3))
+        return exponent(value, n_periods, 3)
     m = re.fullmatch(r"(\(?)(.+) ± (.+?)(\)×10.+)?", pm(value, se))
     head, v, e, tail = m.group(1), m.group(2), m.group(3), m.group(4) or ""
-    return f"{head}{exponent_approx(value, se).html(v)} ± {Approx(se, factor=ERROR_FACTOR).html(e)}{tail}"
+    approx_v = exponent_approx(value, n_periods).html(v)
+    return f"{head}{approx_v} ± {Approx(se, factor=ERROR_FACTOR).html(e)}{tail}"
 
 
 def within(fraction: float, floor: float = 1e-3) -> str:

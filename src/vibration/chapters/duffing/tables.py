@@ -22,9 +22,9 @@ def _cell(value: float, digits: int, reason: str) -> str | Missing:
     return column(value, digits) if math.isfinite(value) else Missing(reason)
 
 
-def _exponent(value: float, se: float) -> Approx:
-    """A chaotic run's exponent with standard error ``se`` (its column prints 4 figures)."""
-    return exponent_approx(value, se)
+def _exponent(value: float, n_periods: float) -> Approx:
+    """A chaotic exponent from ``n_periods`` periods (its column prints 4 figures)."""
+    return exponent_approx(value, n_periods)
 
 
 def _error(value: float) -> Approx:
@@ -223,9 +223,9 @@ def lyapunov_table(study: DuffingStudy) -> Table:
                 "case": f"F = {p.F0_ueda:g} N",
                 "method": "variational + QR" if e.method == "qr" else "two trajectories",
                 "n": e.n_periods,
-                "l1": _exponent(e.exponent, e.standard_error),
+                "l1": _exponent(e.exponent, e.n_periods),
                 "se": _error(e.standard_error),
-                "l2": _exponent(e.second, e.standard_error)
+                "l2": _exponent(e.second, e.n_periods)
                 if e.method == "qr"
                 else Missing("the two-trajectory method gives λ₁ only"),
             }
@@ -275,14 +275,15 @@ def lyapunov_runs_table(study: DuffingStudy) -> Table:
             "spp": e.steps_per_period,
             "h": column(e.period / e.steps_per_period, 3),
             "n": e.n_periods,
-            "l1": _exponent(e.exponent, e.standard_error),
+            "l1": _exponent(e.exponent, e.n_periods),
             "se": _error(e.standard_error),
             "z": Approx((e.exponent - pooled.mean) / e.standard_error, atol=Z_ATOL),
         }
         for e in study.lyap_runs
     ]
+    total = sum(e.n_periods for e in study.lyap_runs)
     rows.append({"start": "pooled (inverse-variance weights)", "spp": None, "h": None,
-                 "n": sum(e.n_periods for e in study.lyap_runs), "l1": _exponent(pooled.mean, pooled.standard_error),
+                 "n": total, "l1": _exponent(pooled.mean, total),
                  "se": _error(pooled.standard_error), "z": None})  # fmt: skip
     return Table(
         rows,
@@ -307,7 +308,7 @@ def lyapunov_convergence_table(study: DuffingStudy) -> Table:
         {
             "n": r.n,
             "time": column(r.time, 3),
-            "l1": _exponent(r.exponent, r.standard_error),
+            "l1": _exponent(r.exponent, r.n),
             "se": _error(r.standard_error),
         }
         for r in study.convergence

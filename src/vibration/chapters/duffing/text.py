@@ -220,6 +220,9 @@ def lyapunov_sentence(study: DuffingStudy) -> str:
     p, main, partner, pooled = study.params, study.main_run, study.lyap_benettin, study.pooled
     starts = {(e.x0, e.v0) for e in study.lyap_runs}
     steps = sorted({e.period / e.steps_per_period for e in study.lyap_runs})
+    lam_main = apm(main.exponent, main.standard_error, main.n_periods)
+    lam_partner = apm(partner.exponent, partner.standard_error, partner.n_periods)
+    lam_pooled = apm(pooled.mean, pooled.standard_error, _pooled_periods(study))
     chi2 = Approx(pooled.chi2, factor=CHI2_FACTOR).html(sig(pooled.chi2, 2))
     agree = (
         f"agree within their errors (χ² = {chi2} for {pooled.dof} degrees of freedom)"
@@ -237,16 +240,26 @@ def lyapunov_sentence(study: DuffingStudy) -> str:
         )
     return (
         f"At F = {p.F0_ueda:g} N the main run of {main.n_periods} periods gives λ₁ "
-        f"{apm(main.exponent, main.standard_error)} 1/s (standard error by batch means over {main.block_means.size} "
+        f"{lam_main} 1/s (standard error by batch means over {main.block_means.size} "
         f"blocks of {main.block_periods} periods). The {len(study.lyap_runs)} runs from {len(starts)} initial "
         f"states and step sizes h = {sig(steps[0], 2)} to {sig(steps[-1], 2)} s share no trajectory; they {agree} "
-        f"and pool to λ₁ {apm(pooled.mean, pooled.standard_error)} 1/s, {chaos_verdict(study)}. The two-trajectory "
-        f"method gives {apm(partner.exponent, partner.standard_error)} 1/s on the main run's trajectory: the two "
+        f"and pool to λ₁ {lam_pooled} 1/s, {chaos_verdict(study)}. The two-trajectory "
+        f"method gives {lam_partner} 1/s on the main run's trajectory: the two "
         "methods follow one trajectory, so their agreement checks the code, not the estimate. Likewise "
         "λ₁ + λ₂ = −c/m holds by construction of the QR method (the trace of the Jacobian), so it checks the "
         f"integration, not λ₁. At F = {p.F0_ueda_periodic:g} N the largest exponent is "
         f"{sig(study.periodic_exponent, 3)} 1/s{floq}."
     )
+
+
+def _pooled_periods(study: DuffingStudy) -> int:
+    """Forcing periods of all the runs the pooled exponent averages."""
+    return sum(e.n_periods for e in study.lyap_runs)
+
+
+def _round_count(n: float) -> str:
+    """A length (periods, seconds) rounded to two figures and written whole, as a count: 4300, 27000."""
+    return str(round(float(f"{n:.2g}")))
 
 
 def _z(z: float) -> str:
@@ -262,6 +275,7 @@ def _difference(value: float, text: str) -> str:
 def published_sentence(study: DuffingStudy) -> str:
     """The pooled exponent against the published one, with what can and cannot explain the difference."""
     pub, pooled, main = study.published, study.pooled, study.main_run
+    lam_pooled = apm(pooled.mean, pooled.standard_error, _pooled_periods(study))
     p = study.params
     if not pub.applies:
         return (
@@ -273,15 +287,12 @@ def published_sentence(study: DuffingStudy) -> str:
         f"per forcing period it would be 2π times larger, {sig(2 * math.pi * pub.exponent, 2)})."
     )
     if abs(pub.z) <= AGREE_Z:
-        return head + (
-            f" The pooled {apm(pooled.mean, pooled.standard_error)} 1/s agrees with it within two standard errors "
-            f"({_z(pub.z)})."
-        )
+        return head + (f" The pooled {lam_pooled} 1/s agrees with it within two standard errors ({_z(pub.z)}).")
     by_step = ", ".join(f"{spp} steps per period {_z(z)}" for spp, z in pub.step_z) or "no run"
     step_ok = all(abs(z) <= AGREE_Z for _, z in pub.step_z)
     # the averaging length needed grows as (σ₁/Δ)²: it takes the standard error's tolerance squared
-    n_text = Approx(pub.n_needed, factor=LENGTH_FACTOR).html(sig(pub.n_needed, 2))
-    t_text = Approx(pub.n_needed * main.period, factor=LENGTH_FACTOR).html(sig(pub.n_needed * main.period, 2))
+    n_text = Approx(pub.n_needed, factor=LENGTH_FACTOR).html(_round_count(pub.n_needed))
+    t_text = Approx(pub.n_needed * main.period, factor=LENGTH_FACTOR).html(_round_count(pub.n_needed * main.period))
     z_text = Approx(abs(pub.z), factor=DIFFERENCE_FACTOR).html(sig(abs(pub.z), 2))
     delta, share = (
         _difference(pub.delta, signed(pub.delta, 2)),
@@ -290,7 +301,7 @@ def published_sentence(study: DuffingStudy) -> str:
     sigma1 = Approx(pub.sigma1, factor=ERROR_FACTOR).html(sig(pub.sigma1, 2))
     miss = _difference(abs(pub.delta), sig(abs(pub.delta), 2))
     return head + (
-        f" The pooled {apm(pooled.mean, pooled.standard_error)} 1/s is {z_text} standard errors "
+        f" The pooled {lam_pooled} 1/s is {z_text} standard errors "
         f"{'above' if pub.z > 0 else 'below'} it ({delta} 1/s, {share} %). "
         f"{'The step size does not explain this' if step_ok else 'The step size may contribute'}: runs with other "
         f"steps differ from the pooled value by {by_step} standard errors (the published run used h = {pub.step:g} "
@@ -347,14 +358,11 @@ def key_findings(study: DuffingStudy) -> list[str]:
             f"{sig(max(errs), 2)} rad/s{sweeps}."
         )
     pooled, key = study.pooled, KEY_RESULTS.values(study)  # the declared key results (keyresults.py)
+    lam_key = apm(key["lyapunov"], key["lyapunov_se"], _pooled_periods(study))
     out.append(
-        f"**Chaos.** Ueda's oscillator at F = {p.F0_ueda:g} N has λ₁ {apm(key['lyapunov'], key['lyapunov_se'])} "
+        f"**Chaos.** Ueda's oscillator at F = {p.F0_ueda:g} N has λ₁ {lam_key} "
         f"1/s from {len(study.lyap_runs)} independent runs, {chaos_verdict(study)}"
-        + (
-            f"; nearby motions separate by a factor e every {inverse(1.0, pooled.mean, pooled.standard_error)} s."
-            if pooled.sign > 0
-            else "."
-        )
+        + (f"; nearby motions separate by a factor e every {inverse(1.0, pooled.mean)} s." if pooled.sign > 0 else ".")
     )
     return out
 
@@ -385,7 +393,7 @@ def summary(study: DuffingStudy) -> str:
             "their frequency in closed form; check the edges that matter with the full equation."
         )
     if study.pooled.sign > 0:
-        tenfold = inverse(math.log(10), study.pooled.mean, study.pooled.standard_error)
+        tenfold = inverse(math.log(10), study.pooled.mean)
         lines.append(
             f"* **Strong forcing can make the response unpredictable.** At F = {p.F0_ueda:g} N an error in the "
             f"initial state grows tenfold in {tenfold} s, so only "
