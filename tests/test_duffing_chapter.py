@@ -9,6 +9,7 @@ e-notation or untypeset unit reaches the reader; the notebook calls each chapter
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import json
 import math
@@ -380,3 +381,37 @@ def test_usage_block_runs_on_its_own(tmp_path):
     out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=300, cwd=tmp_path)
     assert out.returncode == 0, out.stderr
     assert "rad/s" in out.stdout and "sweeping up" in out.stdout
+
+
+# --------------------------------------------------------------- machine-dependent digits, measured
+
+
+@pytest.mark.slow
+def test_a_chaotic_run_started_one_ulp_away_stays_within_the_declared_tolerances(default, monkeypatch):
+    """Another rounding anywhere sends a chaotic trajectory elsewhere; starting every run one unit in the last
+    place away does the same on this machine. Every sentence and table of the chaos part must then read the
+    same after the regression comparison's sanitizer, and every masked value lie within its tolerance."""
+    from nbval_numeric import mismatches
+    from test_portable import _sanitize
+
+    from vibration.chapters.duffing import study as study_module
+
+    runs = tuple(
+        ((math.nextafter(x0, math.inf) if x0 else x0, math.nextafter(v0, math.inf) if v0 else v0), spp)
+        for (x0, v0), spp in study_module.LYAPUNOV_RUNS
+    )
+    monkeypatch.setattr(study_module, "LYAPUNOV_RUNS", runs)
+    moved = duffing_study(Params())
+    assert moved.main_run.exponent != default.main_run.exponent  # the trajectory did move
+    makes = (text.lyapunov_sentence, text.published_sentence, text.key_results, text.summary,
+             tables.lyapunov_table, tables.lyapunov_runs_table, tables.lyapunov_convergence_table)  # fmt: skip
+    for make in makes:
+        ref, new = make(default), make(moved)
+        if not isinstance(ref, str):
+            ref, new = ref._repr_markdown_() + repr(ref), new._repr_markdown_() + repr(new)
+        assert _sanitize(ref) == _sanitize(new), make.__name__
+        assert not mismatches(ref, new), (make.__name__, [str(m) for m in mismatches(ref, new)])
+    # a value moved beyond its tolerance fails: an exponent 10 standard errors off
+    far = dataclasses.replace(moved.pooled, mean=default.pooled.mean + 10 * default.pooled.standard_error)
+    ref = text.lyapunov_sentence(default)
+    assert mismatches(ref, text.lyapunov_sentence(dataclasses.replace(moved, pooled=far)))
