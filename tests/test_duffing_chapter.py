@@ -9,6 +9,7 @@ e-notation or untypeset unit reaches the reader; the notebook calls each chapter
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import json
 import math
@@ -19,12 +20,13 @@ import numpy as np
 import pytest
 
 from vibration import ParameterError
-from vibration.chapters.duffing import figures, tables, text
-from vibration.chapters.duffing.notation import apm, pm, sig, within
+from vibration.chapters.duffing import figures, notation, tables, text
+from vibration.chapters.duffing.notation import apm, within
 from vibration.chapters.duffing.params import SCHEMA, Params
 from vibration.chapters.duffing.study import duffing_study
 from vibration.physics.duffing import periodic_orbit
 from vibration.presentation.captions import Captioned, check_caption
+from vibration.presentation.numbers import sig
 from vibration.presentation.style import case_style, legend_overlap
 
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks" / "09_duffing.ipynb"
@@ -96,7 +98,7 @@ def _everything(study) -> list[tuple[str, str]]:
     out = []
     for make in SENTENCES:
         for para in re.split(r"\n(?=> \* |\* )|\n\n", make(study)):
-            out.append((make.__name__, para))
+            out.append((make.__name__, _reader(para)))
     for make in TABLES:
         out.append((make.__name__, repr(make(study))))
     for make, c in _figures(study).items():
@@ -158,22 +160,32 @@ def test_fold_rows_follow_the_folds(default):
 # ----------------------------------------------------------------------------------- notation
 
 
-def test_sig_keeps_the_digits_and_types_powers_of_ten():
-    rng = np.random.default_rng(9)
-    for v in 10 ** rng.uniform(-9, 9, 300) * rng.choice([-1, 1], 300):
-        for digits in (1, 2, 3, 5):
-            text_ = sig(v, digits)
-            assert "e" not in text_
-            mant, _, exp = text_.replace("−", "-").partition("×10")
-            power = int(exp.translate(str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789"))) if exp else 0
-            assert float(mant) * 10.0**power == pytest.approx(v, rel=0.51 * 10.0 ** (1 - digits))
-            assert len(re.sub(r"^0\.0*|[.-]", "", mant).lstrip("0")) == digits or float(mant) == 0
-    assert pm(0.10417, 0.00093) == "0.1042 ± 0.0009" and within(0.004) == "0.5 %"
+#: The invisible span that carries a machine-dependent value and its tolerance (the reader sees its text).
+SPAN = re.compile(r'<span class="vib-approx" data-value="([^"]*)" data-tol="([^"]*)">([^<]*)</span>')
+
+
+def _reader(text_: str) -> str:
+    """What the reader sees: the spans' texts without their markup."""
+    return SPAN.sub(lambda m: m.group(3), text_)
+
+
+def test_a_chaotic_exponent_reads_plainly_and_carries_its_tolerances():
+    text_ = apm(0.10417, 0.00093, 20_000)
+    assert _reader(text_) == "0.1042 ± 0.0009" and "≈" not in text_
+    spans = SPAN.findall(text_)
+    assert [(float(v), tol) for v, tol, _ in spans] == [
+        (0.10417, f"a{float(f'{notation.EXPONENT_SPREAD / 20_000**0.5:.2g}'):g}"),
+        (0.00093, f"f{notation.ERROR_FACTOR:g}"),
+    ]
+    # a power of ten is factored out once, outside both spans
+    assert _reader(apm(5.12e-5, 2.7e-6, 1000)) == "(5.1 ± 0.3)×10⁻⁵"
+    assert _reader(apm(0.104, float("nan"), 1000)) == "0.104"
+    assert within(0.004) == "0.5 %" and within(0.00037) == "0.1 %" and within(0.03) == "5 %"
 
 
 def _significant(cell: str) -> int | None:
     """Significant figures of a decimal number in a table cell; None for text, counts, ``—`` and exact zero."""
-    cell = cell.lstrip("≈").rstrip("abcdefghijklmnopqrstuvwxyz")
+    cell = cell.rstrip("abcdefghijklmnopqrstuvwxyz")
     m = re.fullmatch(r"[−-]?(\d+\.\d+|\d+\.?\d*)(?:×10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?", cell)
     if not m or "." not in m.group(1) and "×" not in cell:
         return None
@@ -282,7 +294,9 @@ def _check_verdicts(study) -> None:
     verdict = {1: "the motion is chaotic", -1: "the motion is not chaotic", 0: "not distinguishable from zero"}
     assert verdict[study.pooled.sign] in lyap
     assert ("agree within their errors" in lyap) == study.pooled.consistent
-    assert apm(study.pooled.mean, study.pooled.standard_error) in lyap
+    assert apm(study.pooled.mean, study.pooled.standard_error, sum(e.n_periods for e in study.lyap_runs)) in lyap
+    for where, para in _everything(study):
+        assert not re.search(r"≈\s*[−+-]?\d|[=±]\s*≈", para), (where, para[:120])
     pub = text.published_sentence(study)
     if not study.published.applies:
         assert "no published value to compare with" in pub
@@ -367,3 +381,37 @@ def test_usage_block_runs_on_its_own(tmp_path):
     out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=300, cwd=tmp_path)
     assert out.returncode == 0, out.stderr
     assert "rad/s" in out.stdout and "sweeping up" in out.stdout
+
+
+# --------------------------------------------------------------- machine-dependent digits, measured
+
+
+@pytest.mark.slow
+def test_a_chaotic_run_started_one_ulp_away_stays_within_the_declared_tolerances(default, monkeypatch):
+    """Another rounding anywhere sends a chaotic trajectory elsewhere; starting every run one unit in the last
+    place away does the same on this machine. Every sentence and table of the chaos part must then read the
+    same after the regression comparison's sanitizer, and every masked value lie within its tolerance."""
+    from nbval_numeric import mismatches
+    from test_portable import _sanitize
+
+    from vibration.chapters.duffing import study as study_module
+
+    runs = tuple(
+        ((math.nextafter(x0, math.inf) if x0 else x0, math.nextafter(v0, math.inf) if v0 else v0), spp)
+        for (x0, v0), spp in study_module.LYAPUNOV_RUNS
+    )
+    monkeypatch.setattr(study_module, "LYAPUNOV_RUNS", runs)
+    moved = duffing_study(Params())
+    assert moved.main_run.exponent != default.main_run.exponent  # the trajectory did move
+    makes = (text.lyapunov_sentence, text.published_sentence, text.key_results, text.summary,
+             tables.lyapunov_table, tables.lyapunov_runs_table, tables.lyapunov_convergence_table)  # fmt: skip
+    for make in makes:
+        ref, new = make(default), make(moved)
+        if not isinstance(ref, str):
+            ref, new = ref._repr_markdown_() + repr(ref), new._repr_markdown_() + repr(new)
+        assert _sanitize(ref) == _sanitize(new), make.__name__
+        assert not mismatches(ref, new), (make.__name__, [str(m) for m in mismatches(ref, new)])
+    # a value moved beyond its tolerance fails: an exponent 10 standard errors off
+    far = dataclasses.replace(moved.pooled, mean=default.pooled.mean + 10 * default.pooled.standard_error)
+    ref = text.lyapunov_sentence(default)
+    assert mismatches(ref, text.lyapunov_sentence(dataclasses.replace(moved, pooled=far)))

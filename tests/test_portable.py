@@ -43,6 +43,8 @@ def test_sanitizer_masks_the_value_and_keeps_the_tolerance():
     a = "LSODA   0.001   1e-6   ⟪2926 r0.25⟫   ⟪0.0323 f5⟫"
     b = "LSODA   0.001   1e-6   ⟪29260 r0.25⟫  ⟪0.0315 f5⟫"
     assert _sanitize(a).split() == _sanitize(b).split()
+    # the padding after a cell follows the width of its value's digits, so it is masked with the value
+    assert _sanitize("λ  ⟪0.000879392 f3⟫   0.1") == _sanitize("λ  ⟪0.00124365 f3⟫    0.1")
     html_a = '<td><span class="vib-approx" data-value="2926.4" data-tol="r0.25">2926</span></td>'
     html_b = '<td><span class="vib-approx" data-value="3011" data-tol="r0.25">3011</span></td>'
     assert _sanitize(html_a) == _sanitize(html_b) != _sanitize(html_a.replace("r0.25", "r0.5"))

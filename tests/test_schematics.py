@@ -28,7 +28,7 @@ EXPECTED = {
     "two_mass_absorber": (2, 7),  # k_a and c_a on each mass, k_p x_p, c_p x_p', F0 sin wt
     "shear_building": (2, 2),  # the storey shears above and below
     "skyhook": (4, 3),  # k(x - y), c(x' - y'), f
-    "duffing_spring": (3, 5),  # kx + k3 x^3, c x', F0 sin wt, mg, N
+    "duffing_spring": (3, 5),  # kx + k3 x^3, c x', F0 cos wt, mg, N
     "torsional_oscillator": (2, 4),  # drive, kappa theta, b theta', tau_c sgn theta'
 }
 
@@ -45,7 +45,7 @@ DIRECTIONS = {
     "base_excitation": {"$k(x - y)$": (0, -1), r"$c(\dot x - \dot y)$": (0, -1)},
     "shear_building": {"$k(x_{j+1} - x_j)$": (1, 0), "$k(x_j - x_{j-1})$": (-1, 0)},
     "skyhook": {"$k(x - y)$": (0, -1), r"$c(\dot x - \dot y)$": (0, -1), "$f$": (0, 1)},
-    "duffing_spring": {"$kx + k_3x^3$": (-1, 0), r"$c\dot x$": (-1, 0), r"$F_0\sin\omega t$": (1, 0)},
+    "duffing_spring": {"$kx + k_3x^3$": (-1, 0), r"$c\dot x$": (-1, 0), r"$F_0\cos\omega t$": (1, 0)},
     "torsional_oscillator": {
         r"$\tau_0\sin\omega t$": 1,
         r"$\kappa\theta$": -1,

@@ -623,7 +623,7 @@ def duffing_spring() -> Captioned:
     left.text(1.2, 1.72, "$k$, $k_3$", ha="center", va="bottom", fontsize=_TEXT)
     _dashpot(left, (0.2, 0.74), (x0, 0.74))
     left.text(1.2, 0.5, "$c$", ha="center", va="top", fontsize=_TEXT)
-    _load(left, (x0 + w, 0.6), (x0 + w + 0.9, 0.6), r"$F_0\sin\omega t$", (x0 + w + 0.05, 0.72), "left", "bottom")
+    _load(left, (x0 + w, 0.6), (x0 + w + 0.9, 0.6), r"$F_0\cos\omega t$", (x0 + w + 0.05, 0.72), "left", "bottom")
     _coordinate(left, (x0, 2.15), 0.7, "$x$")
 
     _blank(middle, "free-body diagram", "free-body diagram", (-0.1, 4.6), (-1.0, 2.6))
@@ -631,7 +631,7 @@ def duffing_spring() -> Captioned:
     _mass(middle, x0, y0, w, h, "$m$")
     _force(middle, (x0, 1.3), (x0 - 1.0, 1.3), "$kx + k_3x^3$", (x0 - 0.05, 1.42), "right", "bottom")
     _force(middle, (x0, 0.55), (x0 - 1.0, 0.55), r"$c\dot x$", (x0 - 0.5, 0.43), va="top")
-    _force(middle, (x0 + w, 0.75), (x0 + w + 0.9, 0.75), r"$F_0\sin\omega t$", (x0 + w + 0.05, 0.87), "left",
+    _force(middle, (x0 + w, 0.75), (x0 + w + 0.9, 0.75), r"$F_0\cos\omega t$", (x0 + w + 0.05, 0.87), "left",
            "bottom")  # fmt: skip
     _force(middle, (x0 + 0.3, y0), (x0 + 0.3, y0 - 0.85), "$mg$", (x0 + 0.22, y0 - 0.55), "right")
     _force(middle, (x0 + w - 0.3, y0 - 0.85), (x0 + w - 0.3, y0), "$N$", (x0 + w - 0.22, y0 - 0.55), "left")
@@ -652,12 +652,12 @@ def duffing_spring() -> Captioned:
     words = panel_words(fig)
     colours = {"hardening": "vermillion", "linear": "blue", "softening": "sky blue"}
     caption = (
-        r"The Duffing oscillator of chapter 9, $m\ddot x + c\dot x + kx + k_3x^3 = F_0\sin\omega t$. "
+        r"The Duffing oscillator of chapter 9, $m\ddot x + c\dot x + kx + k_3x^3 = F_0\cos\omega t$. "
         f"{words[0].capitalize()}: a mass $m$ (kg) on a nonlinear spring with linear stiffness $k$ (N/m) and cubic "
-        "stiffness $k_3$ (N/m³), a dashpot $c$ (N s/m) and the drive $F_0\\sin\\omega t$ (N; $\\omega$ in rad/s, $t$ "
+        "stiffness $k_3$ (N/m³), a dashpot $c$ (N s/m) and the drive $F_0\\cos\\omega t$ (N; $\\omega$ in rad/s, $t$ "
         "in s); $x$ (m, blue) is measured from the relaxed spring. "
         f"{words[1].capitalize()}: its free-body diagram, with the spring force $kx + k_3x^3$, the damper force "
-        r"$c\dot x$, the drive $F_0\sin\omega t$, and the weight $mg$ and the normal force $N$ (N), which balance. "
+        r"$c\dot x$, the drive $F_0\cos\omega t$, and the weight $mg$ and the normal force $N$ (N), which balance. "
         f"{words[2].capitalize()}: the spring's restoring force $F = kx + k_3x^3$ (N) against the displacement, "
         "drawn as $F/(kx_0)$ against $x/x_0$ with $x_0 = \\sqrt{k/|k_3|}$ (m), where the cubic term equals the "
         "linear one: the hardening spring "

@@ -12,10 +12,11 @@ import math
 
 import numpy as np
 
-from vibration.chapters.duffing.notation import forcing_term, sig, within
+from vibration.chapters.duffing.notation import forcing_term, k3_text, within
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 from vibration.physics.duffing import backbone
 from vibration.presentation.captions import Captioned, panel_words
+from vibration.presentation.numbers import minus, sig
 from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
 
 STABLE_LS, UNSTABLE_LS = "-", "--"
@@ -30,7 +31,7 @@ COINCIDE = 1e-3
 
 
 def _k3(case: SpringCase) -> str:
-    return f"k₃ = {case.duffing.k3:g} N/m³".replace("-", "−")
+    return k3_text(case.duffing.k3)
 
 
 def plot_curve(ax, omega, amplitude, stable, color, label) -> bool:
@@ -73,7 +74,7 @@ def frequency_response_figure(study: DuffingStudy) -> Captioned:
                 label="linear spring")  # fmt: skip
         drew_unstable[case.label] = plot_curve(
             ax, case.curve_omega, case.curve_amplitude, case.curve_stable, case_style(case.label)["color"],
-            f"$k_3$ = {case.duffing.k3:g} N/m$^3$",
+            minus(f"$k_3$ = {case.duffing.k3:g} N/m$^3$"),
         )  # fmt: skip
         a_bb = np.linspace(0.0, 1.1 * np.nanmax(case.curve_amplitude), 200)
         ax.plot(backbone(case.duffing, a_bb), a_bb, color="k", lw=0.8, ls=":", label="backbone")
@@ -141,7 +142,7 @@ def sweep_figure(study: DuffingStudy) -> Captioned:
             ax.annotate("", xy=(wj, a_after), xytext=(wj, a_before),
                         arrowprops={"arrowstyle": "->", "color": col, "lw": 1.0})  # fmt: skip
         ax.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
-        ax.set_title(f"{case.label}, $k_3$ = {case.duffing.k3:g} N/m$^3$")
+        ax.set_title(minus(f"{case.label}, $k_3$ = {case.duffing.k3:g} N/m$^3$"))
         ax.set_xlim(case.up.omega.min(), case.up.omega.max())
     axes[0].set_ylabel(r"steady amplitude $A$ (m)")
     axes[0].set_ylim(0.0, 1.75 * max(np.nanmax(c.curve_amplitude) for c in study.cases))
@@ -225,7 +226,8 @@ def paper_figure(study: DuffingStudy) -> Captioned:
         else ""
     )
     caption = (
-        f"The paper's resonance scenario from rest, forced at ω = {p.omega_res:g} rad/s for {p.t_end:g} s: "
+        f"The paper's resonance scenario from rest, forced by its F₀ sin ωt at ω = {p.omega_res:g} rad/s for "
+        f"{p.t_end:g} s: "
         f"displacement with the linear spring ({COLOUR_WORD['linear']}, the paper's model) and with the hardening "
         f"spring {_k3(hard)} ({COLOUR_WORD['hardening']}).{lines}"
     )

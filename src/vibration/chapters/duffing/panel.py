@@ -20,6 +20,7 @@ import numpy as np
 from vibration.chapters.duffing.figures import STABLE_LS, UNSTABLE_LS, plot_curve
 from vibration.physics.duffing import Duffing, backbone, folds, response_curve
 from vibration.physics.model import check_real
+from vibration.presentation.numbers import minus
 from vibration.presentation.panels import line_style, panel_assets
 from vibration.presentation.style import case_style, figure, place_legend
 
@@ -168,7 +169,9 @@ class HBExplorer:
         ax = self.ax
         ax.clear()
         w, a, st = response_curve(d, F0, p["omega_max"], n=801)
-        plot_curve(ax, w, a, st, _colors()["hardening" if d.k3 >= 0 else "softening"], f"$k_3$ = {d.k3:.3g} N/m$^3$")
+        plot_curve(
+            ax, w, a, st, _colors()["hardening" if d.k3 >= 0 else "softening"], minus(f"$k_3$ = {d.k3:.3g} N/m$^3$")
+        )
         a_bb = np.linspace(0.0, 1.1 * np.nanmax(a), 200)
         ax.plot(backbone(d, a_bb), a_bb, "k:", lw=0.8, label="backbone")
         f = folds(d, F0)

@@ -1,31 +1,39 @@
 """Chapter 9's tables, each a :class:`~vibration.presentation.tables.Table` built from a :class:`DuffingStudy`.
 
-Every column keeps one number of significant figures (trailing zeros shown, :func:`.notation.sig`); the
-chaotic runs' digits depend on the machine's rounding (a chaotic trajectory amplifies the last bit), so
-they are :class:`~vibration.presentation.tables.Approx` cells.
+Every column keeps one number of significant figures (trailing zeros shown,
+:func:`vibration.presentation.numbers.column`); the chaotic runs' digits depend on the machine's rounding (a
+chaotic trajectory amplifies the last bit), so they are :class:`~vibration.presentation.numbers.Approx` cells
+with the tolerances of :mod:`.notation`.
 """
 
 from __future__ import annotations
 
 import math
 
-from vibration.chapters.duffing.notation import forcing_term, power, sig
+from vibration.chapters.duffing.notation import ERROR_FACTOR, Z_ATOL, exponent_approx, forcing_term, k3_text
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
-from vibration.presentation.tables import Approx, Column, Missing, Table
+from vibration.presentation.numbers import Approx, bound, column, minus
+from vibration.presentation.tables import Column, Missing, Table
 
 NO_ORBIT = "shooting did not converge"
 
 
 def _cell(value: float, digits: int, reason: str) -> str | Missing:
-    return sig(value, digits) if math.isfinite(value) else Missing(reason)
+    return column(value, digits) if math.isfinite(value) else Missing(reason)
 
 
-def _approx(value: float, digits: int) -> Approx:
-    return Approx(sig(value, digits))
+def _exponent(value: float, n_periods: float) -> Approx:
+    """A chaotic exponent from ``n_periods`` periods (its column prints 4 figures)."""
+    return exponent_approx(value, n_periods)
+
+
+def _error(value: float) -> Approx:
+    """A standard error by batch means (its column prints 1 figure)."""
+    return Approx(value, factor=ERROR_FACTOR)
 
 
 def _k3(case: SpringCase) -> str:
-    return f"k₃ = {case.duffing.k3:g} N/m³".replace("-", "−")
+    return k3_text(case.duffing.k3)
 
 
 def _spring(case: SpringCase) -> str:
@@ -34,11 +42,8 @@ def _spring(case: SpringCase) -> str:
 
 def _bound(value: float, tol: float) -> str | Missing:
     """A self-check against its tolerance: ``< 10⁻¹²`` when it holds, else the value and the tolerance."""
-    if math.isnan(value):
-        return Missing("not computed for this case")
-    if abs(value) < tol:
-        return f"< {power(tol)}"
-    return f"{sig(abs(value), 2)} (above {power(tol)})"
+    text = bound(value, tol)
+    return Missing("not computed for this case") if text is None else text
 
 
 def hb_table(study: DuffingStudy) -> Table:
@@ -85,8 +90,8 @@ def stability_table(study: DuffingStudy) -> Table:
             rows.append(
                 {
                     "case": case.label,
-                    "w": sig(ch.omega, 5),
-                    "a": sig(ch.amplitude, 4),
+                    "w": column(ch.omega, 5),
+                    "a": column(ch.amplitude, 4),
                     "st": "stable" if ch.stable else "unstable",
                     "ao": _cell(ch.orbit_amplitude, 4, NO_ORBIT),
                     "mu": _cell(ch.max_multiplier, 4, NO_ORBIT),
@@ -168,13 +173,13 @@ def history_table(study: DuffingStudy) -> Table:
     rows = [
         {
             "where": h.where,
-            "omega": sig(h.omega, 4),
-            "linear": sig(h.linear, 4),
-            "hb_low": sig(h.hb_low, 4),
+            "omega": column(h.omega, 4),
+            "linear": column(h.linear, 4),
+            "hb_low": column(h.hb_low, 4),
             "hb_high": _cell(h.hb_high, 4, "one stable amplitude at this frequency"),
-            "rest": sig(h.rest, 4),
-            "up": sig(h.up, 4),
-            "down": sig(h.down, 4),
+            "rest": column(h.rest, 4),
+            "up": column(h.up, 4),
+            "down": column(h.down, 4),
         }
         for h in study.history
     ]
@@ -205,7 +210,7 @@ def history_table(study: DuffingStudy) -> Table:
 
 
 def _start(x0: float, v0: float) -> str:
-    return f"x₀ = {x0:g} m, v₀ = {v0:g} m/s".replace("-", "−")
+    return minus(f"x₀ = {x0:g} m, v₀ = {v0:g} m/s")
 
 
 def lyapunov_table(study: DuffingStudy) -> Table:
@@ -218,9 +223,11 @@ def lyapunov_table(study: DuffingStudy) -> Table:
                 "case": f"F = {p.F0_ueda:g} N",
                 "method": "variational + QR" if e.method == "qr" else "two trajectories",
                 "n": e.n_periods,
-                "l1": _approx(e.exponent, 4),
-                "se": _approx(e.standard_error, 1),
-                "l2": _approx(e.second, 4) if e.method == "qr" else Missing("the two-trajectory method gives λ₁ only"),
+                "l1": _exponent(e.exponent, e.n_periods),
+                "se": _error(e.standard_error),
+                "l2": _exponent(e.second, e.n_periods)
+                if e.method == "qr"
+                else Missing("the two-trajectory method gives λ₁ only"),
             }
         )
     for r in (study.periodic_qr, study.periodic_benettin):
@@ -229,9 +236,9 @@ def lyapunov_table(study: DuffingStudy) -> Table:
                 "case": f"F = {p.F0_ueda_periodic:g} N",
                 "method": "variational + QR" if r.method == "qr" else "two trajectories",
                 "n": r.running.size,
-                "l1": sig(r.exponents[0], 4),
+                "l1": column(r.exponents[0], 4),
                 "se": Missing("a periodic orbit: the estimate converges instead of scattering"),
-                "l2": sig(r.exponents[1], 4)
+                "l2": column(r.exponents[1], 4)
                 if len(r.exponents) > 1
                 else Missing("the two-trajectory method gives λ₁ only"),  # fmt: skip
             }
@@ -244,7 +251,7 @@ def lyapunov_table(study: DuffingStudy) -> Table:
             Column("method", "method"),
             Column("n", "periods"),
             Column("l1", "λ_1 (1/s)"),
-            Column("se", "standard error (1/s)"),
+            Column("se", "standard error (1/s)", digits=1),
             Column("l2", "λ_2 (1/s)"),
         ],
         caption=f"Lyapunov exponents of Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = {forcing_term(p)} from "
@@ -266,17 +273,18 @@ def lyapunov_runs_table(study: DuffingStudy) -> Table:
         {
             "start": _start(e.x0, e.v0),
             "spp": e.steps_per_period,
-            "h": sig(e.period / e.steps_per_period, 3),
+            "h": column(e.period / e.steps_per_period, 3),
             "n": e.n_periods,
-            "l1": _approx(e.exponent, 4),
-            "se": _approx(e.standard_error, 1),
-            "z": _approx((e.exponent - pooled.mean) / e.standard_error, 2),
+            "l1": _exponent(e.exponent, e.n_periods),
+            "se": _error(e.standard_error),
+            "z": Approx((e.exponent - pooled.mean) / e.standard_error, atol=Z_ATOL),
         }
         for e in study.lyap_runs
     ]
+    total = sum(e.n_periods for e in study.lyap_runs)
     rows.append({"start": "pooled (inverse-variance weights)", "spp": None, "h": None,
-                 "n": sum(e.n_periods for e in study.lyap_runs), "l1": _approx(pooled.mean, 4),
-                 "se": _approx(pooled.standard_error, 1), "z": None})  # fmt: skip
+                 "n": total, "l1": _exponent(pooled.mean, total),
+                 "se": _error(pooled.standard_error), "z": None})  # fmt: skip
     return Table(
         rows,
         [
@@ -285,8 +293,8 @@ def lyapunov_runs_table(study: DuffingStudy) -> Table:
             Column("h", "step h (s)"),
             Column("n", "periods"),
             Column("l1", "λ_1 (1/s)"),
-            Column("se", "standard error (1/s)"),
-            Column("z", "(λ_1 − pooled) / error"),
+            Column("se", "standard error (1/s)", digits=1),
+            Column("z", "(λ_1 − pooled) / error", digits=2),
         ],
         caption=f"Largest exponent at F = {study.params.F0_ueda:g} N from runs that share no trajectory (other "
         "initial states, other RK4 steps; variational equations with QR), the first being the main run.",
@@ -297,7 +305,12 @@ def lyapunov_runs_table(study: DuffingStudy) -> Table:
 def lyapunov_convergence_table(study: DuffingStudy) -> Table:
     """Convergence of the main run: the estimate and its standard error against the averaging length."""
     rows = [
-        {"n": r.n, "time": sig(r.time, 3), "l1": _approx(r.exponent, 4), "se": _approx(r.standard_error, 1)}
+        {
+            "n": r.n,
+            "time": column(r.time, 3),
+            "l1": _exponent(r.exponent, r.n),
+            "se": _error(r.standard_error),
+        }
         for r in study.convergence
     ]
     return Table(
@@ -306,7 +319,7 @@ def lyapunov_convergence_table(study: DuffingStudy) -> Table:
             Column("n", "periods N"),
             Column("time", "averaging time (s)"),
             Column("l1", "λ_1 (1/s)"),
-            Column("se", "standard error (1/s)"),
+            Column("se", "standard error (1/s)", digits=1),
         ],
         caption="The main run's largest exponent from its first N periods; its standard error falls as 1/√N.",
         name="tab-duffing-lyapunov-convergence",

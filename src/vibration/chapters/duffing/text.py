@@ -2,7 +2,7 @@
 
 Every number, comparison and verdict is computed from the :class:`DuffingStudy` of the run's parameters.
 Digits of the chaotic runs depend on the machine's rounding (a chaotic trajectory amplifies the last bit):
-the sentences write them "≈0.1042", as the tables do, and the nbval sanitizer masks them.
+the sentences write them like any other number, with the tolerances of :mod:`.notation` declared beside them.
 
 Word conventions (the tests check them against the numbers): a spring is "hardening" or "softening" by the
 sign of k₃; a jump "brackets" the fold when the fold lies in its refined bracket; the exponent is "positive"
@@ -18,8 +18,18 @@ import math
 import numpy as np
 
 from vibration.chapters.duffing.keyresults import KEY_RESULTS
-from vibration.chapters.duffing.notation import apm, count, sig, signed
+from vibration.chapters.duffing.notation import (
+    CHI2_FACTOR,
+    DIFFERENCE_FACTOR,
+    ERROR_FACTOR,
+    LENGTH_FACTOR,
+    Z_ATOL,
+    apm,
+    inverse,
+    k3_text,
+)
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
+from vibration.presentation.numbers import Approx, sig, signed
 
 #: The pooled exponent agrees with the published one within this many standard errors.
 AGREE_Z = 2.0
@@ -28,7 +38,7 @@ FLOQUET_AGREE = 0.02
 
 
 def _k3(case: SpringCase) -> str:
-    return f"k₃ = {case.duffing.k3:g} N/m³".replace("-", "−")
+    return k3_text(case.duffing.k3)
 
 
 def _rel(a: float, b: float) -> str:
@@ -187,7 +197,8 @@ def paper_sentence(study: DuffingStudy) -> str:
             f"where two stable amplitudes coexist"
         )
     return (
-        f"From rest, the largest |x| in the paper's {p.t_end:g} s window at ω = {p.omega_res:g} rad/s is "
+        f"From rest under the paper's forcing F₀ sin ωt, the largest |x| in its {p.t_end:g} s window at "
+        f"ω = {p.omega_res:g} rad/s is "
         f"{sig(lin, 4)} m with the linear spring and {sig(duf, 4)} m with {_k3(study.hardening)}. {where}{band}."
     )
 
@@ -209,10 +220,14 @@ def lyapunov_sentence(study: DuffingStudy) -> str:
     p, main, partner, pooled = study.params, study.main_run, study.lyap_benettin, study.pooled
     starts = {(e.x0, e.v0) for e in study.lyap_runs}
     steps = sorted({e.period / e.steps_per_period for e in study.lyap_runs})
+    lam_main = apm(main.exponent, main.standard_error, main.n_periods)
+    lam_partner = apm(partner.exponent, partner.standard_error, partner.n_periods)
+    lam_pooled = apm(pooled.mean, pooled.standard_error, _pooled_periods(study))
+    chi2 = Approx(pooled.chi2, factor=CHI2_FACTOR).html(sig(pooled.chi2, 2))
     agree = (
-        f"agree within their errors (χ² = ≈{sig(pooled.chi2, 2)} for {pooled.dof} degrees of freedom)"
+        f"agree within their errors (χ² = {chi2} for {pooled.dof} degrees of freedom)"
         if pooled.consistent
-        else f"scatter more than their errors allow (χ² = ≈{sig(pooled.chi2, 2)} for {pooled.dof} degrees of freedom)"
+        else f"scatter more than their errors allow (χ² = {chi2} for {pooled.dof} degrees of freedom)"
     )
     floq = ""
     if math.isfinite(study.floquet_periodic):
@@ -221,15 +236,15 @@ def lyapunov_sentence(study: DuffingStudy) -> str:
             f", as the Floquet multipliers of its orbit give ({sig(study.floquet_periodic, 3)} 1/s)"
             if close
             else f"; the Floquet multipliers of its orbit give {sig(study.floquet_periodic, 3)} 1/s, which the "
-            f"running estimate has not reached after {count(study.periodic_qr.running.size)} periods"
+            f"running estimate has not reached after {study.periodic_qr.running.size} periods"
         )
     return (
-        f"At F = {p.F0_ueda:g} N the main run of {count(main.n_periods)} periods gives λ₁ "
-        f"{apm(main.exponent, main.standard_error)} 1/s (standard error by batch means over {main.block_means.size} "
-        f"blocks of {count(main.block_periods)} periods). The {len(study.lyap_runs)} runs from {len(starts)} initial "
+        f"At F = {p.F0_ueda:g} N the main run of {main.n_periods} periods gives λ₁ "
+        f"{lam_main} 1/s (standard error by batch means over {main.block_means.size} "
+        f"blocks of {main.block_periods} periods). The {len(study.lyap_runs)} runs from {len(starts)} initial "
         f"states and step sizes h = {sig(steps[0], 2)} to {sig(steps[-1], 2)} s share no trajectory; they {agree} "
-        f"and pool to λ₁ {apm(pooled.mean, pooled.standard_error)} 1/s, {chaos_verdict(study)}. The two-trajectory "
-        f"method gives {apm(partner.exponent, partner.standard_error)} 1/s on the main run's trajectory: the two "
+        f"and pool to λ₁ {lam_pooled} 1/s, {chaos_verdict(study)}. The two-trajectory "
+        f"method gives {lam_partner} 1/s on the main run's trajectory: the two "
         "methods follow one trajectory, so their agreement checks the code, not the estimate. Likewise "
         "λ₁ + λ₂ = −c/m holds by construction of the QR method (the trace of the Jacobian), so it checks the "
         f"integration, not λ₁. At F = {p.F0_ueda_periodic:g} N the largest exponent is "
@@ -237,9 +252,30 @@ def lyapunov_sentence(study: DuffingStudy) -> str:
     )
 
 
+def _pooled_periods(study: DuffingStudy) -> int:
+    """Forcing periods of all the runs the pooled exponent averages."""
+    return sum(e.n_periods for e in study.lyap_runs)
+
+
+def _round_count(n: float) -> str:
+    """A length (periods, seconds) rounded to two figures and written whole, as a count: 4300, 27000."""
+    return str(round(float(f"{n:.2g}")))
+
+
+def _z(z: float) -> str:
+    """A z-score (a difference in standard errors) of the chaotic runs, signed, with its tolerance."""
+    return Approx(z, atol=Z_ATOL).html(signed(z, 2))
+
+
+def _difference(value: float, text: str) -> str:
+    """``text`` of a quantity computed from the pooled exponent's small difference from the published one."""
+    return Approx(value, factor=DIFFERENCE_FACTOR).html(text)
+
+
 def published_sentence(study: DuffingStudy) -> str:
     """The pooled exponent against the published one, with what can and cannot explain the difference."""
     pub, pooled, main = study.published, study.pooled, study.main_run
+    lam_pooled = apm(pooled.mean, pooled.standard_error, _pooled_periods(study))
     p = study.params
     if not pub.applies:
         return (
@@ -251,25 +287,29 @@ def published_sentence(study: DuffingStudy) -> str:
         f"per forcing period it would be 2π times larger, {sig(2 * math.pi * pub.exponent, 2)})."
     )
     if abs(pub.z) <= AGREE_Z:
-        return head + (
-            f" The pooled {apm(pooled.mean, pooled.standard_error)} 1/s agrees with it within two standard errors "
-            f"(≈{signed(pub.z, 2)})."
-        )
-    by_step = ", ".join(f"{spp} steps per period ≈{signed(z, 2)}" for spp, z in pub.step_z) or "no run"
+        return head + (f" The pooled {lam_pooled} 1/s agrees with it within two standard errors ({_z(pub.z)}).")
+    by_step = ", ".join(f"{spp} steps per period {_z(z)}" for spp, z in pub.step_z) or "no run"
     step_ok = all(abs(z) <= AGREE_Z for _, z in pub.step_z)
-    n_text = count(float(f"{pub.n_needed:.2g}"))
-    t_text = count(float(f"{pub.n_needed * main.period:.2g}"))
+    # the averaging length needed grows as (σ₁/Δ)²: it takes the standard error's tolerance squared
+    n_text = Approx(pub.n_needed, factor=LENGTH_FACTOR).html(_round_count(pub.n_needed))
+    t_text = Approx(pub.n_needed * main.period, factor=LENGTH_FACTOR).html(_round_count(pub.n_needed * main.period))
+    z_text = Approx(abs(pub.z), factor=DIFFERENCE_FACTOR).html(sig(abs(pub.z), 2))
+    delta, share = (
+        _difference(pub.delta, signed(pub.delta, 2)),
+        _difference(pub.delta, signed(100 * pub.delta / pub.exponent, 2)),
+    )
+    sigma1 = Approx(pub.sigma1, factor=ERROR_FACTOR).html(sig(pub.sigma1, 2))
+    miss = _difference(abs(pub.delta), sig(abs(pub.delta), 2))
     return head + (
-        f" The pooled {apm(pooled.mean, pooled.standard_error)} 1/s is ≈{sig(abs(pub.z), 2)} standard errors "
-        f"{'above' if pub.z > 0 else 'below'} it (≈{signed(pub.delta, 2)} 1/s, "
-        f"≈{signed(100 * pub.delta / pub.exponent, 2)} %). "
+        f" The pooled {lam_pooled} 1/s is {z_text} standard errors "
+        f"{'above' if pub.z > 0 else 'below'} it ({delta} 1/s, {share} %). "
         f"{'The step size does not explain this' if step_ok else 'The step size may contribute'}: runs with other "
         f"steps differ from the pooled value by {by_step} standard errors (the published run used h = {pub.step:g} "
         f"s, {2 * math.pi / pub.step:.0f} steps per period), and the definitions are the same (the published third "
         "exponent, 0, is that of time taken as a variable). The averaging length can: a single run of N periods "
-        f"scatters about the long-run value with standard deviation ≈{sig(pub.sigma1, 2)}/√N 1/s (from the main "
-        f"run's batch means), so a run shorter than ≈{n_text} periods (≈{t_text} s) misses it by "
-        f"≈{sig(abs(pub.delta), 2)} 1/s or more with a probability above 5 %. The published value states no "
+        f"scatters about the long-run value with standard deviation {sigma1}/√N 1/s (from the main "
+        f"run's batch means), so a run shorter than {n_text} periods ({t_text} s) misses it by "
+        f"{miss} 1/s or more with a probability above 5 %. The published value states no "
         "averaging length; a finite-time average is the likeliest explanation."
     )
 
@@ -318,10 +358,11 @@ def key_findings(study: DuffingStudy) -> list[str]:
             f"{sig(max(errs), 2)} rad/s{sweeps}."
         )
     pooled, key = study.pooled, KEY_RESULTS.values(study)  # the declared key results (keyresults.py)
+    lam_key = apm(key["lyapunov"], key["lyapunov_se"], _pooled_periods(study))
     out.append(
-        f"**Chaos.** Ueda's oscillator at F = {p.F0_ueda:g} N has λ₁ {apm(key['lyapunov'], key['lyapunov_se'])} "
+        f"**Chaos.** Ueda's oscillator at F = {p.F0_ueda:g} N has λ₁ {lam_key} "
         f"1/s from {len(study.lyap_runs)} independent runs, {chaos_verdict(study)}"
-        + (f"; nearby motions separate by a factor e every ≈{sig(1 / pooled.mean, 2)} s." if pooled.sign > 0 else ".")
+        + (f"; nearby motions separate by a factor e every {inverse(1.0, pooled.mean)} s." if pooled.sign > 0 else ".")
     )
     return out
 
@@ -352,9 +393,10 @@ def summary(study: DuffingStudy) -> str:
             "their frequency in closed form; check the edges that matter with the full equation."
         )
     if study.pooled.sign > 0:
+        tenfold = inverse(math.log(10), study.pooled.mean)
         lines.append(
             f"* **Strong forcing can make the response unpredictable.** At F = {p.F0_ueda:g} N an error in the "
-            f"initial state grows tenfold in ≈{sig(math.log(10) / study.pooled.mean, 2)} s, so only "
+            f"initial state grows tenfold in {tenfold} s, so only "
             "statistics of the motion, not its course, can be predicted beyond that."
         )
     else:
