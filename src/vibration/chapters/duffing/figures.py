@@ -17,11 +17,11 @@ from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 from vibration.physics.duffing import backbone
 from vibration.presentation.captions import Captioned, panel_words
 from vibration.presentation.numbers import minus, sig
-from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
+from vibration.presentation.style import OKABE_ITO, case_style, colour_word, figure, place_legend
 
 STABLE_LS, UNSTABLE_LS = "-", "--"
 #: How a caption names each case's colour (the colours of :data:`vibration.presentation.style.CASES`).
-COLOUR_WORD = {"hardening": "red", "softening": "sky blue", "linear": "dark blue"}
+COLOUR_WORD = {case: colour_word(case_style(case)["color"]) for case in ("hardening", "softening", "linear")}
 #: One-harmonic curve under the sweeps: light grey, behind the data.
 CURVE_GREY = "#bbbbbb"
 #: The alt text's axes of the two frequency-response figures.
@@ -285,7 +285,7 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
             return f"{n} points: a periodic motion of {n} forcing periods"
         return f"{n} distinct points spread over a folded set, no repeating pattern"
 
-    dot = "a red circle" if n_per == 1 else "red circles"
+    dot = f"a {COLOUR_WORD['hardening']} circle" if n_per == 1 else f"{COLOUR_WORD['hardening']} circles"
     gaps = {w: study.method_gap(w) for w in ("chaotic", "periodic")}
     both = all(g < COINCIDE for g in gaps.values())
     coincide = (
