@@ -509,7 +509,8 @@ def session_sentence(st: RealOscillatorStudy) -> str:
         f"At matched drive frequency ({sp.pairs} pairs of groups within "
         f"{g(100 * st.params.frequency_tolerance, 2)} %), "
         f"the steady amplitude per unit drive differs between sessions by {g(100 * sp.spread, 2)} % rms "
-        f"(session {first} over session {second}: {g(100 * (math.exp(sp.mean_log_ratio) - 1.0), 2)} % on average). "
+        f"(session {first} over session {second}: {g(100 * sp.mean_log_ratio, 2)} % on average, both as logarithmic "
+        "ratios). "
         "Settings are compared within a session; a comparison across sessions carries this spread as a systematic "
         "error, and the single gain used here for all sessions leaves part of it in the prediction errors."
     )
