@@ -150,3 +150,29 @@ def test_nothing_changed_only_checks_and_one_edit_rebuilds_only_its_pages(tmp_pa
     executed = json.loads((out / "notebooks" / "02_b.ipynb").read_text())
     assert "".join(executed["cells"][-1]["outputs"][0]["text"]).strip() == "4"
     assert (out / "report" / "01_a.html").is_file() and not list(out.glob(".report-*"))
+
+
+def test_the_lab_folder_of_chapter_12_enters_its_manifest(tmp_path, graph):
+    nb = _notebook(
+        tmp_path / "notebooks" / "12_real_oscillator.ipynb",
+        "from vibration.presentation.tables import fmt",
+        'lab_data: str = "data/lab_oscillator"  # folder, path',
+    )
+    lab = tmp_path / "lab"
+    lab.mkdir()
+    (lab / "runs.csv").write_text("file,kind,brake,brake_current_A,session,run\na.csv,free,off,,1,\n")
+    (lab / "a.csv").write_text("Zeit t / s;Weg &b_A1 / rad\n0;1\n")
+    params = {"lab_data": str(lab)}
+    first = manifest(nb, params, ROOT, graph)
+    assert first["parameter lab_data/a.csv"] != first["parameter lab_data/runs.csv"]
+    assert differences(first, manifest(nb, params, ROOT, graph)) == []
+    (lab / "a.csv").write_text("Zeit t / s;Weg &b_A1 / rad\n0;2\n")
+    assert differences(first, manifest(nb, params, ROOT, graph)) == ["parameter lab_data/a.csv changed"]
+    (lab / "b.csv").write_text("x")
+    assert "parameter lab_data/b.csv is new" in differences(first, manifest(nb, params, ROOT, graph))
+    # the default folder is the project's copy of the lab data, hashed under the parameter's name too
+    default = manifest(nb, {}, ROOT, graph)
+    assert "parameter lab_data/runs.csv" in default and default["parameter lab_data"] == "folder"
+    # another chapter's notebook has no path parameter
+    other = _notebook(tmp_path / "notebooks" / "01_x.ipynb", "from vibration.presentation.tables import fmt")
+    assert not any(k.startswith("parameter ") for k in manifest(other, {"a": 1.0}, ROOT, graph))

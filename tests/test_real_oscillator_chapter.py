@@ -21,7 +21,7 @@ from vibration.presentation.style import legend_overlap
 
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks" / "12_real_oscillator.ipynb"
 MAIN_TABLES = (text.law_table, text.brake_table, text.resonance_table, text.prediction_table, verdicts.claims_table)
-DETAIL_TABLES = (text.pooled_table, text.steadiness_table, text.damping_csv)
+DETAIL_TABLES = (text.pooled_table, text.steadiness_table, text.session_table, text.damping_csv)
 SENTENCES = (
     text.provenance_text,
     text.key_results,
@@ -29,6 +29,8 @@ SENTENCES = (
     text.brake_sentence,
     text.steadiness_sentence,
     text.prediction_sentence,
+    text.simulation_sentence,
+    text.session_sentence,
     text.summary_text,
 )
 FIGURES = (
@@ -107,6 +109,14 @@ def test_todays_data(study, tmp_path):
     assert {law for (_, law) in study.predictions} == set(study.settings[-1].fits)
     for p in study.predictions.values():
         assert len(p.sensitivity) == 9
+        # every law is also predicted by simulating each run from its measured start, on the same runs
+        assert math.isfinite(p.sim_pooled_error) and set(p.sim_errors) == set(p.errors)
+        assert len(p.sim_sensitivity) == 9
+    # the sessions: the resonant amplitude per unit drive differs between them at matched frequency, and the
+    # amplification of the session without low-frequency runs carries that spread as a systematic error
+    assert [s.session for s in study.sessions] == ["1", "2"]
+    assert study.spread.pairs >= 1 and study.spread.spread > 0.05
+    assert "systematic" in claims["C09"]["detail"]
     # the CSV resonance table counts every driven run once
     assert sum(int(r["runs"]) for r in out["tab-real-resonance"]) == len(study.driven) == 54
     assert study.current_law is None and figures.current_figure(study) is None
@@ -199,3 +209,18 @@ def test_notebook_runs_on_another_lab(other_lab, tmp_path):
     assert verdict["C18"] != "not testable with these data"
     assert all(v in verdicts.VERDICTS for v in verdict.values())
     assert math.isfinite(float(next(csv.DictReader((tables / "tab-real-damping.csv").open()))["zeta_eq"]))
+
+
+def test_the_schematic_says_what_the_rig_is_and_what_is_not_documented(study):
+    from vibration.presentation.schematics import torsional_oscillator
+
+    rig = study.data.rig
+    cap = torsional_oscillator(
+        description=rig.description, max_angle_rad=rig.max_angle_rad, encoder_step_rad=rig.encoder_step_rad
+    ).caption
+    assert rig.description.rstrip(".") in cap
+    assert rig.max_angle_rad is None and "the largest angle the wheel can turn." in cap
+    assert "Not documented" in cap and "push rod" in cap
+    other = torsional_oscillator(description="a simulated wheel", max_angle_rad=30.0).caption
+    assert "can turn at most 30 rad (1719°)" in other and "the largest angle the wheel can turn" not in other
+    assert "The data do not describe the rig." in torsional_oscillator().caption

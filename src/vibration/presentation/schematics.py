@@ -694,9 +694,45 @@ def _block(ax, centre, radial_deg: float, length: float, width: float, **kw) -> 
     ax.add_patch(Polygon(pts, closed=True, **kw))
 
 
-def torsional_oscillator() -> Captioned:
+def _rig_sentence(description: str | None, max_angle_rad: float | None, encoder_step_rad: float | None) -> str:
+    """What the data folder says about the rig, and what it does not document (leading space)."""
+    known = []
+    if description and description.strip():
+        known.append(description.strip().rstrip("."))
+    if encoder_step_rad:
+        known.append(
+            f"the wheel's angle is read in steps of {encoder_step_rad:.3g} rad ({math.degrees(encoder_step_rad):.4g}°)"
+        )
+    if max_angle_rad:
+        known.append(f"the wheel can turn at most {max_angle_rad:.3g} rad ({math.degrees(max_angle_rad):.4g}°)")
+    missing = [
+        "the values of $I$, $\\kappa$, $b$ and $\\tau_c$ (the chapter measures only $\\omega_n$, $\\zeta$ and "
+        "$\\Delta$)",
+        "the linkage from drive to spring (drawn as the usual push rod and lever)",
+        "where the dry friction acts (drawn at the bearing)",
+    ]
+    if not max_angle_rad:
+        missing.append("the largest angle the wheel can turn")
+    out = (
+        " Known of this rig from its data: " + "; ".join(known) + "." if known else " The data do not describe the rig."
+    )
+    return out + " Not documented: " + ", ".join(missing[:-1]) + " and " + missing[-1] + "."
+
+
+def torsional_oscillator(
+    *, description: str | None = None, max_angle_rad: float | None = None, encoder_step_rad: float | None = None
+) -> Captioned:
     """Chapter 12's torsional wheel: a spiral spring, a motor-driven crank winding the spring's outer end, an
-    eddy-current brake and dry friction at the bearing; beside it the wheel's free-body diagram with its torques."""
+    eddy-current brake and dry friction at the bearing; beside it the wheel's free-body diagram with its torques.
+
+    Parameters
+    ----------
+    description : str, optional
+        What the data folder says the rig is (its ``rig.csv`` description); quoted in the caption.
+    max_angle_rad, encoder_step_rad : float, optional
+        The largest angle the wheel can turn and the angle sensor's step (rad), when the folder documents them.
+        The caption says which of these, and what else the drawing assumes, the data do not document.
+    """
     fig, (left, right) = figure(1, 2, height=3.7)
     R = 1.3
     _blank(left, "schematic", "schematic", (-2.2, 2.9), (-2.35, 2.75))
@@ -782,8 +818,11 @@ def torsional_oscillator() -> Captioned:
         )
         + " Torques are vermillion. Divided by $I$, this is the chapter's model with $\\omega_n^2 = \\kappa/I$, "
         "$2\\zeta\\omega_n = b/I$ and the friction angle $\\Delta = \\tau_c/\\kappa$ (the spring's resting angle "
-        "$c$ taken as zero); the drive there is the measured drive angle $u(t)$ times the gain $g$, the torque "
-        "$\\kappa g u(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily. " + _NEWTON_TORQUES
+        "$c$ taken as zero); the drive there is the measured drive signal $u(t)$ times the gain $g$, the torque "
+        "$\\kappa g u(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily."
+        + _rig_sentence(description, max_angle_rad, encoder_step_rad)
+        + " "
+        + _NEWTON_TORQUES
     )
     alt = (
         "A wheel on a spiral spring whose outer end is rocked by a motor through a crank and a push rod, with a "

@@ -4,8 +4,10 @@ A chapter depends on its notebook, the parameter values it is run with, the pack
 imports (its import closure, read from the source by grimp, the graph library behind import-linter,
 so a lazy import inside a function counts too), the non-Python files beside those modules (panel
 scripts and styles), the project's ``data/`` folder and the environment (Python, the pinned
-packages). Each of those is hashed (SHA-256) into a manifest; a cached run is reused when its
-manifest is the same, and otherwise the differences say why the chapter runs again.
+packages), and every folder a path parameter names (chapter 12's ``lab_data``: each file in it, so
+changing a file of another laboratory's folder runs the chapter again). Each of those is hashed
+(SHA-256) into a manifest; a cached run is reused when its manifest is the same, and otherwise the
+differences say why the chapter runs again.
 
 Why not jupyter-cache: it keys a notebook on its code cells only, not on the package the cells
 call, so a change in ``src/`` would not re-run the chapter that uses it; and it stores its own
@@ -107,6 +109,41 @@ def manifest(notebook: Path, params: dict, root: Path, graph) -> dict[str, str]:
         for path in sorted(data.rglob("*")):
             if path.is_file():
                 out[_label(path, root)] = _sha(path.read_bytes())
+    for name, folder in path_parameters(notebook, params, root).items():
+        out.update(folder_digest(f"parameter {name}", folder))
+    return out
+
+
+def path_parameters(notebook: Path, params: dict, root: Path) -> dict[str, Path]:
+    """The folders the chapter's path parameters name (``Param(path=True)``), by parameter name.
+
+    A value equal to the declared default is taken relative to the project folder (as the chapter resolves
+    it); any other value is the folder itself.
+    """
+    from .report import chapter_schemas
+
+    schema = chapter_schemas().get(Path(notebook).stem)
+    if schema is None:
+        return {}
+    out = {}
+    for p in schema.params:
+        if not p.path:
+            continue
+        value = params.get(p.name, p.default)
+        folder = root / str(value) if value == p.default else Path(str(value)).expanduser()
+        out[p.name] = folder
+    return out
+
+
+def folder_digest(label: str, folder: Path) -> dict[str, str]:
+    """``label/<file>`` -> SHA-256 of each file under ``folder`` (``label`` -> "absent" without the folder)."""
+    folder = Path(folder)
+    if not folder.is_dir():
+        return {label: "absent"}
+    out = {label: "folder"}
+    for path in sorted(folder.rglob("*")):
+        if path.is_file() and "__pycache__" not in path.parts:
+            out[f"{label}/{path.relative_to(folder).as_posix()}"] = _sha(path.read_bytes())
     return out
 
 

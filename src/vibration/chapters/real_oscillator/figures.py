@@ -188,13 +188,25 @@ def gain_figure(st: RealOscillatorStudy) -> Captioned:
         e = [100 * y if math.isfinite(y) else np.nan for _, y in p.sensitivity]
         sty = LAW_STYLE[law]
         ax.plot(f, e, color=sty["color"], ls=sty["ls"], marker=".", label=f"{sty['label']}, brake {b}")
+        if p.sim_sensitivity:
+            fs = [x for x, _ in p.sim_sensitivity]
+            es = [100 * y if math.isfinite(y) else np.nan for _, y in p.sim_sensitivity]
+            ax.plot(fs, es, color=sty["color"], ls="none", marker="o", mfc="none", ms=4)
+    simulated = any(p.sim_sensitivity for p in st.predictions.values())
+    if simulated:
+        ax.plot([], [], color="0.3", ls="none", marker="o", mfc="none", ms=4, label="simulated runs")
     ax.set_yscale("log")
     ax.set_xlabel("drive gain / calibrated gain")
     ax.set_ylabel("pooled rms error (%)")
     place_legend(ax, outside=True, fontsize=7)
     caption = (
         "Sensitivity of each law's pooled prediction error (rms relative error of the predicted steady "
-        "amplitudes, logarithmic axis) to the drive gain, from 0.8 to 1.2 times its calibrated value."
+        "amplitudes, logarithmic axis) to the drive gain, from 0.8 to 1.2 times its calibrated value"
+        + (
+            ": lines by harmonic balance, open circles by simulating each run from its measured start."
+            if simulated
+            else "."
+        )
     )
     return Captioned(fig, caption, "fig-real-gain", "Prediction error against drive gain, one curve per law.")
 

@@ -53,6 +53,7 @@ from vibration.physics.lab import (
     joint_brake_fit,
     law_forced_amplitude,
     load_lab_data,
+    simulate_driven,
     steadiness,
 )
 from vibration.physics.model import ParameterError
@@ -70,6 +71,10 @@ STICK_MULTIPLE = 5.0
 GAIN_BOUNDS = (1e-4, 1e3)
 #: Percentiles of each setting's half-period amplitudes that bound the comparison band.
 BAND_PERCENTILES = (10.0, 90.0)
+#: Largest omega h of the simulations' Runge-Kutta step (about 125 steps per period).
+SIM_OMEGA_STEP = 0.05
+#: Start velocity: a straight line through the samples of the first this many seconds.
+START_WINDOW = 0.25
 
 
 # ----------------------------------------------------------------------------- records
@@ -126,7 +131,8 @@ class Driven:
         Drive angular frequency (rad/s) from a one-harmonic fit of the drive signal (of the wheel when
         there is none).
     drive_amp : float
-        Drive signal amplitude (its unit ``drive_unit``).
+        Drive signal amplitude (its unit ``drive_unit``); ``drive_phase`` its phase (rad) in
+        ``sin(omega t + phase)``, t the record's own time.
     frequency_drift : float
         Relative change of the drive frequency from the first to the second half of the record.
     centre_drift : float
@@ -138,6 +144,7 @@ class Driven:
     run: object = field(repr=False)
     omega: float
     drive_amp: float
+    drive_phase: float
     drive_unit: str
     frequency_drift: float
     centre_drift: float
@@ -180,6 +187,14 @@ class Prediction:
         (gain factor, pooled error) pairs.
     resonance : dict
         Session -> (omega, amplitude) of the model's largest steady amplitude at the session's mean drive.
+    sim_gain : float
+        The gain calibrated by simulation (the same runs, the same log least squares, each run simulated
+        from its measured start with its measured drive), nan when no simulation was possible.
+    sim_errors : dict
+        id(Driven) -> relative error of the simulated one-harmonic amplitude over the run's own late
+        window; ``sim_pooled_error`` and ``sim_session_errors`` as for harmonic balance.
+    sim_sensitivity : tuple
+        (gain / harmonic-balance gain, pooled error by simulation) pairs.
     """
 
     law: str
@@ -194,6 +209,103 @@ class Prediction:
     session_errors: dict
     sensitivity: tuple
     resonance: dict
+    sim_gain: float = math.nan
+    sim_errors: dict = field(default_factory=dict, repr=False)
+    sim_pooled_error: float = math.nan
+    sim_session_errors: dict = field(default_factory=dict)
+    sim_sensitivity: tuple = ()
+
+
+@dataclass(frozen=True, kw_only=True)
+class SessionSummary:
+    """The driven runs of one session: their drive-frequency and centre drifts.
+
+    Attributes
+    ----------
+    session : str
+        Its label; ``runs`` and ``steady`` the number of driven runs and of steady ones.
+    frequency_drift : tuple
+        Median, smallest and largest relative drive-frequency drift over the runs.
+    centre_drift : tuple
+        Median, smallest and largest centre drift (rad) over the runs.
+    """
+
+    session: str
+    runs: int
+    steady: int
+    frequency_drift: tuple
+    centre_drift: tuple
+
+
+@dataclass(frozen=True, kw_only=True)
+class SessionSpread:
+    """Session-to-session spread of the steady amplitude per unit drive at matched drive frequency.
+
+    Attributes
+    ----------
+    spread : float
+        rms over matched pairs of ln(r_a / r_b), r the mean steady amplitude per unit drive of a group, for
+        groups of one brake setting in two sessions whose drive frequencies agree within the frequency
+        tolerance: the relative systematic error of any comparison across sessions (nan without pairs).
+    pairs : int
+        Matched pairs.
+    mean_log_ratio : float
+        Mean ln(r_a / r_b) (first session over second, in manifest order).
+    """
+
+    spread: float
+    pairs: int
+    mean_log_ratio: float
+
+
+#: The spread when no two sessions share a drive frequency.
+NO_SPREAD = SessionSpread(spread=math.nan, pairs=0, mean_log_ratio=math.nan)
+
+
+def _sessions(driven) -> tuple:
+    out = []
+    for sess in dict.fromkeys(d.run.session for d in driven):
+        ds = [d for d in driven if d.run.session == sess]
+        f = np.array([d.frequency_drift for d in ds])
+        c = np.array([d.centre_drift for d in ds])
+        out.append(
+            SessionSummary(
+                session=sess,
+                runs=len(ds),
+                steady=sum(d.steady.steady for d in ds),
+                frequency_drift=(float(np.median(f)), float(f.min()), float(f.max())),
+                centre_drift=(float(np.median(c)), float(c.min()), float(c.max())),
+            )
+        )
+    return tuple(out)
+
+
+def _per_drive(gr) -> float:
+    u = [d.drive_amp for d in gr.runs if d.steady.steady and math.isfinite(d.drive_amp)]
+    return gr.amplitude / float(np.mean(u)) if u and math.isfinite(gr.amplitude) and np.mean(u) > 0 else math.nan
+
+
+def session_spread(groups, tol: float) -> SessionSpread:
+    """The session-to-session spread of steady groups at matched drive frequency (see :class:`SessionSpread`)."""
+    sessions = list(dict.fromkeys(gr.session for gr in groups))
+    logs = []
+    for i, sa in enumerate(sessions):
+        for sb in sessions[i + 1 :]:
+            for ga in groups:
+                if ga.session != sa or not ga.n_steady:
+                    continue
+                for gb in groups:
+                    if gb.session != sb or gb.brake != ga.brake or not gb.n_steady:
+                        continue
+                    if abs(gb.omega / ga.omega - 1.0) > tol:
+                        continue
+                    ra, rb = _per_drive(ga), _per_drive(gb)
+                    if math.isfinite(ra) and math.isfinite(rb) and ra > 0 and rb > 0:
+                        logs.append(math.log(ra / rb))
+    if not logs:
+        return NO_SPREAD
+    v = np.array(logs)
+    return SessionSpread(spread=float(np.sqrt(np.mean(v * v))), pairs=int(v.size), mean_log_ratio=float(v.mean()))
 
 
 @dataclass(frozen=True, kw_only=True, eq=False)
@@ -210,6 +322,8 @@ class RealOscillatorStudy:
     driven: tuple
     groups: tuple
     predictions: dict  # (brake, law) -> Prediction
+    sessions: tuple = ()  # SessionSummary per session of driven runs
+    spread: SessionSpread = field(default_factory=lambda: NO_SPREAD)
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -300,6 +414,7 @@ def _driven(r, params: Params) -> Driven | None:
         run=r,
         omega=float(h.omega),
         drive_amp=float(h.amplitude) if sig is u else math.nan,
+        drive_phase=float(h.phase),
         drive_unit=r.data.drive_unit if sig is u else "",
         frequency_drift=float((h2.omega - h1.omega) / h.omega),
         centre_drift=float(np.mean(y[last]) - np.mean(y[first])),
@@ -358,6 +473,122 @@ def law_amplitude(pooled: PooledDecayFit, omega, force) -> np.ndarray:
         power=max(m["power"], 0.0),
         power_exponent=m["power_exponent"] if m["power"] > 0 else 2.0,
     )
+
+
+def _start(d: Driven) -> tuple[float, float, float]:
+    """Centre (mean angle over the first drive period), start angle about it and start velocity (rad, rad/s)."""
+    t, y = d.run.t, d.run.angle
+    period = 2.0 * math.pi / d.omega
+    centre = float(np.mean(y[t <= t[0] + period]))
+    m = t <= t[0] + START_WINDOW
+    if np.count_nonzero(m) < 3:
+        m = np.arange(t.size) < 3
+    slope = float(np.polyfit(t[m] - t[0], y[m], 1)[0])
+    return centre, float(y[0]) - centre, slope
+
+
+def _late_amplitudes(t, sims, omega, periods) -> np.ndarray:
+    """One-harmonic amplitude (sine, cosine, offset, trend) of each row of sims over the last periods."""
+    late = t >= t[-1] - periods * 2.0 * math.pi / omega - 1e-9
+    tl = t[late]
+    X = np.column_stack([np.sin(omega * tl), np.cos(omega * tl), np.ones_like(tl), tl - tl.mean()])
+    coef, *_ = np.linalg.lstsq(X, sims[:, late].T, rcond=None)
+    return np.hypot(coef[0], coef[1])
+
+
+def simulated_amplitudes(pooled: PooledDecayFit, runs, gains, periods: int) -> np.ndarray:
+    """Late one-harmonic amplitude (rad) of each driven run simulated with a pooled law at each gain.
+
+    Each run starts from its own measured angle and velocity about the centre of its first drive period and
+    is driven by the sine fitted to its drive signal (frequency, amplitude, phase); the amplitude is taken
+    over the same late window (the final ``periods`` drive periods) as the measured one.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (runs, gains).
+    """
+    m = pooled.mean
+    gains = np.asarray(gains, dtype=float)
+    out = np.full((len(runs), gains.size), np.nan)
+    by_dt: dict = {}
+    for i, d in enumerate(runs):
+        dt = float(np.median(np.diff(d.run.t)))
+        by_dt.setdefault(round(dt, 6), []).append(i)
+    for dt, idx in by_dt.items():
+        rs = [runs[i] for i in idx]
+        duration = max(float(r.run.t[-1] - r.run.t[0]) for r in rs) + dt
+        top = max(m["omega_n"], max(r.omega for r in rs))
+        substeps = max(1, math.ceil(dt * top / SIM_OMEGA_STEP))
+        starts = [_start(r) for r in rs]
+        k = gains.size
+        t_sim, th = simulate_driven(
+            duration,
+            sample_interval=dt,
+            omega_n=m["omega_n"],
+            force=np.concatenate([g * np.array([r.drive_amp for r in rs]) for g in gains]),
+            omega=np.tile([r.omega for r in rs], k),
+            phase=np.tile([r.omega * float(r.run.t[0]) + r.drive_phase for r in rs], k),
+            zeta=max(m["zeta"], 0.0),
+            friction=max(m["friction"], 0.0),
+            quadratic=max(m["quadratic"], 0.0),
+            power=max(m["power"], 0.0),
+            power_exponent=m["power_exponent"] if m["power"] > 0 else 2.0,
+            theta0=np.tile([s[1] for s in starts], k),
+            velocity0=np.tile([s[2] for s in starts], k),
+            substeps=substeps,
+        )
+        for j, (i, r) in enumerate(zip(idx, rs, strict=True)):
+            tr = r.run.t - r.run.t[0]
+            rows = np.array([np.interp(tr, t_sim, th[j + q * len(rs)]) for q in range(k)])
+            out[i] = _late_amplitudes(tr, rows, r.omega, periods)
+    return out
+
+
+def _simulate(pooled, cal, rest, gain, params: Params) -> dict:
+    """Calibrate the gain by simulation on a grid about the harmonic-balance gain, then predict the rest."""
+    runs = list(dict.fromkeys([*cal, *rest]))
+    factors = np.array(GAIN_FACTORS, dtype=float)
+    try:
+        amp = simulated_amplitudes(pooled, runs, gain * factors, params.periods)
+    except ParameterError:
+        return {}
+    meas = np.array([d.steady.amplitude for d in runs])
+    ic = [runs.index(d) for d in cal]
+    ir = [runs.index(d) for d in rest]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        logr = np.log(np.maximum(amp, 1e-9) / meas[:, None])
+    cost = np.sum(np.square(logr[ic]), axis=0)
+    j = int(np.argmin(cost))
+    lf = np.log(factors)
+    best = lf[j]
+    if 0 < j < factors.size - 1:  # parabola through the grid minimum and its neighbours
+        c2, c1, _ = np.polyfit(lf[j - 1 : j + 2], cost[j - 1 : j + 2], 2)
+        if c2 > 0:
+            best = float(np.clip(-c1 / (2.0 * c2), lf[j - 1], lf[j + 1]))
+    g_sim = float(gain * math.exp(best))
+    try:
+        final = simulated_amplitudes(pooled, [runs[i] for i in ir], [g_sim], params.periods)[:, 0]
+    except ParameterError:
+        return {}
+    rel = final / meas[ir] - 1.0
+    errors = {id(runs[i]): float(e) for i, e in zip(ir, rel, strict=True)}
+
+    def rms(v):
+        v = np.asarray([x for x in v if math.isfinite(x)])
+        return float(math.sqrt(np.mean(np.square(v)))) if v.size else math.inf
+
+    sessions = list(dict.fromkeys(runs[i].run.session for i in ir))
+    grid_rel = amp[ir] / meas[ir][:, None] - 1.0
+    return {
+        "sim_gain": g_sim,
+        "sim_errors": errors,
+        "sim_pooled_error": rms(rel),
+        "sim_session_errors": {
+            s: rms([e for i, e in zip(ir, rel, strict=True) if runs[i].run.session == s]) for s in sessions
+        },
+        "sim_sensitivity": tuple((float(f), rms(grid_rel[:, q])) for q, f in enumerate(factors)),
+    }
 
 
 def _predict(law: str, setting: Setting, driven, params: Params) -> Prediction | None:
@@ -422,6 +653,7 @@ def _predict(law: str, setting: Setting, driven, params: Params) -> Prediction |
         session_errors=session_errors,
         sensitivity=sens,
         resonance=resonance,
+        **_simulate(pooled, cal, rest, gain, params),
     )
 
 
@@ -518,6 +750,8 @@ def real_oscillator_study(params: Params | None = None, **values) -> RealOscilla
         driven=driven,
         groups=groups,
         predictions=predictions,
+        sessions=_sessions(driven),
+        spread=session_spread(groups, params.frequency_tolerance),
     )
 
 
@@ -530,9 +764,13 @@ __all__ = [
     "JointBrakeFit",
     "Prediction",
     "RealOscillatorStudy",
+    "SessionSpread",
+    "SessionSummary",
     "Setting",
     "driven_run",
     "lab_folder",
     "law_amplitude",
     "real_oscillator_study",
+    "session_spread",
+    "simulated_amplitudes",
 ]

@@ -68,7 +68,9 @@ def _amplification(st):
             gp, rp, sp = max(near, key=lambda x: x[1])
             a = rp / static
             se = a * math.hypot(sp / rp if rp else 0.0, static_se / static if static else 0.0)
-            res[(brake, sess)] = (a, se, gp)
+            # across sessions only with the session-to-session spread as a systematic error
+            sys = a * st.spread.spread if gl.session != sess else 0.0
+            res[(brake, sess)] = (a, se, gp, gl.session, sys)
     return res
 
 
@@ -82,12 +84,24 @@ def _c09(st, quote) -> Claim:
             verdict=VERDICTS[3],
             detail="needs steady runs at resonance and far below it (ω ≤ 0.7 ωₙ) at one brake setting",
         )
-    ok = [abs(math.log(a / PAPER_AMPLIFICATION)) <= math.log(ABOUT_FACTOR) for a, _, _ in amp.values()]
+    ok = [abs(math.log(a / PAPER_AMPLIFICATION)) <= math.log(ABOUT_FACTOR) for a, *_ in amp.values()]
     verdict = VERDICTS[0] if all(ok) else VERDICTS[1] if any(ok) else VERDICTS[2]
-    detail = "; ".join(
-        f"{pm(a, se, 3)} (brake {b}, session {s}, steady at {angle(gp.amplitude)})"
-        for (b, s), (a, se, gp) in amp.items()
-    )
+
+    def one(b, s, a, se, gp, static_session, sys):
+        where = f"brake {b}, session {s}, steady at {angle(gp.amplitude)}"
+        if static_session == s:
+            return f"{pm(a, se, 3)} ({where})"
+        if math.isfinite(sys):
+            return (
+                f"{pm(a, se, 3)} ± {g(sys, 2)} systematic ({where}; static amplitude from session {static_session}, "
+                "the systematic error from the session-to-session spread)"
+            )
+        return (
+            f"{pm(a, se, 3)} ({where}; static amplitude from session {static_session}, the session-to-session "
+            "spread unknown: no matched frequencies)"
+        )
+
+    detail = "; ".join(one(b, s, *v) for (b, s), v in amp.items())
     return Claim(
         claim_id="C09",
         claim=quote,

@@ -29,7 +29,7 @@ from vibration.physics.lab.decay import (
     free_decay_response,
     parse_law,
 )
-from vibration.physics.lab.forced import law_forced_amplitude
+from vibration.physics.lab.forced import law_forced_amplitude, simulate_driven
 from vibration.physics.lab.friction import (
     friction_forced_amplitude,
     friction_forced_amplitude_hb,
@@ -77,6 +77,7 @@ __all__ = [
     "load_logger_runs",
     "parse_law",
     "peak_decay_fit",
+    "simulate_driven",
     "simulate_friction_oscillator",
     "steadiness",
 ]
