@@ -59,6 +59,38 @@ class Missing:
 
 
 @dataclass(frozen=True)
+class Composite:
+    """A cell that joins words and numbers, some of them machine-dependent (:class:`Approx`).
+
+    ``parts`` holds text and ``(Approx, digits)`` pairs; the reader sees one line of text, the plain form
+    writes each Approx with its tolerance (``⟪value tolerance⟫``), and its width is fixed, as an Approx cell's.
+
+    >>> c = Composite(("a = ", (Approx(0.012345, rtol=0.1), 3), " ± ", (Approx(0.0021, factor=3), 2)))
+    >>> str(c), c.plain()
+    ('a = 0.0123 ± 0.0021', 'a = ⟪0.012345 r0.1⟫ ± ⟪0.0021 f3⟫')
+    """
+
+    parts: tuple
+
+    def _each(self, number) -> str:
+        return "".join(p if isinstance(p, str) else number(*p) for p in self.parts)
+
+    def __str__(self) -> str:
+        return self._each(lambda a, d: sig(a.number(), d))
+
+    def plain(self) -> str:
+        return self._each(lambda a, d: a.plain())
+
+    def html(self) -> str:
+        return "".join(
+            html.escape(p) if isinstance(p, str) else p[0].html(sig(p[0].number(), p[1])) for p in self.parts
+        )
+
+    def width(self) -> int:
+        return sum(len(p) if isinstance(p, str) else plain_width(p[0]) for p in self.parts)
+
+
+@dataclass(frozen=True)
 class Column:
     """One column: the row key, the header (symbol and unit), significant digits."""
 
@@ -200,7 +232,7 @@ class Table:
             line = []
             for c in self.columns:
                 v = row[c.key]
-                if plain and isinstance(v, Approx):
+                if plain and isinstance(v, Approx | Composite):
                     text = v.plain()
                 else:
                     text = fmt(v, c.digits, c.zeros)
@@ -218,6 +250,8 @@ class Table:
     def _reader(self, row: int, col: int, text: str) -> str:
         """A cell's text for the reader; an :class:`Approx` cell wrapped in its invisible tolerance span."""
         v = self.rows[row][self.columns[col].key]
+        if isinstance(v, Composite):
+            return v.html()
         return v.html(text) if isinstance(v, Approx) else text
 
     def footnotes(self) -> list[str]:
@@ -239,7 +273,11 @@ class Table:
             max(
                 len(h),
                 *(
-                    plain_width(row[c.key]) if isinstance(row[c.key], Approx) else len(r[i])
+                    plain_width(row[c.key])
+                    if isinstance(row[c.key], Approx)
+                    else row[c.key].width()
+                    if isinstance(row[c.key], Composite)
+                    else len(r[i])
                     for row, r in zip(self.rows, cells, strict=True)
                 ),
             )

@@ -19,6 +19,9 @@ from vibration.presentation.narrative import g
 
 CHAPTER = "12_real_oscillator"
 
+QUESTION = "Which of the paper's claims survive on a real, driven and damped torsional oscillator?"
+LEVEL = "advanced"
+
 OBJECTIVES = (
     "Compute the half-period amplitude, the loss per half period and the equivalent damping ratio from the "
     "extrema of a measured free decay.",
