@@ -141,7 +141,7 @@ _LAZY: dict[str, tuple[str | None, list[str]]] = {
         + ["DampingCurve", "DampingDifference", "JointBrakeFit", "LabCheck", "LabData", "LabRun", "PooledDecayFit"]
         + ["Rig", "Steadiness", "check_lab_data", "compare_damping", "damping_ode", "damping_vs_amplitude"]
         + ["equivalent_zeta", "fit_free_decays", "joint_brake_fit", "law_forced_amplitude", "load_cassy_runs"]
-        + ["load_lab_data", "parse_law", "steadiness"],
+        + ["load_lab_data", "parse_law", "simulate_driven", "steadiness"],
     ),
     # runs at scale: a chapter's study over a grid of parameters, gathered into an xarray Dataset
     "vibration.publishing.sweep": ("scale", ["sweep"]),

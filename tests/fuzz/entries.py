@@ -239,6 +239,8 @@ fuzz(v.parse_law, law="coulomb+quadratic", check=lambda out: isinstance(out, tup
 fuzz(v.equivalent_zeta, amplitude=np.linspace(0.5, 3.0, 6), omega_n=3.0, zeta=0.01, quadratic=0.01)
 fuzz(v.law_forced_amplitude, omega=np.linspace(2.5, 3.5, 5), omega_n=3.0, force=0.1, zeta=0.02, friction=0.005)
 fuzz(v.damping_ode, t_eval=LAB_T[:301], omega_n=3.0, zeta=0.02, friction=0.01, theta0=1.0)
+fuzz(v.simulate_driven, duration=10.0, sample_interval=0.1, omega_n=3.0, force=0.1, omega=3.0, zeta=0.02,
+     friction=0.005)  # fmt: skip
 LAB_FOLDER = ROOT / "data" / "lab_oscillator"
 fuzz(v.load_lab_data, folder=LAB_FOLDER, kinds={"folder": "path"}, check=lambda out: out is not None)
 fuzz(v.check_lab_data, folder=LAB_FOLDER, kinds={"folder": "path"}, check=lambda out: out is not None)

@@ -60,7 +60,7 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
             chapter=CHAPTER,
             kind="numerical",
             text=(
-                f"In the first free decay of the folder ({run.file}, run {run.run}, brake {run.brake}) the first "
+                f"In the first free decay of the folder (file `{run.file}`, run {run.run}, brake {run.brake}) the first "
                 f"half-period amplitude after the release is X<sub>0</sub> = {g(x0, 5)} rad and the next is "
                 f"X<sub>1</sub> = {g(x1, 5)} rad. Compute the loss per half period and the equivalent damping ratio "
                 "ζ<sub>eq</sub>."
@@ -70,8 +70,8 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
                 f"δ = ln(X<sub>0</sub>/X<sub>1</sub>) = {g(delta, 4)}; ζ<sub>eq</sub> = δ/√(π² + δ²) = {g(z0, 4)}."
             ),
             answers=(
-                Answer(quantity="loss", value=loss0, unit="rad", rtol=1e-3, atol=1e-6),
-                Answer(quantity="zeta_eq", value=z0, unit="", rtol=1e-3, atol=1e-6),
+                Answer(quantity="loss", symbol="loss per half period", value=loss0, unit="rad", rtol=1e-3, atol=1e-6),
+                Answer(quantity="zeta_eq", symbol="ζ<sub>eq</sub>", value=z0, unit="", rtol=1e-3, atol=1e-6),
             ),
         )
     ]
@@ -92,7 +92,7 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
                 "Over a half period dry friction dissipates the energy of a constant loss of 2Δ in amplitude, whatever "
                 f"the amplitude, so Δ = {g(med, 4)}/2 = {g(med / 2.0, 4)} rad."
             ),
-            answers=(Answer(quantity="friction", value=med / 2.0, unit="rad", rtol=1e-3),),
+            answers=(Answer(quantity="friction", symbol="Δ", value=med / 2.0, unit="rad", rtol=1e-3),),
         )
     )
     driven = data.select(kind="driven")
@@ -116,7 +116,16 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
                     f"{g(100 * EXPLORE_TOLERANCE, 2)} %. Choosing the tolerance after seeing the drifts would let the "
                     "analyst decide which runs count, and so what the steady amplitudes are."
                 ),
-                answers=(Answer(quantity="steady_runs", value=float(n1), unit="", rtol=0.0, atol=0.5),),
+                answers=(
+                    Answer(
+                        quantity="steady_runs",
+                        symbol="number of steady runs",
+                        value=float(n1),
+                        unit="",
+                        rtol=0.0,
+                        atol=0.5,
+                    ),
+                ),
             )
         )
     out.append(
