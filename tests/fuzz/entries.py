@@ -224,8 +224,8 @@ fuzz(v.free_decay_peaks, t=LAB_T, theta=LAB_THETA)
 fuzz(v.half_period_losses, peaks=PEAKS, offset=0.0)
 fuzz(v.free_decay_response, t=LAB_T, omega_n=3.0, zeta=0.02, friction=0.01, offset=0.0, theta0=1.0, t0=0.0)
 fuzz(v.harmonic_fit, t=LAB_T, y=LAB_THETA, omega=3.0)
-fuzz(v.friction_forced_amplitude, r=np.linspace(0.5, 1.5, 11), zeta=0.05, friction_ratio=0.1)
-fuzz(v.friction_forced_amplitude_hb, r=np.linspace(0.5, 1.5, 11), zeta=0.05, friction_ratio=0.1)
+fuzz(v.friction_forced_amplitude, r=np.linspace(0.5, 1.5, 11), zeta=0.05, friction_ratio=0.1, check=_no_nan)
+fuzz(v.friction_forced_amplitude_hb, r=np.linspace(0.5, 1.5, 11), zeta=0.05, friction_ratio=0.1, check=_no_nan)
 fuzz(v.simulate_friction_oscillator, t=LAB_T[:301], drive=0.1 * np.sin(3.0 * LAB_T[:301]), omega_n=3.0, zeta=0.05,
      friction=0.01, gain=1.0, substeps=5)  # fmt: skip
 LAB_RUNS = [(LAB_T, LAB_THETA), (LAB_T, 1.1 * LAB_THETA), (LAB_T, 0.9 * LAB_THETA)]
@@ -237,7 +237,15 @@ fuzz(v.joint_brake_fit, runs_a=LAB_RUNS, runs_b=LAB_RUNS[:2])
 fuzz(v.steadiness, t=LAB_T, theta=LAB_DRIVEN, omega=3.0, periods=3, tolerance=0.02)
 fuzz(v.parse_law, law="coulomb+quadratic", check=lambda out: isinstance(out, tuple))
 fuzz(v.equivalent_zeta, amplitude=np.linspace(0.5, 3.0, 6), omega_n=3.0, zeta=0.01, quadratic=0.01)
-fuzz(v.law_forced_amplitude, omega=np.linspace(2.5, 3.5, 5), omega_n=3.0, force=0.1, zeta=0.02, friction=0.005)
+fuzz(
+    v.law_forced_amplitude,
+    omega=np.linspace(2.5, 3.5, 5),
+    omega_n=3.0,
+    force=0.1,
+    zeta=0.02,
+    friction=0.005,
+    check=_no_nan,
+)
 fuzz(v.damping_ode, t_eval=LAB_T[:301], omega_n=3.0, zeta=0.02, friction=0.01, theta0=1.0)
 fuzz(v.simulate_driven, duration=10.0, sample_interval=0.1, omega_n=3.0, force=0.1, omega=3.0, zeta=0.02,
      friction=0.005)  # fmt: skip

@@ -18,21 +18,7 @@ import vibration
 CASES = [(entry.name, name, label) for entry in ENTRIES.values() for name, label, _ in cases(entry)]
 #: Findings of the battery in code another change owns (Part III's readers and models, being rewritten): each
 #: an expected failure, strict, so the fix that makes it pass must remove it from here.
-KNOWN = {
-    ("free_decay_response", "omega_n", "subnormal"): "nan samples instead of a ParameterError",
-    ("friction_forced_amplitude", "zeta", "0"): "inf amplitudes at resonance without a documented field",
-    ("friction_forced_amplitude", "zeta", "subnormal"): "inf amplitudes at resonance",
-    ("friction_forced_amplitude", "r", "subnormal"): "ValueError: math domain error",
-    ("friction_forced_amplitude_hb", "zeta", "0"): "inf amplitudes at resonance without a documented field",
-    ("friction_forced_amplitude_hb", "zeta", "subnormal"): "inf amplitudes at resonance",
-    ("load_logger_runs", "path", "missing"): "the message does not say what is allowed",
-    ("load_cassy_runs", "path", "missing"): "the message does not say what is allowed",
-    ("steadiness", "omega", "subnormal"): "the message names the record length, not omega",
-    ("law_forced_amplitude", "omega", "huge"): "ValueError from the root finder",
-    ("law_forced_amplitude", "zeta", "0"): "inf amplitude at resonance without a documented field",
-    ("law_forced_amplitude", "zeta", "subnormal"): "inf amplitude at resonance without a documented field",
-    ("damping_ode", "omega_n", "subnormal"): "ValueError: need at least one array to concatenate",
-}
+KNOWN: dict[tuple[str, str, str], str] = {}
 VALUES = {(entry.name, name, label): value for entry in ENTRIES.values() for name, label, value in cases(entry)}
 
 

@@ -100,7 +100,9 @@ def load_cassy_runs(path) -> list[LoggerRun]:
     try:
         size = p.stat().st_size
     except OSError as exc:
-        raise ParameterError(f"path = {name!r} cannot be read: {exc.strerror or exc}") from None
+        raise ParameterError(
+            f"path = {name!r} cannot be read: {exc.strerror or exc}: allowed an existing, readable CASSY Lab 2 CSV file"
+        ) from None
     if not p.is_file():
         raise ParameterError(f"path = {name!r} is not a file: allowed a CASSY Lab 2 CSV file")
     if size > MAX_FILE_BYTES:

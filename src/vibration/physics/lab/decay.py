@@ -35,6 +35,8 @@ from vibration.physics.lab._checks import as_series, time_and_signal
 from vibration.physics.lab.peaks import MIN_HALF_PERIODS, PeakDecayFit, _peaks, _start, peak_decay_fit
 from vibration.physics.model import ParameterError, check_real
 
+#: Smallest natural angular frequency (rad/s) the responses accept: far below it the half period overflows.
+MIN_OMEGA_N = 1e-6
 #: Largest number of half cycles the exact response evaluates.
 MAX_HALF_CYCLES = 100_000
 #: Largest number of least-squares function evaluations per fit.
@@ -102,7 +104,7 @@ def free_decay_response(t, omega_n, zeta, friction, offset=0.0, theta0=1.0, t0=0
         Times (s), strictly increasing; times before ``t0`` are evaluated backwards along the half
         cycle that ends at the extremum.
     omega_n : float
-        Natural angular frequency (rad/s), > 0.
+        Natural angular frequency (rad/s), 1e-6 <= omega_n <= 1e6.
     zeta : float
         Damping ratio, 0 <= zeta < 1.
     friction : float
@@ -129,7 +131,7 @@ def free_decay_response(t, omega_n, zeta, friction, offset=0.0, theta0=1.0, t0=0
     ta = as_series("t", t, unit="s", min_size=1)
     if ta.size > 1 and not np.all(np.diff(ta) > 0):
         raise ParameterError("t is not strictly increasing: allowed strictly increasing time (s)")
-    omega_n = check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
+    omega_n = check_real("omega_n", omega_n, low=MIN_OMEGA_N, high=1e6, unit="rad/s")
     zeta = check_real("zeta", zeta, low=0.0, high=0.999)
     friction = check_real("friction", friction, low=0.0, high=1e6, unit="rad")
     offset = check_real("offset", offset, low=-1e6, high=1e6, unit="rad")
@@ -197,9 +199,14 @@ def _coefficients_checked(amplitude, omega_n, zeta, quadratic, power, power_expo
     if isinstance(amplitude, (str, bytes, bool)):
         raise ParameterError(f"amplitude = {amplitude!r} is not a number: allowed amplitudes >= 0 (rad)")
     try:
-        x = np.asarray(amplitude, dtype=float)
+        raw = np.asarray(amplitude)
+        if raw.dtype.kind not in "iuf" or raw.dtype == bool:
+            raise TypeError(raw.dtype)
+        x = raw.astype(float)
     except (TypeError, ValueError):
-        raise ParameterError(f"amplitude = {amplitude!r:.80} is not a number: allowed amplitudes >= 0 (rad)") from None
+        raise ParameterError(
+            f"amplitude = {amplitude!r:.80} is not a number: allowed real amplitudes >= 0 (rad)"
+        ) from None
     if x.ndim > 1 or not np.all(np.isfinite(x)) or np.any(x < 0):
         raise ParameterError(f"amplitude = {amplitude!r:.80} is out of range: allowed finite amplitudes >= 0 (rad)")
     check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
@@ -358,7 +365,7 @@ def damping_ode(
         Increasing times (s) from 0, at most 1 000 000.
     omega_n, zeta, friction, quadratic, power, power_exponent, offset, theta0 : float
         The law's coefficients (rad/s, -, rad, 1/rad, rad^(1-p) s^(p-2), -), the resting angle and
-        the start angle (rad).
+        the start angle (rad); 1e-6 <= omega_n <= 1e6.
     rtol, atol : float
         Tolerances of the integrator.
     max_steps : int
@@ -374,7 +381,7 @@ def damping_ode(
     te = as_series("t_eval", t_eval, unit="s", min_size=2)
     if not np.all(np.diff(te) > 0) or te[0] < 0:
         raise ParameterError("t_eval is not increasing from t >= 0: allowed increasing times (s) from 0")
-    omega_n = check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
+    omega_n = check_real("omega_n", omega_n, low=MIN_OMEGA_N, high=1e6, unit="rad/s")
     _coefficients_checked(0.0, omega_n, zeta, quadratic, power, power_exponent)
     friction = check_real("friction", friction, low=0.0, high=1e6, unit="rad")
     offset = check_real("offset", offset, low=-1e6, high=1e6, unit="rad")

@@ -29,6 +29,10 @@ from vibration.physics.model import ParameterError, check_real
 X_MAX = 1e6
 
 
+#: Largest drive frequency (rad/s) of :func:`law_forced_amplitude`: far above it the balance overflows.
+MAX_OMEGA = 1e6
+
+
 def law_forced_amplitude(
     omega, *, omega_n, force, zeta=0.0, friction=0.0, quadratic=0.0, power=0.0, power_exponent=2.0
 ) -> np.ndarray:
@@ -37,7 +41,7 @@ def law_forced_amplitude(
     Parameters
     ----------
     omega : float or array_like
-        Drive angular frequencies (rad/s), > 0.
+        Drive angular frequencies (rad/s), 0 < omega <= 1e6.
     omega_n : float
         Natural angular frequency (rad/s), > 0.
     force : float
@@ -48,7 +52,9 @@ def law_forced_amplitude(
     Returns
     -------
     numpy.ndarray
-        X (rad); 0 where friction holds the wheel; ``inf`` where no velocity term bounds it.
+        X (rad); 0 where friction holds the wheel; ``inf`` where no velocity term bounds it (at
+        resonance with ``zeta = 0``, or ``zeta`` so small that the bounded amplitude overflows, and
+        no quadratic or power term).
 
     Examples
     --------
@@ -56,11 +62,22 @@ def law_forced_amplitude(
     1.0
     """
     try:
-        w = np.atleast_1d(np.asarray(omega, dtype=float))
+        raw = np.asarray(omega)
+        if raw.dtype.kind not in "iufb":
+            raise TypeError(raw.dtype)
+        w = np.atleast_1d(raw.astype(float))
     except (TypeError, ValueError):
         raise ParameterError(f"omega = {omega!r:.80} is not a number: allowed finite frequencies > 0 (rad/s)") from None
-    if isinstance(omega, (bool, np.bool_)) or w.ndim != 1 or not np.all(np.isfinite(w)) or np.any(w <= 0):
-        raise ParameterError(f"omega = {omega!r:.80} is out of range: allowed finite frequencies > 0 (rad/s)")
+    if (
+        isinstance(omega, (bool, np.bool_))
+        or w.ndim != 1
+        or not np.all(np.isfinite(w))
+        or np.any(w <= 0)
+        or np.any(w > MAX_OMEGA)
+    ):
+        raise ParameterError(
+            f"omega = {omega!r:.80} is out of range: allowed frequencies 0 < omega <= {MAX_OMEGA:g} (rad/s)"
+        )
     wn = check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
     f = check_real("force", force, low=0.0, high=1e6, unit="rad")
     z = check_real("zeta", zeta, low=0.0, high=10.0)

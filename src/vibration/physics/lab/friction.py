@@ -37,6 +37,8 @@ from vibration.physics.model import ParameterError, check_real
 MAX_RATIOS = 100_000
 #: Points per half period on which the non-stop condition is checked.
 N_CHECK = 2000
+#: Smallest frequency ratio accepted: below it the half period pi / r overflows.
+MIN_RATIO = 1e-6
 #: Largest number of integration steps of :func:`simulate_friction_oscillator`.
 MAX_STEPS = 5_000_000
 
@@ -44,15 +46,15 @@ MAX_STEPS = 5_000_000
 def _as_ratios(r):
     scalar = np.ndim(r) == 0
     if scalar:
-        rv = np.array([check_real("r", r, low=0.0, low_open=True, high=1e3)])
+        rv = np.array([check_real("r", r, low=MIN_RATIO, high=1e3)])
     else:
         rv = as_series("r", r, min_size=1)
         if rv.size > MAX_RATIOS:
             raise ParameterError(f"r has {rv.size} values which is out of range: allowed at most {MAX_RATIOS}")
-        bad = ~((rv > 0) & (rv <= 1e3))
+        bad = ~((rv >= MIN_RATIO) & (rv <= 1e3))
         if bad.any():
             i = int(np.argmax(bad))
-            raise ParameterError(f"r[{i}] = {rv[i]!r} is out of range: allowed 0 < r <= 1000")
+            raise ParameterError(f"r[{i}] = {rv[i]!r} is out of range: allowed {MIN_RATIO:g} <= r <= 1000")
     return rv, scalar
 
 
@@ -138,7 +140,7 @@ def friction_forced_amplitude(r, zeta, friction_ratio):
     Parameters
     ----------
     r : float or array_like
-        Frequency ratio omega / omega_n (> 0, at most 1000; up to 100 000 values).
+        Frequency ratio omega / omega_n (1e-6 <= r <= 1000; up to 100 000 values).
     zeta : float
         Damping ratio, 0 <= zeta < 1.
     friction_ratio : float
@@ -149,9 +151,9 @@ def friction_forced_amplitude(r, zeta, friction_ratio):
     float or numpy.ndarray
         X / X_st (dimensionless; X in rad when X_st is): NaN where the steady motion is not
         continuous (Den Hartog's non-stop condition fails, or the force cannot overcome friction);
-        ``inf`` at ``r = 1`` without viscous damping when ``4 friction_ratio / pi < 1`` (the force's
-        work per cycle then outgrows friction's at every amplitude: no steady state); a float for a
-        scalar ``r``.
+        ``inf`` at ``r = 1`` without viscous damping (``zeta = 0``, or so small that
+        ``(2 zeta r)^2`` underflows) when ``4 friction_ratio / pi < 1`` (the force's work per cycle
+        then outgrows friction's at every amplitude: no steady state); a float for a scalar ``r``.
 
     Notes
     -----
@@ -190,7 +192,7 @@ def friction_forced_amplitude_hb(r, zeta, friction_ratio):
     Parameters
     ----------
     r : float or array_like
-        Frequency ratio omega / omega_n (> 0).
+        Frequency ratio omega / omega_n (1e-6 <= r <= 1000).
     zeta : float
         Damping ratio, 0 <= zeta < 1.
     friction_ratio : float

@@ -104,8 +104,9 @@ def steadiness(t, theta, omega, *, periods: int = 3, tolerance: float = 0.02) ->
     period = 2.0 * math.pi / omega
     if ta[-1] - ta[0] < periods * period:
         raise ParameterError(
-            f"t spans {ta[-1] - ta[0]:g} s which is out of range: allowed at least periods = {periods} drive periods "
-            f"({periods * period:g} s)"
+            f"t spans {ta[-1] - ta[0]:g} s, fewer than periods = {periods} drive periods of omega = {omega!r} rad/s "
+            f"({periods * period:g} s): allowed omega >= {2.0 * math.pi * periods / (ta[-1] - ta[0]):.6g} rad/s "
+            "for this record, or a longer record"
         )
     t_end = float(ta[-1])
     windows = []
