@@ -60,7 +60,8 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
             chapter=CHAPTER,
             kind="numerical",
             text=(
-                f"In the first free decay of the folder (file `{run.file}`, run {run.run}, brake {run.brake}) the first "
+                f"In the first free decay of the folder (file `{run.file}`, run {run.run}, brake {run.brake}) "
+                "the first "
                 f"half-period amplitude after the release is X<sub>0</sub> = {g(x0, 5)} rad and the next is "
                 f"X<sub>1</sub> = {g(x1, 5)} rad. Compute the loss per half period and the equivalent damping ratio "
                 "ζ<sub>eq</sub>."
