@@ -144,7 +144,7 @@ def test_nothing_changed_only_checks_and_one_edit_rebuilds_only_its_pages(tmp_pa
     logs.clear()
     report.run(chapters, {}, out, jobs=2, log=logs.append, pdf=False)
     assert [line for line in logs if line.startswith("[start]")] == ["[start] 02_b: notebook changed"]
-    assert any(line.startswith("book:") and "1 source changed (02_b.ipynb)" in line for line in logs), logs
+    assert any(line.startswith("book:") and "1 page changed (02_b.ipynb)" in line for line in logs), logs
     sphinx_log = (out / "book-state" / "book-src" / "sphinx-html.log").read_text()
     assert "0 added, 1 changed, 0 removed" in sphinx_log  # Sphinx read the one changed page again, no other
     executed = json.loads((out / "notebooks" / "02_b.ipynb").read_text())

@@ -155,6 +155,8 @@ def cluster(jobs: int = 2, scheduler: str | None = None, log: Callable[[str], No
                 threads_per_worker=1,
                 processes=True,
                 dashboard_address=None,
+                # no dashboard; the scheduler's small HTTP server on a free port, not 8787 (another run may hold it)
+                scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
                 silence_logs=logging.CRITICAL,
                 host="127.0.0.1",
             )

@@ -435,9 +435,11 @@ def run(
             pdf_text += " (no page changed: not reprinted)"
         pages_text = ""
         if "changed" in info:
-            names = info["changed"]
+            names = [n for n in info["changed"] if not n.startswith("_static/")]  # pages, not their downloads
             shown = f" ({', '.join(names)})" if 0 < len(names) <= 4 else ""
-            pages_text = f", {_plural(len(names), 'source')} changed{shown}"
+            pages_text = f", {_plural(len(names), 'page')} changed{shown}"
+            if len(info["changed"]) > len(names):
+                pages_text += f" (and {_plural(len(info['changed']) - len(names), 'static file')})"
         log(f"book: built in {time.perf_counter() - t1:.1f} s{pages_text}{pdf_text}")
         for sub in ("notebooks", "report", "tables"):
             target = out / sub

@@ -30,6 +30,7 @@ import html
 import importlib
 import math
 import os
+import re
 import sys
 import time
 from collections.abc import Mapping
@@ -167,8 +168,18 @@ def check(exercise_id: str, answer, *, params=None, quantity: str | None = None)
     quantity -> number, the numbers in the order asked, or the letter of an option. ``params`` as in
     :func:`exercises`.
     """
-    number = str(exercise_id).split(".", 1)[0]
-    stem = _stem(number)
+    if not isinstance(exercise_id, str) or not re.fullmatch(r"\d{2}\.\d+", exercise_id):
+        raise ParameterError(
+            f"exercise_id = {exercise_id!r:.60} is not an exercise: allowed a chapter number and an exercise number, "
+            'such as "04.2"'
+        )
+    number = exercise_id.split(".", 1)[0]
+    try:
+        stem = _stem(number)
+    except ParameterError:
+        raise ParameterError(
+            f"exercise_id = {exercise_id!r} names no chapter: allowed one of {', '.join(sorted(_packages()))}"
+        ) from None
     found = [e for e in exercises(stem, params=params) if e.id == exercise_id]
     if not found:
         ids = ", ".join(e.id for e in exercises(stem, params=params))
@@ -543,13 +554,25 @@ def download_cell(stem: str):
     )
 
 
+def _source_tree() -> Path:
+    """The package's source (the folder of its ``pyproject.toml``), wherever the notebooks are."""
+    from .report import project_root
+
+    here = Path(__file__).resolve()
+    for candidate in (*here.parents, project_root()):
+        if (candidate / "pyproject.toml").is_file() and (candidate / "src" / "vibration").is_dir():
+            return candidate
+    raise ParameterError(
+        "the package's source (pyproject.toml beside src/vibration) was not found, so its wheel cannot be offered "
+        "for download: run the book from a source checkout, or set $VIBRATION_ROOT to one"
+    )
+
+
 def write_downloads(pages, folder: Path) -> list[Path]:
     """Each chapter's executed notebook and the package's wheel in ``folder`` (copied into the book)."""
     import subprocess
 
     import nbformat
-
-    from .report import project_root
 
     folder.mkdir(parents=True, exist_ok=True)
     written = []
@@ -561,7 +584,7 @@ def write_downloads(pages, folder: Path) -> list[Path]:
         written.append(path)
     wheel = folder / wheel_name()
     if not wheel.exists():
-        cmd = [sys.executable, "-m", "pip", "wheel", str(project_root()), "--no-deps", "--no-build-isolation", "-q"]
+        cmd = [sys.executable, "-m", "pip", "wheel", str(_source_tree()), "--no-deps", "--no-build-isolation", "-q"]
         # the same sources give the same bytes (zip times from SOURCE_DATE_EPOCH), so an unchanged package leaves
         # the book's downloads, and so the book, unchanged
         env = {**os.environ, "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "315532800")}

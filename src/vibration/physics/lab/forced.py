@@ -116,7 +116,12 @@ MAX_OMEGA_STEP = 0.2
 
 
 def _coefficient_array(name, value, n, *, low, high, unit=""):
-    a = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
+    try:
+        a = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
+    except (TypeError, ValueError):
+        raise ParameterError(
+            f"{name} = {value!r:.80} is not a real number: allowed finite values {low} to {high} {unit}".rstrip()
+        ) from None
     if not np.all(np.isfinite(a)) or np.any(a < low) or np.any(a > high):
         raise ParameterError(
             f"{name} = {value!r:.80} is out of range: allowed finite values {low} to {high} {unit}".rstrip()
@@ -195,7 +200,11 @@ def simulate_driven(
     1.0
     """
     dur = check_real("duration", duration, low=0.0, low_open=True, high=1e6, unit="s")
-    dt = check_real("sample_interval", sample_interval, low=0.0, low_open=True, high=dur, unit="s")
+    dt = check_real("sample_interval", sample_interval, low=1e-9, unit="s")
+    if dt > dur:
+        raise ParameterError(
+            f"sample_interval = {dt:g} s is longer than duration = {dur:g} s: allowed sample_interval <= duration"
+        )
     if isinstance(substeps, bool) or not isinstance(substeps, (int, np.integer)) or not 1 <= substeps <= 1000:
         raise ParameterError(f"substeps = {substeps!r} is out of range: allowed an integer 1 <= substeps <= 1000")
     args = {
