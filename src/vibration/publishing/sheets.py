@@ -31,7 +31,9 @@ import importlib
 import math
 import os
 import re
+import shutil
 import sys
+import tempfile
 import time
 from collections.abc import Mapping
 from pathlib import Path
@@ -584,11 +586,20 @@ def write_downloads(pages, folder: Path) -> list[Path]:
         written.append(path)
     wheel = folder / wheel_name()
     if not wheel.exists():
-        cmd = [sys.executable, "-m", "pip", "wheel", str(_source_tree()), "--no-deps", "--no-build-isolation", "-q"]
-        # the same sources give the same bytes (zip times from SOURCE_DATE_EPOCH), so an unchanged package leaves
-        # the book's downloads, and so the book, unchanged
-        env = {**os.environ, "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "315532800")}
-        done = subprocess.run([*cmd, "-w", str(folder)], capture_output=True, text=True, timeout=300, env=env)
+        # built from a copy, so setuptools' scratch folders (build/lib, which would keep deleted modules) stay out
+        # of the project; the same sources give the same bytes (zip times from SOURCE_DATE_EPOCH), so an unchanged
+        # package leaves the book's downloads, and so the book, unchanged
+        with tempfile.TemporaryDirectory(prefix="vibration-wheel-") as tmp:
+            tree = _source_tree()
+            copy = Path(tmp) / "src-copy"
+            copy.mkdir()
+            for name in ("pyproject.toml", "README.md", "LICENSE", "LICENSE-text"):
+                if (tree / name).is_file():
+                    shutil.copy2(tree / name, copy / name)
+            shutil.copytree(tree / "src", copy / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+            cmd = [sys.executable, "-m", "pip", "wheel", str(copy), "--no-deps", "--no-build-isolation", "-q"]
+            env = {**os.environ, "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "315532800")}
+            done = subprocess.run([*cmd, "-w", str(folder)], capture_output=True, text=True, timeout=300, env=env)
         if done.returncode != 0 or not wheel.exists():
             raise RuntimeError(f"the package's wheel was not built: {done.stderr.strip()[-400:]}")
     written.append(wheel)
