@@ -264,3 +264,18 @@ def test_no_chapter_takes_a_subcommands_name(tmp_path):
         assert not any(ch.matches(name) for name in report.SUBCOMMANDS), ch.name
     with pytest.raises(ParameterError, match="topic = 'sweep' is the runner's subcommand"):
         new_chapter("13_sweep", tmp_path)
+
+
+@pytest.mark.slow
+def test_the_same_grid_twice_on_one_client_is_not_reported_as_a_rerun(capsys):
+    """Starts are counted per submission: a second sweep of the same points is not a worker lost."""
+    from vibration.publishing.engine import cluster
+
+    grid = {"F0_ueda": "4,10", "c_ueda": "0.05"}
+    with cluster(2) as client:
+        first = sw.sweep("09", grid, params={"n_lyapunov": 100}, client=client)
+        second = sw.sweep("09", grid, params={"n_lyapunov": 100}, client=client)
+        assert client.restarts.drain() == []
+        assert client.restarts.count("point (1, 0)") == 2  # both submissions started, once each
+    np.testing.assert_array_equal(first["lyapunov"].values, second["lyapunov"].values)
+    assert "[rerun]" not in capsys.readouterr().err

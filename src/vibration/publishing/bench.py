@@ -202,15 +202,18 @@ def bench_sweep(quick: bool) -> None:
     from .engine import cluster
     from .sweep import sweep
 
-    grid = {"F0_ueda": "4:10:4" if quick else "4:10:6", "c_ueda": "0.05,0.1"}
+    grid = {"F0_ueda": "4:10:4" if quick else "4:10:12", "c_ueda": "0.05,0.1"}
     params = {"n_lyapunov": 300 if quick else 600}
-    n = 8 if quick else 12
+    n = 8 if quick else 24
+    warm = {"F0_ueda": "7", "c_ueda": "0.05"}  # one point first: the sweep's own first-call costs are not timed
     _warm_worker()
+    sweep("09", warm, params=params, serial=True)
     start = time.perf_counter()
     serial = sweep("09", grid, params=params, serial=True)
     t_serial = time.perf_counter() - start
     with cluster(2) as client:
         client.run(_warm_worker)
+        sweep("09", {**warm, "c_ueda": "0.05,0.1"}, params=params, client=client)
         start = time.perf_counter()
         local = sweep("09", grid, params=params, client=client)
         t_cluster = time.perf_counter() - start

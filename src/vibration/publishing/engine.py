@@ -84,15 +84,23 @@ class KillKernels(WorkerPlugin):
         kill_kernels()
 
 
-def announce(key: str) -> None:
-    """Log the start of task ``key`` to the scheduler (no-op outside a worker)."""
+def announce(label: str) -> None:
+    """Log the start of the running task, shown as ``label``, to the scheduler (no-op outside a worker).
+
+    Starts are counted by the task's own key, unique per submission: the same point or chapter submitted again
+    (a second sweep on the same client) is not a re-run.
+    """
     try:
         from distributed import get_worker
 
         worker = get_worker()
     except (ImportError, ValueError):
         return
-    worker.log_event(TOPIC, {"key": key, "worker": worker.address})
+    try:
+        key = str(worker.get_current_task())
+    except Exception:  # outside a task (never in this project's tasks): the label stands for the key
+        key = label
+    worker.log_event(TOPIC, {"key": key, "label": label, "worker": worker.address})
 
 
 class Restarts:
@@ -101,17 +109,20 @@ class Restarts:
     def __init__(self) -> None:
         self._lock = threading.Lock()
         self._starts: dict[str, int] = {}
+        self._labels: dict[str, int] = {}
         self._pending: list[str] = []
 
     def __call__(self, event) -> None:
         _, msg = event
         key, worker = msg.get("key", "?"), msg.get("worker", "?")
+        label = msg.get("label", key)
         with self._lock:
             n = self._starts.get(key, 0) + 1
             self._starts[key] = n
+            self._labels[label] = self._labels.get(label, 0) + 1
             if n > 1:
                 self._pending.append(
-                    f"[rerun] {key}: the worker running it was lost; running it again on {worker} (attempt {n})"
+                    f"[rerun] {label}: the worker running it was lost; running it again on {worker} (attempt {n})"
                 )
 
     def drain(self) -> list[str]:
@@ -120,10 +131,10 @@ class Restarts:
             out, self._pending = self._pending, []
         return out
 
-    def count(self, key: str) -> int:
-        """How many times ``key`` started."""
+    def count(self, label: str) -> int:
+        """How many times the task shown as ``label`` started (over every submission of it)."""
         with self._lock:
-            return self._starts.get(key, 0)
+            return self._labels.get(label, 0)
 
 
 @contextlib.contextmanager
