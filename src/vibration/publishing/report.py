@@ -463,7 +463,10 @@ def _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, 
 
     from .engine import cluster
 
-    order = sorted(todo, key=lambda item: -(item[3] or 0.0))  # unknown times (None) last
+    # longest first by the last run's time; chapters never timed after those, the later chapters first (Parts II
+    # and III hold the long studies), so a cold build does not end with its longest chapters on one worker
+    rank_of = {item[0].name: i for i, item in enumerate(todo)}
+    order = sorted(todo, key=lambda item: (item[3] is None, -(item[3] or 0.0), -rank_of[item[0].name]))
     with cluster(jobs, scheduler, log=log) as client:
         pending = {}
         for rank, (ch, params, why, _) in enumerate(order):

@@ -22,7 +22,7 @@ SCHEMA = Schema(
     (
         Param(
             "lab_data",
-            "lab_data",
+            "folder",
             DEFAULT_LAB,
             "",
             meaning="folder of logger files with a manifest runs.csv (and optionally rig.csv)",
