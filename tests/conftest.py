@@ -85,7 +85,7 @@ def _raises_parameter_error(name: str, bad=_NO_VALUE, *allowed: str):
 
 @pytest.fixture
 def raises_parameter_error():
-    """``with raises_parameter_error("m", 0.0, "> 0"): Oscillator(0.0, 0.5, 20.0)``."""
+    """``with raises_parameter_error("m", 0.0, "> 0"): Oscillator(m=0.0, c=0.5, k=20.0)``."""
     return _raises_parameter_error
 
 

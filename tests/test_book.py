@@ -116,8 +116,11 @@ def test_figures_and_tables_are_numbered_per_chapter_from_one(site):
 def test_banner_lists_own_and_other_changes():
     from vibration.publishing.book import Parameter, banner_html
 
-    own = [Parameter("k", 30.0, 20.0, "spring stiffness", "N/m", True), Parameter("m", 1.0, 1.0, "mass", "kg", True)]
-    other = [Parameter("c_low", 0.05, 0.1, "low damping", "N s/m", True)]
+    own = [
+        Parameter(name="k", value=30.0, default=20.0, meaning="spring stiffness", unit="N/m", paper=True),
+        Parameter(name="m", value=1.0, default=1.0, meaning="mass", unit="kg", paper=True),
+    ]
+    other = [Parameter(name="c_low", value=0.05, default=0.1, meaning="low damping", unit="N s/m", paper=True)]
     assert banner_html([p for p in own if p.name == "m"], []) == ""
     text = banner_html(own, own[:1] + other)
     assert "k (spring stiffness, <code>-p k</code>) = <strong>30 N/m</strong>; the paper: 20 N/m" in text

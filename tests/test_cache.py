@@ -95,8 +95,8 @@ def test_a_half_written_entry_is_never_a_hit(tmp_path):
 def test_a_second_run_reuses_unchanged_chapters_and_says_why_others_run(tmp_path):
     root = tmp_path / "project"
     code = "from vibration.presentation.tables import fmt\nprint(fmt(a * 2))"
-    a = report.Chapter(_notebook(root / "notebooks" / "01_a.ipynb", code), {})
-    b = report.Chapter(_notebook(root / "notebooks" / "02_b.ipynb", code.replace("2)", "3)")), {})
+    a = report.Chapter(path=_notebook(root / "notebooks" / "01_a.ipynb", code), params={})
+    b = report.Chapter(path=_notebook(root / "notebooks" / "02_b.ipynb", code.replace("2)", "3)")), params={})
     chapters = report.discover(root)
     assert [c.name for c in chapters] == [a.name, b.name]
     out = tmp_path / "out"

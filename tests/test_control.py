@@ -39,8 +39,8 @@ from vibration.physics.control import (
     stabilising_velocity_gain,
 )
 
-OSC = Oscillator(1.0, 0.5, 20.0)
-RES = SineForce(5.0, 4.47)
+OSC = Oscillator(m=1.0, c=0.5, k=20.0)
+RES = SineForce(F0=5.0, omega=4.47)
 WN = OSC.natural_frequency
 
 
@@ -63,7 +63,7 @@ def test_public_api_at_top_level():
 def test_pd_loop_is_the_oscillator_k_plus_kp_c_plus_kd(seed):
     rng = np.random.default_rng(seed)
     kp, kd = rng.uniform(-15.0, 80.0), rng.uniform(-0.4, 12.0)
-    force = SineForce(5.0, rng.uniform(1.0, 8.0))
+    force = SineForce(F0=5.0, omega=rng.uniform(1.0, 8.0))
     sim = simulate_controlled(OSC, lambda t, x, v: -kp * x - kd * v, force, t_end=20.0, n_points=401)
     ex = exact_response(pd_oscillator(OSC, kp, kd), force, sim.t)
     scale = np.max(np.abs(ex.x))
@@ -79,7 +79,7 @@ def test_pd_rejects_a_loop_without_spring(raises_parameter_error):
 
 @pytest.mark.parametrize("c", [-0.5, -2.0, -12.0])
 def test_smallest_stabilising_velocity_gain_is_exactly_minus_c(c):
-    osc = Oscillator(1.0, c, 20.0)
+    osc = Oscillator(m=1.0, c=c, k=20.0)
     kd = stabilising_velocity_gain(osc)
     assert kd == -c
     for kp in (0.0, 30.0):
@@ -100,7 +100,7 @@ def _ab(osc):
 @pytest.mark.parametrize("seed", range(8))
 def test_lqr_matches_scipy_riccati_and_the_closed_form(seed):
     rng = np.random.default_rng(100 + seed)
-    osc = Oscillator(rng.uniform(0.2, 5.0), rng.uniform(-3.0, 20.0), rng.uniform(1.0, 200.0))
+    osc = Oscillator(m=rng.uniform(0.2, 5.0), c=rng.uniform(-3.0, 20.0), k=rng.uniform(1.0, 200.0))
     q_x, q_v, r = 10 ** rng.uniform(-2, 4), 10 ** rng.uniform(-3, 2), 10 ** rng.uniform(-6, 1)
     res = vibration.lqr(osc, q_x, q_v, r)
     A, B = _ab(osc)
@@ -251,7 +251,7 @@ def test_skyhook_is_below_every_passive_curve_at_resonance(c_sky):
     t_sky = float(vibration.skyhook_transmissibility(OSC, c_sky, WN))
     # passive: T(wn; c) = sqrt(1 + (k / (c wn))^2) > 1 for every c; sample c densely up to 1e6 N s/m
     cs = np.geomspace(1e-3, 1e6, 2001)
-    t_pass = np.array([passive_transmissibility(Oscillator(1.0, c, 20.0), WN) for c in cs])
+    t_pass = np.array([passive_transmissibility(Oscillator(m=1.0, c=c, k=20.0), WN) for c in cs])
     assert np.all(t_pass > 1.0) and t_sky < 1.0 and t_sky < t_pass.min()
 
 
@@ -270,7 +270,7 @@ def test_semi_active_kernel_reproduces_the_linear_closed_forms(law):
     w = np.array([0.5, 1.0, 1.7, 3.0]) * WN
     s = semi_active_sweep(OSC, law, w, 0.25, c_sky=8.0, c_min=1.5, c_max=15.0, periods=4)
     exact = (
-        passive_transmissibility(Oscillator(1.0, 2.0, 20.0), w)
+        passive_transmissibility(Oscillator(m=1.0, c=2.0, k=20.0), w)
         if law == "passive"
         else vibration.skyhook_transmissibility(OSC, 8.0, w)
     )
@@ -340,7 +340,7 @@ def test_clipped_skyhook_beats_every_passive_damper_at_resonance_and_keeps_isola
     w = np.array([1.0, 1.5, 2.0, 3.0]) * WN
     s = semi_active_sweep(OSC, "clipped", w, 0.25, c_sky=8.0, c_min=0.5, c_max=15.0)
     assert s.peak[0] < 1.0  # every passive c gives T(wn) > 1 (see the skyhook test)
-    soft = passive_transmissibility(Oscillator(1.0, 1.0, 20.0), w[1:])
+    soft = passive_transmissibility(Oscillator(m=1.0, c=1.0, k=20.0), w[1:])
     assert np.all(s.peak[1:] <= soft * 1.001)
 
 
@@ -350,7 +350,7 @@ def test_semi_active_bad_input(raises_parameter_error):
     with raises_parameter_error("c_max", 0.1, ">= 0.5"):
         semi_active_sweep(OSC, "clipped", [1.0], 0.25, c_min=0.5, c_max=0.1)
     with raises_parameter_error("c + c_min"):
-        semi_active_sweep(Oscillator(1.0, 0.0, 20.0), "clipped", [1.0], 0.25, c_min=0.0, c_max=1.0)
+        semi_active_sweep(Oscillator(m=1.0, c=0.0, k=20.0), "clipped", [1.0], 0.25, c_min=0.0, c_max=1.0)
 
 
 # ----------------------------------------------------------------------------- input shaping
@@ -359,7 +359,7 @@ def test_semi_active_bad_input(raises_parameter_error):
 @pytest.mark.parametrize("make", [vibration.zv_shaper, vibration.zvd_shaper])
 def test_shaper_amplitudes_and_zero_residual_at_the_design_frequency(make):
     for c in (0.0, 0.5, 3.0):
-        osc = Oscillator(1.0, c, 20.0)
+        osc = Oscillator(m=1.0, c=c, k=20.0)
         s = make(osc)
         assert math.isclose(float(np.sum(s.amplitudes)), 1.0, abs_tol=1e-15)
         assert np.all(s.amplitudes > 0) and s.times[0] == 0.0
@@ -370,7 +370,7 @@ def test_shaper_amplitudes_and_zero_residual_at_the_design_frequency(make):
 
 @pytest.mark.parametrize("ratio", [0.7, 0.9, 1.05, 1.2, 1.5])
 def test_residual_formula_matches_the_simulated_move(ratio):
-    actual = Oscillator(1.0, 0.5, 20.0 * ratio**2)
+    actual = Oscillator(m=1.0, c=0.5, k=20.0 * ratio**2)
     for s in (vibration.zv_shaper(OSC), vibration.zvd_shaper(OSC)):
         t, x, v, _ = shaped_move(actual, s, 0.1, t_end=8.0, n_points=801)
         t0, x0, v0, _ = shaped_move(actual, None, 0.1, t_end=8.0, n_points=801)
@@ -391,7 +391,7 @@ def test_shaped_move_matches_python_control_forced_response():
 
 def test_zvd_is_flat_at_the_design_frequency_and_zv_is_not():
     def v_at(shaper, ratio):
-        return shaper_residual(shaper, Oscillator(1.0, 0.5, 20.0 * ratio**2))
+        return shaper_residual(shaper, Oscillator(m=1.0, c=0.5, k=20.0 * ratio**2))
 
     h = 1e-3
     zv, zvd = vibration.zv_shaper(OSC), vibration.zvd_shaper(OSC)
@@ -401,7 +401,7 @@ def test_zvd_is_flat_at_the_design_frequency_and_zv_is_not():
 
 def test_shaper_needs_an_underdamped_oscillator(raises_parameter_error):
     with raises_parameter_error("osc.c", 15.0, "underdamped"):
-        vibration.zv_shaper(Oscillator(1.0, 15.0, 20.0))
+        vibration.zv_shaper(Oscillator(m=1.0, c=15.0, k=20.0))
 
 
 # ----------------------------------------------------------------------------- metrics
@@ -424,7 +424,7 @@ def test_a_stiff_mr_damper_run_is_refined_instead_of_overflowing():
     the single run shorten their step (a quarter, twice at most) and agree with a run given the short step."""
     from vibration import SPENCER_1997, SPENCER_1997_STROKE, semi_active_response, semi_active_sweep
 
-    osc, w, Y = vibration.Oscillator(4.0, 4.0, 400.0), 9.020284133645712, 0.1
+    osc, w, Y = vibration.Oscillator(m=4.0, c=4.0, k=400.0), 9.020284133645712, 0.1
     damper = SPENCER_1997.scaled(Y / SPENCER_1997_STROKE, 10.0 / SPENCER_1997.yield_force)
     auto = semi_active_sweep(osc, "mr", [w], Y, damper=damper, periods=4)
     short = semi_active_sweep(osc, "mr", [w], Y, damper=damper, periods=4, dt_max=2e-4 / 16)

@@ -28,8 +28,8 @@ from vibration.physics.control import (
     zvd_shaper,
 )
 
-OSC = Oscillator(1.0, 0.5, 20.0)
-FORCE = SineForce(5.0, 4.47)
+OSC = Oscillator(m=1.0, c=0.5, k=20.0)
+FORCE = SineForce(F0=5.0, omega=4.47)
 LAWS = [(16.0, 5.5, 0.0), (133.6, 18.7, 0.0), (133.6, 18.7, 512.0), (17.4166, 5.4231, 0.0), (40.0, 2.0, 30.0)]
 
 
@@ -132,7 +132,7 @@ def test_pid_poles_are_the_roots_of_the_characteristic_polynomial():
 ])  # fmt: skip
 def test_undamped_bands_against_closed_form(make, exact):
     """Undamped: V(q) = |cos(pi q / 2)| (ZV) and cos^2(pi q / 2) (ZVD)."""
-    osc = Oscillator(1.0, 0.0, 20.0)
+    osc = Oscillator(m=1.0, c=0.0, k=20.0)
     for level in (0.01, 0.05, 0.2):
         lo, hi = insensitivity_band(make(osc), osc, level)
         assert lo == pytest.approx(float(exact(level)), abs=1e-10)
@@ -146,9 +146,9 @@ def test_damped_bands_are_roots_and_beat_the_grid():
         from vibration.physics.control import shaper_residual
 
         for q in (lo, hi):
-            assert shaper_residual(sh, Oscillator(1.0, 0.5, 20.0 * q * q)) == pytest.approx(0.05, abs=1e-11)
+            assert shaper_residual(sh, Oscillator(m=1.0, c=0.5, k=20.0 * q * q)) == pytest.approx(0.05, abs=1e-11)
         for q in (lo + 1e-4, hi - 1e-4):
-            assert shaper_residual(sh, Oscillator(1.0, 0.5, 20.0 * q * q)) < 0.05
+            assert shaper_residual(sh, Oscillator(m=1.0, c=0.5, k=20.0 * q * q)) < 0.05
 
 
 @pytest.mark.parametrize("c_sky, w", [(8.0, math.sqrt(20.0)), (8.0, 2.0), (3.0, 9.0), (0.0, 4.0)])

@@ -61,7 +61,7 @@ def test_panel_javascript_matches_python(browser, tmp_path: Path):
         for _ in range(12):
             m, c, k = (float(v) for v in (rng.uniform(0.2, 5), rng.uniform(0.0, 6), rng.uniform(1, 100)))
             qx, qv, r = (float(10**v) for v in (rng.uniform(-2, 3), rng.uniform(-3, 1), rng.uniform(-6, 1)))
-            osc = Oscillator(m, c, k)
+            osc = Oscillator(m=m, c=c, k=k)
             js = page.evaluate(f"window.vibrationControl.lqrGains({m}, {c}, {k}, {qx}, {qv}, {r})")
             np.testing.assert_allclose(js, lqr_closed_form(osc, qx, qv, r), rtol=RTOL)
             np.testing.assert_allclose(js, vibration.lqr(osc, qx, qv, r).K, rtol=1e-8)
@@ -72,7 +72,7 @@ def test_panel_javascript_matches_python(browser, tmp_path: Path):
             w = float(rng.uniform(0.5, 10))
             ts = [float(v) for v in np.linspace(0, 15, 301)]
             js = page.evaluate(f"window.vibrationControl.response({m}, {c}, {k}, 5.0, {w}, {ts})")
-            ex = exact_response(osc, SineForce(5.0, w), ts)
+            ex = exact_response(osc, SineForce(F0=5.0, omega=w), ts)
             assert np.max(np.abs(np.array(js["x"]) - ex.x)) < RTOL_X * np.max(np.abs(ex.x))
             if osc.damping_ratio < 1:
                 for kind, make in (("ZV", vibration.zv_shaper), ("ZVD", vibration.zvd_shaper)):
@@ -85,8 +85,8 @@ def test_panel_javascript_matches_python(browser, tmp_path: Path):
                     )
                     np.testing.assert_allclose(res[0], sh.times, rtol=RTOL)
                     np.testing.assert_allclose(res[1], sh.amplitudes, rtol=RTOL)
-                    assert abs(res[2] - shaper_residual(sh, Oscillator(m, c, ka))) < 1e-10
-                    _, x, _, _ = shaped_move(Oscillator(m, c, ka), sh, 0.1, 15.0, 301)
+                    assert abs(res[2] - shaper_residual(sh, Oscillator(m=m, c=c, k=ka))) < 1e-10
+                    _, x, _, _ = shaped_move(Oscillator(m=m, c=c, k=ka), sh, 0.1, 15.0, 301)
                     assert np.max(np.abs(np.array(res[3]) - x)) < RTOL_X * 0.2
         before = page.eval_on_selector("svg.vc-sky polyline.vc-skyhook", "e => e.getAttribute('points')")
         page.eval_on_selector(

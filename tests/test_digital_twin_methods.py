@@ -13,7 +13,7 @@ from vibration.chapters.digital_twin import cusum, montecarlo
 from vibration.chapters.digital_twin.study import digital_twin_study
 from vibration.physics.twin import cubic_response, identify
 
-OSC = Oscillator(1.0, 0.5, 20.0)
+OSC = Oscillator(m=1.0, c=0.5, k=20.0)
 SMALL = dict(t_record=30.0, runs=20, sweep_runs=5, assumption_runs=20, t_monitor=120.0, detect_runs=5)
 
 

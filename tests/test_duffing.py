@@ -78,7 +78,7 @@ def mp_roots(d: Duffing, F0: float, w: float) -> list[float]:
 def test_duffing_record_is_frozen_and_derived():
     assert HARD.natural_frequency == pytest.approx(math.sqrt(20.0), rel=1e-15)
     assert HARD.character == "hardening" and SOFT.character == "softening"
-    assert Duffing(1.0, 0.5, 20.0, 0.0).character == "linear"
+    assert Duffing(m=1.0, c=0.5, k=20.0, k3=0.0).character == "linear"
     assert SOFT.barrier == pytest.approx(math.sqrt(20.0), rel=1e-15)
     assert HARD.half_power_bandwidth == 0.5
     with pytest.raises(AttributeError):
@@ -93,16 +93,16 @@ def test_duffing_record_is_frozen_and_derived():
 )  # fmt: skip
 def test_bad_records_are_named(raises_parameter_error, args, name, bad):
     with raises_parameter_error(name, bad):
-        Duffing(*args)
+        Duffing(**dict(zip(("m", "c", "k", "k3"), args, strict=True)))
 
 
 @pytest.mark.parametrize(
     ("call", "name"),
     [(lambda: hb_amplitudes(HARD, -1.0, 5.0), "F0"), (lambda: hb_amplitudes(HARD, 5.0, 0.0), "omega"),
-     (lambda: hb_amplitudes("HARD", 5.0, 5.0), "duffing"), (lambda: folds(Duffing(1, 0, 20, 1), 5.0), "c"),
+     (lambda: hb_amplitudes("HARD", 5.0, 5.0), "duffing"), (lambda: folds(Duffing(m=1, c=0, k=20, k3=1), 5.0), "c"),
      (lambda: folds(HARD, 0.0), "F0"), (lambda: sweep(HARD, 5.0, [5.0], "sideways"), "direction"),
      (lambda: sweep(HARD, 5.0, [5.0, -1.0], "up"), "omegas"), (lambda: sweep(HARD, 5.0, [], "up"), "omegas"),
-     (lambda: sweep(Duffing(1, 0, 20, 1), 5.0, [5.0], "up"), "c"),
+     (lambda: sweep(Duffing(m=1, c=0, k=20, k3=1), 5.0, [5.0], "up"), "c"),
      (lambda: frequency_sweep(HARD, 5.0, [5.0], "up", rtol=1.0), "rtol"),
      (lambda: frequency_sweep(HARD, 5.0, [5.0], "up", integrator="euler"), "integrator"),
      (lambda: backbone(HARD, -1.0), "amplitude"), (lambda: lyapunov_qr(UEDA, 7.5, 1.0, n_periods=0), "n_periods"),
@@ -138,7 +138,7 @@ def test_three_roots_in_the_band_stable_unstable_stable():
 )
 def test_amplitudes_match_mpmath_polynomial_roots(m, k, zeta, k3_rel, F0_rel, r):
     c = 2 * zeta * math.sqrt(k * m)
-    d = Duffing(m, c, k, k3_rel * k)
+    d = Duffing(m=m, c=c, k=k, k3=k3_rel * k)
     F0 = F0_rel * k
     w = r * d.natural_frequency
     ours = [a for a, _ in hb_amplitudes(d, F0, w)]
@@ -152,11 +152,11 @@ def test_amplitudes_match_mpmath_polynomial_roots(m, k, zeta, k3_rel, F0_rel, r)
 
 @given(zeta=st.floats(0.005, 2.0), r=st.floats(0.05, 5.0), F0=st.floats(0.0, 50.0))
 def test_linear_limit_is_part_one_closed_form(zeta, r, F0):
-    osc = Oscillator(1.0, 2 * zeta * math.sqrt(20.0), 20.0)
+    osc = Oscillator(m=1.0, c=2 * zeta * math.sqrt(20.0), k=20.0)
     w = r * osc.natural_frequency
-    [(a, stable)] = hb_amplitudes(Duffing(1.0, osc.c, 20.0, 0.0), F0, w)
+    [(a, stable)] = hb_amplitudes(Duffing(m=1.0, c=osc.c, k=20.0, k3=0.0), F0, w)
     assert stable
-    assert a == pytest.approx(steady_state(osc, SineForce(F0, w)).amplitude, rel=1e-13, abs=1e-300)
+    assert a == pytest.approx(steady_state(osc, SineForce(F0=F0, omega=w)).amplitude, rel=1e-13, abs=1e-300)
 
 
 def test_backbone_and_peak_textbook_light_damping():
@@ -164,7 +164,7 @@ def test_backbone_and_peak_textbook_light_damping():
     frequency response lies on the backbone omega^2 = k/m + (3/4)(k3/m) A^2 with A = F0/(c omega)."""
     for k3 in (2.0, 0.5, -0.2):
         for c in (0.05, 0.01, 0.002):
-            d = Duffing(1.0, c, 20.0, k3)
+            d = Duffing(m=1.0, c=c, k=20.0, k3=k3)
             F0 = c * math.sqrt(20.0)  # a peak near 1 m whatever the damping
             f = folds(d, F0)
             a, w = f.peak_amplitude, f.peak_omega
@@ -178,7 +178,7 @@ def test_backbone_and_peak_textbook_light_damping():
 
 
 def test_peak_of_linear_oscillator_is_damped_resonance():
-    d = Duffing(1.0, 0.5, 20.0, 0.0)
+    d = Duffing(m=1.0, c=0.5, k=20.0, k3=0.0)
     f = folds(d, 5.0)
     assert not f.bistable and math.isnan(f.omega_low)
     assert f.peak_omega == pytest.approx(math.sqrt(20.0 - 0.5**2 / 2), rel=1e-14)
@@ -186,7 +186,13 @@ def test_peak_of_linear_oscillator_is_damped_resonance():
 
 
 @pytest.mark.parametrize(
-    ("d", "F0"), [(HARD, 5.0), (SOFT, 5.0), (Duffing(2.0, 0.3, 7.0, 0.4), 3.0), (Duffing(0.5, 0.02, 1.0, -0.1), 0.05)]
+    ("d", "F0"),
+    [
+        (HARD, 5.0),
+        (SOFT, 5.0),
+        (Duffing(m=2.0, c=0.3, k=7.0, k3=0.4), 3.0),
+        (Duffing(m=0.5, c=0.02, k=1.0, k3=-0.1), 0.05),
+    ],
 )
 def test_folds_are_double_roots_and_bound_the_three_root_band(d, F0):
     f = folds(d, F0)
@@ -233,7 +239,7 @@ def test_linear_trust_amplitude_moves_the_backbone_one_bandwidth():
     assert backbone(HARD, a) - HARD.natural_frequency == pytest.approx(HARD.half_power_bandwidth, rel=1e-12)
     a = linear_trust_amplitude(SOFT)
     assert HARD.natural_frequency - backbone(SOFT, a) == pytest.approx(SOFT.half_power_bandwidth, rel=1e-12)
-    assert linear_trust_amplitude(Duffing(1.0, 0.5, 20.0, 0.0)) == math.inf
+    assert linear_trust_amplitude(Duffing(m=1.0, c=0.5, k=20.0, k3=0.0)) == math.inf
 
 
 # -------------------------------------------------------------------- stability: slow flow vs Floquet
@@ -312,23 +318,23 @@ def test_hysteresis_jumps_sit_at_the_harmonic_balance_folds(d):
 
 
 def test_linear_sweep_is_part_one_steady_state():
-    d = Duffing(1.0, 0.5, 20.0, 0.0)
+    d = Duffing(m=1.0, c=0.5, k=20.0, k3=0.0)
     w = np.linspace(3.0, 6.0, 13)
     amps = sweep(d, 5.0, w, "down")
-    ref = [steady_state(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, wi)).amplitude for wi in w]
+    ref = [steady_state(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=wi)).amplitude for wi in w]
     np.testing.assert_allclose(amps, ref, rtol=1e-5)
 
 
 def test_softening_spring_escapes_and_the_sweep_goes_on():
-    d = Duffing(1.0, 0.1, 1.0, -1.0)  # barrier at 1 m
+    d = Duffing(m=1.0, c=0.1, k=1.0, k3=-1.0)  # barrier at 1 m
     res = frequency_sweep(d, 0.5, [0.5, 0.6], "up")
     assert np.isnan(res.amplitude).any() and not res.steady[np.isnan(res.amplitude)].any()
 
 
 def test_paper_forcing_linear_limit_matches_the_closed_form():
     t = np.linspace(0.0, 50.0, 2001)
-    x, _ = duffing_response(Duffing(1.0, 0.5, 20.0, 0.0), 5.0, 4.47, t, sine=True)
-    ref = exact_response(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47), t).x
+    x, _ = duffing_response(Duffing(m=1.0, c=0.5, k=20.0, k3=0.0), 5.0, 4.47, t, sine=True)
+    ref = exact_response(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), t).x
     assert np.max(np.abs(x - ref)) < 1e-7 * np.max(np.abs(ref))
 
 

@@ -58,7 +58,7 @@ def test_js_roots_and_folds_match_python(browser, tmp_path):
             cases.append((m, c, k, rng.uniform(-0.3, 3) * k, 10 ** rng.uniform(-1, 0.5) * k))
         n_roots = 0
         for m, c, k, k3, F0 in cases:
-            d = Duffing(m, c, k, k3)
+            d = Duffing(m=m, c=c, k=k, k3=k3)
             p = {"m": m, "c": c, "k": k, "k3": k3, "F0": F0, "omega_max": 3 * d.natural_frequency}
             for w in rng.uniform(0.2, 2.0, 8) * d.natural_frequency:
                 js = page.evaluate("([p, w]) => window.vibrationDuffing.hbAmplitudes(p, w)", [p, float(w)])
@@ -101,7 +101,7 @@ def test_panel_sliders_redraw_offline(browser, tmp_path):
             )
 
         s0 = state()
-        f = folds(Duffing(1.0, 0.5, 20.0, 2.0), 5.0)
+        f = folds(Duffing(m=1.0, c=0.5, k=20.0, k3=2.0), 5.0)
         assert s0["folds"] == 2 and s0["n"] >= 1 and f"{f.omega_low:.5g}" in s0["text"]
         page.eval_on_selector(
             "input.vd-k3", "el => { el.value = '0.1'; el.dispatchEvent(new Event('input', {bubbles: true})); }"

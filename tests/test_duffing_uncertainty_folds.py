@@ -29,9 +29,9 @@ from vibration.physics.duffing import (
     pooled_exponent,
 )
 
-UEDA = Duffing(1.0, 0.05, 0.0, 1.0)  # x'' + 0.05 x' + x^3 = F cos t
-HARD = Duffing(1.0, 0.5, 20.0, 2.0)
-SOFT = Duffing(1.0, 0.5, 20.0, -1.0)
+UEDA = Duffing(m=1.0, c=0.05, k=0.0, k3=1.0)  # x'' + 0.05 x' + x^3 = F cos t
+HARD = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
+SOFT = Duffing(m=1.0, c=0.5, k=20.0, k3=-1.0)
 STARTS = [(3.0, 0.0), (0.0, 0.0), (1.0, 1.0), (-2.0, 3.0), (2.0, -1.0), (-1.0, -2.0), (0.5, 2.5), (-3.0, 0.5),
           (1.5, -3.0), (-0.5, 1.0), (2.5, 2.0), (-2.5, -1.5)]  # fmt: skip
 
@@ -179,7 +179,7 @@ def test_one_harmonic_folds_converge_to_the_true_ones_as_the_amplitude_falls(bra
     F0 = 0.5 N the peak amplitude is 1.07 m instead of 1.97 m, and the fold error falls by more than 3."""
     _, f5, b5 = branches["hard"]
     err5 = abs(f5.omega_high - max(x.omega for x in b5.folds))
-    d = Duffing(1.0, 0.1, 20.0, 2.0)
+    d = Duffing(m=1.0, c=0.1, k=20.0, k3=2.0)
     f = folds(d, 0.5)
     assert f.bistable and f.peak_amplitude < 0.6 * f5.peak_amplitude
     width = f.omega_high - f.omega_low
@@ -192,7 +192,7 @@ def test_continuation_refuses_bad_arguments():
     with pytest.raises(ParameterError, match="omega_end"):
         continue_orbits(HARD, 5.0, 5.0, 5.0)
     with pytest.raises(ParameterError, match="c = 0"):
-        continue_orbits(Duffing(1.0, 0.0, 20.0, 2.0), 5.0, 4.9, 5.2)
+        continue_orbits(Duffing(m=1.0, c=0.0, k=20.0, k3=2.0), 5.0, 4.9, 5.2)
     with pytest.raises(ParameterError, match="step"):
         continue_orbits(HARD, 5.0, 4.9, 5.2, step=2.0)
     with pytest.raises(ParameterError, match="F0"):

@@ -191,7 +191,7 @@ def _cases():
 
 @pytest.mark.parametrize(("m", "c", "k", "F0", "w", "T", "regime", "x0", "v0"), list(_cases()))
 def test_against_expm(m, c, k, F0, w, T, regime, x0, v0):
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     assert osc.regime == regime
     t = np.linspace(0.0, T, 2001)
     r = exact_response(osc, force, t, x0, v0)
@@ -206,7 +206,7 @@ def test_against_expm(m, c, k, F0, w, T, regime, x0, v0):
     [p for p in _cases() if p.id.endswith(("-rest", "-x0v0"))],
 )
 def test_against_decimal_closed_form(m, c, k, F0, w, T, regime, x0, v0):
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     t = np.linspace(0.0, T, 201)
     r = exact_response(osc, force, t, x0, v0)
     x_ref, v_ref = decimal_response(m, c, k, F0, w, t, x0, v0)
@@ -221,7 +221,7 @@ def test_strongly_negative_damping_pointwise(c, T):
     Early samples are where a wrong forced part shows: the growing free mode has
     not yet swamped it.
     """
-    osc, force = Oscillator(1.0, c, 20.0), SineForce(5.0, 3.0)
+    osc, force = Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=3.0)
     t = np.linspace(0.0, T, 51)[1:]
     x_ref, v_ref = decimal_response(1.0, c, 20.0, 5.0, 3.0, t, 0.0, 0.0)
     r = exact_response(osc, force, t)
@@ -235,7 +235,7 @@ def test_strongly_negative_damping_pointwise(c, T):
 def test_subnormal_damping_at_resonance(c):
     """A subnormal damping coefficient is, to double precision, no damping at all."""
     t = np.linspace(0.0, 20.0, 201)
-    r = exact_response(Oscillator(1.0, c, 1.0), SineForce(1.0, 1.0), t)
+    r = exact_response(Oscillator(m=1.0, c=c, k=1.0), SineForce(F0=1.0, omega=1.0), t)
     secular = 0.5 * (np.sin(t) - t * np.cos(t))  # F0/(2 m wn^2) (sin wn t - wn t cos wn t)
     assert max_rel_err(r.x, secular) <= 1e-12
     assert max_rel_err(r.v, 0.5 * t * np.sin(t)) <= 1e-12
@@ -246,7 +246,7 @@ def test_subnormal_damping_at_resonance(c):
 def test_slow_forcing(c, w):
     """omega << omega_n: x from rest is O(omega F0 / k), and must be accurate relative to itself."""
     t = np.linspace(0.0, 20.0, 201)
-    r = exact_response(Oscillator(1.0, c, 20.0), SineForce(5.0, w), t)
+    r = exact_response(Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=w), t)
     x_ref, v_ref = decimal_response(1.0, c, 20.0, 5.0, w, t, 0.0, 0.0)
     assert max_rel_err(r.x, x_ref) <= RTOL_EXPM
     assert max_rel_err(r.v, v_ref) <= RTOL_EXPM
@@ -261,7 +261,7 @@ def test_negative_and_unordered_times():
         (1.0, 15.0, 20.0, 5.0, 4.47),
         (1.0, 0.0, 20.0, 5.0, SQRT20),
     ]:
-        r = exact_response(Oscillator(m, c, k), SineForce(F0, w), t, 0.3, -0.7)
+        r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, 0.3, -0.7)
         x_ref, v_ref = expm_response(m, c, k, F0, w, t, 0.3, -0.7)
         assert max_rel_err(r.x, x_ref) <= RTOL_EXPM
         assert max_rel_err(r.v, v_ref) <= RTOL_EXPM
@@ -277,7 +277,7 @@ def test_undamped_resonance_secular_solution(k, w, x0, v0):
     m, F0 = 1.0, 5.0
     wn = math.sqrt(k / m)
     t = np.linspace(0.0, 20.0, 2001)
-    r = exact_response(Oscillator(m, 0.0, k), SineForce(F0, w), t, x0, v0)
+    r = exact_response(Oscillator(m=m, c=0.0, k=k), SineForce(F0=F0, omega=w), t, x0, v0)
     x = F0 / (2 * m * wn**2) * (np.sin(wn * t) - wn * t * np.cos(wn * t))
     x += x0 * np.cos(wn * t) + v0 / wn * np.sin(wn * t)
     v = F0 / (2 * m) * t * np.sin(wn * t) - x0 * wn * np.sin(wn * t) + v0 * np.cos(wn * t)
@@ -287,7 +287,7 @@ def test_undamped_resonance_secular_solution(k, w, x0, v0):
 
 def test_docstring_example_value_at_pi():
     """Undamped, k = 4, w = 2: x(pi) = F0/(2 m wn^2) (0 - 2 pi) = -pi/4."""
-    r = exact_response(Oscillator(1.0, 0.0, 4.0), SineForce(1.0, 2.0), [0.0, math.pi])
+    r = exact_response(Oscillator(m=1.0, c=0.0, k=4.0), SineForce(F0=1.0, omega=2.0), [0.0, math.pi])
     assert r.x[0] == 0.0
     assert r.x[1] == pytest.approx(-math.pi / 4, rel=1e-14)
 
@@ -298,11 +298,11 @@ def test_free_decay_from_textbook_forms(c):
     m, k, x0, v0 = 1.0, 20.0, 0.4, -1.3
     sigma, wn2 = c / (2 * m), k / m
     t = np.linspace(0.0, 10.0, 1001)
-    r = exact_response(Oscillator(m, c, k), SineForce(0.0, 3.0), t, x0, v0)
-    if Oscillator(m, c, k).regime == "underdamped":
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=0.0, omega=3.0), t, x0, v0)
+    if Oscillator(m=m, c=c, k=k).regime == "underdamped":
         wd = math.sqrt(wn2 - sigma**2)
         x = np.exp(-sigma * t) * (x0 * np.cos(wd * t) + (v0 + sigma * x0) / wd * np.sin(wd * t))
-    elif Oscillator(m, c, k).regime == "critically damped":
+    elif Oscillator(m=m, c=c, k=k).regime == "critically damped":
         x = np.exp(-sigma * t) * (x0 + (v0 + sigma * x0) * t)
     else:
         mu = math.sqrt(sigma**2 - wn2)
@@ -313,7 +313,7 @@ def test_free_decay_from_textbook_forms(c):
 
 
 def test_shapes_scalar_and_list():
-    osc, f = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+    osc, f = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
     r = exact_response(osc, f, 1.5)
     assert r.x.shape == () and r.v.shape == () and r.t.shape == ()
     r2 = exact_response(osc, f, [1.5])
@@ -325,7 +325,7 @@ def test_shapes_scalar_and_list():
 @pytest.mark.parametrize("case", ["underdamped", "critical-exact", "overdamped-15", "undamped-resonance"])
 def test_initial_conditions_hold_exactly(case):
     m, c, k, F0, w, *_ = CASES[case]
-    r = exact_response(Oscillator(m, c, k), SineForce(F0, w), [0.0], 0.3, -0.7)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), [0.0], 0.3, -0.7)
     assert r.x[0] == pytest.approx(0.3, abs=1e-15)
     assert r.v[0] == pytest.approx(-0.7, abs=1e-15)
 
@@ -346,7 +346,7 @@ def test_initial_conditions_hold_exactly(case):
     ],
 )
 def test_steady_state_textbook(m, c, k, F0, w):
-    ss = steady_state(Oscillator(m, c, k), SineForce(F0, w))
+    ss = steady_state(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w))
     amp = F0 / math.sqrt((k - m * w**2) ** 2 + (c * w) ** 2)
     assert ss.amplitude == pytest.approx(amp, rel=1e-13)
     assert ss.phase == pytest.approx(math.atan2(c * w, k - m * w**2), rel=1e-13, abs=1e-15)
@@ -358,35 +358,35 @@ def test_steady_state_textbook(m, c, k, F0, w):
 
 def test_steady_state_reference_case_values():
     """The paper's reference case: about 0.45 m (the paper rounds it to 0.5 m)."""
-    ss = steady_state(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0))
+    ss = steady_state(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0))
     assert ss.amplitude == pytest.approx(5.0 / math.hypot(11.0, 1.5), rel=1e-14)  # 0.4504 m
     assert ss.amplitude == pytest.approx(0.4504, abs=5e-5)
     assert ss.phase == pytest.approx(math.atan(1.5 / 11.0), rel=1e-14)  # 0.1355 rad
 
 
 def test_steady_state_phase_spans_zero_to_pi():
-    osc = Oscillator(1.0, 0.5, 20.0)
-    phases = [steady_state(osc, SineForce(1.0, w)).phase for w in np.linspace(0.0, 50.0, 501)]
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
+    phases = [steady_state(osc, SineForce(F0=1.0, omega=w)).phase for w in np.linspace(0.0, 50.0, 501)]
     assert phases[0] == 0.0
     assert all(0.0 <= p <= math.pi for p in phases)
     assert np.all(np.diff(phases) > 0)
-    assert steady_state(osc, SineForce(1.0, SQRT20)).phase == pytest.approx(math.pi / 2, rel=1e-15)
+    assert steady_state(osc, SineForce(F0=1.0, omega=SQRT20)).phase == pytest.approx(math.pi / 2, rel=1e-15)
     assert phases[-1] > 0.99 * math.pi
 
 
 def test_steady_state_phase_with_negative_zero_damping():
     """c = -0.0 is c = 0 (undamped): the lag is 0 below resonance and pi above, not -pi."""
-    osc = Oscillator(1.0, -0.0, 20.0)
+    osc = Oscillator(m=1.0, c=-0.0, k=20.0)
     assert osc.regime == "undamped"
-    assert steady_state(osc, SineForce(5.0, 3.0)).phase == 0.0
-    assert steady_state(osc, SineForce(5.0, 9.0)).phase == pytest.approx(math.pi, rel=1e-15)
+    assert steady_state(osc, SineForce(F0=5.0, omega=3.0)).phase == 0.0
+    assert steady_state(osc, SineForce(F0=5.0, omega=9.0)).phase == pytest.approx(math.pi, rel=1e-15)
 
 
 def test_steady_state_undamped_resonance_and_zero_force():
-    ss = steady_state(Oscillator(1.0, 0.0, 4.0), SineForce(5.0, 2.0))
+    ss = steady_state(Oscillator(m=1.0, c=0.0, k=4.0), SineForce(F0=5.0, omega=2.0))
     assert ss.amplitude == math.inf and ss.magnification == math.inf
     assert ss.phase == pytest.approx(math.pi / 2, rel=1e-15)
-    ss0 = steady_state(Oscillator(1.0, 0.5, 20.0), SineForce(0.0, 3.0))
+    ss0 = steady_state(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=0.0, omega=3.0))
     assert ss0.amplitude == 0.0 and ss0.velocity_amplitude == 0.0
 
 
@@ -403,7 +403,7 @@ def test_steady_state_undamped_resonance_and_zero_force():
 )
 def test_large_time_equals_steady_state(m, c, k, F0, w, t_start):
     """Second formulation: once the transient has decayed, x = A sin(w t - phi)."""
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     ss = steady_state(osc, force)
     t = np.linspace(t_start, t_start + 10.0, 1001)
     r = exact_response(osc, force, t, 0.3, -0.7)
@@ -420,7 +420,7 @@ def test_large_time_equals_steady_state(m, c, k, F0, w, t_start):
 
 @pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf])
 def test_times_must_be_finite(raises_parameter_error, bad):
-    osc, f = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+    osc, f = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
     with raises_parameter_error("t", bad, "finite"):
         exact_response(osc, f, [0.0, 1.0, bad, 2.0])
     with raises_parameter_error("t", bad, "finite"):
@@ -429,11 +429,11 @@ def test_times_must_be_finite(raises_parameter_error, bad):
 
 def test_times_must_be_one_dimensional(raises_parameter_error):
     with raises_parameter_error("t", (3, 2), "1-D"):
-        exact_response(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), np.zeros((3, 2)))
+        exact_response(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), np.zeros((3, 2)))
 
 
 @pytest.mark.parametrize("name", ["x0", "v0"])
 @pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf, "0.1", True, None])
 def test_initial_conditions_must_be_finite_reals(raises_parameter_error, name, bad):
     with raises_parameter_error(name, bad, "finite"):
-        exact_response(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), [0.0, 1.0], **{name: bad})
+        exact_response(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), [0.0, 1.0], **{name: bad})

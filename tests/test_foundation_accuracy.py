@@ -104,7 +104,7 @@ def test_strongly_damped_free_response_pointwise(c, x0, v0):
     """Both signs of strong damping, point by point: the issue's corner and its mirror."""
     m, k = 1.0, 1.0 if abs(c) > 100 else 20.0
     t = np.array([1e-6, 1e-3, 0.0037, 0.01, 0.02])
-    r = exact_response(Oscillator(m, c, k), SineForce(0.0, 0.0), t, x0, v0)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=0.0, omega=0.0), t, x0, v0)
     xr, vr = modal(m, c, k, 0.0, 0.0, t, x0, v0)
     fast = (abs(c) + math.sqrt(c * c - 4 * k * m)) / (2 * m)  # 1/s
     bound = 8 * EPS * (1.0 + fast * t)  # the exponent's own rounding, relative
@@ -113,7 +113,7 @@ def test_strongly_damped_free_response_pointwise(c, x0, v0):
 
 
 def test_issue_corner_1():
-    r = exact_response(Oscillator(1, -2000, 1), SineForce(0, 0), [0.01], x0=1)
+    r = exact_response(Oscillator(m=1, c=-2000, k=1), SineForce(F0=0, omega=0), [0.01], x0=1)
     xr, _ = modal(1, -2000, 1, 0, 0, [0.01], 1)
     assert pointwise(r.x, xr)[0] <= 8 * EPS * 21  # was 1.2e-10
 
@@ -123,7 +123,7 @@ def test_strongly_negative_damping_forced_pointwise(c):
     """Forced, c < -c_crit, from rest and from an initial state."""
     t = np.linspace(0.0, 1.0, 41)[1:]
     for x0, v0 in [(0.0, 0.0), (0.3, -0.7)]:
-        r = exact_response(Oscillator(1.0, c, 20.0), SineForce(5.0, 3.0), t, x0, v0)
+        r = exact_response(Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=3.0), t, x0, v0)
         xr, vr = modal(1.0, c, 20.0, 5.0, 3.0, t, x0, v0)
         assert np.max(pointwise(r.x, xr)) <= 1e-13
         assert np.max(pointwise(r.v, vr)) <= 1e-13
@@ -134,7 +134,7 @@ def test_strongly_negative_damping_forced_pointwise(c):
 
 @pytest.mark.parametrize("window", [1e-4, 2 * math.pi / 3 / 1e5, 1e-6, 1e-2, 0.3])
 def test_short_window_from_rest_pointwise(window):
-    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+    osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
     r = exact_response(osc, force, [window])
     xr, vr = modal(1.0, 0.5, 20.0, 5.0, 3.0, [window])
     assert pointwise(r.x, xr)[0] <= 4 * EPS  # was 6.7e-9 at 1e-4 s, 3.6e-7 at period/1e5
@@ -158,7 +158,7 @@ def test_first_samples_of_a_window_pointwise(m, c, k, F0, w, x0, v0):
     """The first samples of an ordinary window (block path) and of a short one (pointwise path)."""
     # up to 0.3 s: before the first zero crossing, where pointwise relative error means nothing
     for t in (np.linspace(0.0, 50.0, 5001)[1:31], np.geomspace(1e-7, 0.3, 40)):
-        r = exact_response(Oscillator(m, c, k), SineForce(F0, w), t, x0, v0)
+        r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, x0, v0)
         xr, vr = modal(m, c, k, F0, w, t, x0, v0)
         assert np.max(pointwise(r.x, xr)) <= 5e-14
         assert np.max(pointwise(r.v, vr)) <= 5e-14
@@ -177,7 +177,7 @@ def test_first_samples_of_a_window_pointwise(m, c, k, F0, w, x0, v0):
 def test_strongly_damped_short_windows_from_rest(m, c, k, F0, w, bound):
     """Windows shorter than the slow time scale, from rest: x is far smaller than the steady amplitude |H|."""
     for t in (np.geomspace(1e-6, 1.0, 40), np.linspace(0.0, 0.5, 101)[1:]):
-        r = exact_response(Oscillator(m, c, k), SineForce(F0, w), t)
+        r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t)
         xr, vr = modal(m, c, k, F0, w, t)
         assert np.max(pointwise(r.x, xr)) <= bound * EPS
         assert np.max(pointwise(r.v, vr)) <= 8 * EPS
@@ -187,7 +187,7 @@ def test_short_window_at_exact_resonance_and_critical_damping():
     """Confluent cases (double root, exact resonance) against the 50-digit matrix exponential."""
     t = np.array([1e-5, 1e-3, 0.05])
     for m, c, k, F0, w in [(1.0, 0.0, 4.0, 1.0, 2.0), (1.0, 4.0, 4.0, 1.0, 3.0), (1.0, 4.0, 4.0, 1.0, 2.0)]:
-        r = exact_response(Oscillator(m, c, k), SineForce(F0, w), t)
+        r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t)
         xr, vr = expm_ref(m, c, k, F0, w, t)
         assert np.max(pointwise(r.x, xr)) <= 1e-14
         assert np.max(pointwise(r.v, vr)) <= 1e-14
@@ -225,7 +225,7 @@ def test_block_path_equals_pointwise_path(m, c, k, F0, w, T, n, tol):
     if c < 0 and T > 100:
         pytest.skip("grows beyond the float range")
     t = np.linspace(0.0, T, n)
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     for x0, v0 in [(0.0, 0.0), (0.3, -0.7)]:
         fast, slow = exact_response(osc, force, t, x0, v0), pointwise_path(osc, force, t, x0, v0)
         assert np.max(np.abs(fast.x - slow.x)) <= tol * np.max(np.abs(slow.x))
@@ -242,7 +242,7 @@ def test_block_path_against_50_digits(m, c, k, F0, w, T, n, tol):
     B = math.isqrt(n - 1) + 1
     rng = np.random.default_rng(7)
     idx = np.unique(np.r_[1:5, B - 1 : B + 2, n // 2 : n // 2 + 3, n - 3 : n, rng.integers(0, n, 25)])
-    r = exact_response(Oscillator(m, c, k), SineForce(F0, w), t, 0.3, -0.7)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, 0.3, -0.7)
     xr, vr = modal(m, c, k, F0, w, t[idx], 0.3, -0.7)
     assert scaled(r.x[idx], xr, np.max(np.abs(r.x))) <= tol
     assert scaled(r.v[idx], vr, np.max(np.abs(r.v))) <= tol
@@ -256,7 +256,7 @@ def test_design_map_uses_the_block_path_and_matches_exact_response():
     pk = peak_displacement_map(1.0, 20.0, 5.0, omegas, dampings, 20.0, 2001)
     for i, c in enumerate(dampings):
         for j, w in enumerate(omegas):
-            ref = np.max(np.abs(pointwise_path(Oscillator(1.0, c, 20.0), SineForce(5.0, w), t).x))
+            ref = np.max(np.abs(pointwise_path(Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=w), t).x))
             assert pk[i, j] == pytest.approx(ref, rel=1e-12)
 
 
@@ -264,7 +264,7 @@ def test_design_map_uses_the_block_path_and_matches_exact_response():
 @pytest.mark.parametrize(("m", "c", "k", "F0", "w"), REGIMES)
 def test_block_sizes_and_grids_not_from_zero(n, m, c, k, F0, w):
     """Block boundaries for every remainder of n / B, grids from t0 > 0 and strided views."""
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     base = np.linspace(0.0, 20.0, 2 * n - 1)
     for t in (np.linspace(0.0, 20.0, n), np.linspace(0.05, 20.0, n), np.linspace(3.0, 20.0, n), base[::2]):
         assert exact_module._uniform(t) is not None
@@ -275,7 +275,7 @@ def test_block_sizes_and_grids_not_from_zero(n, m, c, k, F0, w):
 
 def test_block_path_near_the_float_range():
     """A response growing to 1e285 m on a uniform grid matches the pointwise path; beyond the range it is refused."""
-    osc, force = Oscillator(1.0, -60.0, 20.0), SineForce(5.0, 3.0)
+    osc, force = Oscillator(m=1.0, c=-60.0, k=20.0), SineForce(F0=5.0, omega=3.0)
     t = np.linspace(0.0, 23.0, 5001)  # exp(59.66 * 23) = 1e596 overflows; the end of the window is refused
     with pytest.raises(ParameterError, match=r"t = .* s gives a response beyond the float range"):
         exact_response(osc, force, t)
@@ -288,7 +288,7 @@ def test_block_path_near_the_float_range():
 
 def test_grids_that_cross_the_near_steady_split():
     """A uniform grid is evaluated in two stretches (near form, then steady split): one-sample stretches included."""
-    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)
+    osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)
     ro = exact_module._roots(osc)
     dist = min(abs(1j * force.omega - s) for s in ro.pair)
     split = exact_module.NEAR_SPLIT / dist  # s
@@ -326,7 +326,7 @@ def test_block_path_equals_pointwise_path_on_random_grids(log_m, log_k, zeta, ra
     """Any regime, any forcing, any uniform grid: the compiled block path agrees with the pointwise path."""
     m, k = 10.0**log_m, 10.0**log_k
     wn = math.sqrt(k / m)
-    osc, force = Oscillator(m, 2.0 * zeta * math.sqrt(k * m), k), SineForce(F0, ratio * wn)
+    osc, force = Oscillator(m=m, c=2.0 * zeta * math.sqrt(k * m), k=k), SineForce(F0=F0, omega=ratio * wn)
     T = periods * 2.0 * math.pi / wn
     t = np.linspace(start * T, start * T + T, n)
     try:

@@ -35,7 +35,7 @@ from vibration import (
 from vibration.physics import frequency as frequency_module
 from vibration.physics import numerics as numerics_module
 
-OSC, FORCE = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+OSC, FORCE = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
 NOT_OSC = [None, 1.0, (1.0, 0.5, 20.0), "osc", FORCE]
 
 
@@ -116,7 +116,7 @@ def test_half_power_points_refuses_bad_curves(omegas, mags, name, fragment):
 
 def _decay(n=4001, T=6.0):
     t = np.linspace(0.0, T, n)
-    return t, exact_response(OSC, SineForce(0.0, 0.0), t, x0=1.0).x
+    return t, exact_response(OSC, SineForce(F0=0.0, omega=0.0), t, x0=1.0).x
 
 
 def test_log_decrement_uses_t_and_checks_it():
@@ -137,7 +137,7 @@ def test_log_decrement_on_a_non_uniform_grid_matches_the_uniform_one():
     """Non-uniform samples are refined at their own times: same damping ratio to 1e-6."""
     rng = np.random.default_rng(3)
     t = np.sort(np.r_[0.0, rng.uniform(0.0, 6.0, 6000), 6.0])
-    x = exact_response(OSC, SineForce(0.0, 0.0), t, x0=1.0).x
+    x = exact_response(OSC, SineForce(F0=0.0, omega=0.0), t, x0=1.0).x
     _, zeta = log_decrement(t, x)
     assert zeta == pytest.approx(OSC.damping_ratio, rel=1e-5)
     # the old index-only refinement (t ignored) is worse on this grid: t matters
@@ -171,11 +171,11 @@ def test_exact_response_refuses_bad_times(bad, fragment):
 def test_exact_response_refuses_an_overflowing_result():
     """c = -15 N s/m grows like exp(13.5 t): past about 52 s x is beyond the float range."""
     with pytest.raises(ParameterError, match=r"t = .* s gives a response beyond the float range.*allowed"):
-        exact_response(Oscillator(1.0, -15.0, 20.0), FORCE, np.linspace(0.0, 100.0, 1001))
-    r = exact_response(Oscillator(1.0, -15.0, 20.0), FORCE, np.linspace(0.0, 50.0, 1001))
+        exact_response(Oscillator(m=1.0, c=-15.0, k=20.0), FORCE, np.linspace(0.0, 100.0, 1001))
+    r = exact_response(Oscillator(m=1.0, c=-15.0, k=20.0), FORCE, np.linspace(0.0, 50.0, 1001))
     assert np.all(np.isfinite(r.x))
     # zero everywhere however unstable: nothing to overflow
-    r = exact_response(Oscillator(1.0, -15.0, 20.0), SineForce(0.0, 0.0), np.linspace(0.0, 1e4, 101))
+    r = exact_response(Oscillator(m=1.0, c=-15.0, k=20.0), SineForce(F0=0.0, omega=0.0), np.linspace(0.0, 1e4, 101))
     assert np.all(r.x == 0.0)
 
 
@@ -188,7 +188,7 @@ def test_exact_response_refuses_an_overflowing_result():
 )
 def test_oscillator_refuses_unrepresentable_rates(m, c, k, name):
     with pytest.raises(ParameterError, match=rf"^{name} = .* with m = .* gives .*allowed"):
-        Oscillator(m, c, k)
+        Oscillator(m=m, c=c, k=k)
 
 
 # --- simulate: bounded work and output ---
@@ -201,12 +201,12 @@ def test_simulate_refuses_huge_windows_at_once():
 
 def test_simulate_refuses_stiff_windows_for_explicit_methods():
     with pytest.raises(ParameterError, match=r"t_end = 50.0 s is out of range for the explicit RK45.*allowed"):
-        simulate(Oscillator(1.0, 1e5, 20.0), FORCE, 50.0)
+        simulate(Oscillator(m=1.0, c=1e5, k=20.0), FORCE, 50.0)
 
 
 def test_simulate_refuses_windows_that_overflow():
     with pytest.raises(ParameterError, match=r"t_end = 1.0 s is out of range: the unstable free mode grows"):
-        simulate(Oscillator(1.0, -1e4, 1.0), SineForce(1.0, 1.0), 1.0, 11, x0=1.0)
+        simulate(Oscillator(m=1.0, c=-1e4, k=1.0), SineForce(F0=1.0, omega=1.0), 1.0, 11, x0=1.0)
 
 
 def test_simulate_work_budget(monkeypatch):
@@ -249,17 +249,19 @@ junk = st.one_of(junk_scalar, junk_array)
 def oscillators(draw):
     m, c, k = draw(junk_scalar), draw(junk_scalar), draw(junk_scalar)
     try:
-        return Oscillator(m, c, k)
+        return Oscillator(m=m, c=c, k=k)
     except ParameterError:
-        return draw(st.sampled_from([OSC, Oscillator(1.0, -15.0, 20.0), Oscillator(1.0, 0.0, 20.0), m]))
+        return draw(st.sampled_from([OSC, Oscillator(m=1.0, c=-15.0, k=20.0), Oscillator(m=1.0, c=0.0, k=20.0), m]))
 
 
 @st.composite
 def forces(draw):
     try:
-        return SineForce(draw(junk_scalar), draw(junk_scalar))
+        return SineForce(F0=draw(junk_scalar), omega=draw(junk_scalar))
     except ParameterError:
-        return draw(st.sampled_from([FORCE, SineForce(0.0, 0.0), SineForce(1.0, math.sqrt(20.0)), None]))
+        return draw(
+            st.sampled_from([FORCE, SineForce(F0=0.0, omega=0.0), SineForce(F0=1.0, omega=math.sqrt(20.0)), None])
+        )
 
 
 def _finite(value) -> bool:
@@ -305,8 +307,8 @@ CALLS = {
     "peak_displacement_map": lambda d: peak_displacement_map(
         d(junk_scalar), d(junk_scalar), d(junk_scalar), d(junk_array), d(junk_array), d(junk_scalar), d(junk_scalar)
     ),
-    "Oscillator": lambda d: Oscillator(d(junk_scalar), d(junk_scalar), d(junk_scalar)),
-    "SineForce": lambda d: SineForce(d(junk_scalar), d(junk_scalar)),
+    "Oscillator": lambda d: Oscillator(m=d(junk_scalar), c=d(junk_scalar), k=d(junk_scalar)),
+    "SineForce": lambda d: SineForce(F0=d(junk_scalar), omega=d(junk_scalar)),
 }
 
 

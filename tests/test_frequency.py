@@ -39,13 +39,13 @@ def _textbook_steady(m, c, k, F0, w):
 
 @pytest.mark.parametrize("c", [0.1, 0.5, C_CRIT, 15.0, 0.0, -0.2])
 def test_magnification_and_phase_lag_match_steady_state(c):
-    osc = Oscillator(1.0, c, 20.0)
+    osc = Oscillator(m=1.0, c=c, k=20.0)
     omegas = np.linspace(0.0, 3.0 * SQRT20, 301)
     omegas = omegas[np.abs(omegas - SQRT20) > 1e-3] if c == 0.0 else omegas
     mag, lag = magnification(osc, omegas), phase_lag(osc, omegas)
     assert mag.shape == lag.shape == omegas.shape
     for w, g, p in zip(omegas, mag, lag, strict=True):
-        ss = steady_state(osc, SineForce(5.0, float(w)))
+        ss = steady_state(osc, SineForce(F0=5.0, omega=float(w)))
         amp, phase = _textbook_steady(1.0, c, 20.0, 5.0, float(w))
         assert g == pytest.approx(ss.magnification, rel=1e-13)
         assert g == pytest.approx(amp / (5.0 / 20.0), rel=1e-12)
@@ -56,7 +56,7 @@ def test_magnification_and_phase_lag_match_steady_state(c):
 
 
 def test_magnification_doc_values():
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     mag = magnification(osc, [0.0, SQRT20])
     assert mag[0] == 1.0
     assert mag[1] == pytest.approx(1.0 / (2.0 * osc.damping_ratio), rel=1e-14)  # Q at resonance
@@ -65,7 +65,7 @@ def test_magnification_doc_values():
 
 
 def test_undamped_resonance_magnification_is_infinite_without_warning():
-    osc = Oscillator(1.0, 0.0, 20.0)
+    osc = Oscillator(m=1.0, c=0.0, k=20.0)
     wn = osc.natural_frequency
     mag = magnification(osc, [0.5 * wn, wn, 2.0 * wn])
     assert mag[1] == math.inf
@@ -76,17 +76,17 @@ def test_undamped_resonance_magnification_is_infinite_without_warning():
 def test_undamped_resonance_phase_lag_matches_steady_state():
     """At undamped resonance the response is -(F0 t / 2 m wn) cos(wn t): a lag of pi/2,
     which is what steady_state reports. phase_lag must agree."""
-    osc = Oscillator(1.0, 0.0, 20.0)
+    osc = Oscillator(m=1.0, c=0.0, k=20.0)
     wn = osc.natural_frequency
     omegas = np.array([0.5 * wn, wn, 2.0 * wn])
-    expected = [steady_state(osc, SineForce(1.0, float(w))).phase for w in omegas]
+    expected = [steady_state(osc, SineForce(F0=1.0, omega=float(w))).phase for w in omegas]
     assert expected == pytest.approx([0.0, math.pi / 2, math.pi], abs=1e-15)
     np.testing.assert_allclose(phase_lag(osc, omegas), expected, rtol=0, atol=1e-15)
 
 
 @pytest.mark.parametrize("bad", [[-1.0], [math.nan], [0.0, math.inf]])
 def test_magnification_refuses_bad_omegas(raises_parameter_error, bad):
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     bad_value = next(v for v in bad if not (math.isfinite(v) and v >= 0))
     with raises_parameter_error("omegas", bad_value, ">= 0"):
         magnification(osc, bad)
@@ -99,7 +99,7 @@ def test_magnification_refuses_bad_omegas(raises_parameter_error, bad):
 
 @pytest.mark.parametrize("zeta", [0.01, 0.056, 0.2])
 def test_half_power_points_recover_damping_ratio(zeta):
-    osc = Oscillator(1.0, 2.0 * zeta * SQRT20, 20.0)
+    osc = Oscillator(m=1.0, c=2.0 * zeta * SQRT20, k=20.0)
     wn = osc.natural_frequency
     omegas = np.linspace(0.2 * wn, 1.8 * wn, 20001)  # measured: zeta within 6e-6 (zeta = 0.01)
     hp = half_power_points(omegas, magnification(osc, omegas))
@@ -117,14 +117,14 @@ def test_half_power_points_recover_damping_ratio(zeta):
 
 
 def test_half_power_light_damping_bandwidth_is_c_over_m():
-    osc = Oscillator(1.0, 0.05, 20.0)  # zeta = 0.0056
+    osc = Oscillator(m=1.0, c=0.05, k=20.0)  # zeta = 0.0056
     w = np.linspace(3.0, 6.0, 300001)
     hp = half_power_points(w, magnification(osc, w))
     assert hp.bandwidth == pytest.approx(osc.half_power_bandwidth, rel=1e-3)
 
 
 def test_half_power_points_need_both_sides():
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     w = np.linspace(4.4, 6.0, 1001)  # the lower half-power point (4.24 rad/s) is outside
     with pytest.raises(ParameterError, match="omegas") as info:
         half_power_points(w, magnification(osc, w))
@@ -136,9 +136,9 @@ def test_half_power_points_need_both_sides():
 
 @pytest.mark.parametrize("zeta", [0.01, 0.056, 0.2])
 def test_log_decrement_of_exact_free_decay(zeta):
-    osc = Oscillator(1.0, 2.0 * zeta * SQRT20, 20.0)
+    osc = Oscillator(m=1.0, c=2.0 * zeta * SQRT20, k=20.0)
     t = np.linspace(0.0, 20.0, 20001)
-    r = exact_response(osc, SineForce(0.0, 0.0), t, x0=1.0, v0=0.0)
+    r = exact_response(osc, SineForce(F0=0.0, omega=0.0), t, x0=1.0, v0=0.0)
     delta, z = log_decrement(r.t, r.x)
     assert z == pytest.approx(osc.damping_ratio, rel=1e-4)  # measured <= 2e-10
     assert delta == pytest.approx(2 * math.pi * zeta / math.sqrt(1 - zeta**2), rel=1e-4)
@@ -146,15 +146,15 @@ def test_log_decrement_of_exact_free_decay(zeta):
 
 @pytest.mark.parametrize("zeta", [0.01, 0.056, 0.2])
 def test_log_decrement_of_simulated_free_decay(zeta):
-    osc = Oscillator(1.0, 2.0 * zeta * SQRT20, 20.0)
-    r = simulate(osc, SineForce(0.0, 0.0), 20.0, 20001, 0.0, 1.0, method="DOP853", rtol=1e-10, atol=1e-12)
+    osc = Oscillator(m=1.0, c=2.0 * zeta * SQRT20, k=20.0)
+    r = simulate(osc, SineForce(F0=0.0, omega=0.0), 20.0, 20001, 0.0, 1.0, method="DOP853", rtol=1e-10, atol=1e-12)
     _, z = log_decrement(r.t, r.x)
     assert z == pytest.approx(osc.damping_ratio, rel=1e-4)  # measured <= 4e-8
 
 
 def test_log_decrement_needs_two_peaks():
     t = np.linspace(0.0, 10.0, 1001)
-    x = exact_response(Oscillator(1.0, 15.0, 20.0), SineForce(0.0, 0.0), t, x0=1.0).x  # overdamped
+    x = exact_response(Oscillator(m=1.0, c=15.0, k=20.0), SineForce(F0=0.0, omega=0.0), t, x0=1.0).x  # overdamped
     with pytest.raises(ParameterError, match=r"\bx\b.*allowed") as info:
         log_decrement(t, x)
     assert isinstance(info.value, ValueError)
@@ -180,7 +180,7 @@ def _transient(osc, force, t):
     ],
 )
 def test_settling_time_underdamped_is_the_envelope_crossing(m, c, k, F0, w, tol):
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     amp, phase = _textbook_steady(m, c, k, F0, w)
     sigma = c / (2 * m)
     wd = math.sqrt(k / m - sigma**2)
@@ -214,7 +214,7 @@ def test_settling_time_underdamped_is_the_envelope_crossing(m, c, k, F0, w, tol)
     ],
 )
 def test_settling_time_overdamped_and_critical_by_brute_force(m, c, k, F0, w, tol):
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     ts = settling_time(osc, force, tol)
     t = np.linspace(0.0, max(4 * ts, 1.0), 1_000_001)
     tr, amp = _transient(osc, force, t)
@@ -229,19 +229,19 @@ def test_settling_time_overdamped_and_critical_by_brute_force(m, c, k, F0, w, to
 
 
 def test_settling_time_special_cases(raises_parameter_error):
-    f = SineForce(5.0, 3.0)
-    assert settling_time(Oscillator(1.0, 0.0, 20.0), f) == math.inf
-    assert settling_time(Oscillator(1.0, -0.2, 20.0), f) == math.inf
-    assert settling_time(Oscillator(1.0, 0.5, 20.0), SineForce(0.0, 3.0)) == 0.0
+    f = SineForce(F0=5.0, omega=3.0)
+    assert settling_time(Oscillator(m=1.0, c=0.0, k=20.0), f) == math.inf
+    assert settling_time(Oscillator(m=1.0, c=-0.2, k=20.0), f) == math.inf
+    assert settling_time(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=0.0, omega=3.0)) == 0.0
     for bad in [0.0, -0.02, math.nan]:
         with raises_parameter_error("tol", bad, "tol >= 1e-12"):
-            settling_time(Oscillator(1.0, 0.5, 20.0), f, bad)
+            settling_time(Oscillator(m=1.0, c=0.5, k=20.0), f, bad)
 
 
 @pytest.mark.parametrize("c", [0.5, 15.0, C_CRIT])
 def test_settling_time_without_forcing_frequency_is_zero(c):
     """omega = 0: F0 sin(0) = 0, the response from rest is x = 0, there is no transient."""
-    osc, force = Oscillator(1.0, c, 20.0), SineForce(5.0, 0.0)
+    osc, force = Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=0.0)
     assert np.all(exact_response(osc, force, np.linspace(0.0, 10.0, 11)).x == 0.0)
     assert settling_time(osc, force) == 0.0
 
@@ -261,7 +261,7 @@ def test_settling_time_without_forcing_frequency_is_zero(c):
     ],
 )
 def test_energy_balance(m, c, k, F0, w, x0, v0):
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     t = np.linspace(0.0, 20.0, 40001)
     r = exact_response(osc, force, t, x0, v0)
     eb = energy_balance(osc, force, r)
@@ -279,7 +279,7 @@ def test_energy_balance(m, c, k, F0, w, x0, v0):
 
 def test_energy_balance_detects_a_wrong_response():
     """The check has teeth: a response 1e-6 off in x breaks the balance by far more than 1e-9."""
-    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+    osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
     t = np.linspace(0.0, 20.0, 40001)
     r = exact_response(osc, force, t)
     bad = type(r)(t=r.t, x=r.x * (1 + 1e-6), v=r.v, method="perturbed")
@@ -301,7 +301,7 @@ def _brute_force_map(m, k, F0, omegas, dampings, t_end, n_points):
     out = np.empty((len(dampings), len(omegas)))
     for i, c in enumerate(dampings):
         for j, w in enumerate(omegas):
-            out[i, j] = np.max(np.abs(exact_response(Oscillator(m, c, k), SineForce(F0, w), t).x))
+            out[i, j] = np.max(np.abs(exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t).x))
     return out
 
 
@@ -325,7 +325,7 @@ def test_peak_map_shape_is_dampings_by_omegas():
 def test_peak_map_doc_example_against_steady_amplitude():
     """Paper's map corners: at 50 s the lightly damped resonance has reached its steady amplitude."""
     pk = peak_displacement_map(1.0, 20.0, 5.0, [3.0, 4.47], [0.5, 15.0])
-    amp = steady_state(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)).amplitude
+    amp = steady_state(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)).amplitude
     assert pk[0, 1] == pytest.approx(amp, rel=1e-3)
 
 

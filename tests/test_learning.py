@@ -108,7 +108,7 @@ def test_compiled_rollout_matches_environment(task):
     """The learner's compiled loop (closed-form 2x2 exponential) against the env (scipy's expm), 300 steps."""
     task = replace(task, n_steps=300)
     gains = np.array([6.0, 4.0])
-    policy = L.LinearPolicy(gains, task)
+    policy = L.LinearPolicy(gains=gains, task=task)
     env = learn.OscillatorEnv(task)
     obs, _ = env.reset(options={"state": [0.7, -0.4]})
     xs, us, total = [], [], 0.0
@@ -310,8 +310,8 @@ def test_environment_episode_reward_and_seeding():
 
 def test_policy_sign_convention_and_clipped_damping():
     task = L.semi_active_task()
-    assert L.LinearPolicy([2.0, 3.0], L.OscillatorTask())(np.array([1.0, 1.0]))[0] == -5.0
-    pol = L.LinearPolicy([2.0, 3.0], task)
+    assert L.LinearPolicy(gains=[2.0, 3.0], task=L.OscillatorTask())(np.array([1.0, 1.0]))[0] == -5.0
+    pol = L.LinearPolicy(gains=[2.0, 3.0], task=task)
     assert pol(np.array([1.0, 0.5]))[0] == pytest.approx(7.0)  # 3 + 2 * 1 / 0.5
     assert pol(np.array([-1.0, 0.01]))[0] == task.c_min  # wants to push along v: damper cannot
     assert pol(np.array([1.0, 0.001]))[0] == task.c_max

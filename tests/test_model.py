@@ -35,7 +35,7 @@ def test_textbook_values_of_the_nominal_oscillator():
 
 def test_textbook_values_with_non_unit_mass():
     m, c, k = 3.0, 0.4, 7.0
-    osc = Oscillator(m, c, k)
+    osc = Oscillator(m=m, c=c, k=k)
     wn = math.sqrt(k / m)
     zeta = c / (2.0 * math.sqrt(k * m))
     assert osc.natural_frequency == pytest.approx(wn, rel=1e-15)
@@ -50,7 +50,7 @@ def test_textbook_values_with_non_unit_mass():
 
 def test_time_constant_critically_damped_is_one_over_natural_frequency():
     for m, k in [(1.0, 20.0), (3.0, 7.0)]:
-        osc = Oscillator(m, 2.0 * math.sqrt(k * m), k)
+        osc = Oscillator(m=m, c=2.0 * math.sqrt(k * m), k=k)
         assert osc.regime == "critically damped"
         assert osc.time_constant == pytest.approx(1.0 / math.sqrt(k / m), rel=1e-12)
         # |zeta - 1| <= 1e-12 counts as critical; c = 2 sqrt(k m) rounded leaves
@@ -60,7 +60,7 @@ def test_time_constant_critically_damped_is_one_over_natural_frequency():
 
 @pytest.mark.parametrize(("m", "c", "k"), [(1.0, 15.0, 20.0), (1.0, 200.0, 20.0), (3.0, 40.0, 7.0)])
 def test_time_constant_overdamped(m, c, k):
-    osc = Oscillator(m, c, k)
+    osc = Oscillator(m=m, c=c, k=k)
     assert osc.regime == "overdamped"
     sigma, wn2 = c / (2.0 * m), k / m
     assert osc.time_constant == pytest.approx(1.0 / (sigma - math.sqrt(sigma**2 - wn2)), rel=1e-9)
@@ -70,10 +70,10 @@ def test_time_constant_overdamped(m, c, k):
 @pytest.mark.parametrize(("m", "c", "k"), [(1.0, 15.0, 20.0), (3.0, 40.0, 7.0)])
 def test_time_constant_overdamped_is_the_decay_of_the_free_response(m, c, k):
     """Second formulation: late in a free decay, x(t + 1) / x(t) = exp(-1 / tau)."""
-    osc = Oscillator(m, c, k)
+    osc = Oscillator(m=m, c=c, k=k)
     tau = osc.time_constant
     t = np.array([8.0 * tau, 8.0 * tau + 1.0])
-    x = exact_response(osc, SineForce(0.0, 0.0), t, x0=1.0, v0=0.0).x
+    x = exact_response(osc, SineForce(F0=0.0, omega=0.0), t, x0=1.0, v0=0.0).x
     assert math.log(x[1] / x[0]) == pytest.approx(-1.0 / tau, rel=1e-9)
 
 
@@ -94,7 +94,7 @@ def test_time_constant_overdamped_is_the_decay_of_the_free_response(m, c, k):
     ],
 )
 def test_regime(c, regime):
-    osc = Oscillator(1.0, c, 20.0)
+    osc = Oscillator(m=1.0, c=c, k=20.0)
     assert osc.regime == regime
     assert osc.regime in REGIMES
 
@@ -105,11 +105,11 @@ def test_regimes_are_the_five_documented_ones():
 
 def test_critically_damped_with_non_unit_mass():
     m, k = 3.0, 7.0
-    assert Oscillator(m, 2.0 * math.sqrt(k * m), k).regime == "critically damped"
+    assert Oscillator(m=m, c=2.0 * math.sqrt(k * m), k=k).regime == "critically damped"
 
 
 def test_derived_values_undamped():
-    osc = Oscillator(1.0, 0.0, 20.0)
+    osc = Oscillator(m=1.0, c=0.0, k=20.0)
     assert osc.damping_ratio == 0.0
     assert osc.quality_factor == math.inf
     assert osc.time_constant == math.inf
@@ -119,7 +119,7 @@ def test_derived_values_undamped():
 
 @pytest.mark.parametrize("c", [-0.2, -1.0, -15.0])
 def test_derived_values_negative_damping_are_undefined(c):
-    osc = Oscillator(1.0, c, 20.0)
+    osc = Oscillator(m=1.0, c=c, k=20.0)
     assert osc.regime == "unstable"
     assert osc.damping_ratio == pytest.approx(c / (2.0 * SQRT20), rel=1e-15)
     assert osc.decay_rate == pytest.approx(c / 2.0, rel=1e-15)
@@ -137,15 +137,15 @@ def test_sine_force():
 
 
 def test_numpy_and_integer_inputs_become_floats():
-    osc = Oscillator(np.float32(2.0), np.int64(0), 20)
-    f = SineForce(np.int32(5), np.float64(3.0))
+    osc = Oscillator(m=np.float32(2.0), c=np.int64(0), k=20)
+    f = SineForce(F0=np.int32(5), omega=np.float64(3.0))
     for value in (osc.m, osc.c, osc.k, f.F0, f.omega):
         assert type(value) is float
     assert (osc.m, osc.c, osc.k, f.F0, f.omega) == (2.0, 0.0, 20.0, 5.0, 3.0)
 
 
 def test_zero_force_and_zero_frequency_are_allowed():
-    f = SineForce(0.0, 0.0)
+    f = SineForce(F0=0.0, omega=0.0)
     assert (f.F0, f.omega) == (0.0, 0.0)
 
 
@@ -153,8 +153,8 @@ def test_zero_force_and_zero_frequency_are_allowed():
 
 
 def test_records_are_frozen():
-    osc = Oscillator(1.0, 0.5, 20.0)
-    force = SineForce(5.0, 3.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
+    force = SineForce(F0=5.0, omega=3.0)
     with pytest.raises(dataclasses.FrozenInstanceError):
         osc.m = 2.0
     with pytest.raises(dataclasses.FrozenInstanceError):
@@ -207,15 +207,15 @@ def test_sine_force_refuses_bad_values(raises_parameter_error, name, bad, allowe
 
 def test_message_gives_the_unit():
     with pytest.raises(ParameterError, match=r"m = 0\.0 kg .*allowed m > 0 kg"):
-        Oscillator(0.0, 0.5, 20.0)
+        Oscillator(m=0.0, c=0.5, k=20.0)
     with pytest.raises(ParameterError, match=r"omega = -3\.0 rad/s .*allowed omega >= 0 rad/s"):
-        SineForce(5.0, -3.0)
+        SineForce(F0=5.0, omega=-3.0)
 
 
 def test_wrong_record_types_are_named():
     from vibration import exact_response, simulate, steady_state
 
-    osc, force = vibration.Oscillator(1.0, 0.5, 20.0), vibration.SineForce(5.0, 3.0)
+    osc, force = vibration.Oscillator(m=1.0, c=0.5, k=20.0), vibration.SineForce(F0=5.0, omega=3.0)
     with pytest.raises(vibration.ParameterError, match="osc = .* is not an Oscillator"):
         exact_response((1, 2, 3), force, [0.0, 1.0])
     with pytest.raises(vibration.ParameterError, match="force = .* is not a SineForce"):
@@ -228,6 +228,6 @@ def test_wrong_record_types_are_named():
 
 @pytest.mark.parametrize("scale", [1e-200, 1e200])
 def test_derived_quantities_survive_extreme_scales(scale):
-    osc = vibration.Oscillator(scale, 3.0 * scale, scale)
+    osc = vibration.Oscillator(m=scale, c=3.0 * scale, k=scale)
     assert osc.damping_ratio == pytest.approx(1.5, rel=1e-14)
     assert osc.regime == "overdamped"

@@ -72,11 +72,11 @@ CASES = {
 @pytest.mark.parametrize(("x0", "v0"), [(0.0, 0.0), (0.3, -1.2)], ids=["from rest", "from x0 v0"])
 def test_each_printed_equation_matches_exact_response(case, x0, v0):
     m, c, k, F0, w = CASES[case]
-    osc = Oscillator(m, c, k)
+    osc = Oscillator(m=m, c=c, k=k)
     if case == "critically damped":
         assert osc.regime == "critically damped"
     x, v = _as_printed(m, c, k, F0, w, x0, v0, T)
-    ref = exact_response(osc, SineForce(F0, w), T, x0, v0)
+    ref = exact_response(osc, SineForce(F0=F0, omega=w), T, x0, v0)
     scale_x, scale_v = np.max(np.abs(ref.x)), np.max(np.abs(ref.v))
     assert np.max(np.abs(x - ref.x)) <= RTOL * scale_x, case
     assert np.max(np.abs(v - ref.v)) <= RTOL * scale_v, case
@@ -84,7 +84,7 @@ def test_each_printed_equation_matches_exact_response(case, x0, v0):
 
 def test_steady_amplitude_and_phase_as_printed():
     for m, c, k, F0, w in [(1.0, 0.5, 20.0, 5.0, 4.47), (1.0, 15.0, 20.0, 5.0, 3.0), (2.0, 0.3, 7.0, 3.0, 9.0)]:
-        ss = steady_state(Oscillator(m, c, k), SineForce(F0, w))
+        ss = steady_state(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w))
         assert ss.amplitude == pytest.approx(F0 / math.sqrt((k - m * w * w) ** 2 + (c * w) ** 2), rel=1e-14)
         assert ss.phase == pytest.approx(math.atan2(c * w, k - m * w * w), rel=1e-14)
         assert 0.0 <= ss.phase <= math.pi

@@ -49,7 +49,7 @@ def test_readout_against_independent_formulas(study):
     X = p.F0 / abs(complex(p.k - p.m * p.omega_res**2, study.c_start * p.omega_res))
     assert r.amplitude == pytest.approx(X, rel=1e-12)
     assert r.magnification == pytest.approx(X / (p.F0 / p.k), rel=1e-12)
-    osc, force = Oscillator(p.m, study.c_start, p.k), SineForce(p.F0, p.omega_res)
+    osc, force = Oscillator(m=p.m, c=study.c_start, k=p.k), SineForce(F0=p.F0, omega=p.omega_res)
     x = exact_response(osc, force, np.linspace(0.0, p.t_end, 5001)).x
     assert r.peak == pytest.approx(float(np.max(np.abs(x))), rel=1e-12)
     assert r.settling == settling_time(osc, force)
@@ -59,10 +59,13 @@ def test_readout_against_independent_formulas(study):
 
 def test_peak_and_oscillation_thresholds(study):
     p = study.params
-    below, above = Oscillator(p.m, 0.999 * study.c_no_peak, p.k), Oscillator(p.m, 1.001 * study.c_no_peak, p.k)
+    below, above = (
+        Oscillator(m=p.m, c=0.999 * study.c_no_peak, k=p.k),
+        Oscillator(m=p.m, c=1.001 * study.c_no_peak, k=p.k),
+    )
     assert resonant_peak(below)[0] is not None and resonant_peak(above) == (None, None)
-    assert Oscillator(p.m, 0.999 * study.c_critical, p.k).regime == "underdamped"
-    assert Oscillator(p.m, 1.001 * study.c_critical, p.k).regime == "overdamped"
+    assert Oscillator(m=p.m, c=0.999 * study.c_critical, k=p.k).regime == "underdamped"
+    assert Oscillator(m=p.m, c=1.001 * study.c_critical, k=p.k).regime == "overdamped"
 
 
 def test_halving_the_damping_near_resonance_doubles_the_amplitude():
@@ -150,7 +153,7 @@ def test_readout_function_refuses_an_overflow():
     from vibration.physics.model import ParameterError
 
     with pytest.raises(ParameterError, match="beyond the float range"):
-        readout(Oscillator(1.0, -50.0, 20.0), SineForce(5.0, 4.47), 50.0)
+        readout(Oscillator(m=1.0, c=-50.0, k=20.0), SineForce(F0=5.0, omega=4.47), 50.0)
 
 
 def test_usage_example_runs_on_its_own():

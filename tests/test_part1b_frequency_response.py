@@ -117,7 +117,7 @@ def test_design_map_against_direct_evaluation(study):
     """A grid cell's peak equals the exact response's peak computed directly (independent of the map's kernel)."""
     dm, p = study.design, study.params
     for i, j in ((0, 0), (len(dm.dampings) // 2, len(dm.omegas) // 2), (-1, -1)):
-        r = exact_response(Oscillator(p.m, dm.dampings[i], p.k), SineForce(p.F0, dm.omegas[j]), study.t)
+        r = exact_response(Oscillator(m=p.m, c=dm.dampings[i], k=p.k), SineForce(F0=p.F0, omega=dm.omegas[j]), study.t)
         assert dm.peaks[i, j] == pytest.approx(np.max(np.abs(r.x)), rel=1e-9)
     lo, hi = dm.danger_band
     assert lo <= dm.largest[0] <= hi and dm.flatness >= 1.0

@@ -143,9 +143,11 @@ def test_prose_checks_can_fail():
 def test_table_checks_allow_rendered_subscripts_only():
     from vibration.presentation.tables import Column
 
-    ok = Table([{"a": 1.0}], [Column("a", "x_ss (m)")], caption="At t_end = 5 s and ω_res.", name="tab-x")
+    ok = Table([{"a": 1.0}], [Column(key="a", header="x_ss (m)")], caption="At t_end = 5 s and ω_res.", name="tab-x")
     assert header_problems(ok) == []
-    bad = Table([{"a": float("nan")}], [Column("a", "omega_res (rad/s)")], caption="F0 = 1e-5 N", name="tab-y")
+    bad = Table(
+        [{"a": float("nan")}], [Column(key="a", header="omega_res (rad/s)")], caption="F0 = 1e-5 N", name="tab-y"
+    )
     assert len(header_problems(bad)) == 4
 
 

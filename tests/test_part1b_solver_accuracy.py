@@ -67,7 +67,7 @@ def test_the_common_error_is_reached_by_every_machine_independent_method(study):
 def test_late_exact_peak_is_the_steady_amplitude_when_the_transient_has_died():
     """Independent route: the closed-form steady amplitude X = F0/|k - m ω² + i c ω|."""
     st = solver_accuracy_study()
-    X = steady_state(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)).amplitude
+    X = steady_state(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)).amplitude
     assert st.steps[0].late_exact_peak == pytest.approx(X, rel=1e-3)
     # the tight own-steps run misses the peak by less than the loose one
     assert st.steps[1].shortfall < st.steps[0].shortfall

@@ -204,7 +204,7 @@ def _fragments() -> dict:
     from vibration.chapters.tmd.panel import tmd_panel_html
     from vibration.physics import twin
 
-    grid = twin.estimate_grid(Oscillator(1.0, 0.5, 20.0), noises=(0.005, 0.1, 0.4), durations=(10.0, 40.0))
+    grid = twin.estimate_grid(Oscillator(m=1.0, c=0.5, k=20.0), noises=(0.005, 0.1, 0.4), durations=(10.0, 40.0))
     return {
         "control": ("div.vc-panel", control_panel_html()),
         "stability": ("div.vst-panel", stability_panel_html()),

@@ -56,8 +56,8 @@ def test_sanitizer_masks_the_value_and_keeps_the_tolerance():
 
 def test_reader_sees_clean_numbers_and_nbval_sees_the_tolerance():
     t = Table(
-        [{"n": Approx(2926.0, rtol=0.25), "e": Approx(0.03231, factor=5.0)}],
-        [Column("n", "evaluations"), Column("e", "error (m)", 3)],
+        [{"n": Approx(value=2926.0, rtol=0.25), "e": Approx(value=0.03231, factor=5.0)}],
+        [Column(key="n", header="evaluations"), Column(key="e", header="error (m)", digits=3)],
         caption="c",
         name="tab-t",
     )
@@ -110,8 +110,8 @@ def test_committed_ladder_matches_this_machine_within_its_tolerances():
 
 _CELL = "from vibration.presentation.tables import Approx, Column, Table\n" + textwrap.dedent(
     """
-    Table([{"n": Approx(VALUE, rtol=0.25), "k": 7}], [Column("n", "evaluations"), Column("k", "count")],
-          caption="c", name="tab-t")
+    Table([{"n": Approx(value=VALUE, rtol=0.25), "k": 7}],
+          [Column(key="n", header="evaluations"), Column(key="k", header="count")], caption="c", name="tab-t")
     """
 )
 
@@ -120,8 +120,12 @@ def _notebook(path: Path, reference: float, value: float) -> None:
     """A one-cell notebook whose stored output shows ``reference`` and whose code now yields ``value``."""
     from vibration.presentation.tables import Table as T
 
-    table = T([{"n": Approx(reference, rtol=0.25), "k": 7}], [Column("n", "evaluations"), Column("k", "count")],
-              caption="c", name="tab-t")  # fmt: skip
+    table = T(
+        [{"n": Approx(value=reference, rtol=0.25), "k": 7}],
+        [Column(key="n", header="evaluations"), Column(key="k", header="count")],
+        caption="c",
+        name="tab-t",
+    )
     cell = nbformat.v4.new_code_cell(_CELL.replace("VALUE", repr(value)), execution_count=1)
     data = table._repr_mimebundle_()
     cell.outputs = [nbformat.v4.new_output("execute_result", data=data, execution_count=1)]

@@ -77,7 +77,7 @@ def _fastest_rate(m, c, k, w, T):
 @given(systems())
 def test_initial_conditions(params):
     m, c, k, F0, w, x0, v0 = params
-    r = exact_response(Oscillator(m, c, k), SineForce(F0, w), [0.0], x0, v0)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), [0.0], x0, v0)
     assert abs(r.x[0] - x0) <= 1e-12
     assert abs(r.v[0] - v0) <= 1e-12
 
@@ -90,7 +90,7 @@ def test_velocity_is_dx_dt_and_ode_residual_vanishes(params):
     1e-3 of the fastest time scale (truncation ~1e-13, rounding ~1e-13 relative).
     """
     m, c, k, F0, w, x0, v0 = params
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     T = _window(m, c, k)
     lam = _fastest_rate(m, c, k, w, T)
     h = 1e-3 / lam
@@ -118,7 +118,7 @@ def test_velocity_is_dx_dt_and_ode_residual_vanishes(params):
 def test_energy_balance(params):
     """Work of the force = energy dissipated by the damper + change of stored energy."""
     m, c, k, F0, w, x0, v0 = params
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     T = _window(m, c, k)
     lam = _fastest_rate(m, c, k, w, T)
     n = min(200_001, max(2001, 2 * math.ceil(30.0 * T * lam) + 1))  # >= 30 samples per 1/lam
@@ -135,7 +135,7 @@ def test_energy_balance(params):
 def test_steady_state_solves_the_ode(params):
     """x_p = A sin(w t - phi) satisfies the ODE exactly (c > 0 or off undamped resonance)."""
     m, c, k, F0, w, _, _ = params
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     ss = steady_state(osc, force)
     if not ss.amplitude < 1e200:  # only at undamped resonance (up to rounding of w)
         assert abs(c) * w <= 1e-100 * k and abs(k - m * w * w) <= 1e-12 * k
@@ -158,8 +158,8 @@ def test_steady_state_solves_the_ode(params):
 @given(systems())
 def test_magnification_and_phase_lag_agree_with_steady_state(params):
     m, c, k, F0, w, _, _ = params
-    osc = Oscillator(m, c, k)
-    ss = steady_state(osc, SineForce(1.0, w))
+    osc = Oscillator(m=m, c=c, k=k)
+    ss = steady_state(osc, SineForce(F0=1.0, omega=w))
     g, p = magnification(osc, [w])[0], phase_lag(osc, [w])[0]
     if math.isinf(ss.magnification):
         assert math.isinf(g)

@@ -138,7 +138,7 @@ def test_rerun_with_another_force_matches_exact_values_and_is_byte_identical(tmp
     rows = {r["claim_id"]: r for r in _read_csv(out / "tables" / "claims.csv")}
     sc = vibration.load_scenarios()
     ref = sc["reference"]
-    doubled = vibration.steady_state(ref.oscillator, vibration.SineForce(10.0, ref.force.omega)).amplitude
+    doubled = vibration.steady_state(ref.oscillator, vibration.SineForce(F0=10.0, omega=ref.force.omega)).amplitude
     assert float(rows["C07"]["exact_value"]) == pytest.approx(doubled, rel=1e-9)
     assert float(rows["C07"]["exact_value"]) == pytest.approx(
         2 * vibration.steady_state(ref.oscillator, ref.force).amplitude, rel=1e-9

@@ -62,7 +62,7 @@ def _errors(osc, force, r, x0, v0):
 
 @pytest.mark.parametrize(("method", "rtol", "atol", "m", "c", "k", "F0", "w"), list(_tight_cases()))
 def test_tight_tolerance_meets_proportional_bound(method, rtol, atol, m, c, k, F0, w):
-    osc, force = Oscillator(m, c, k), SineForce(F0, w)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     x0, v0 = 0.3, -0.2
     r = simulate(osc, force, 20.0, 2001, x0, v0, method=method, rtol=rtol, atol=atol)
     assert r.method == method and r.status == 0 and r.success and r.nfev > 0
@@ -74,7 +74,7 @@ def test_tight_tolerance_meets_proportional_bound(method, rtol, atol, m, c, k, F
 
 def test_error_scales_with_the_tolerance_asked():
     """RK45 over six decades of rtol: the bound holds at each, and the error falls with rtol."""
-    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)
+    osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)
     errors = []
     for rtol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10]:
         atol = rtol * 1e-2
@@ -87,7 +87,7 @@ def test_error_scales_with_the_tolerance_asked():
 
 def test_paper_method_at_default_tolerances():
     """The paper's run (RK45, SciPy defaults, 50 s): error within the same bound."""
-    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)
+    osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)
     r = simulate(osc, force, 50.0)
     err_x, err_v, max_x, max_v = _errors(osc, force, r, 0.0, 0.0)
     assert err_x <= ERR_FACTOR * (1e-3 * max_x + 1e-6)
@@ -112,7 +112,7 @@ def test_defaults_reproduce_a_plain_solve_ivp_call():
 
     grid = np.linspace(0.0, 50.0, 5001)
     ref = solve_ivp(rhs, (0.0, 50.0), (0.0, 0.0), t_eval=grid)
-    r = simulate(Oscillator(m, c, k), SineForce(F0, w), 50.0)
+    r = simulate(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), 50.0)
     assert r.nfev == ref.nfev
     np.testing.assert_array_equal(r.t, grid)
     np.testing.assert_allclose(r.x, ref.y[0], rtol=0, atol=1e-12 * np.max(np.abs(ref.y[0])))
@@ -121,7 +121,7 @@ def test_defaults_reproduce_a_plain_solve_ivp_call():
 
 @pytest.mark.parametrize(("t_end", "n_points"), [(50.0, 5001), (1.0, 2), (7.3, 1234)])
 def test_output_grid_is_linspace(t_end, n_points):
-    r = simulate(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), t_end, n_points)
+    r = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), t_end, n_points)
     np.testing.assert_array_equal(r.t, np.linspace(0.0, t_end, n_points))
     assert r.x.shape == r.v.shape == (n_points,)
     assert r.nfev > 0 and r.status == 0 and r.method == "RK45"
@@ -129,22 +129,22 @@ def test_output_grid_is_linspace(t_end, n_points):
 
 
 def test_default_number_of_points_is_the_papers_sampling():
-    r = simulate(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), 50.0)
+    r = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), 50.0)
     np.testing.assert_array_equal(r.t, np.linspace(0.0, 50.0, 5001))  # every 0.01 s
 
 
 @pytest.mark.parametrize("method", ["RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA"])
 def test_every_method_runs_and_reports(method):
-    r = simulate(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), 5.0, 101, 0.1, 0.0, method=method)
+    r = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), 5.0, 101, 0.1, 0.0, method=method)
     assert r.method == method and r.status == 0 and r.nfev > 0
     if method in ("Radau", "BDF"):
         assert r.njev > 0 and r.nlu > 0
-    err_x, _, max_x, _ = _errors(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), r, 0.1, 0.0)
+    err_x, _, max_x, _ = _errors(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), r, 0.1, 0.0)
     assert err_x <= ERR_FACTOR * (1e-3 * max_x + 1e-6)
 
 
 def test_without_t_eval_returns_the_solver_steps():
-    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+    osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
     r = simulate(osc, force, 20.0, 2001, 0.3, -0.2, method="DOP853", rtol=1e-10, atol=1e-12, t_eval=False)
     assert r.t[0] == 0.0 and r.t[-1] == 20.0
     assert np.all(np.diff(r.t) > 0)
@@ -159,7 +159,7 @@ def test_without_t_eval_returns_the_solver_steps():
 def test_overflowing_window_is_refused_before_integrating():
     """c = -1e4 N s/m overflows within 0.1 s: refused up front (it used to fail inside RK45)."""
     with pytest.raises(ParameterError, match=r"t_end = 1.0 s is out of range: the unstable free mode grows"):
-        simulate(Oscillator(1.0, -1e4, 1.0), SineForce(1.0, 1.0), 1.0, 11, x0=1.0, method="RK45")
+        simulate(Oscillator(m=1.0, c=-1e4, k=1.0), SineForce(F0=1.0, omega=1.0), 1.0, 11, x0=1.0, method="RK45")
 
 
 def test_failed_solver_result_raises_runtime_error(monkeypatch):
@@ -174,12 +174,12 @@ def test_failed_solver_result_raises_runtime_error(monkeypatch):
 
     monkeypatch.setattr(vibration.physics.numerics, "solve_ivp", failing_solve_ivp)
     with pytest.raises(RuntimeError, match=r"LSODA.*Required step size"):
-        simulate(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), 1.0, 11, method="LSODA")
+        simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), 1.0, 11, method="LSODA")
 
 
 # --- validation ---
 
-OSC, FORCE = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+OSC, FORCE = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
 
 BAD_ARGS = (
     [("t_end", v, "t_end > 0") for v in [0.0, 0, -1.0, -1e-300]]

@@ -27,7 +27,7 @@ PAPER = {"low": 0.1, "nominal": 0.5, "high": 15.0}  # N s/m, m = 1 kg, k = 20 N/
 
 
 def osc_of(zeta: float, m: float = 1.0, k: float = 20.0) -> Oscillator:
-    return Oscillator(m, 2.0 * zeta * math.sqrt(k * m), k)
+    return Oscillator(m=m, c=2.0 * zeta * math.sqrt(k * m), k=k)
 
 
 masses = st.floats(1e-2, 1e2)
@@ -62,27 +62,27 @@ def test_poles_match_numpy_roots_and_vieta(m, k, zeta):
 
 def test_poles_match_python_control():
     for c in (0.1, 0.5, 15.0, 0.0, -0.3, 2.0 * math.sqrt(20.0)):
-        osc = Oscillator(1.0, c, 20.0)
+        osc = Oscillator(m=1.0, c=c, k=20.0)
         ref = control.poles(control.tf([1.0], [osc.m, osc.c, osc.k]))
         np.testing.assert_allclose(np.sort_complex(stab.poles(osc)), np.sort_complex(ref), rtol=0, atol=1e-7)
 
 
 def test_overdamped_small_pole_has_no_cancellation():
-    osc = Oscillator(1.0, 1e8, 1.0)  # slow pole -k/c = -1e-8 1/s, lost by the textbook formula
+    osc = Oscillator(m=1.0, c=1e8, k=1.0)  # slow pole -k/c = -1e-8 1/s, lost by the textbook formula
     assert stab.poles(osc)[0].real == pytest.approx(-1e-8, rel=1e-12)
 
 
 def test_stability_classes():
-    s = stab.stability_class(Oscillator(1.0, 0.1, 20.0))
+    s = stab.stability_class(Oscillator(m=1.0, c=0.1, k=20.0))
     assert (s.asymptotic, s.lyapunov, s.bibo, s.verdict) == (True, True, True, "asymptotically stable")
     assert s.spectral_abscissa == pytest.approx(-0.05, rel=1e-15)
-    s = stab.stability_class(Oscillator(1.0, 0.0, 20.0))
+    s = stab.stability_class(Oscillator(m=1.0, c=0.0, k=20.0))
     assert (s.asymptotic, s.lyapunov, s.bibo, s.verdict) == (False, True, False, "marginally stable")
     assert s.spectral_abscissa == 0.0 and math.copysign(1.0, s.spectral_abscissa) == 1.0
-    s = stab.stability_class(Oscillator(1.0, -0.2, 20.0))
+    s = stab.stability_class(Oscillator(m=1.0, c=-0.2, k=20.0))
     assert (s.asymptotic, s.lyapunov, s.bibo, s.verdict) == (False, False, False, "unstable")
     assert s.spectral_abscissa == pytest.approx(0.1, rel=1e-15)
-    s = stab.stability_class(Oscillator(1.0, -20.0, 20.0))  # real positive roots
+    s = stab.stability_class(Oscillator(m=1.0, c=-20.0, k=20.0))  # real positive roots
     assert s.spectral_abscissa == pytest.approx(10.0 + math.sqrt(80.0), rel=1e-14)
 
 
@@ -94,7 +94,7 @@ def test_stability_classes():
     [(0.1, 4.47), (0.5, 3.0), (0.0, math.sqrt(20.0)), (0.0, 3.0), (-0.1, 4.47), (-0.5, 3.0)],
 )
 def test_growth_envelope_bounds_and_touches_the_exact_response(c, omega):
-    osc, force = Oscillator(1.0, c, 20.0), SineForce(5.0, omega)
+    osc, force = Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=omega)
     t = np.linspace(0.0, 60.0, 120001)
     x = exact_response(osc, force, t).x
     env = stab.growth_envelope(osc, force, t)
@@ -105,8 +105,8 @@ def test_growth_envelope_bounds_and_touches_the_exact_response(c, omega):
 
 
 def test_linear_growth_rate_at_undamped_resonance():
-    osc = Oscillator(1.0, 0.0, 20.0)
-    force = SineForce(5.0, osc.natural_frequency)
+    osc = Oscillator(m=1.0, c=0.0, k=20.0)
+    force = SineForce(F0=5.0, omega=osc.natural_frequency)
     t = np.array([1e4, 2e4])
     env = stab.growth_envelope(osc, force, t)
     slope = (env[1] - env[0]) / 1e4
@@ -114,8 +114,8 @@ def test_linear_growth_rate_at_undamped_resonance():
 
 
 def test_exponential_growth_rate_with_negative_damping():
-    osc = Oscillator(1.0, -0.2, 20.0)
-    env = stab.growth_envelope(osc, SineForce(5.0, 3.0), np.array([400.0, 410.0]))
+    osc = Oscillator(m=1.0, c=-0.2, k=20.0)
+    env = stab.growth_envelope(osc, SineForce(F0=5.0, omega=3.0), np.array([400.0, 410.0]))
     rate = math.log(env[1] / env[0]) / 10.0  # the steady part is exp(-40) of the transient by then
     assert rate == pytest.approx(0.1, rel=1e-12)
 
@@ -123,7 +123,7 @@ def test_exponential_growth_rate_with_negative_damping():
 @pytest.mark.parametrize("c", [15.0, 2.0 * math.sqrt(20.0), -2.0 * math.sqrt(20.0), -12.0, -100.0])
 def test_growth_envelope_with_real_roots_bounds_the_exact_response(c):
     """|zeta| >= 1, either sign: |H| + |free part| bounds |x|, and grows like exp(s1 t) when c <= -c_crit."""
-    osc, force = Oscillator(1.0, c, 20.0), SineForce(5.0, 4.47)
+    osc, force = Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=4.47)
     s1 = float(stab.poles(osc)[0].real)
     t_end = 5.0 if s1 <= 0.0 else min(5.0, 30.0 / s1)
     t = np.linspace(0.0, t_end, 20001)
@@ -141,9 +141,9 @@ def test_growth_envelope_with_real_roots_bounds_the_exact_response(c):
 
 def test_growth_envelope_bad_input(raises_parameter_error):
     with raises_parameter_error("t", -1.0):
-        stab.growth_envelope(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), [0.0, -1.0])
+        stab.growth_envelope(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), [0.0, -1.0])
     with raises_parameter_error("force"):
-        stab.growth_envelope(Oscillator(1.0, 0.5, 20.0), 3.0, [0.0])
+        stab.growth_envelope(Oscillator(m=1.0, c=0.5, k=20.0), 3.0, [0.0])
 
 
 # ----------------------------------------------------------------------------- transmissibility
@@ -165,7 +165,7 @@ def test_transmissibility_matches_the_complex_ratio(m, k, zeta, r):
 def test_transmissibility_matches_python_control():
     w = np.geomspace(0.05, 200.0, 400)
     for c in (0.1, 0.5, 15.0, 3.0):
-        osc = Oscillator(1.0, c, 20.0)
+        osc = Oscillator(m=1.0, c=c, k=20.0)
         resp = control.frequency_response(control.tf([osc.c, osc.k], [osc.m, osc.c, osc.k]), w)
         np.testing.assert_allclose(stab.transmissibility(osc, w), np.abs(resp.complex), rtol=1e-11)
 
@@ -173,7 +173,7 @@ def test_transmissibility_matches_python_control():
 def test_transmissibility_in_the_time_domain():
     """Base motion y = sin(w t) through m x'' + c x' + k x = c y' + k y (scipy.signal.lsim): the steady amplitude."""
     for c, w in ((0.5, 3.0), (15.0, 13.4), (2.0, 4.47), (0.5, 9.0)):
-        osc = Oscillator(1.0, c, 20.0)
+        osc = Oscillator(m=1.0, c=c, k=20.0)
         t = np.linspace(0.0, 60.0, 12001)
         _, x, _ = signal.lsim(signal.lti([osc.c, osc.k], [osc.m, osc.c, osc.k]), np.sin(w * t), t)
         tail = t > 40.0  # transient below exp(-10) of its start
@@ -200,22 +200,22 @@ def test_damping_helps_below_and_hurts_above_the_crossing():
 
 
 def test_transmissibility_shapes_and_limits():
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     assert isinstance(stab.transmissibility(osc, 3.0), float)
     with pytest.raises(vibration.ParameterError, match="omegas has shape"):  # 1-D grids only (issue 32)
         stab.transmissibility(osc, np.ones((2, 3)))
     assert stab.transmissibility(osc, 0.0) == 1.0
     far = stab.transmissibility(osc, 1e200)  # no overflow: T -> 2 zeta omega_n / omega
     assert far == pytest.approx(2.0 * osc.damping_ratio * osc.natural_frequency / 1e200, rel=1e-12)
-    assert stab.transmissibility(Oscillator(1.0, 0.0, 4.0), 2.0) == math.inf
-    heavy = Oscillator(1.0, 1e150, 1.0)  # zeta = 5e149: T = 1 until r ~ 2 zeta, then 2 zeta / r
+    assert stab.transmissibility(Oscillator(m=1.0, c=0.0, k=4.0), 2.0) == math.inf
+    heavy = Oscillator(m=1.0, c=1e150, k=1.0)  # zeta = 5e149: T = 1 until r ~ 2 zeta, then 2 zeta / r
     assert stab.transmissibility(heavy, 1e10) == 1.0
     assert stab.transmissibility(heavy, 1e200) == pytest.approx(1e-50, rel=1e-12)
 
 
 def test_peak_transmissibility_and_magnification_against_a_fine_grid():
     for c in (0.1, 0.5, 3.0, 6.0, 15.0):
-        osc = Oscillator(1.0, c, 20.0)
+        osc = Oscillator(m=1.0, c=c, k=20.0)
         w = np.linspace(0.0, 3.0 * osc.natural_frequency, 600001)
         wp, tp = stab.peak_transmissibility(osc)
         t = stab.transmissibility(osc, w)
@@ -228,7 +228,7 @@ def test_peak_transmissibility_and_magnification_against_a_fine_grid():
 
 
 def test_transmissibility_bad_input(raises_parameter_error):
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     with raises_parameter_error("omegas", -1.0, ">= 0"):
         stab.transmissibility(osc, [1.0, -1.0])
     with raises_parameter_error("omegas", math.nan):
@@ -244,7 +244,7 @@ def test_transmissibility_bad_input(raises_parameter_error):
 
 def _exact_step(osc, t):
     """1 - free response from x0 = 1 (exact_response), the library's own closed form."""
-    return 1.0 - exact_response(osc, SineForce(0.0, 0.0), t, x0=1.0).x
+    return 1.0 - exact_response(osc, SineForce(F0=0.0, omega=0.0), t, x0=1.0).x
 
 
 @pytest.mark.parametrize("zeta", [0.0, 0.011, 0.0559, 0.5, 1.0 - 1e-9, 1.0, 1.0 + 1e-9, 1.677, 40.0])
@@ -303,7 +303,7 @@ def test_step_metrics_match_python_control_step_info(zeta):
 
 
 def test_true_settling_is_not_the_envelope():
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     s = stab.step_metrics(osc)
     zeta = osc.damping_ratio
     envelope = -math.log(0.02 * math.sqrt(1 - zeta * zeta)) / osc.decay_rate
@@ -355,12 +355,12 @@ def test_settling_optimal_zeta_minimises_settling_on_a_dense_sweep():
 
 def test_step_metrics_bad_input(raises_parameter_error):
     with raises_parameter_error("c", 0.0, "c > 0"):
-        stab.step_metrics(Oscillator(1.0, 0.0, 20.0))
+        stab.step_metrics(Oscillator(m=1.0, c=0.0, k=20.0))
     with raises_parameter_error("c", -0.5, "c > 0"):
-        stab.step_metrics(Oscillator(1.0, -0.5, 20.0))
+        stab.step_metrics(Oscillator(m=1.0, c=-0.5, k=20.0))
     for band in (0.0, 1.0, 1.5, math.nan):
         with raises_parameter_error("band"):
-            stab.step_metrics(Oscillator(1.0, 0.5, 20.0), band)
+            stab.step_metrics(Oscillator(m=1.0, c=0.5, k=20.0), band)
     with raises_parameter_error("osc"):
         stab.step_metrics("spring")
     with raises_parameter_error("band"):
@@ -372,7 +372,7 @@ def test_step_metrics_bad_input(raises_parameter_error):
 
 @pytest.mark.parametrize(("m", "c", "k"), [(1.0, 0.1, 20.0), (1.0, 0.5, 20.0), (1.0, 15.0, 20.0), (3.0, 2.0, 0.7)])
 def test_white_noise_variance_against_quadrature_and_lyapunov(m, c, k):
-    osc, S0 = Oscillator(m, c, k), 0.37
+    osc, S0 = Oscillator(m=m, c=c, k=k), 0.37
     var = stab.white_noise_variance(osc, S0)
     assert var == pytest.approx(math.pi * S0 / (k * c), rel=1e-15)
     wn = osc.natural_frequency
@@ -397,7 +397,7 @@ def test_white_noise_variance_against_quadrature_and_lyapunov(m, c, k):
 def test_exact_transition_reproduces_the_stationary_covariance():
     """Q(dt) = P - Phi P Phi^T: the simulation's one-step noise is exact, for any dt."""
     for c, dt in ((0.1, 0.05), (0.5, 0.7), (15.0, 0.01)):
-        osc = Oscillator(1.0, c, 20.0)
+        osc = Oscillator(m=1.0, c=c, k=20.0)
         phi, qd = stab._transition(osc, 1.0, dt)
         p = np.diag([stab.white_noise_variance(osc, 1.0), stab.white_noise_velocity_variance(osc, 1.0)])
         np.testing.assert_allclose(qd, p - phi @ p @ phi.T, rtol=1e-9, atol=1e-12 * p[1, 1])
@@ -406,19 +406,19 @@ def test_exact_transition_reproduces_the_stationary_covariance():
 @pytest.mark.parametrize(("c", "dt"), [(1e-4, 1e3), (1e-3, 37.0), (1e4, 25.0), (1e4, 2e-3), (0.1, 1e5)])
 def test_exact_transition_over_long_steps(c, dt):
     """Doubling reaches steps far beyond the stiff or lightly damped time scales without overflow."""
-    osc = Oscillator(1.0, c, 20.0)
+    osc = Oscillator(m=1.0, c=c, k=20.0)
     phi, qd = stab._transition(osc, 1.0, dt)
     p = np.diag([stab.white_noise_variance(osc, 1.0), stab.white_noise_velocity_variance(osc, 1.0)])
     assert np.all(np.isfinite(qd)) and np.all(np.isfinite(phi))
     np.testing.assert_allclose(qd, p - phi @ p @ phi.T, rtol=1e-8, atol=1e-10 * p[1, 1])
     # Phi against the exact free response from (1, 0) and (0, 1)
-    free = exact_response(osc, SineForce(0.0, 1.0), np.array([0.0, dt]), x0=1.0, v0=0.0)
+    free = exact_response(osc, SineForce(F0=0.0, omega=1.0), np.array([0.0, dt]), x0=1.0, v0=0.0)
     assert phi[0, 0] == pytest.approx(free.x[-1], rel=1e-7, abs=1e-9)
 
 
 @pytest.mark.parametrize("c", [1e-4, 1e-3, 0.1, 0.5, 15.0, 1e4])
 def test_monte_carlo_agrees_with_the_closed_form(c):
-    osc, S0 = Oscillator(1.0, c, 20.0), 0.1
+    osc, S0 = Oscillator(m=1.0, c=c, k=20.0), 0.1
     mc = stab.white_noise_monte_carlo(osc, S0, n_paths=200, seed=7)
     exact = stab.white_noise_variance(osc, S0)
     assert mc.standard_error < 0.03 * exact  # the check has teeth
@@ -430,7 +430,7 @@ def test_monte_carlo_agrees_with_the_closed_form(c):
 
 
 def test_simulated_paths_start_at_rest_and_scale_with_sqrt_S0():
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t, x1, v1 = stab.simulate_white_noise(osc, 1.0, 5.0, dt=0.01, n_paths=3, seed=1)
     _, x4, _ = stab.simulate_white_noise(osc, 4.0, 5.0, dt=0.01, n_paths=3, seed=1)
     assert t.shape == (501,) and x1.shape == (3, 501)
@@ -443,17 +443,17 @@ def test_simulated_paths_start_at_rest_and_scale_with_sqrt_S0():
 def test_white_noise_bad_input(raises_parameter_error):
     for c in (0.0, -1.0):
         with raises_parameter_error("c", c, "c > 0"):
-            stab.white_noise_variance(Oscillator(1.0, c, 20.0), 1.0)
+            stab.white_noise_variance(Oscillator(m=1.0, c=c, k=20.0), 1.0)
     with raises_parameter_error("S0", -1.0, ">= 0"):
-        stab.white_noise_variance(Oscillator(1.0, 0.5, 20.0), -1.0)
+        stab.white_noise_variance(Oscillator(m=1.0, c=0.5, k=20.0), -1.0)
     with raises_parameter_error("S0"):
-        stab.white_noise_variance(Oscillator(1.0, 0.5, 20.0), math.inf)
+        stab.white_noise_variance(Oscillator(m=1.0, c=0.5, k=20.0), math.inf)
     with raises_parameter_error("n_paths", 1):
-        stab.white_noise_monte_carlo(Oscillator(1.0, 0.5, 20.0), 1.0, n_paths=1)
+        stab.white_noise_monte_carlo(Oscillator(m=1.0, c=0.5, k=20.0), 1.0, n_paths=1)
     with raises_parameter_error("dt", 100.0):
-        stab.simulate_white_noise(Oscillator(1.0, 0.5, 20.0), 1.0, 10.0, dt=100.0)
+        stab.simulate_white_noise(Oscillator(m=1.0, c=0.5, k=20.0), 1.0, 10.0, dt=100.0)
     with raises_parameter_error("n_paths"):
-        stab.simulate_white_noise(Oscillator(1.0, 0.5, 20.0), 1.0, 1e6, dt=1e-3, n_paths=1000)
+        stab.simulate_white_noise(Oscillator(m=1.0, c=0.5, k=20.0), 1.0, 1e6, dt=1e-3, n_paths=1000)
 
 
 # ----------------------------------------------------------------------------- cost of damping
@@ -461,20 +461,20 @@ def test_white_noise_bad_input(raises_parameter_error):
 
 @pytest.mark.parametrize("c", [0.1, 0.5, 15.0, 2.0])
 def test_damper_load_at_resonance_and_energy_balance(c):
-    osc, F0 = Oscillator(1.0, c, 20.0), 5.0
+    osc, F0 = Oscillator(m=1.0, c=c, k=20.0), 5.0
     wn = osc.natural_frequency
     d = stab.damper_load(osc, F0, [wn])
     assert d.force_amplitude[0] == pytest.approx(F0, rel=1e-14)
     assert d.mean_power[0] == pytest.approx(F0**2 / (2.0 * c), rel=1e-14)
     # mean power delivered by the force over the steady state, from the steady-state phase
     for w in (1.0, 3.0, wn, 9.0):
-        ss = vibration.steady_state(osc, SineForce(F0, w))
+        ss = vibration.steady_state(osc, SineForce(F0=F0, omega=w))
         p_in = 0.5 * F0 * w * ss.amplitude * math.sin(ss.phase)
         assert float(stab.damper_load(osc, F0, w).mean_power) == pytest.approx(p_in, rel=1e-12)
 
 
 def test_damper_load_time_average_of_c_v_squared():
-    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+    osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
     period = 2.0 * math.pi / force.omega
     t = np.linspace(200.0, 200.0 + period, 20001)
     v = exact_response(osc, force, t).v
@@ -484,36 +484,36 @@ def test_damper_load_time_average_of_c_v_squared():
 
 def test_damper_load_bad_input(raises_parameter_error):
     with raises_parameter_error("c", -0.1, ">= 0"):
-        stab.damper_load(Oscillator(1.0, -0.1, 20.0), 5.0, [1.0])
+        stab.damper_load(Oscillator(m=1.0, c=-0.1, k=20.0), 5.0, [1.0])
     with raises_parameter_error("F0", -5.0):
-        stab.damper_load(Oscillator(1.0, 0.1, 20.0), -5.0, [1.0])
+        stab.damper_load(Oscillator(m=1.0, c=0.1, k=20.0), -5.0, [1.0])
 
 
 def test_design_metrics_of_the_paper_dampings():
-    rows = {name: stab.design_metrics(Oscillator(1.0, c, 20.0)) for name, c in PAPER.items()}
+    rows = {name: stab.design_metrics(Oscillator(m=1.0, c=c, k=20.0)) for name, c in PAPER.items()}
     assert all(r.stability == "asymptotically stable" for r in rows.values())
     # more damping: lower resonant peak, worse isolation at 3 omega_n
     assert rows["low"].peak_magnification > rows["nominal"].peak_magnification > rows["high"].peak_magnification
     assert rows["low"].transmissibility < rows["nominal"].transmissibility < rows["high"].transmissibility
     assert rows["high"].settling_time < rows["nominal"].settling_time < rows["low"].settling_time
     for r in rows.values():
-        osc = Oscillator(1.0, r.c, 20.0)
+        osc = Oscillator(m=1.0, c=r.c, k=20.0)
         assert r.transmissibility == pytest.approx(float(_t_direct(osc, 3 * osc.natural_frequency)), rel=1e-13)
         assert r.rms_per_sqrt_S0 == pytest.approx(math.sqrt(math.pi / (20.0 * r.c)), rel=1e-15)
     with pytest.raises(vibration.ParameterError, match="isolation_ratio"):
-        stab.design_metrics(Oscillator(1.0, 0.5, 20.0), isolation_ratio=0.0)
+        stab.design_metrics(Oscillator(m=1.0, c=0.5, k=20.0), isolation_ratio=0.0)
 
 
 def test_design_metrics_without_positive_damping():
     """c = 0: steady T = 1/(r^2 - 1) and overshoot 1 exist, nothing else; c < 0: nothing exists."""
-    d = stab.design_metrics(Oscillator(1.0, 0.0, 20.0), isolation_ratio=3.0)
+    d = stab.design_metrics(Oscillator(m=1.0, c=0.0, k=20.0), isolation_ratio=3.0)
     assert d.transmissibility == pytest.approx(1.0 / 8.0, rel=1e-15)
-    y = stab.step_response(Oscillator(1.0, 0.0, 20.0), np.linspace(0.0, 2.0, 200001))
+    y = stab.step_response(Oscillator(m=1.0, c=0.0, k=20.0), np.linspace(0.0, 2.0, 200001))
     assert d.overshoot == 1.0 and np.max(y) - 1.0 == pytest.approx(1.0, abs=1e-9)
     assert (d.peak_magnification, d.settling_time, d.rms_per_sqrt_S0) == (None, None, None)
     assert d.stability == "marginally stable"
     for c in (-0.1, -100.0):
-        d = stab.design_metrics(Oscillator(1.0, c, 20.0))
+        d = stab.design_metrics(Oscillator(m=1.0, c=c, k=20.0))
         assert d.stability == "unstable"
         assert (d.peak_magnification, d.transmissibility, d.overshoot, d.settling_time, d.rms_per_sqrt_S0) == (
             None,

@@ -161,7 +161,7 @@ def test_js_matches_python_on_random_points(browser, tmp_path):
             points,
         )
         for p, out in zip(points, js, strict=True):
-            osc = Oscillator(p["m"], 2 * p["zeta"] * math.sqrt(p["k"] * p["m"]), p["k"])
+            osc = Oscillator(m=p["m"], c=2 * p["zeta"] * math.sqrt(p["k"] * p["m"]), k=p["k"])
             r = out["r"]
             assert r["c"] == pytest.approx(osc.c, rel=1e-15)
             assert r["T"] == pytest.approx(vibration.transmissibility(osc, p["omega"]), rel=RTOL_CLOSED)
@@ -213,7 +213,7 @@ def test_panel_sliders_move_all_three_views(browser, tmp_path):
             after["step"] != before["step"] and after["poles"] != before["poles"] and after["trans"] != before["trans"]
         )
         zeta = panel.ZETA_MIN * (panel.ZETA_MAX / panel.ZETA_MIN) ** (450 / panel.ZETA_STEPS)
-        s = vibration.step_metrics(Oscillator(1.0, 2 * zeta * math.sqrt(20.0), 20.0))
+        s = vibration.step_metrics(Oscillator(m=1.0, c=2 * zeta * math.sqrt(20.0), k=20.0))
         assert float(after["ts"].split()[0]) == pytest.approx(s.settling_time, rel=1e-3)
         page.eval_on_selector(
             "input.vst-omega", "el => { el.value = '13'; el.dispatchEvent(new Event('input', {bubbles: true})); }"

@@ -36,20 +36,20 @@ def test_force_variance_against_the_spectral_integral(m, c, k):
         )
 
     var = k * k * two_sided(sx) + c * c * two_sided(sv)
-    assert white_noise_force_variance(Oscillator(m, c, k), S0) == pytest.approx(var, rel=1e-7)
+    assert white_noise_force_variance(Oscillator(m=m, c=c, k=k), S0) == pytest.approx(var, rel=1e-7)
 
 
 def test_optimum_against_numerical_minimisation():
     m, k, S0 = 1.0, 20.0, 0.1
-    res = minimize_scalar(lambda c: white_noise_force_variance(Oscillator(m, c, k), S0), bounds=(0.01, 100.0),
+    res = minimize_scalar(lambda c: white_noise_force_variance(Oscillator(m=m, c=c, k=k), S0), bounds=(0.01, 100.0),
                           method="bounded", options={"xatol": 1e-10})  # fmt: skip
     c_opt, v_opt = white_noise_force_optimum(m, k, S0)
     assert c_opt == pytest.approx(res.x, rel=1e-5)
     assert v_opt == pytest.approx(res.fun, rel=1e-12)
     for c in (0.1, 0.5, 15.0):
-        assert white_noise_force_variance(Oscillator(m, c, k), S0) > v_opt
+        assert white_noise_force_variance(Oscillator(m=m, c=c, k=k), S0) > v_opt
 
 
 def test_force_variance_refuses_non_positive_damping():
     with pytest.raises(ParameterError, match="c = 0"):
-        white_noise_force_variance(Oscillator(1.0, 0.0, 20.0), 0.1)
+        white_noise_force_variance(Oscillator(m=1.0, c=0.0, k=20.0), 0.1)

@@ -154,7 +154,7 @@ def test_sliders_work_offline(browser, tmp_path):
 
 
 def _python_reference(m, k, F0, c, omega, t_end=50.0, n_points=2001):
-    osc, force = Oscillator(m, c, k), SineForce(F0, omega)
+    osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=omega)
     t = np.linspace(0.0, t_end, n_points)
     r = exact_response(osc, force, t)
     x = r.x

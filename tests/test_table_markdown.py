@@ -20,8 +20,8 @@ def _doctree(text: str):
 )
 def test_markdown_is_a_table_with_its_caption(caption):
     t = Table(
-        [{"c": 0.5, "x": 2.2370381}, {"c": 15.0, "x": Missing("no peak when ζ ≥ 1/√2")}],
-        [Column("c", "c (N s/m)", 3), Column("x", "x_ss (m)", 4)],
+        [{"c": 0.5, "x": 2.2370381}, {"c": 15.0, "x": Missing(reason="no peak when ζ ≥ 1/√2")}],
+        [Column(key="c", header="c (N s/m)", digits=3), Column(key="x", header="x_ss (m)", digits=4)],
         caption=caption,
         name="tab-demo",
     )

@@ -62,7 +62,12 @@ def test_magnification_matches_the_two_dof_model_and_scipy_signal():
     mu, f, za, zp = 0.05, 0.95, 0.12, 0.0559
     k, m = 20.0, 1.0
     wp = math.sqrt(k / m)
-    model = tmd_system(m, 2 * zp * math.sqrt(k * m), k, vibration.TMDTuning("x", mu, f, za, zp, 0.0, 0.0))
+    model = tmd_system(
+        m,
+        2 * zp * math.sqrt(k * m),
+        k,
+        vibration.TMDTuning(rule="x", mu=mu, f=f, zeta_a=za, zeta_p=zp, peak=0.0, r_peak=0.0),
+    )
     r = np.linspace(0.0, 3.0, 301)
     x = np.abs(model.frf(r * wp, [1.0, 0.0])[:, 0]) * k
     np.testing.assert_allclose(tmd_magnification(mu, f, za, r, zp), x, rtol=1e-12)
@@ -221,7 +226,7 @@ def test_mistuned_peak_matches_the_two_dof_model():
     m, k = 1.0, 20.0
     m_a, k_a, c_a = t.absorber(m, k)
     for eps in (-0.1, 0.0, 0.1):
-        model = add_absorber(MDOF([[m]], [[2 * 0.0559 * math.sqrt(k * m)]], [[k * (1 + eps)]]), 0, m_a, k_a, c_a)
+        model = add_absorber(MDOF(M=[[m]], C=[[2 * 0.0559 * math.sqrt(k * m)]], K=[[k * (1 + eps)]]), 0, m_a, k_a, c_a)
         w = np.linspace(3.0, 6.0, 3001)
         i = int(np.argmax(np.abs(model.frf(w, [1.0, 0.0])[:, 0])))
         res = minimize_scalar(
@@ -264,10 +269,10 @@ def test_rayleigh_damping_ratios_and_repeated_frequencies():
     M = np.diag([2.0, 1.0, 3.0])
     K = np.array([[6.0, -2.0, 0.0], [-2.0, 4.0, -1.0], [0.0, -1.0, 5.0]])
     a0, a1 = 0.3, 0.02
-    s = MDOF(M, a0 * M + a1 * K, K)
+    s = MDOF(M=M, C=a0 * M + a1 * K, K=K)
     w = s.natural_frequencies
     np.testing.assert_allclose(s.modal_damping_ratios, a0 / (2 * w) + a1 * w / 2, rtol=1e-12)
-    rep = MDOF(np.eye(3), np.diag([0.1, 0.4, 0.2]), 4.0 * np.eye(3))  # one triple frequency, C not scalar
+    rep = MDOF(M=np.eye(3), C=np.diag([0.1, 0.4, 0.2]), K=4.0 * np.eye(3))  # one triple frequency, C not scalar
     assert rep.is_classically_damped
     np.testing.assert_allclose(sorted(rep.modal_damping_ratios), [0.025, 0.05, 0.1], rtol=1e-12)
 
@@ -319,7 +324,7 @@ def test_response_against_augmented_expm(case):
         model = add_absorber(chopra_frame()[0], -1, 0.02 * 5 * 45359.237, 1e5, 2e3)
         load, omega = np.r_[np.zeros(4), 1e4, 0.0], 3.1
     else:
-        model, omega = MDOF(np.eye(2), np.zeros((2, 2)), [[2.0, -1.0], [-1.0, 2.0]]), 1.0
+        model, omega = MDOF(M=np.eye(2), C=np.zeros((2, 2)), K=[[2.0, -1.0], [-1.0, 2.0]]), 1.0
         load = np.array([1.0, 0.0])
     rng = np.random.default_rng(11)
     x0, v0 = rng.normal(size=model.n) * 0.1, rng.normal(size=model.n) * 0.1
@@ -336,8 +341,10 @@ def test_response_against_augmented_expm(case):
 
 def test_response_of_one_dof_is_the_papers_closed_form_and_tmd_matches_dop853():
     t = np.linspace(0.0, 50.0, 2001)
-    one = MDOF([[1.0]], [[0.5]], [[20.0]]).response(t, [5.0], 4.47)
-    exact = vibration.exact_response(vibration.Oscillator(1.0, 0.5, 20.0), vibration.SineForce(5.0, 4.47), t)
+    one = MDOF(M=[[1.0]], C=[[0.5]], K=[[20.0]]).response(t, [5.0], 4.47)
+    exact = vibration.exact_response(
+        vibration.Oscillator(m=1.0, c=0.5, k=20.0), vibration.SineForce(F0=5.0, omega=4.47), t
+    )
     np.testing.assert_allclose(one.x[:, 0], exact.x, atol=1e-11)
     np.testing.assert_allclose(one.v[:, 0], exact.v, atol=1e-10)
     s = tmd_system(1.0, 0.5, 20.0, den_hartog(0.05))
@@ -393,11 +400,11 @@ def test_bad_method_and_closed_form_with_damped_primary():
 )
 def test_bad_matrices_are_named(args, name):
     with pytest.raises(ParameterError, match=rf"^{name}\b"):
-        MDOF(*args)
+        MDOF(**dict(zip(("M", "C", "K"), args, strict=True)))
 
 
 def test_bad_mdof_calls_are_named():
-    s = MDOF(np.eye(2), np.zeros((2, 2)), 2 * np.eye(2))
+    s = MDOF(M=np.eye(2), C=np.zeros((2, 2)), K=2 * np.eye(2))
     with pytest.raises(ParameterError, match="load"):
         s.frf([1.0], [1.0, 2.0, 3.0])
     with pytest.raises(ParameterError, match="omegas"):

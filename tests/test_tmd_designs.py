@@ -68,7 +68,11 @@ def test_robust_design_matches_a_second_optimiser_and_the_quoted_values():
     eps = np.linspace(-0.1, 0.1, 21)
 
     def cons(x):
-        return x[2] - np.log(mistuned_peak(TMDTuning("x", 0.05, x[0], math.exp(x[1]), ZP, 0.0, 0.0), eps, ZP))
+        return x[2] - np.log(
+            mistuned_peak(
+                TMDTuning(rule="x", mu=0.05, f=x[0], zeta_a=math.exp(x[1]), zeta_p=ZP, peak=0.0, r_peak=0.0), eps, ZP
+            )
+        )
 
     d = den_hartog(0.05)
     x0 = [d.f, math.log(d.zeta_a), math.log(10.0)]
@@ -106,7 +110,9 @@ def test_robust_design_far_from_the_defaults(mu, zp, band):
     assert w <= worst_peak(h, band, zp)[0] * (1 + 1e-9)  # never worse than the nominal optimum on its own criterion
     assert t.peak >= h.peak * (1 - 1e-9)  # never better than the nominal optimum on the nominal peak
     for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1)):  # a local min-max: no neighbour lowers the worst peak
-        n = TMDTuning("n", mu, t.f * (1 + 2e-3 * a), t.zeta_a * (1 + 2e-3 * b), zp, 0.0, 0.0)
+        n = TMDTuning(
+            rule="n", mu=mu, f=t.f * (1 + 2e-3 * a), zeta_a=t.zeta_a * (1 + 2e-3 * b), zeta_p=zp, peak=0.0, r_peak=0.0
+        )
         assert worst_peak(n, band, zp)[0] >= w * (1 - 1e-9)
 
 

@@ -75,7 +75,7 @@ def test_expm_batch_matches_scipy(scale):
 def test_foh_matches_scipy_cont2discrete(params):
     """scipy's own FOH discretisation (a different state realisation) gives the same sampled output."""
     m, c, k = params
-    osc = Oscillator(m, c, k)
+    osc = Oscillator(m=m, c=c, k=k)
     h = 0.3 / osc.natural_frequency
     t = np.arange(400) * h
     f = random_force(t, band=(0.01, 0.2 / h), seed=2)
@@ -94,7 +94,7 @@ def test_foh_matches_scipy_cont2discrete(params):
 def test_sampled_response_is_exact_for_piecewise_linear_force(params):
     """Against solve_ivp (DOP853, rtol 1e-12) integrated sample by sample with the linear force."""
     m, c, k = params
-    osc = Oscillator(m, c, k)
+    osc = Oscillator(m=m, c=c, k=k)
     h = 0.4 / osc.natural_frequency
     t = np.arange(120) * h
     f = np.random.default_rng(3).standard_normal(t.size)
@@ -120,7 +120,7 @@ def test_sampled_response_is_exact_for_piecewise_linear_force(params):
 @pytest.mark.parametrize("params", [(1.0, 0.5, 20.0), (1.0, 0.1, 20.0), (1.0, 15.0, 20.0)])
 def test_sampled_response_converges_to_exact_response_for_a_sine(params):
     """The only error for a sine is the linear interpolation of the force: second order in h."""
-    osc, force = Oscillator(*params), SineForce(5.0, 4.47)
+    osc, force = Oscillator(**dict(zip(("m", "c", "k"), params, strict=True))), SineForce(F0=5.0, omega=4.47)
     errs = []
     for n in (2001, 4001, 8001):
         t = np.linspace(0.0, 50.0, n)
@@ -134,7 +134,7 @@ def test_sampled_response_converges_to_exact_response_for_a_sine(params):
 
 
 def test_lfilter_recursion_agrees_with_the_state_loop_on_a_long_fast_record():
-    osc = Oscillator(1.0, 0.05, 4.0)
+    osc = Oscillator(m=1.0, c=0.05, k=4.0)
     h = 1e-3
     t = np.arange(60000) * h
     f = random_force(t, band=(0.05, 3.0), seed=4)
@@ -150,14 +150,14 @@ def test_lfilter_recursion_agrees_with_the_state_loop_on_a_long_fast_record():
 
 
 def test_synthetic_stiffness_history_matches_piecewise_solve():
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 20.0, 0.02)
     f = random_force(t, seed=5)
     ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=10.0, drop=0.3)
     ours = synthetic_measurements(osc, t, f, stiffness=ks)
     before = sampled_response(osc, t[t < 10.0 + 1e-9], f[t < 10.0 + 1e-9])
     i = int(np.searchsorted(t, 10.0 - 1e-9))
-    after = sampled_response(Oscillator(1.0, 0.5, 14.0), t[i:], f[i:], before.x[i], before.v[i])
+    after = sampled_response(Oscillator(m=1.0, c=0.5, k=14.0), t[i:], f[i:], before.x[i], before.v[i])
     np.testing.assert_allclose(ours.x[: i + 1], before.x[: i + 1], rtol=0, atol=1e-13)
     np.testing.assert_allclose(ours.x[i:], after.x, rtol=0, atol=1e-10)
 
@@ -328,14 +328,14 @@ def test_identify_recovers_independent_data(case):
 
 def test_identify_equals_curve_fit_on_the_full_model():
     """Same optimum and covariance as scipy's curve_fit on (m, c, k, x0, v0), a different code path."""
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 40.0, 0.02)
     f = random_force(t, seed=8)
     meas = synthetic_measurements(osc, t, f, noise=0.01, seed=9, x0=0.05, v0=0.1)
     fit = identify(**meas)
 
     def model(_, m, c, k, x0, v0):
-        return sampled_response(Oscillator(m, c, k), t, f, x0, v0).x
+        return sampled_response(Oscillator(m=m, c=c, k=k), t, f, x0, v0).x
 
     p, pcov = curve_fit(model, t, meas.x, p0=[1.1, 0.4, 21.0, 0.0, 0.0], xtol=1e-13, ftol=1e-13)
     np.testing.assert_allclose([fit.m, fit.c, fit.k, fit.x0, fit.v0], p, rtol=1e-6, atol=1e-8)
@@ -345,13 +345,13 @@ def test_identify_equals_curve_fit_on_the_full_model():
 
 def test_identify_global_and_local_search_agree():
     t = np.arange(0.0, 60.0, 0.02)
-    meas = synthetic_measurements(Oscillator(2.0, 0.3, 30.0), t, random_force(t, seed=10), sensor="a", noise=0.1)
+    meas = synthetic_measurements(Oscillator(m=2.0, c=0.3, k=30.0), t, random_force(t, seed=10), sensor="a", noise=0.1)
     g, loc = identify(**meas), identify(**meas, search="local")
     np.testing.assert_allclose([g.m, g.c, g.k], [loc.m, loc.c, loc.k], rtol=1e-7)
 
 
 def test_monte_carlo_coverage_is_near_95_percent():
-    ex = identification_experiment(Oscillator(1.0, 0.5, 20.0), duration=30.0, runs=120, noise=0.05, seed=3)
+    ex = identification_experiment(Oscillator(m=1.0, c=0.5, k=20.0), duration=30.0, runs=120, noise=0.05, seed=3)
     # binomial: P(coverage < 0.87 | 0.95, 120 runs) < 1e-3
     assert np.all(ex.coverage >= 0.87), ex.coverage
     # the reported standard errors match the scatter of the estimates (sampling error of 120 runs ~ 7 %)
@@ -374,7 +374,7 @@ def test_monte_carlo_coverage_is_near_95_percent():
 def test_identify_bad_input(kwargs, name):
     t = np.arange(0.0, 10.0, 0.02)
     f = random_force(t, seed=1)
-    x = sampled_response(Oscillator(1.0, 0.5, 20.0), t, f).x
+    x = sampled_response(Oscillator(m=1.0, c=0.5, k=20.0), t, f).x
     args = {"t": t, "force": f, "x": x}
     for key, val in kwargs.items():
         if val == "same":
@@ -401,8 +401,8 @@ def test_identify_refuses_undersampled_and_too_short_records():
     for k, match in ((400.0, "does not fit"), (196.0, "does not resolve")):  # 20 and 14 rad/s
         f = random_force(t, band=(0.1, 2.4), seed=2)
         with pytest.raises(ParameterError, match=match):
-            identify(t, f, x=sampled_response(Oscillator(1.0, 0.1, k), t, f).x)
-    osc = Oscillator(1.0, 0.05, 0.04)  # period 31 s
+            identify(t, f, x=sampled_response(Oscillator(m=1.0, c=0.1, k=k), t, f).x)
+    osc = Oscillator(m=1.0, c=0.05, k=0.04)  # period 31 s
     t = np.arange(0.0, 5.0, 0.01)
     f = random_force(t, band=(0.2, 5.0), seed=3)
     meas = synthetic_measurements(osc, t, f, noise=1e-4)
@@ -414,7 +414,7 @@ def test_identify_refuses_undersampled_and_too_short_records():
 
 
 def test_frequency_estimates_on_a_long_clean_record():
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 800.0, 0.02)
     meas = synthetic_measurements(osc, t, random_force(t, seed=11), noise=1e-4)
     frf = frf_estimate(**meas, nperseg=2**14)
@@ -429,7 +429,7 @@ def test_frequency_estimates_on_a_long_clean_record():
 
 
 def test_frequency_estimates_say_why_not_when_overdamped():
-    osc = Oscillator(1.0, 15.0, 20.0)
+    osc = Oscillator(m=1.0, c=15.0, k=20.0)
     t = np.arange(0.0, 200.0, 0.02)
     hp, cf = frequency_estimates(frf_estimate(**synthetic_measurements(osc, t, random_force(t), noise=1e-5)))
     assert math.isnan(hp.k) and hp.reason and math.isnan(cf.k) and cf.reason
@@ -439,7 +439,7 @@ def test_frequency_estimates_say_why_not_when_overdamped():
 
 
 def _fault_record(noise=2e-3, seed=12, sensor="x"):
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 240.0, 0.02)
     f = random_force(t, seed=13)
     ks = stiffness_profile(t, 20.0, 100.0, 0.0005, drop_time=170.0, drop=0.1)
@@ -486,7 +486,7 @@ def test_cusum_matches_its_recursion():
 
 
 def test_detection_experiment_tradeoff_is_monotone():
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 120.0, 0.02)
     f = random_force(t, seed=15)
     ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=70.0, drop=0.03)
@@ -506,7 +506,7 @@ def test_detection_experiment_tradeoff_is_monotone():
 )  # fmt: skip
 def test_detect_change_bad_input(kwargs, name):
     t = np.arange(0.0, 20.0, 0.02)
-    meas = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, random_force(t), noise=1e-3)
+    meas = synthetic_measurements(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t), noise=1e-3)
     with pytest.raises(ParameterError, match=name):
         detect_change(**meas, **kwargs)
 

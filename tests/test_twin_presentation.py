@@ -22,7 +22,7 @@ from vibration.publishing.mathml import external_urls
 matplotlib.use("Agg")
 
 SCREENSHOTS = Path(__file__).resolve().parents[1] / "build" / "screenshots"
-OSC = Oscillator(1.0, 0.5, 20.0)
+OSC = Oscillator(m=1.0, c=0.5, k=20.0)
 #: A short chapter run: every part of the study, few runs.
 SMALL = dict(t_record=30.0, runs=20, sweep_runs=5, assumption_runs=20, t_monitor=120.0, detect_runs=5)
 

@@ -20,7 +20,7 @@ from vibration import Oscillator, ParameterError
 from vibration.physics import twin
 from vibration.physics.twin import validation
 
-OSC = Oscillator(1.0, 0.5, 20.0)
+OSC = Oscillator(m=1.0, c=0.5, k=20.0)
 
 
 def _band(n_lo: float, alpha: float, runs: int) -> float:

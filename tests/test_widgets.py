@@ -57,7 +57,7 @@ def test_damping_slider_reaches_both_ends(ex):
     for c in (C_MIN, C_MAX):
         s.value = c
         assert ex.error is None
-        assert ex.values["zeta"] == pytest.approx(Oscillator(1.0, c, 20.0).damping_ratio, rel=1e-12)
+        assert ex.values["zeta"] == pytest.approx(Oscillator(m=1.0, c=c, k=20.0).damping_ratio, rel=1e-12)
 
 
 def test_omega_slider_updates_readout_line_and_image(ex):
@@ -87,7 +87,7 @@ def test_damping_slider_updates_readout_lines_and_curve(ex):
 def test_readout_equals_the_package(ex, omega, c):
     ex.omega_slider.value = omega
     ex.c_slider.value = c
-    osc, force = Oscillator(1.0, c, 20.0), SineForce(5.0, omega)
+    osc, force = Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=omega)
     ss, ts = steady_state(osc, force), settling_time(osc, force)
     v = ex.values
     assert v["amplitude"] == ss.amplitude and v["magnification"] == ss.magnification
@@ -180,7 +180,7 @@ def test_extreme_stiffness_keeps_the_forcing_frequency(ex):
 def test_rk45_overlay_is_the_papers_simulation(ex):
     ex.rk45_checkbox.value = True
     assert ex.error is None and ex._art["x_rk45"].get_visible()
-    paper = simulate(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47), 50.0, 5001)
+    paper = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), 50.0, 5001)
     assert_allclose(ex._art["x_rk45"].get_ydata(), paper.x, rtol=0, atol=0)
     assert ex.values["rk45_nfev"] == paper.nfev
     assert ex.values["rk45_max_error"] == pytest.approx(np.max(np.abs(paper.x - ex._art["x"].get_ydata())))

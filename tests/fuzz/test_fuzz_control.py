@@ -26,8 +26,8 @@ from vibration.physics.model import Oscillator, ParameterError, SineForce
 #: Wall-clock budget of one call, s.
 LIMIT = WALL  # the shared budget of tests/fuzzing.py (a loaded 2-core machine took 10 s on a 5 s call)
 
-OSC = Oscillator(1.0, 0.5, 20.0)
-RES = SineForce(5.0, 4.47)
+OSC = Oscillator(m=1.0, c=0.5, k=20.0)
+RES = SineForce(F0=5.0, omega=4.47)
 
 
 class _Timeout(Exception):
@@ -133,7 +133,7 @@ def test_pi_with_a_limit_returns_fast_and_sticks_on_the_limit():
 def test_clamping_sliding_mode_of_chapter_7(omega):
     """Chapter 7's move at omega_res 2.2 to 3: a sliding mode on u_d = u_max; fast, on the limit, finite."""
     t0 = time.perf_counter()
-    f = SineForce(5.0, omega)
+    f = SineForce(F0=5.0, omega=omega)
     r = guarded(ctl.pid_response, OSC, f, 133.6, 512.0, 18.7, u_max=12.0, anti_windup="clamping", x_ref=0.5)
     assert time.perf_counter() - t0 < 5.0
     assert r.nfev < 100_000
@@ -147,7 +147,16 @@ def test_clamping_agrees_with_a_fine_fixed_step_solution():
     kp, ki, kd, umax, xr = 133.6, 512.0, 18.7, 12.0, 0.5
     w, h, t_end = 2.5, 1e-4, 4.0
     r = ctl.pid_response(
-        OSC, SineForce(5.0, w), kp, ki, kd, u_max=umax, anti_windup="clamping", x_ref=xr, t_end=t_end, n_points=41
+        OSC,
+        SineForce(F0=5.0, omega=w),
+        kp,
+        ki,
+        kd,
+        u_max=umax,
+        anti_windup="clamping",
+        x_ref=xr,
+        t_end=t_end,
+        n_points=41,
     )
     m, c, k = OSC.m, OSC.c, OSC.k
 
@@ -184,7 +193,7 @@ def test_none_and_back_calculation_agree_with_the_unlimited_loop_when_never_satu
 
 @pytest.mark.parametrize("k", [1e8, 1e12])
 def test_stiff_plants_are_refused_in_seconds(k):
-    osc = Oscillator(1.0, 0.5, k)
+    osc = Oscillator(m=1.0, c=0.5, k=k)
     err = refused(ctl.pid_response, osc, RES, 80.0, 100.0, 10.0, u_max=12.0, anti_windup="clamping")
     assert "t_end" in str(err)
     err = refused(ctl.simulate_controlled, osc, lambda t, x, v: -x, RES)
@@ -271,7 +280,7 @@ def test_huge_sizes_refused_quickly():
     refused(ctl.semi_active_response, OSC, "mr", 4.47, 0.25, t_end=1e6)
     refused(ctl.semi_active_sweep, OSC, "mr", np.linspace(1.0, 10.0, 1000), 0.25, periods=1000)
     refused(ctl.semi_active_sweep, OSC, "on-off", [1e-6], 0.25, c_max=15.0)
-    refused(ctl.pid_linear_response, Oscillator(1.0, 0.0, 1.0), None, 0.0, 1e-300, 0.0, np.linspace(0, 1, 10**7))
+    refused(ctl.pid_linear_response, Oscillator(m=1.0, c=0.0, k=1.0), None, 0.0, 1e-300, 0.0, np.linspace(0, 1, 10**7))
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, t_end=1e300)
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, max_step=1e-9)
 

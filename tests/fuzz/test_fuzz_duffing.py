@@ -36,8 +36,8 @@ from vibration.physics.duffing import (
     sweep,
 )
 
-PAPER = Duffing(1.0, 0.5, 20.0, 2.0)
-SOFT = Duffing(1.0, 0.1, 20.0, -1.0)
+PAPER = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
+SOFT = Duffing(m=1.0, c=0.1, k=20.0, k3=-1.0)
 
 BAD_SCALARS = [math.nan, math.inf, -math.inf, "3", True, 1j, None, [1.0], np.array([1.0, 2.0])]
 BAD_ARRAYS = [[], ["a", "b"], [True, False], np.array([1j, 2.0]), [[1.0, 2.0], [3.0]], [math.nan], "1.0", None]
@@ -67,7 +67,7 @@ def test_duffing_record_refuses_bad_fields(field, bad):
 )
 def test_closed_forms_extreme(c, k, k3, F0, omega):
     try:
-        d = Duffing(1.0, c, k, k3)
+        d = Duffing(m=1.0, c=c, k=k, k3=k3)
     except ParameterError:
         return
     refused_or(hb_amplitudes, d, F0, omega)
@@ -125,7 +125,7 @@ def test_frequency_sweep_refuses_bad_arguments(which, bad):
 
 def test_sweep_stiff_damping_stops_within_seconds():
     """c = 1e6 used to run for minutes inside the compiled kernel; its budget now stops it inside the loop."""
-    msg = refused(frequency_sweep, Duffing(1.0, 1e6, 20.0, 2.0), 5.0, [4.0, 5.0], "up")
+    msg = refused(frequency_sweep, Duffing(m=1.0, c=1e6, k=20.0, k3=2.0), 5.0, [4.0, 5.0], "up")
     assert "max_steps" in msg
     # a small budget: stopped inside the loop, and the frequency named
     msg = refused(frequency_sweep, PAPER, 5.0, np.linspace(3.0, 6.0, 20), "up", max_steps=1000)
@@ -137,7 +137,7 @@ def test_sweep_stiff_damping_stops_within_seconds():
 @given(omega=st.sampled_from([1e-300, 1e-12, 1e-6]), c=st.sampled_from([0.5, 1e9, 1e12]))
 def test_sweep_tiny_omega_or_huge_damping_refused_up_front(omega, c):
     t0 = time.perf_counter()
-    msg = refused(sweep, Duffing(1.0, c, 20.0, 2.0), 5.0, [omega], "up")
+    msg = refused(sweep, Duffing(m=1.0, c=c, k=20.0, k3=2.0), 5.0, [omega], "up")
     assert "max_steps" in msg
     assert time.perf_counter() - t0 < 0.5
 
@@ -157,7 +157,7 @@ def test_locate_jump_bad_inputs_and_budget():
     refused(locate_jump, PAPER, 5.0, up, levels=9, name="levels")
     refused(locate_jump, PAPER, 5.0, up, n=True, name="n")
     refused(locate_jump, PAPER, 5.0, up, max_periods=2.5, name="max_periods")
-    refused(locate_jump, Duffing(1.0, 0.0, 20.0, 2.0), 5.0, up, name="c")
+    refused(locate_jump, Duffing(m=1.0, c=0.0, k=20.0, k3=2.0), 5.0, up, name="c")
 
 
 # ----------------------------------------------------------------------------- time responses
@@ -172,13 +172,13 @@ def test_locate_jump_bad_inputs_and_budget():
     F0=st.sampled_from([0.0, 5.0, 50.0]),
 )
 def test_duffing_response_extreme(c, omega, t_end, k3, F0):
-    out = refused_or(duffing_response, Duffing(1.0, c, 20.0, k3), F0, omega, [0.0, t_end])
+    out = refused_or(duffing_response, Duffing(m=1.0, c=c, k=20.0, k3=k3), F0, omega, [0.0, t_end])
     if out is not None:
         assert out[0].shape == (2,)
 
 
 def test_duffing_response_refusals():
-    msg = refused(duffing_response, Duffing(1.0, 1e6, 20.0, 2.0), 5.0, 4.0, [0.0, 50.0])
+    msg = refused(duffing_response, Duffing(m=1.0, c=1e6, k=20.0, k3=2.0), 5.0, 4.0, [0.0, 50.0])
     assert "right-hand-side evaluations" in msg
     refused(duffing_response, PAPER, 5.0, 1e-6, [0.0, 2 * np.pi / 1e-6], name="t")
     msg = refused(duffing_response, SOFT, 50.0, 1e-6, np.linspace(0.0, 50.0, 11))
@@ -196,16 +196,16 @@ def test_duffing_response_refusals():
     guess=st.sampled_from([None, 0.0, 1.0, 1e150]),
 )
 def test_periodic_orbit_extreme(c, omega, guess):
-    refused_or(periodic_orbit, Duffing(1.0, c, 20.0, 2.0), 5.0, omega, guess)
+    refused_or(periodic_orbit, Duffing(m=1.0, c=c, k=20.0, k3=2.0), 5.0, omega, guess)
 
 
 def test_periodic_orbit_refusals():
-    msg = refused(periodic_orbit, Duffing(1.0, 1e6, 20.0, 2.0), 5.0, 4.0)
+    msg = refused(periodic_orbit, Duffing(m=1.0, c=1e6, k=20.0, k3=2.0), 5.0, 4.0)
     assert "right-hand-side evaluations" in msg
     refused(periodic_orbit, PAPER, 5.0, 1e-6, name="omega")
     refused(periodic_orbit, PAPER, 5.0, 5.07, x0=1.0, name="v0")
     refused(periodic_orbit, PAPER, 5.0, 5.07, max_iterations=0, name="max_iterations")
-    refused(periodic_orbit, Duffing(1.0, 0.0, 4.0, 0.0), 5.0, 2.0, name="omega")  # undamped resonance
+    refused(periodic_orbit, Duffing(m=1.0, c=0.0, k=4.0, k3=0.0), 5.0, 2.0, name="omega")  # undamped resonance
 
 
 # -------------------------------------------------------------------------------- chaos
@@ -224,7 +224,7 @@ CHAOS = [poincare_section, lyapunov_qr, lyapunov_benettin]
     x0=st.sampled_from([0.0, 3.0, 1e10]),
 )
 def test_chaos_tools_extreme(fn, c, k3, F0, omega, x0):
-    out = refused_or(fn, Duffing(1.0, c, 20.0, k3), F0, omega, x0, 0.0, n_periods=50, n_transient=10)
+    out = refused_or(fn, Duffing(m=1.0, c=c, k=20.0, k3=k3), F0, omega, x0, 0.0, n_periods=50, n_transient=10)
     if out is not None and fn is not poincare_section:
         assert finite(out.exponents) and finite(out.running)
 
@@ -246,10 +246,10 @@ def test_chaos_tools_refusals():
 
 def test_lyapunov_strong_damping_isfinite():
     """c T / m = 200: the tangent vectors are renormalised within the period instead of underflowing to log 0."""
-    r = lyapunov_qr(Duffing(1.0, 100.0, 20.0, 2.0), 5.0, 3.0, n_periods=100, n_transient=10)
+    r = lyapunov_qr(Duffing(m=1.0, c=100.0, k=20.0, k3=2.0), 5.0, 3.0, n_periods=100, n_transient=10)
     assert finite(r.exponents)
     assert sum(r.exponents) == pytest.approx(-100.0, rel=2e-3)
-    b = lyapunov_benettin(Duffing(1.0, 100.0, 20.0, 2.0), 5.0, 3.0, n_periods=100, n_transient=10)
+    b = lyapunov_benettin(Duffing(m=1.0, c=100.0, k=20.0, k3=2.0), 5.0, 3.0, n_periods=100, n_transient=10)
     assert b.exponents[0] == pytest.approx(r.exponents[0], rel=1e-6)
 
 

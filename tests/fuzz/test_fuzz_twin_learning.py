@@ -19,7 +19,7 @@ from vibration import Oscillator
 from vibration.physics import learning as L
 from vibration.physics import twin as T
 
-OSC = Oscillator(1.0, 0.5, 20.0)
+OSC = Oscillator(m=1.0, c=0.5, k=20.0)
 T40 = np.arange(0.0, 40.0, 0.02)
 F40 = T.random_force(T40)
 X40 = T.synthetic_measurements(OSC, T40, F40, noise=1e-3).x
@@ -79,8 +79,8 @@ ARRAY_TAKERS = {
     "rollout": lambda a: L.rollout(None, a, [1.0, 0.0]),
     "expected_cost": lambda a: L.expected_cost(None, a),
     "peak_force": lambda a: L.peak_force(None, a),
-    "LinearPolicy": lambda a: L.LinearPolicy(a, L.OscillatorTask()),
-    "LinearPolicy call": lambda a: L.LinearPolicy([1.0, 1.0], L.OscillatorTask())(a),
+    "LinearPolicy": lambda a: L.LinearPolicy(gains=a, task=L.OscillatorTask()),
+    "LinearPolicy call": lambda a: L.LinearPolicy(gains=[1.0, 1.0], task=L.OscillatorTask())(a),
     "train": lambda a: L.train(initial_gains=a, iterations=1),
     "verification": lambda a: L.verification(L.OscillatorTask(), a),
     "env.step": lambda a: _env_step(a),
@@ -134,7 +134,7 @@ def test_sizes_are_refused_before_allocating():
     n=st.sampled_from([2, 5001]),
 )
 def test_discretisation_checks_stiff_or_fast(c, k, t_end, n):
-    refused_or(T.discretisation_checks, Oscillator(1.0, c, k), 5.0, 4.47, t_end, n)
+    refused_or(T.discretisation_checks, Oscillator(m=1.0, c=c, k=k), 5.0, 4.47, t_end, n)
 
 
 @settings(max_examples=20, deadline=None)
@@ -144,7 +144,7 @@ def test_discretisation_checks_stiff_or_fast(c, k, t_end, n):
     x0=st.sampled_from([0.0, 1e300]),
 )
 def test_exact_steps_never_return_nan(c, dt, x0):
-    osc = Oscillator(1.0, c, 20.0)
+    osc = Oscillator(m=1.0, c=c, k=20.0)
     refused_or(T.discretize, osc, dt)
     t = np.arange(0.0, 1000.0, 1.0)
     refused_or(T.sampled_response, osc, t, np.ones(t.size), x0=x0)

@@ -112,7 +112,7 @@ def changed_text(sc: Scenario, paper: Scenario | None) -> str:
     >>> changed_text(sc["damping_low"], sc["damping_low"])
     ''
     >>> from dataclasses import replace
-    >>> changed_text(replace(sc["damping_low"], oscillator=Oscillator(1.0, 0.05, 20.0)), sc["damping_low"])
+    >>> changed_text(replace(sc["damping_low"], oscillator=Oscillator(m=1.0, c=0.05, k=20.0)), sc["damping_low"])
     "c = 0.05 N s/m (the paper's: 0.1)"
     """
     if paper is None:
@@ -209,10 +209,10 @@ def half_power_band(osc: Oscillator) -> tuple[float | None, float | None]:
 
     Examples
     --------
-    >>> lo, hi = half_power_band(Oscillator(1.0, 0.5, 20.0))
+    >>> lo, hi = half_power_band(Oscillator(m=1.0, c=0.5, k=20.0))
     >>> round(lo, 4), round(hi, 4), round(hi - lo, 4)      # rad/s
     (4.2003, 4.7019, 0.5016)
-    >>> half_power_band(Oscillator(1.0, 15.0, 20.0))
+    >>> half_power_band(Oscillator(m=1.0, c=15.0, k=20.0))
     (None, None)
     """
     z, wn = osc.damping_ratio, osc.natural_frequency
@@ -233,10 +233,10 @@ def resonant_peak(osc: Oscillator) -> tuple[float | None, float | None]:
 
     Examples
     --------
-    >>> w, mag = resonant_peak(Oscillator(1.0, 0.5, 20.0))
+    >>> w, mag = resonant_peak(Oscillator(m=1.0, c=0.5, k=20.0))
     >>> round(w, 4), round(mag, 4)      # rad/s, 1
     (4.4581, 8.9583)
-    >>> resonant_peak(Oscillator(1.0, 0.0, 20.0))[1], resonant_peak(Oscillator(1.0, 15.0, 20.0))
+    >>> resonant_peak(Oscillator(m=1.0, c=0.0, k=20.0))[1], resonant_peak(Oscillator(m=1.0, c=15.0, k=20.0))
     (inf, (None, None))
     """
     z, wn = osc.damping_ratio, osc.natural_frequency

@@ -65,7 +65,7 @@ import numpy as np
 from .model import Oscillator, ParameterError, SineForce, check_real, check_records
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Response:
     """Time response of the oscillator.
 
@@ -92,7 +92,7 @@ class Response:
         return self.status == 0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SteadyState:
     """Steady-state (particular) response ``x_ss(t) = amplitude sin(omega t - phase)``."""
 
@@ -124,7 +124,7 @@ def steady_state(osc: Oscillator, force: SineForce) -> SteadyState:
 
     Examples
     --------
-    >>> ss = steady_state(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0))
+    >>> ss = steady_state(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0))
     >>> round(ss.amplitude, 4), round(ss.phase, 4)     # m, rad
     (0.4504, 0.1355)
     >>> round(ss.magnification, 4)
@@ -172,7 +172,7 @@ def _times(t) -> np.ndarray:
     return arr
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class _Roots:
     """Characteristic roots of ``m s^2 + c s + k`` in the form each regime needs.
 
@@ -215,15 +215,15 @@ def _roots(osc: Oscillator) -> _Roots:
     sigma, wn2 = osc.decay_rate, osc.k / osc.m
     q = wn2 - sigma * sigma
     if q > 0.0:
-        return _Roots("osc", sigma, wn2, wd=math.sqrt(q))
+        return _Roots(kind="osc", sigma=sigma, wn2=wn2, wd=math.sqrt(q))
     if q == 0.0:
-        return _Roots("critical", sigma, wn2)
+        return _Roots(kind="critical", sigma=sigma, wn2=wn2)
     r = wn2 / sigma / sigma  # < 1; no overflow of sigma^2 at extreme scales
     mu = abs(sigma) * math.sqrt(1.0 - r) if math.isinf(q) else math.sqrt(-q)
     big = abs(sigma) + mu  # modulus of the fast root; the slow one is wn2 / big (no cancellation)
     if sigma > 0.0:
-        return _Roots("real", sigma, wn2, slow=-wn2 / big, fast=-big)
-    return _Roots("real", sigma, wn2, slow=wn2 / big, fast=big)
+        return _Roots(kind="real", sigma=sigma, wn2=wn2, slow=-wn2 / big, fast=-big)
+    return _Roots(kind="real", sigma=sigma, wn2=wn2, slow=wn2 / big, fast=big)
 
 
 def _basis(ro: _Roots, t: np.ndarray) -> dict[str, np.ndarray]:
@@ -468,8 +468,8 @@ def exact_response(osc: Oscillator, force: SineForce, t, x0: float = 0.0, v0: fl
     ``x = F0/(2 m wn^2) (sin wn t - wn t cos wn t)``, so ``x(pi) = -pi/4`` here.
 
     >>> import numpy as np
-    >>> osc = Oscillator(1.0, 0.0, 4.0)
-    >>> r = exact_response(osc, SineForce(1.0, 2.0), [0.0, np.pi])
+    >>> osc = Oscillator(m=1.0, c=0.0, k=4.0)
+    >>> r = exact_response(osc, SineForce(F0=1.0, omega=2.0), [0.0, np.pi])
     >>> np.round(r.x, 6)          # m
     array([ 0.      , -0.785398])
     >>> bool(abs(r.x[1] + np.pi / 4) < 1e-15)

@@ -77,7 +77,7 @@ def _increasing(
 def _damped(m: float, c: float, k: float) -> Oscillator:
     """The oscillator of one entry of ``dampings``, or :class:`ParameterError` naming ``dampings``."""
     try:
-        return Oscillator(m, c, k)
+        return Oscillator(m=m, c=c, k=k)
     except ParameterError as exc:
         raise ParameterError(f"dampings contains {c!r} N s/m: {exc}") from None
 
@@ -109,7 +109,7 @@ def magnification(osc: Oscillator, omegas) -> np.ndarray:
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> np.round(magnification(osc, [0.0, osc.natural_frequency]), 4)
     array([1.    , 8.9443])
     """
@@ -124,7 +124,7 @@ def phase_lag(osc: Oscillator, omegas) -> np.ndarray:
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> np.round(phase_lag(osc, [0.0, osc.natural_frequency, 1e6]), 4)
     array([0.    , 1.5708, 3.1416])
     """
@@ -135,7 +135,7 @@ def phase_lag(osc: Oscillator, omegas) -> np.ndarray:
     return np.where((im == 0.0) & (re == 0.0), 0.5 * np.pi, np.arctan2(im, re))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class HalfPower:
     """Half-power points of a sampled magnification curve."""
 
@@ -176,7 +176,7 @@ def half_power_points(omegas, mags) -> HalfPower:
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> w = np.linspace(3.0, 6.0, 30001)
     >>> hp = half_power_points(w, magnification(osc, w))
     >>> round(hp.bandwidth, 3), round(hp.damping_ratio, 4)   # rad/s, 1
@@ -206,7 +206,7 @@ def half_power_points(omegas, mags) -> HalfPower:
     lo = np.interp(level, [g[j], g[j + 1]], [w[j], w[j + 1]])
     j = i + below_right[0]
     hi = np.interp(level, [g[j], g[j - 1]], [w[j], w[j - 1]])
-    return HalfPower(float(w[i]), float(g[i]), float(lo), float(hi))
+    return HalfPower(peak_omega=float(w[i]), peak_magnification=float(g[i]), omega_low=float(lo), omega_high=float(hi))
 
 
 def log_decrement(t, x) -> tuple[float, float]:
@@ -232,9 +232,9 @@ def log_decrement(t, x) -> tuple[float, float]:
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> t = np.linspace(0.0, 20.0, 20001)
-    >>> r = exact_response(osc, SineForce(0.0, 0.0), t, x0=1.0)
+    >>> r = exact_response(osc, SineForce(F0=0.0, omega=0.0), t, x0=1.0)
     >>> delta, zeta = log_decrement(r.t, r.x)
     >>> round(zeta, 5)
     0.0559
@@ -276,7 +276,7 @@ def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float
 
     Examples
     --------
-    >>> round(settling_time(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)), 2)   # s
+    >>> round(settling_time(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)), 2)   # s
     14.06
     """
     check_records(osc, force)
@@ -296,7 +296,7 @@ def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float
     tau = osc.time_constant
     bound = abs(x0) + abs(v0 + sigma * x0) * tau + abs(x0) * sigma * tau
     t_hi = tau * (max(0.0, math.log(max(bound, level) / level)) + 3.0)
-    free = SineForce(0.0, 0.0)
+    free = SineForce(F0=0.0, omega=0.0)
     grid = np.linspace(0.0, t_hi, 4001)
     tr = np.abs(exact_response(osc, free, grid, x0, v0).x)
     above = np.nonzero(tr > level)[0]
@@ -309,7 +309,7 @@ def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float
     return float(brentq(f, grid[j], grid[j + 1], xtol=1e-12))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class EnergyBalance:
     """Cumulative energy terms along a response, J (arrays on the response's times)."""
 
@@ -331,7 +331,7 @@ def energy_balance(osc: Oscillator, force: SineForce, resp: Response) -> EnergyB
 
     Examples
     --------
-    >>> osc, f = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+    >>> osc, f = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
     >>> r = exact_response(osc, f, np.linspace(0.0, 50.0, 50001))
     >>> eb = energy_balance(osc, f, r)
     >>> bool(np.max(np.abs(eb.residual)) < 1e-9 * np.max(np.abs(eb.work)))
@@ -350,7 +350,7 @@ def energy_balance(osc: Oscillator, force: SineForce, resp: Response) -> EnergyB
     work = cumulative_simpson(power_in, x=t, initial=0.0)
     dissipated = cumulative_simpson(power_out, x=t, initial=0.0)
     energy = 0.5 * osc.m * v * v + 0.5 * osc.k * x * x
-    return EnergyBalance(work, dissipated, energy - energy[0])
+    return EnergyBalance(work=work, dissipated=dissipated, stored=energy - energy[0])
 
 
 @functools.cache
@@ -454,7 +454,7 @@ def peak_displacement_map(
         for i, ro in enumerate(roots):
             coef[i] = ro.a
             if ro.kind != "osc":
-                kc[i], _, g[i], _ = _kernels(Oscillator(m, float(c[i]), k), t)
+                kc[i], _, g[i], _ = _kernels(Oscillator(m=m, c=float(c[i]), k=k), t)
     blown = ~(np.isfinite(kc).all(axis=1) & np.isfinite(g).all(axis=1))
     if blown.any():
         i = int(np.nonzero(blown)[0][0])
@@ -478,7 +478,7 @@ def peak_displacement_map(
     out = _peak_kernel()(sw, cw, kc, g, p, q, a, b)
     for i, j in zip(*np.nonzero(near), strict=True):
         try:
-            r = exact_response(Oscillator(m, float(c[i]), k), SineForce(F0, float(w[j])), t)
+            r = exact_response(Oscillator(m=m, c=float(c[i]), k=k), SineForce(F0=F0, omega=float(w[j])), t)
         except ParameterError:
             out[i, j] = math.inf
         else:

@@ -120,7 +120,7 @@ def _describe(name, low, high, low_open, unit) -> str:
     return ", ".join(parts)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Oscillator:
     """Linear single-degree-of-freedom oscillator ``m x'' + c x' + k x = F(t)``.
 
@@ -136,7 +136,7 @@ class Oscillator:
     0.0559
     >>> osc.regime
     'underdamped'
-    >>> Oscillator(1.0, 15.0, 20.0).regime
+    >>> Oscillator(m=1.0, c=15.0, k=20.0).regime
     'overdamped'
     """
 
@@ -246,7 +246,7 @@ class Oscillator:
         return 1.0 / sigma
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SineForce:
     """Harmonic force ``F(t) = F0 sin(omega t)``.
 

@@ -104,7 +104,7 @@ def simulate(
     Examples
     --------
     >>> from vibration import Oscillator, SineForce
-    >>> r = simulate(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), 50.0)
+    >>> r = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), 50.0)
     >>> r.t.shape, r.method, r.status
     ((5001,), 'RK45', 0)
     """

@@ -25,7 +25,7 @@ def data_dir() -> Path:
         return Path(path)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Scenario:
     """One simulated case of the paper."""
 
@@ -62,8 +62,8 @@ def load_scenarios() -> dict[str, Scenario]:
             scenario_id=row["scenario_id"],
             label=row["label"],
             figure=row["figure"],
-            oscillator=Oscillator(float(row["m_kg"]), float(row["c_Ns_per_m"]), float(row["k_N_per_m"])),
-            force=SineForce(float(row["F0_N"]), float(row["omega_rad_per_s"])),
+            oscillator=Oscillator(m=float(row["m_kg"]), c=float(row["c_Ns_per_m"]), k=float(row["k_N_per_m"])),
+            force=SineForce(F0=float(row["F0_N"]), omega=float(row["omega_rad_per_s"])),
             t_end=check_real("t_end", float(row["t_end_s"]), low=0.0, low_open=True, unit="s"),
             x0=float(row["x0_m"]),
             v0=float(row["v0_m_per_s"]),

@@ -87,7 +87,16 @@ def scenarios_from(
         ("damping_high", "High damping at resonance", "Figure 2", c_high, omega_res),
     ]
     return {
-        sid: Scenario(sid, label, fig, Oscillator(m, c, k), SineForce(F0, w), t_end, 0.0, 0.0)
+        sid: Scenario(
+            scenario_id=sid,
+            label=label,
+            figure=fig,
+            oscillator=Oscillator(m=m, c=c, k=k),
+            force=SineForce(F0=F0, omega=w),
+            t_end=t_end,
+            x0=0.0,
+            v0=0.0,
+        )
         for sid, label, fig, c, w in rows
     }
 

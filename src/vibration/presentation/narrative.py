@@ -9,7 +9,7 @@ Examples
 --------
 >>> tex("ω_res"), tex("F_0"), tex("m")
 ('$\\omega_\\mathrm{res}$', '$F_0$', '$m$')
->>> print(regime_clause(Oscillator(1.0, 15.0, 20.0)))
+>>> print(regime_clause(Oscillator(m=1.0, c=15.0, k=20.0)))
 overdamped (ζ = 1.68 > 1: the free motion does not oscillate)
 """
 
@@ -92,7 +92,7 @@ def regime_clause(osc: Oscillator, force: SineForce | None = None, t_end: float 
 
     Examples
     --------
-    >>> print(regime_clause(Oscillator(1.0, -0.1, 20.0)))
+    >>> print(regime_clause(Oscillator(m=1.0, c=-0.1, k=20.0)))
     unstable (negative damping, ζ = −0.0112: the free vibration grows as $e^{0.05\\,t/\\mathrm{s}}$)
     """
     zeta = osc.damping_ratio

@@ -219,7 +219,7 @@ def bound(value: float, tol: float) -> str | None:
     return f"{sig(abs(v), 2)} (above {sig(tol)})"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Approx:
     """A number whose last digits depend on the machine's floating-point rounding, with its tolerance.
 
@@ -229,7 +229,8 @@ class Approx:
     that scatter by multiples) or an absolute ``atol``; at least one is needed. In the plain-text
     representation (the nbval surface) it is written ``⟪value tolerance⟫``.
 
-    >>> Approx(2829, rtol=0.25).plain(), Approx(0.0338123, factor=5).plain(), Approx(6e-15, atol=1e-10).plain()
+    >>> a, b, c = Approx(value=2829, rtol=0.25), Approx(value=0.0338123, factor=5), Approx(value=6e-15, atol=1e-10)
+    >>> a.plain(), b.plain(), c.plain()
     ('⟪2829 r0.25⟫', '⟪0.0338123 f5⟫', '⟪6e-15 a1e-10⟫')
     """
 
@@ -273,7 +274,7 @@ class Approx:
         The span is invisible to the reader; the sanitizer masks the value and the text, and the numeric
         plugin compares the value within the tolerance.
 
-        >>> Approx(2829.4, rtol=0.25).html("2829")
+        >>> Approx(value=2829.4, rtol=0.25).html("2829")
         '<span class="vib-approx" data-value="2829.4" data-tol="r0.25">2829</span>'
         """
         return (
@@ -305,7 +306,7 @@ def approx(value: float, digits: int = 4, **tolerance: float) -> str:
     >>> approx(2926.0, rtol=0.25)
     '<span class="vib-approx" data-value="2926" data-tol="r0.25">2926</span>'
     """
-    return Approx(value, **tolerance).html(sig(value, digits))
+    return Approx(value=value, **tolerance).html(sig(value, digits))
 
 
 #: Width of an Approx cell in a plain-text table: the widest value text plus its tolerance.

@@ -30,20 +30,77 @@ from .schema import Param
 SHARED: dict[str, Param] = {
     p.name: p
     for p in (
-        Param("m", "m", 1.0, "kg", 1e-3, 1e3, "mass"),
-        Param("k", "k", 20.0, "N/m", 1e-3, 1e6, "spring stiffness"),
-        Param("F0", "F_0", 5.0, "N", 0.0, 1e4, "force amplitude", low_open=True),
+        Param(name="m", symbol="m", default=1.0, unit="kg", low=1e-3, high=1e3, meaning="mass"),
+        Param(name="k", symbol="k", default=20.0, unit="N/m", low=1e-3, high=1e6, meaning="spring stiffness"),
         Param(
-            "t_end", "t_end", 50.0, "s", 0.0, 1e3, "end of the simulated window, from rest at time zero", low_open=True
-        ),  # fmt: skip
-        Param("omega_ref", "ω_ref", 3.0, "rad/s", 0.0, 1e3, "reference forcing frequency", low_open=True),
+            name="F0", symbol="F_0", default=5.0, unit="N", low=0.0, high=1e4, meaning="force amplitude", low_open=True
+        ),
         Param(
-            "omega_res", "ω_res", 4.47, "rad/s", 0.0, 1e3, "the paper's “resonant” forcing frequency", low_open=True
+            name="t_end",
+            symbol="t_end",
+            default=50.0,
+            unit="s",
+            low=0.0,
+            high=1e3,
+            meaning="end of the simulated window, from rest at time zero",
+            low_open=True,
         ),  # fmt: skip
-        Param("c_low", "c_low", 0.1, "N s/m", -1e4, 1e4, "low damping coefficient (0: undamped, < 0: self-excited)"),
-        Param("c_nominal", "c_nom", 0.5, "N s/m", -1e4, 1e4, "nominal damping coefficient"),
-        Param("c_high", "c_high", 15.0, "N s/m", -1e4, 1e4, "high damping coefficient"),
-        Param("n_points", "N", 5001, "", 2, min(200_001, N_POINTS_MAX), "output samples over the window"),
+        Param(
+            name="omega_ref",
+            symbol="ω_ref",
+            default=3.0,
+            unit="rad/s",
+            low=0.0,
+            high=1e3,
+            meaning="reference forcing frequency",
+            low_open=True,
+        ),
+        Param(
+            name="omega_res",
+            symbol="ω_res",
+            default=4.47,
+            unit="rad/s",
+            low=0.0,
+            high=1e3,
+            meaning="the paper's “resonant” forcing frequency",
+            low_open=True,
+        ),  # fmt: skip
+        Param(
+            name="c_low",
+            symbol="c_low",
+            default=0.1,
+            unit="N s/m",
+            low=-1e4,
+            high=1e4,
+            meaning="low damping coefficient (0: undamped, < 0: self-excited)",
+        ),
+        Param(
+            name="c_nominal",
+            symbol="c_nom",
+            default=0.5,
+            unit="N s/m",
+            low=-1e4,
+            high=1e4,
+            meaning="nominal damping coefficient",
+        ),
+        Param(
+            name="c_high",
+            symbol="c_high",
+            default=15.0,
+            unit="N s/m",
+            low=-1e4,
+            high=1e4,
+            meaning="high damping coefficient",
+        ),
+        Param(
+            name="n_points",
+            symbol="N",
+            default=5001,
+            unit="",
+            low=2,
+            high=min(200_001, N_POINTS_MAX),
+            meaning="output samples over the window",
+        ),
     )
 }
 

@@ -5,7 +5,9 @@ against it, and the chapter's parameter table reads it.
 
 Examples
 --------
->>> s = Schema("12_real_oscillator", (Param("t_skip", "t_skip", 2.0, "s", 0.0, 20.0, "start of the window"),))
+>>> t_skip = Param(name="t_skip", symbol="t_skip", default=2.0, unit="s", low=0.0, high=20.0,
+...                meaning="start of the window")
+>>> s = Schema(notebook="12_real_oscillator", params=(t_skip,))
 >>> s.check({"t_skip": 3.0})
 {'t_skip': 3.0}
 >>> s.check({"t_skip": 30.0})
@@ -24,7 +26,7 @@ from pathlib import Path
 from ..physics.model import ParameterError, check_int, check_real
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Param:
     """One parameter of a chapter."""
 
@@ -61,7 +63,7 @@ class Param:
         return check_real(self.name, value, low=self.low, low_open=self.low_open, high=self.high, unit=self.unit)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Schema:
     """The parameters of one chapter (its notebook's stem) and the rules that tie several together."""
 
@@ -96,7 +98,9 @@ class Schema:
         checks every value and the rules that tie them together; ``Params.from_values(mapping)`` takes
         a mapping (missing names keep their defaults).
 
-        >>> S = Schema("x", (Param("n", "n", 3, "", 1, 9, "count"), Param("c", "c", 0.5, "N s/m", 0.0, 9.0, "d")))
+        >>> n = Param(name="n", symbol="n", default=3, unit="", low=1, high=9, meaning="count")
+        >>> c = Param(name="c", symbol="c", default=0.5, unit="N s/m", low=0.0, high=9.0, meaning="d")
+        >>> S = Schema(notebook="x", params=(n, c))
         >>> P = S.record_type()
         >>> P(), P.from_values({"n": 4}).n
         (Params(n=3, c=0.5), 4)
@@ -130,6 +134,7 @@ class Schema:
                 "__doc__": f"The validated parameters of {self.notebook} (defaults and ranges: its SCHEMA).",
             },
             frozen=True,
+            kw_only=True,
         )
 
     def check(self, values: Mapping) -> dict:

@@ -16,8 +16,8 @@ report runner sets it), showing a table also writes ``<name>.csv`` there.
 Examples
 --------
 >>> t = Table(
-...     [{"c": 0.5, "xss": 2.2370381}, {"c": 15.0, "xss": Missing("no peak when ζ ≥ 1/√2")}],
-...     [Column("c", "c (N s/m)", 3), Column("xss", "x_ss (m)", 4)],
+...     [{"c": 0.5, "xss": 2.2370381}, {"c": 15.0, "xss": Missing(reason="no peak when ζ ≥ 1/√2")}],
+...     [Column(key="c", header="c (N s/m)", digits=3), Column(key="xss", header="x_ss (m)", digits=4)],
 ...     caption="Steady amplitudes.",
 ...     name="tab-demo",
 ... )
@@ -51,21 +51,21 @@ DASH = "—"
 _MARKS = "abcdefghijklmnopqrstuvwxyz"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Missing:
     """A quantity that does not exist in this case, and why (shown as a footnote)."""
 
     reason: str
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Composite:
     """A cell that joins words and numbers, some of them machine-dependent (:class:`Approx`).
 
     ``parts`` holds text and ``(Approx, digits)`` pairs; the reader sees one line of text, the plain form
     writes each Approx with its tolerance (``⟪value tolerance⟫``), and its width is fixed, as an Approx cell's.
 
-    >>> c = Composite(("a = ", (Approx(0.012345, rtol=0.1), 3), " ± ", (Approx(0.0021, factor=3), 2)))
+    >>> c = Composite(parts=("a = ", (Approx(value=0.012345, rtol=0.1), 3), " ± ", (Approx(value=0.0021, factor=3), 2)))
     >>> str(c), c.plain()
     ('a = 0.0123 ± 0.0021', 'a = ⟪0.012345 r0.1⟫ ± ⟪0.0021 f3⟫')
     """
@@ -90,7 +90,7 @@ class Composite:
         return sum(len(p) if isinstance(p, str) else plain_width(p[0]) for p in self.parts)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Column:
     """One column: the row key, the header (symbol and unit), significant digits."""
 
@@ -109,7 +109,7 @@ def fmt(value, digits: int = 4, zeros: bool = False) -> str:
     --------
     >>> fmt(2.23703819), fmt(0.000123456), fmt(True), fmt(None), fmt(float("nan")), fmt("overdamped")
     ('2.237', '0.0001235', 'yes', '—', '—', 'overdamped')
-    >>> fmt(1.273e5, 4), fmt(-2.5e-9, 2), fmt(1e-12), fmt(31540.0, 3), fmt(Approx(2829.0, rtol=0.25))
+    >>> fmt(1.273e5, 4), fmt(-2.5e-9, 2), fmt(1e-12), fmt(31540.0, 3), fmt(Approx(value=2829.0, rtol=0.25))
     ('1.273×10⁵', '−2.5×10⁻⁹', '10⁻¹²', '3.15×10⁴', '2829')
     >>> fmt(-0.1), fmt(-1e-9), fmt(-3)
     ('−0.1', '−10⁻⁹', '−3')
@@ -361,9 +361,9 @@ def bound(value: float, tol: float) -> str | Missing:
     Missing(reason='infinite')
     """
     if math.isinf(value):
-        return Missing("infinite")
+        return Missing(reason="infinite")
     text = _bound(value, tol)
-    return Missing("not computed for this case") if text is None else text
+    return Missing(reason="not computed for this case") if text is None else text
 
 
 def _csv_cell(value) -> str:
@@ -377,7 +377,10 @@ def _csv_cell(value) -> str:
 
 def table(rows: Iterable[dict], columns: Sequence[Column | tuple], caption: str, name: str, notes=()) -> Table:
     """Shorthand: columns may be ``(key, header, digits)`` tuples."""
-    cols = [c if isinstance(c, Column) else Column(*c) for c in columns]
+    cols = [
+        c if isinstance(c, Column) else Column(**dict(zip(("key", "header", "digits"), c, strict=False)))
+        for c in columns
+    ]
     return Table(list(rows), cols, caption, name, tuple(notes))
 
 

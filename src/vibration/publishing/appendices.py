@@ -7,7 +7,9 @@ references (:mod:`vibration.presentation.references`).
 Examples
 --------
 >>> from vibration.presentation.schema import Param, Schema
->>> s = Schema("04_x", (Param("omega_max", "ω_max", 10.0, "rad/s", 0.0, 1e3, "upper frequency", low_open=True),))
+>>> omega_max = Param(name="omega_max", symbol="ω_max", default=10.0, unit="rad/s", low=0.0, high=1e3,
+...                   meaning="upper frequency", low_open=True)
+>>> s = Schema(notebook="04_x", params=(omega_max,))
 >>> print(symbols_markdown({"04_x": s}).splitlines()[-4])
   - 0 < ω{sub}`max` ≤ 1000
 """

@@ -42,7 +42,7 @@ def bench_exact(quick: bool) -> None:
     ``exact_response`` forms its exponentials from about sqrt(n) anchors and
     offsets in a compiled kernel, so it can come within a few floors.
     """
-    osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)
+    osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)
     t = np.linspace(0.0, 50.0, 5001)
     t_general = t.copy()
     t_general[1] *= 1.0 + 1e-9  # not uniform any more: the pointwise path
@@ -83,11 +83,11 @@ def bench_map(quick: bool) -> None:
 
     def loop_ivp():
         for c, w in cells:
-            np.max(np.abs(simulate(Oscillator(m, c, k), SineForce(F0, w), 50.0, 5001).x))
+            np.max(np.abs(simulate(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), 50.0, 5001).x))
 
     def loop_exact():
         for c, w in cells:
-            np.max(np.abs(exact_response(Oscillator(m, c, k), SineForce(F0, w), t).x))
+            np.max(np.abs(exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t).x))
 
     scale = omegas.size * dampings.size / len(cells)
     t_ivp = median_time(loop_ivp, 1 if quick else 3) * scale

@@ -170,7 +170,7 @@ def differences(old: dict[str, str], new: dict[str, str]) -> list[str]:
     return [f"{k} changed" for k in changed] + [f"{k} is new" for k in added] + [f"{k} is gone" for k in removed]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Lookup:
     """The cache's answer for one chapter: a reusable run, or why it must run again."""
 
@@ -191,15 +191,15 @@ class ChapterCache:
     def lookup(self, name: str, current: dict[str, str]) -> Lookup:
         meta, nb, _ = self._paths(name)
         if not (meta.is_file() and nb.is_file()):
-            return Lookup(False, ("no cached run",))
+            return Lookup(hit=False, reasons=("no cached run",))
         try:
             stored = json.loads(meta.read_text(encoding="utf-8"))
         except (OSError, ValueError):
-            return Lookup(False, ("the cached run's record is unreadable",))
+            return Lookup(hit=False, reasons=("the cached run's record is unreadable",))
         diff = differences(stored.get("manifest", {}), current)
         if diff:
-            return Lookup(False, tuple(diff))
-        return Lookup(True, (), float(stored.get("elapsed_s", 0.0)))
+            return Lookup(hit=False, reasons=tuple(diff))
+        return Lookup(hit=True, reasons=(), elapsed_s=float(stored.get("elapsed_s", 0.0)))
 
     def last_elapsed(self, name: str) -> float | None:
         """The execution time of the chapter's last stored run, s (None when it never ran): longest first."""

@@ -182,7 +182,7 @@ def edition_text(root: Path | None = None) -> str:
     return f"Edition {__version__}, {built}"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Edition:
     """What was printed: the chapter titles in order and the page each starts on (1-based)."""
 
@@ -233,7 +233,7 @@ def print_book(page, pdf_path: Path, title: str, parts: list[tuple[str, int]], p
         raise RuntimeError("the print edition changed when its page marks were cleared")
     marked = [(d, t, p) for (d, t), p in zip(sections, section_pages, strict=True)]
     add_bookmarks(pdf_path, titles, pages, parts, marked)
-    return Edition(tuple(titles), tuple(pages), len(PdfReader(str(pdf_path)).pages))
+    return Edition(titles=tuple(titles), pages=tuple(pages), page_count=len(PdfReader(str(pdf_path)).pages))
 
 
 def add_bookmarks(

@@ -78,7 +78,7 @@ def project_root() -> Path:
     )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Chapter:
     """One notebook of the report."""
 
@@ -102,7 +102,7 @@ def discover(root: Path | None = None) -> list[Chapter]:
 
     folder = (root or project_root()) / "notebooks"
     paths = sorted(p for p in folder.glob("*.ipynb") if not p.name.startswith("."))
-    return [Chapter(p, papermill.inspect_notebook(str(p))) for p in paths]
+    return [Chapter(path=p, params=papermill.inspect_notebook(str(p))) for p in paths]
 
 
 def select(chapters: list[Chapter], keys: list[str]) -> list[Chapter]:
@@ -341,7 +341,17 @@ def chapter_parameters(ch: Chapter, values: dict) -> list:
             param = schema[name]
             meaning, unit, symbol = param.meaning or meaning, param.unit, param.symbol
         is_paper = name in paper and not differs(default, paper[name])
-        out.append(Parameter(name, values.get(name, default), default, meaning, unit, is_paper, symbol))
+        out.append(
+            Parameter(
+                name=name,
+                value=values.get(name, default),
+                default=default,
+                meaning=meaning,
+                unit=unit,
+                paper=is_paper,
+                symbol=symbol,
+            )
+        )
     return out
 
 

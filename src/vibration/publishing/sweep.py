@@ -102,10 +102,10 @@ def parse_values(param, spec: str) -> Axis:
     Examples
     --------
     >>> from vibration.presentation.schema import Param
-    >>> w = Param("omega", "ω", 1.0, "rad/s", 0.0, 10.0, "frequency")
+    >>> w = Param(name="omega", symbol="ω", default=1.0, unit="rad/s", low=0.0, high=10.0, meaning="frequency")
     >>> parse_values(w, "1:2:3").values, parse_values(w, "1:4:3log").values, parse_values(w, "0.5, 2").values
     ((1.0, 1.5, 2.0), (1.0, 2.0, 4.0), (0.5, 2.0))
-    >>> parse_values(Param("n", "n", 3, "", 1, 99, "count"), "1:4:3").values
+    >>> parse_values(Param(name="n", symbol="n", default=3, unit="", low=1, high=99, meaning="count"), "1:4:3").values
     Traceback (most recent call last):
     ...
     vibration.physics.model.ParameterError: n grid 1:4:3 gives 2.5, not an integer: allowed integer values on an \

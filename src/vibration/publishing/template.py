@@ -40,10 +40,18 @@ from __future__ import annotations
 from vibration.presentation.schema import Param, Schema
 
 SCHEMA = Schema(
-    "{stem}",
-    (
-        Param("{prefix}zeta", "ζ", 0.05, "", 0.001, 0.7, "damping ratio"),
-        Param("{prefix}n_grid", "n", 2001, "", 101, 100_001, "frequency ratios on the grid"),
+    notebook="{stem}",
+    params=(
+        Param(name="{prefix}zeta", symbol="ζ", default=0.05, unit="", low=0.001, high=0.7, meaning="damping ratio"),
+        Param(
+            name="{prefix}n_grid",
+            symbol="n",
+            default=2001,
+            unit="",
+            low=101,
+            high=100_001,
+            meaning="frequency ratios on the grid",
+        ),
     ),
 )
 
@@ -63,7 +71,7 @@ import numpy as np
 from vibration.chapters.{topic}.params import Params
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class {record}:
     """What the chapter shows."""
 
@@ -94,7 +102,7 @@ from vibration.presentation.tables import Column, Table
 def peak_table(st: {record}) -> Table:
     """The grid's peak beside the closed form."""
     rows = [{{"what": "grid", "peak": st.peak}}, {{"what": "closed form", "peak": st.peak_exact}}]
-    columns = [Column("what", "method"), Column("peak", "largest X/X_st", 4)]
+    columns = [Column(key="what", header="method"), Column(key="peak", header="largest X/X_st", digits=4)]
     return Table(rows, columns, "The resonant peak.", "tab-{topic}")
 
 

@@ -35,14 +35,14 @@ PREREQUISITES = ("chapter 1: ω<sub>n</sub>, ζ, the steady amplitude X and the 
 
 
 def _settle(p: Params, c: float) -> float:
-    return settling_time(Oscillator(p.m, c, p.k), SineForce(p.F0, p.omega_res))
+    return settling_time(Oscillator(m=p.m, c=c, k=p.k), SineForce(F0=p.F0, omega=p.omega_res))
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
     """The chapter's exercises for ``params``, answers computed by the package."""
     p = params
-    nom = Oscillator(p.m, p.c_nominal, p.k)
-    res = SineForce(p.F0, p.omega_res)
+    nom = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
+    res = SineForce(F0=p.F0, omega=p.omega_res)
     ss = steady_state(nom, res)
     out = [
         Exercise(
@@ -93,7 +93,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             correct=key,
         )
     )
-    low = Oscillator(p.m, p.c_low, p.k)
+    low = Oscillator(m=p.m, c=p.c_low, k=p.k)
     stable = p.c_low > 0
     roots = {
         "a": "both in the left half-plane: bounded",

@@ -10,8 +10,8 @@ from vibration.presentation.parameters import paper_window, shared
 from vibration.presentation.schema import Schema
 
 SCHEMA = Schema(
-    "02_claims_audit",
-    (
+    notebook="02_claims_audit",
+    params=(
         shared("m"),
         shared("k"),
         shared("F0"),

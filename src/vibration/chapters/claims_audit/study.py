@@ -28,7 +28,7 @@ from vibration.physics.stability import poles
 from vibration.presentation.findings import scenarios_of
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Reading:
     """One way to read a claim that is not reproduced, with the number it gives and its verdict."""
 
@@ -38,7 +38,7 @@ class Reading:
     verdict: str  # the verdict of the same rule applied to this reading
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Claim:
     """One audited claim (the fields of :func:`vibration.physics.audit.audit_claims`, typed)."""
 
@@ -73,7 +73,7 @@ class Claim:
         return paper / exact if exact else math.inf
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ClaimsAuditStudy:
     """The audit of every claim for one run's parameters."""
 
@@ -111,7 +111,7 @@ def _claim(row: dict) -> Claim:
         verdict=row["verdict"],
         reason=row["reason"],
         best_reading=row["best_reading"],
-        readings=tuple(Reading(*r) for r in row["readings"]),
+        readings=tuple(Reading(description=d, value=v, unit=u, verdict=vd) for d, v, u, vd in row["readings"]),
         scenario_id=row["scenario_id"],
         changed=row["changed"],
     )
@@ -134,4 +134,4 @@ def claims_audit_study(params: Params | None = None, **values) -> ClaimsAuditStu
     scenarios = scenarios_of(p)
     rows = audit_claims(scenarios, load_claims(), p.n_points)
     decay = {sid: -float(max(s.real for s in poles(sc.oscillator))) for sid, sc in scenarios.items()}
-    return ClaimsAuditStudy(p, tuple(_claim(r) for r in rows), tuple(rows), decay)
+    return ClaimsAuditStudy(params=p, claims=tuple(_claim(r) for r in rows), rows=tuple(rows), slowest_decay=decay)

@@ -70,9 +70,9 @@ def _quantity(c: Claim) -> str:
 
 def _value(v, unit: str, digits: int = DIGITS):
     if v is None:
-        return Missing(NOT_EXISTING)
+        return Missing(reason=NOT_EXISTING)
     if isinstance(v, str):
-        return Missing(NOT_AFFECTED) if v == "" else cell(v)
+        return Missing(reason=NOT_AFFECTED) if v == "" else cell(v)
     u = "" if unit in ("", "1") else f" {unit}"
     return f"{fixed(float(v), digits)}{u}"
 
@@ -119,13 +119,13 @@ def claims_table(st: ClaimsAuditStudy) -> Table:
     return Table(
         out,
         [
-            Column("id", "claim"),
-            Column("says", "the paper says"),
-            Column("q", "quantity, case"),
-            Column("rk45", "paper's method (RK45)"),
-            Column("exact", "exact"),
-            Column("verdict", "verdict"),
-            Column("case", "case run"),
+            Column(key="id", header="claim"),
+            Column(key="says", header="the paper says"),
+            Column(key="q", header="quantity, case"),
+            Column(key="rk45", header="paper's method (RK45)"),
+            Column(key="exact", header="exact"),
+            Column(key="verdict", header="verdict"),
+            Column(key="case", header="case run"),
         ],
         notes=notes,
         caption="Every checkable claim of the paper: its kind and value, the value the paper's own method gives, "
@@ -146,7 +146,7 @@ def readings_table(st: ClaimsAuditStudy) -> Table | None:
                     "id": c.claim_id,
                     "reading": cell(r.description),
                     "value": _value(r.value, r.unit, READING_DIGITS),
-                    "verdict": r.verdict if r.value is not None else Missing(NOT_EXISTING),
+                    "verdict": r.verdict if r.value is not None else Missing(reason=NOT_EXISTING),
                     "best": "best" if r.description == c.best_reading else "",
                 }
             )
@@ -155,11 +155,11 @@ def readings_table(st: ClaimsAuditStudy) -> Table | None:
     return Table(
         out,
         [
-            Column("id", "claim"),
-            Column("reading", "reading tested"),
-            Column("value", "its value"),
-            Column("verdict", "verdict of this reading"),
-            Column("best", "fits best"),
+            Column(key="id", header="claim"),
+            Column(key="reading", header="reading tested"),
+            Column(key="value", header="its value"),
+            Column(key="verdict", header="verdict of this reading"),
+            Column(key="best", header="fits best"),
         ],
         caption="Readings that could explain each discrepancy, computed exactly and judged by the same rule; "
         "'best' marks the reading that fits best (which number matches, not what the authors meant).",
@@ -172,7 +172,7 @@ def verdict_table(st: ClaimsAuditStudy) -> Table:
     counts = [{"verdict": v, "n": n} for v, n in st.counts.items()]
     return Table(
         counts,
-        [Column("verdict", "verdict"), Column("n", "claims")],
+        [Column(key="verdict", header="verdict"), Column(key="n", header="claims")],
         caption="Verdicts at a glance.",
         name="tab-claims-verdicts",
         notes=(

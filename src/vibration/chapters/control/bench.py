@@ -30,7 +30,7 @@ Row = tuple[str, float, float | None, str]
 def measure(quick: bool) -> tuple[str, list[Row]]:
     """Time the semi-active sweeps at the chapter's default parameters, as the notebook runs them."""
     p = Params()
-    osc = Oscillator(p.m, p.c_nominal, p.k)
+    osc = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     Y = p.F0 / p.k
     wn = osc.natural_frequency
     ratios = np.unique(np.concatenate([np.geomspace(0.3, 4.0, p.n_sweep), [1.0, np.sqrt(2.0)]]))

@@ -33,7 +33,7 @@ PREREQUISITES = ("chapter 6: poles and stability", "feedback and the closed loop
 def exercises(params: Params) -> tuple[Exercise, ...]:
     """The chapter's exercises for ``params``, answers computed by the package."""
     p = params
-    plant = Oscillator(p.m, p.c_nominal, p.k)
+    plant = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     cl = pd_oscillator(plant, p.kp, p.kd)
     out = [
         Exercise(
@@ -58,7 +58,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             ),
         )
     ]
-    flutter = Oscillator(p.m, p.c_flutter, p.k)
+    flutter = Oscillator(m=p.m, c=p.c_flutter, k=p.k)
     kd_min = stabilising_velocity_gain(flutter)
     if kd_min > 0:
         out.append(

@@ -96,7 +96,7 @@ def _params(params: Params | None, values: dict) -> Params:
 # ----------------------------------------------------------------------------- active
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Design:
     """One active law on equal footing: gains, steady amplitude, force against its floor, loop costs."""
 
@@ -110,7 +110,7 @@ class Design:
     costs: LoopCosts  # delay margin, crossover, loop gain, noise bandwidth
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ClosedLoop:
     """A PD-type loop ``u = -K_x x - K_v v`` seen as the oscillator ``(m, c + K_v, k + K_x)``."""
 
@@ -122,7 +122,7 @@ class ClosedLoop:
     amplitude: float  # steady amplitude at the forcing, m
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Tradeoff:
     """The LQR designs along the force weight r: steady amplitude and RMS force."""
 
@@ -134,7 +134,7 @@ class Tradeoff:
     pd_force: float  # steady RMS force of the PD loop, N
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class MoveRun:
     """One PID set-point move (force limit and integrator treatment) summarised over its steady tail."""
 
@@ -149,7 +149,7 @@ class MoveRun:
     peak_u: float  # largest |u|, N
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Hold:
     """Can the force limit hold the set point against the disturbance? And a move that it can hold."""
 
@@ -160,7 +160,7 @@ class Hold:
     run: MoveRun | None  # the feasible move with clamping (None: no set point can be held)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FlutterCase:
     """The negative-damping plant under velocity feedback ``u = -K_v v``."""
 
@@ -170,7 +170,7 @@ class FlutterCase:
     im: float  # largest |imaginary part|, rad/s
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ActiveStudy:
     """Every active-control run of the chapter at the forcing ``F0 sin(omega_res t)``."""
 
@@ -214,7 +214,7 @@ def _closed_loop(name: str, osc: Oscillator, kx: float, kv: float, force: SineFo
     cl = pd_oscillator(osc, kx, kv)
     poles = np.roots([cl.m, cl.c, cl.k]).astype(complex)
     pole = poles[np.argmax(poles.imag)] if np.any(poles.imag != 0) else poles[np.argmax(poles.real)]
-    return ClosedLoop(name, kx, kv, cl, complex(pole), steady_state(cl, force).amplitude)
+    return ClosedLoop(name=name, kx=kx, kv=kv, osc=cl, pole=complex(pole), amplitude=steady_state(cl, force).amplitude)
 
 
 def _lqr_check(osc: Oscillator, design: LQRResult, q_x: float, q_v: float, r: float) -> dict[str, float]:
@@ -287,7 +287,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     """
     p = _params(params, values)
     n_r = check_int("n_r", n_r, low=2, high=2000)
-    osc, force = Oscillator(p.m, p.c_nominal, p.k), SineForce(p.F0, p.omega_res)
+    osc, force = Oscillator(m=p.m, c=p.c_nominal, k=p.k), SineForce(F0=p.F0, omega=p.omega_res)
     t = np.linspace(0.0, p.t_end, p.n_points)
     ts = t_steady(p.t_end, p.omega_res)
     xs, us, vs = {}, {}, {}
@@ -325,9 +325,15 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
         kx, ki, kv = gains[name]
         X = loop_amplitude(osc, force, kx, ki, kv)
         designs[name] = Design(
-            name, kx, ki, kv, X, metrics[name].rms_u, float(force_floor(osc, force, X)),
-            loop_costs(osc, kx, kv, ki, p.omega_res),
-        )  # fmt: skip
+            name=name,
+            kx=kx,
+            ki=ki,
+            kv=kv,
+            amplitude=X,
+            u_rms=metrics[name].rms_u,
+            floor=float(force_floor(osc, force, X)),
+            costs=loop_costs(osc, kx, kv, ki, p.omega_res),
+        )
 
     moves = {}
     for scheme in MOVE_SCHEMES:
@@ -347,14 +353,16 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
             t_end=p.t_end, n_points=p.n_points,
         )  # fmt: skip
         ok_run = _move_run("clamping", run, x_ok, ts)
-    hold = Hold(needed, needed <= p.u_max, x_max, x_ok, ok_run)
+    hold = Hold(needed=needed, feasible=needed <= p.u_max, x_max=x_max, x_ok=x_ok, run=ok_run)
 
-    flutter = Oscillator(p.m, p.c_flutter, p.k)
+    flutter = Oscillator(m=p.m, c=p.c_flutter, k=p.k)
     kd_star = stabilising_velocity_gain(flutter)
     cases = []
     for label, kv in (("no feedback", 0.0), ("0.9", 0.9 * kd_star), ("1", kd_star), ("1.1", 1.1 * kd_star)):
         poles = np.roots([flutter.m, flutter.c + kv, flutter.k]).astype(complex)
-        cases.append(FlutterCase(label, kv, float(np.max(poles.real)), float(np.max(np.abs(poles.imag)))))
+        cases.append(
+            FlutterCase(label=label, kv=kv, re=float(np.max(poles.real)), im=float(np.max(np.abs(poles.imag))))
+        )
 
     return ActiveStudy(
         osc=osc,
@@ -385,7 +393,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
 # ----------------------------------------------------------------------------- semi-active
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SemiActiveFindings:
     """What the sweeps show: where clipped skyhook beats every passive damper, and what it costs."""
 
@@ -401,7 +409,7 @@ class SemiActiveFindings:
     force_res_firm: float  # RMS force of the firm passive damper at omega_n, N
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SemiActiveStudy:
     """Semi-active suspension: sweeps across frequency and time runs at the forcing frequency."""
 
@@ -474,15 +482,15 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
     (0.25, ['clipped', 'mr', 'on-off'])
     """
     p = _params(params, values)
-    osc = Oscillator(p.m, p.c_nominal, p.k)
+    osc = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     c_min, c_max, omega = p.c_sa_min, p.c_sa_max, p.omega_res
     Y = p.F0 / p.k
     wn = osc.natural_frequency
     ratios = np.unique(np.concatenate([np.geomspace(0.3, 4.0, p.n_sweep), [1.0, math.sqrt(2.0)]]))
     w = ratios * wn
     closed = {
-        "soft": passive_transmissibility(Oscillator(p.m, p.c_nominal + c_min, p.k), w),
-        "firm": passive_transmissibility(Oscillator(p.m, p.c_nominal + c_max, p.k), w),
+        "soft": passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + c_min, k=p.k), w),
+        "firm": passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + c_max, k=p.k), w),
         "skyhook": skyhook_transmissibility(osc, p.c_sky, w),
         "envelope": np.where(ratios < math.sqrt(2.0), 1.0, 1.0 / np.abs(ratios**2 - 1.0 + (ratios == 1.0))),
     }
@@ -526,7 +534,7 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
     }
     closed_run_error = {}
     for name, exact in (
-        ("soft", float(passive_transmissibility(Oscillator(p.m, p.c_nominal + c_min, p.k), omega))),
+        ("soft", float(passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + c_min, k=p.k), omega))),
         ("skyhook", float(skyhook_transmissibility(osc, p.c_sky, omega))),
     ):
         r = runs[name]
@@ -559,7 +567,7 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
 # ----------------------------------------------------------------------------- input shaping
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ShapingStudy:
     """Point-to-point moves with and without input shaping, and the sensitivity curves."""
 
@@ -589,8 +597,8 @@ def shaping_study(
     """
     p = _params(params, values)
     n_ratio = check_int("n_ratio", n_ratio, low=2, high=100_000)
-    model = Oscillator(p.m, p.c_nominal, p.k)
-    actual = Oscillator(p.m, p.c_nominal, p.k * (1.0 + p.freq_error) ** 2)
+    model = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
+    actual = Oscillator(m=p.m, c=p.c_nominal, k=p.k * (1.0 + p.freq_error) ** 2)
     shapers = {"ZV": zv_shaper(model), "ZVD": zvd_shaper(model)}
     xs, res, sim, amp = {}, {}, {}, {}
     t0, x0, v0, _ = shaped_move(actual, None, p.move, t_end, n_points)
@@ -607,7 +615,7 @@ def shaping_study(
         amp[name] = float(ring[after][0] * math.exp(actual.decay_rate * (t[after][0] - tn)))
     ratios = np.linspace(0.5, 1.5, n_ratio)
     sens = {
-        name: np.array([shaper_residual(sh, Oscillator(p.m, p.c_nominal, p.k * q * q)) for q in ratios])
+        name: np.array([shaper_residual(sh, Oscillator(m=p.m, c=p.c_nominal, k=p.k * q * q)) for q in ratios])
         for name, sh in shapers.items()
     }
     return ShapingStudy(
@@ -631,7 +639,7 @@ def shaping_study(
 # ----------------------------------------------------------------------------- the chapter
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ControlStudy:
     """The whole chapter: its parameters and the three studies."""
 
@@ -655,4 +663,4 @@ def control_study(params: Params | None = None, **values) -> ControlStudy:
         Frozen record of every result the chapter shows.
     """
     p = _params(params, values)
-    return ControlStudy(p, active_study(p), semi_active_study(p), shaping_study(p))
+    return ControlStudy(params=p, active=active_study(p), semi=semi_active_study(p), shaping=shaping_study(p))

@@ -19,10 +19,10 @@ from vibration.chapters.control.study import (
 from vibration.physics.control import Metrics
 from vibration.presentation.tables import Column, Missing, Table
 
-NO_INTEGRATOR = Missing("no integral term")
-NO_CROSSOVER = Missing("the loop gain never reaches 1: no crossover, and no delay destabilises the loop")
-FIRST_ROW = Missing("first row")
-NO_SHAPER = Missing("no shaper: the unshaped step is the reference")
+NO_INTEGRATOR = Missing(reason="no integral term")
+NO_CROSSOVER = Missing(reason="the loop gain never reaches 1: no crossover, and no delay destabilises the loop")
+FIRST_ROW = Missing(reason="first row")
+NO_SHAPER = Missing(reason="no shaper: the unshaped step is the reference")
 
 
 def within(value: float, tol: float) -> str | Missing:
@@ -31,7 +31,7 @@ def within(value: float, tol: float) -> str | Missing:
     The printed tolerance, not the value's order of magnitude, is what reproduces on every machine.
     """
     if not math.isfinite(value):
-        return Missing("not computed for this case") if math.isnan(value) else Missing("infinite")
+        return Missing(reason="not computed for this case") if math.isnan(value) else Missing(reason="infinite")
     if abs(value) < tol:
         return f"< {num(tol)}"
     return f"{num(abs(value), 2)} (above {num(tol)})"
@@ -58,15 +58,15 @@ def _metric_rows(metrics: dict[str, Metrics], reference: str) -> list[dict]:
 
 
 _METRIC_COLUMNS = [
-    Column("controller", "controller"),
-    Column("peak_x", "max|x| (m)"),
-    Column("rms_x", "x_rms (m)"),
-    Column("peak_x_ss", "max|x|, steady (m)"),
-    Column("rms_x_ss", "x_rms, steady (m)"),
-    Column("reduction", "RMS reduction, steady"),
-    Column("peak_u", "max|u| (N)"),
-    Column("rms_u", "u_rms (N)"),
-    Column("energy", "E (J)"),
+    Column(key="controller", header="controller"),
+    Column(key="peak_x", header="max|x| (m)"),
+    Column(key="rms_x", header="x_rms (m)"),
+    Column(key="peak_x_ss", header="max|x|, steady (m)"),
+    Column(key="rms_x_ss", header="x_rms, steady (m)"),
+    Column(key="reduction", header="RMS reduction, steady"),
+    Column(key="peak_u", header="max|u| (N)"),
+    Column(key="rms_u", header="u_rms (N)"),
+    Column(key="energy", header="E (J)"),
 ]
 
 
@@ -94,14 +94,14 @@ def gains_table(study: ControlStudy) -> Table:
     return Table(
         rows,
         [
-            Column("law", "law"),
-            Column("kx", "K_x (N/m)"),
-            Column("kv", "K_v (N s/m)"),
-            Column("wn", "ω_n,cl (rad/s)"),
-            Column("zeta", "ζ_cl"),
-            Column("re", "Re s (1/s)"),
-            Column("im", "|Im s| (rad/s)"),
-            Column("X", "X_ss (m)"),
+            Column(key="law", header="law"),
+            Column(key="kx", header="K_x (N/m)"),
+            Column(key="kv", header="K_v (N s/m)"),
+            Column(key="wn", header="ω_n,cl (rad/s)"),
+            Column(key="zeta", header="ζ_cl"),
+            Column(key="re", header="Re s (1/s)"),
+            Column(key="im", header="|Im s| (rad/s)"),
+            Column(key="X", header="X_ss (m)"),
         ],
         caption=(
             "The closed loop of u = −K_x x − K_v v is the oscillator (m, c + K_v, k + K_x): its natural frequency "
@@ -137,18 +137,18 @@ def costs_table(study: ControlStudy) -> Table:
     return Table(
         rows,
         [
-            Column("law", "law"),
-            Column("kx", "K_x, K_P (N/m)"),
-            Column("ki", "K_I (N/(m s))"),
-            Column("kv", "K_v, K_D (N s/m)"),
-            Column("X", "X_ss (m)"),
-            Column("u_rms", "u_rms (N)"),
-            Column("floor", "least u_rms for X_ss (N)"),
-            Column("L", "|L(iω)|"),
-            Column("wc", "ω_c (rad/s)"),
-            Column("pm", "phase margin (°)"),
-            Column("dm", "delay margin (s)"),
-            Column("bn", "B_n (rad/s)"),
+            Column(key="law", header="law"),
+            Column(key="kx", header="K_x, K_P (N/m)"),
+            Column(key="ki", header="K_I (N/(m s))"),
+            Column(key="kv", header="K_v, K_D (N s/m)"),
+            Column(key="X", header="X_ss (m)"),
+            Column(key="u_rms", header="u_rms (N)"),
+            Column(key="floor", header="least u_rms for X_ss (N)"),
+            Column(key="L", header="|L(iω)|"),
+            Column(key="wc", header="ω_c (rad/s)"),
+            Column(key="pm", header="phase margin (°)"),
+            Column(key="dm", header="delay margin (s)"),
+            Column(key="bn", header="B_n (rad/s)"),
         ],
         caption=(
             f"The active laws at {_at(study)} on equal footing: position and velocity gains K_x, K_v of the PD-type "
@@ -193,7 +193,7 @@ def checks_table(study: ControlStudy) -> Table:
     ]  # fmt: skip
     return Table(
         rows,
-        [Column("check", "check"), Column("value", "bound")],
+        [Column(key="check", header="check"), Column(key="value", header="bound")],
         caption="Self-checks of the active designs (rounding level, printed as bounds).",
         name="tab-control-checks",
     )
@@ -219,13 +219,13 @@ def move_table(study: ControlStudy) -> Table:
     return Table(
         rows,
         [
-            Column("scheme", "force limit and integrator"),
-            Column("over", "overshoot (m)"),
-            Column("amp", "X_ss (m)"),
-            Column("mean", "mean error, steady (m)"),
-            Column("sat", "time at the limit (%)"),
-            Column("imax", "max|I| (m s)"),
-            Column("peak_u", "max|u| (N)"),
+            Column(key="scheme", header="force limit and integrator"),
+            Column(key="over", header="overshoot (m)"),
+            Column(key="amp", header="X_ss (m)"),
+            Column(key="mean", header="mean error, steady (m)"),
+            Column(key="sat", header="time at the limit (%)"),
+            Column(key="imax", header="max|I| (m s)"),
+            Column(key="peak_u", header="max|u| (N)"),
         ],
         caption=(
             f"PID move to x_ref = {num(a.x_ref)} m under the disturbance at {_at(study)}, force limited to "
@@ -257,11 +257,11 @@ def flutter_table(study: ControlStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "velocity gain"),
-            Column("kd", "K_v (N s/m)"),
-            Column("re", "max Re s (1/s)"),
-            Column("im", "|Im s| (rad/s)"),
-            Column("verdict", "loop"),
+            Column(key="case", header="velocity gain"),
+            Column(key="kd", header="K_v (N s/m)"),
+            Column(key="re", header="max Re s (1/s)"),
+            Column(key="im", header="|Im s| (rad/s)"),
+            Column(key="verdict", header="loop"),
         ],
         caption=(
             f"Negative damping c = {num(a.flutter.c)} N s/m (the linear galloping or stall-flutter model) under "
@@ -304,9 +304,9 @@ def skyhook_energy_table(study: ControlStudy) -> Table:
     return Table(
         [{"what": what, "closed": cell(getattr(p, key), 4), "run": cell(r[key], 4)} for what, key in rows],
         [
-            Column("what", "mean power"),
-            Column("closed", "closed form (W)"),
-            Column("run", "run, steady tail (W)"),
+            Column(key="what", header="mean power"),
+            Column(key="closed", header="closed form (W)"),
+            Column(key="run", header="run, steady tail (W)"),
         ],
         caption=(
             f"The ideal skyhook (c_sky = {num(s.c_sky)} N s/m) at ω = {num(s.omega)} rad/s, base amplitude "
@@ -337,10 +337,10 @@ def refinement_table(study: ControlStudy) -> Table:
     return Table(
         rows,
         [
-            Column("spp", "RK4 steps per period"),
-            Column("dt", "Δt (s)"),
-            Column("T", "max|x|/Y at ω_n"),
-            Column("d", "change from the row above"),
+            Column(key="spp", header="RK4 steps per period"),
+            Column(key="dt", header="Δt (s)"),
+            Column(key="T", header="max|x|/Y at ω_n"),
+            Column(key="d", header="change from the row above"),
         ],
         caption=(
             "On-off skyhook transmissibility at ω = ω_n under step refinement. The law switches the damping "
@@ -371,7 +371,7 @@ def semi_active_checks_table(study: ControlStudy) -> Table:
     ]  # fmt: skip
     return Table(
         rows,
-        [Column("check", "check"), Column("value", "bound")],
+        [Column(key="check", header="check"), Column(key="value", header="bound")],
         caption="Self-checks of the semi-active runs (printed as bounds against stated tolerances).",
         name="tab-control-semiactive-checks",
     )
@@ -398,13 +398,13 @@ def shaping_table(study: ControlStudy) -> Table:
     return Table(
         rows,
         [
-            Column("shaper", "command"),
-            Column("delay", "added delay (s)"),
-            Column("V", "V, closed form (%)"),
-            Column("Vsim", "V, simulated (%)"),
-            Column("amp", "ringing after the move (m)"),
-            Column("lo", f"V ≤ {num(100 * SHAPER_LEVEL)} % from ω/ω_model"),
-            Column("hi", "to"),
+            Column(key="shaper", header="command"),
+            Column(key="delay", header="added delay (s)"),
+            Column(key="V", header="V, closed form (%)"),
+            Column(key="Vsim", header="V, simulated (%)"),
+            Column(key="amp", header="ringing after the move (m)"),
+            Column(key="lo", header=f"V ≤ {num(100 * SHAPER_LEVEL)} % from ω/ω_model"),
+            Column(key="hi", header="to"),
         ],
         caption=(
             f"Move of {num(s.move)} m on an oscillator whose natural frequency is {signed_pct(s.freq_error)} off the "

@@ -34,7 +34,7 @@ def _once(fn) -> float:
 
 
 def run(quick: bool) -> None:
-    osc = Oscillator(1.0, 0.5, 20.0)
+    osc = Oscillator(m=1.0, c=0.5, k=20.0)
     rec = simulated_test(osc, 60.0, 0.02, 0.05, seed=13)
     t, f = rec.t, rec.force
     d = discretize(osc, 0.02)
@@ -51,7 +51,7 @@ def run(quick: bool) -> None:
     t_local = median_time(lambda: identify(t, f, x=rec.x, search="local"), reps)
 
     def full(_, m, c, k, x0, v0):
-        return sampled_response(Oscillator(m, c, k), t, f, x0, v0).x
+        return sampled_response(Oscillator(m=m, c=c, k=k), t, f, x0, v0).x
 
     t_cf = median_time(lambda: curve_fit(full, t, rec.x, p0=[1.2, 0.4, 22.0, 0.0, 0.0]), reps)
     table(

@@ -182,7 +182,7 @@ def restart_alarms(z, thresholds) -> np.ndarray:
     return counts
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RunLengths:
     """Average run length to a false alarm: measured (restarted CUSUM on healthy records) and Markov-chain theory."""
 
@@ -213,7 +213,7 @@ class RunLengths:
         return 2.0 * self.samples / chi2.ppf(0.95, 2 * self.alarms + 2)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DelayTheory:
     """Markov-chain prediction for the faulty records of one fault at one threshold."""
 

@@ -31,8 +31,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     p = params
     nyq = 0.5 / p.dt
     df = 1.0 / p.t_record
-    healthy = Oscillator(p.m, p.c_nominal, p.k)
-    damaged = Oscillator(p.m, p.c_nominal, p.k * (1 - p.drop))
+    healthy = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
+    damaged = Oscillator(m=p.m, c=p.c_nominal, k=p.k * (1 - p.drop))
     f0, f1 = healthy.natural_frequency / (2 * math.pi), damaged.natural_frequency / (2 * math.pi)
     return (
         Exercise(

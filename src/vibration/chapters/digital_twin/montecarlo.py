@@ -123,7 +123,7 @@ def _normal(jac, res=None):
     return scale, gram, grad
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BatchFit:
     """Least-squares fits of R records: estimates, standard errors, intervals, residuals."""
 
@@ -199,7 +199,7 @@ def fit_batch(t, forces, ys, start) -> BatchFit:
     se = np.sqrt(s2[:, None] * np.diagonal(inv, axis1=1, axis2=2)[:, :3])
     q = float(student_t.ppf(0.975, dof))
     ci = np.stack([p[:, :3] - q * se, p[:, :3] + q * se], axis=-1)
-    return BatchFit(p, se, ci, res, it)
+    return BatchFit(params=p, stderr=se, ci95=ci, residual=res, iterations=it)
 
 
 def ar1(runs: int, n: int, colour: float, rngs) -> np.ndarray:
@@ -250,7 +250,19 @@ def experiment(
         for i in range(hi - lo):
             white[lo + i] = ljung_box(fit.residual[i], lags)[1]
             inp[lo + i] = input_correlation(fit.residual[i], fmat[i], lags)[1]
-    return CoverageExperiment(truth, est, se, ci, noise, float(t[-1] - t[0]), float(t[1] - t[0]), "x", white, inp, case)
+    return CoverageExperiment(
+        truth=truth,
+        estimates=est,
+        stderr=se,
+        ci95=ci,
+        noise=noise,
+        duration=float(t[-1] - t[0]),
+        dt=float(t[1] - t[0]),
+        sensor="x",
+        whiteness_p=white,
+        input_p=inp,
+        case=case,
+    )
 
 
 def design(osc: Oscillator, duration: float, dt: float, seed: int, band, rms: float):

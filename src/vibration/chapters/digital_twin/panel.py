@@ -60,8 +60,8 @@ def twin_panel_html(grid: EstimateGrid, *, panel_id: str | None = None) -> str:
     Examples
     --------
     >>> from vibration.physics.twin import EstimateGrid
-    >>> g = EstimateGrid(np.array([1.0, 0.5, 20.0]), np.array([0.01]), np.array([10.0]),
-    ...                  np.ones((1, 1, 3)), np.ones((1, 1, 3, 2)))
+    >>> g = EstimateGrid(truth=np.array([1.0, 0.5, 20.0]), noises=np.array([0.01]), durations=np.array([10.0]),
+    ...                  estimates=np.ones((1, 1, 3)), ci95=np.ones((1, 1, 3, 2)))
     >>> frag = twin_panel_html(g)
     >>> frag.startswith('<div class="twin-panel"'), "http" in frag
     (True, False)

@@ -76,7 +76,7 @@ AGREEMENT_RUNS = 2
 MIN_ALARMS = 20
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class KalmanCheck:
     """The Kalman filter's stated standard deviation of k against its actual error, over many samples."""
 
@@ -89,7 +89,7 @@ class KalmanCheck:
     halfwidth: float  # 95 % half-width of the ratio (batch means over blocks), 1
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DigitalTwinStudy:
     """Every number the chapter shows, at one set of parameters."""
 
@@ -170,7 +170,16 @@ def _assumptions(asset, p: Params, band, reference: CoverageExperiment) -> tuple
         )
         predicted[label] = predicted_coverage(asset, t, force, p.colour) if uc else None
     agree = montecarlo.agreement(asset, t, force, linear, _noise_sd(linear, p.noise), p.seed, 0, AGREEMENT_RUNS)
-    study = AssumptionStudy(experiments, predicted, p.force_noise, p.noise, p.colour, p.cubic, k3, WHITENESS_LAGS)
+    study = AssumptionStudy(
+        experiments=experiments,
+        predicted=predicted,
+        force_noise=p.force_noise,
+        noise=p.noise,
+        colour=p.colour,
+        cubic=p.cubic,
+        k3=k3,
+        lags=WHITENESS_LAGS,
+    )
     return study, agree
 
 
@@ -208,7 +217,17 @@ def _kalman(asset, p: Params, band, fit: Identification, noise_sd: float) -> tup
             errors.append((tr.k - ks)[count])
             stated.append(tr.k_std[count])
         actual, sd, ratio, half = _block_ratio(errors, stated, block)
-        out.append(KalmanCheck(truth, KALMAN_RECORDS, int(sum(e.size for e in errors)), sd, actual, ratio, half))
+        out.append(
+            KalmanCheck(
+                truth=truth,
+                records=KALMAN_RECORDS,
+                samples=int(sum(e.size for e in errors)),
+                stated=sd,
+                actual=actual,
+                ratio=ratio,
+                halfwidth=half,
+            )
+        )
     return tuple(out)
 
 
@@ -234,7 +253,9 @@ def _run_lengths(p: Params, increments, drift: float, n_cal: int) -> cusum.RunLe
     counts = sum(cusum.restart_alarms(z, thresholds) for z in increments)
     samples = int(sum(z.size for z in increments))
     theory = np.array([cusum.arl_estimated_sigma(h, drift, n_cal) for h in thresholds])
-    return cusum.RunLengths(thresholds, counts, samples, p.dt, theory[:, 0], theory[:, 1])
+    return cusum.RunLengths(
+        thresholds=thresholds, alarms=counts, samples=samples, dt=p.dt, theory=theory[:, 0], theory_error=theory[:, 1]
+    )
 
 
 def _delay_theory(asset, p, fit, t, force, sd, threshold, drift) -> dict:
@@ -255,7 +276,12 @@ def _delay_theory(asset, p, fit, t, force, sd, threshold, drift) -> dict:
         late = tm >= start - 1e-9
         p_late = float(prob[late].sum())
         delay = float(np.sum(prob[late] * (tm[late] - start)) / p_late) if p_late > 0 else math.nan
-        out[label] = cusum.DelayTheory(threshold, p_late, float(prob[~late].sum()), delay)
+        out[label] = cusum.DelayTheory(
+            threshold=threshold,
+            detection_probability=p_late,
+            early_alarm_probability=float(prob[~late].sum()),
+            mean_delay=delay,
+        )
     return out
 
 
@@ -273,7 +299,7 @@ def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStu
         Frozen record of every result the chapter shows.
     """
     p = params if params is not None else Params.from_values(values)
-    asset = Oscillator(p.m, p.c_nominal, p.k)
+    asset = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     band = (F_LOW, p.f_max)
     # the sine check: rms F_rms at the band's upper edge, sampled at dt over 50 s
     n_check = int(round(CHECK_WINDOW / p.dt)) + 1
@@ -328,28 +354,28 @@ def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStu
 
     grid = estimate_grid(asset, dt=p.dt, seed=p.seed, band=band, rms=p.F_rms)
     return DigitalTwinStudy(
-        p,
-        asset,
-        band,
-        checks,
-        agree,
-        test,
-        fit,
-        frf,
-        half_power,
-        circle,
-        FRF_FACTOR * p.t_record,
-        coverage,
-        by_noise,
-        by_length,
-        assumptions,
-        scenario,
-        monitored,
-        track,
-        alarm,
-        kalman,
-        detection,
-        run_lengths,
-        delay_theory,
-        grid,
+        params=p,
+        asset=asset,
+        band=band,
+        checks=checks,
+        batch_agreement=agree,
+        test=test,
+        fit=fit,
+        frf=frf,
+        half_power=half_power,
+        circle=circle,
+        frf_record=FRF_FACTOR * p.t_record,
+        coverage=coverage,
+        by_noise=by_noise,
+        by_length=by_length,
+        assumptions=assumptions,
+        scenario=scenario,
+        monitored=monitored,
+        track=track,
+        alarm=alarm,
+        kalman=kalman,
+        detection=detection,
+        run_lengths=run_lengths,
+        delay_theory=delay_theory,
+        grid=grid,
     )

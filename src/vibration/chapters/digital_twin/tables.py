@@ -23,19 +23,19 @@ UNITS = ("kg", "N s/m", "N/m")
 
 
 def _val(v, reason: str):
-    return Missing(reason or "not available") if v is None or (isinstance(v, float) and math.isnan(v)) else v
+    return Missing(reason=reason or "not available") if v is None or (isinstance(v, float) and math.isnan(v)) else v
 
 
 def checks_table(st: DigitalTwinStudy) -> Table:
     """The exact discretisation against three independent references: measured difference and its bound."""
     rows = []
     for name, (value, bound, rounding) in st.checks.items():
-        cell = Approx(value, atol=ROUNDING_MARGIN * bound) if rounding else value
+        cell = Approx(value=value, atol=ROUNDING_MARGIN * bound) if rounding else value
         rows.append({"check": name, "value": cell, "bound": bound, "ok": value < bound})
     rows.append(
         {
             "check": "batch Monte Carlo fit against the one-record fit (relative, m, c, k and their standard errors)",
-            "value": Approx(st.batch_agreement, atol=ROUNDING_MARGIN * 1e-5),
+            "value": Approx(value=st.batch_agreement, atol=ROUNDING_MARGIN * 1e-5),
             "bound": 1e-5,
             "ok": st.batch_agreement < 1e-5,
         }
@@ -44,10 +44,10 @@ def checks_table(st: DigitalTwinStudy) -> Table:
     return Table(
         rows,
         [
-            Column("check", "check"),
-            Column("value", "measured difference", 2),
-            Column("bound", "bound", 2),
-            Column("ok", "passes"),
+            Column(key="check", header="check"),
+            Column(key="value", header="measured difference", digits=2),
+            Column(key="bound", header="bound", digits=2),
+            Column(key="ok", header="passes"),
         ],
         caption="Checks of the exact discretisation and of the batch identification against independent methods.",
         name="tab-twin-checks",
@@ -83,15 +83,15 @@ def identification_table(st: DigitalTwinStudy) -> Table:
     return Table(
         rows,
         [
-            Column("p", "parameter"),
-            Column("truth", "true", 4),
-            Column("est", "least squares", 5),
-            Column("se", "std. error", 2),
-            Column("lo", "95 % low", 5),
-            Column("hi", "95 % high", 5),
-            Column("in", "covers truth"),
-            Column("hp", "half-power", 3),
-            Column("cf", "circle fit", 3),
+            Column(key="p", header="parameter"),
+            Column(key="truth", header="true", digits=4),
+            Column(key="est", header="least squares", digits=5),
+            Column(key="se", header="std. error", digits=2),
+            Column(key="lo", header="95 % low", digits=5),
+            Column(key="hi", header="95 % high", digits=5),
+            Column(key="in", header="covers truth"),
+            Column(key="hp", header="half-power", digits=3),
+            Column(key="cf", header="circle fit", digits=3),
         ],
         caption="Identified parameters: output-error least squares on the exact discrete model, and the "
         "frequency-domain estimates from the measured frequency response.",
@@ -128,17 +128,17 @@ def coverage_table(st: DigitalTwinStudy) -> Table:
     return Table(
         rows,
         [
-            Column("what", "experiment"),
-            Column("noise", "noise / rms", 2),
-            Column("T", "T (s)", 3),
-            Column("R", "runs"),
-            Column("cm", "coverage m"),
-            Column("cc", "coverage c"),
-            Column("ck", "coverage k"),
-            Column("em", "rms error m (%)", 2),
-            Column("ec", "rms error c (%)", 2),
-            Column("ek", "rms error k (%)", 2),
-            Column("ratio", "rms error / std. error", 3),
+            Column(key="what", header="experiment"),
+            Column(key="noise", header="noise / rms", digits=2),
+            Column(key="T", header="T (s)", digits=3),
+            Column(key="R", header="runs"),
+            Column(key="cm", header="coverage m"),
+            Column(key="cc", header="coverage c"),
+            Column(key="ck", header="coverage k"),
+            Column(key="em", header="rms error m (%)", digits=2),
+            Column(key="ec", header="rms error c (%)", digits=2),
+            Column(key="ek", header="rms error k (%)", digits=2),
+            Column(key="ratio", header="rms error / std. error", digits=3),
         ],
         caption="Monte Carlo: how often the 95 % intervals contain the truth, and the relative errors.",
         name="tab-twin-coverage",
@@ -177,7 +177,7 @@ def assumption_table(st: DigitalTwinStudy) -> Table:
                 "cm": pm(cov[0], hw[0]),
                 "cc": pm(cov[1], hw[1]),
                 "ck": pm(cov[2], hw[2]),
-                "pk": float(pred[2]) if pred is not None else Missing("no first-order prediction"),
+                "pk": float(pred[2]) if pred is not None else Missing(reason="no first-order prediction"),
                 "bk": 100 * float(ex.rel_bias[2]),
                 "se": float(np.mean(ex.rel_rmse / ex.rel_stderr)),
                 "lb": pm(ex.flagged("whiteness"), ex.flagged_uncertainty("whiteness")),
@@ -187,16 +187,16 @@ def assumption_table(st: DigitalTwinStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "case"),
-            Column("R", "runs"),
-            Column("cm", "coverage m"),
-            Column("cc", "coverage c"),
-            Column("ck", "coverage k"),
-            Column("pk", "predicted k", 2),
-            Column("bk", "error k (%)", 2),
-            Column("se", "rms / s.e.", 3),
-            Column("lb", "whiteness flags"),
-            Column("ic", "input flags"),
+            Column(key="case", header="case"),
+            Column(key="R", header="runs"),
+            Column(key="cm", header="coverage m"),
+            Column(key="cc", header="coverage c"),
+            Column(key="ck", header="coverage k"),
+            Column(key="pk", header="predicted k", digits=2),
+            Column(key="bk", header="error k (%)", digits=2),
+            Column(key="se", header="rms / s.e.", digits=3),
+            Column(key="lb", header="whiteness flags"),
+            Column(key="ic", header="input flags"),
         ],
         caption="Coverage of the 95 % intervals, and the share of runs the residual tests flag at the 5 % level, "
         "when the records break one assumption at a time.",
@@ -235,12 +235,12 @@ def kalman_table(st: DigitalTwinStudy) -> Table:
     return Table(
         rows,
         [
-            Column("truth", "true stiffness"),
-            Column("R", "records"),
-            Column("n", "samples"),
-            Column("stated", "rms stated σ_k (N/m)", 3),
-            Column("actual", "rms error of k (N/m)", 3),
-            Column("ratio", "error / stated"),
+            Column(key="truth", header="true stiffness"),
+            Column(key="R", header="records"),
+            Column(key="n", header="samples"),
+            Column(key="stated", header="rms stated σ_k (N/m)", digits=3),
+            Column(key="actual", header="rms error of k (N/m)", digits=3),
+            Column(key="ratio", header="error / stated"),
         ],
         caption="The Kalman filter's stated standard deviation of the stiffness against its actual error.",
         name="tab-twin-kalman",
@@ -266,23 +266,25 @@ def detection_table(st: DigitalTwinStudy) -> Table:
                 "far": float(ex.false_alarm_rate[j]),
                 "faru": float(ex.false_alarm_rate_upper[j]),
                 "gmax": ex.healthy_max,
-                "margin": float(ex.thresholds[j]) / ex.healthy_max if ex.healthy_max > 0 else Missing("g stayed 0"),
+                "margin": float(ex.thresholds[j]) / ex.healthy_max
+                if ex.healthy_max > 0
+                else Missing(reason="g stayed 0"),
                 "pd": float(ex.detection_probability[j]),
-                "delay": delay if math.isfinite(delay) else Missing("no fault detected"),
+                "delay": delay if math.isfinite(delay) else Missing(reason="no fault detected"),
             }
         )
     return Table(
         rows,
         [
-            Column("fault", "fault"),
-            Column("R", "runs of each kind"),
-            Column("fa", "false alarm probability", 3),
-            Column("far", "false alarms (1/h)", 3),
-            Column("faru", "95 % upper bound (1/h)", 3),
-            Column("gmax", "largest healthy g", 3),
-            Column("margin", "h / largest healthy g", 3),
-            Column("pd", "detection probability", 3),
-            Column("delay", "mean delay (s)", 3),
+            Column(key="fault", header="fault"),
+            Column(key="R", header="runs of each kind"),
+            Column(key="fa", header="false alarm probability", digits=3),
+            Column(key="far", header="false alarms (1/h)", digits=3),
+            Column(key="faru", header="95 % upper bound (1/h)", digits=3),
+            Column(key="gmax", header="largest healthy g", digits=3),
+            Column(key="margin", header="h / largest healthy g", digits=3),
+            Column(key="pd", header="detection probability", digits=3),
+            Column(key="delay", header="mean delay (s)", digits=3),
         ],
         caption=f"Change detection at the chosen CUSUM threshold h = {st.params.threshold:g} over seeded healthy "
         "and faulty records.",
@@ -312,9 +314,9 @@ def run_length_table(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> Tabl
         theory = rl.theory[i] * dt
         if rl.alarms[i] >= min_alarms:
             meas, se = rl.measured[i] * dt, rl.stderr[i] * dt
-            z = (meas - theory) / se if math.isfinite(theory) else Missing("theory out of numerical reach")
+            z = (meas - theory) / se if math.isfinite(theory) else Missing(reason="theory out of numerical reach")
         else:
-            meas = Missing(f"fewer than {min_alarms} false alarms: the measurement only bounds the run length")
+            meas = Missing(reason=f"fewer than {min_alarms} false alarms: the measurement only bounds the run length")
             se, z = meas, meas
         rows.append(
             {
@@ -324,7 +326,7 @@ def run_length_table(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> Tabl
                 "meas": meas,
                 "se": se,
                 "bound": float(rl.lower95[i] * dt),
-                "theory": theory if math.isfinite(theory) else Missing("theory out of numerical reach"),
+                "theory": theory if math.isfinite(theory) else Missing(reason="theory out of numerical reach"),
                 "z": z,
             }
         )
@@ -341,7 +343,7 @@ def run_length_table(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> Tabl
                 "count": int(d.size),
                 "meas": _val(meas, "no fault detected"),
                 "se": _val(se, "fewer than two detections"),
-                "bound": Missing("not a false-alarm row"),
+                "bound": Missing(reason="not a false-alarm row"),
                 "theory": _val(th.mean_delay, "no detection in theory"),
                 "z": _val((meas - th.mean_delay) / se if se > 0 else math.nan, "no spread"),
             }
@@ -349,14 +351,14 @@ def run_length_table(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> Tabl
     return Table(
         rows,
         [
-            Column("what", "quantity"),
-            Column("h", "h", 3),
-            Column("count", "alarms or detections"),
-            Column("meas", "measured", 3),
-            Column("se", "std. error", 3),
-            Column("bound", "95 % lower bound (s)", 3),
-            Column("theory", "Markov chain", 3),
-            Column("z", "difference / std. error", 2),
+            Column(key="what", header="quantity"),
+            Column(key="h", header="h", digits=3),
+            Column(key="count", header="alarms or detections"),
+            Column(key="meas", header="measured", digits=3),
+            Column(key="se", header="std. error", digits=3),
+            Column(key="bound", header="95 % lower bound (s)", digits=3),
+            Column(key="theory", header="Markov chain", digits=3),
+            Column(key="z", header="difference / std. error", digits=2),
         ],
         caption="CUSUM run lengths: Monte Carlo against the Markov-chain theory.",
         name="tab-twin-arl",

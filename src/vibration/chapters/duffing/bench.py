@@ -22,7 +22,7 @@ from vibration.physics.duffing import Duffing, frequency_sweep
 def run(quick: bool, median_time: Callable, table: Callable) -> None:
     """Time both sweeps at the chapter's defaults and print them with ``table`` (ratios side by side)."""
     p = SCHEMA.defaults()
-    d, F0 = Duffing(p["m"], p["c_nominal"], p["k"], p["k3_hard"]), p["F0"]  # kg, N s/m, N/m, N/m^3; N
+    d, F0 = Duffing(m=p["m"], c=p["c_nominal"], k=p["k"], k3=p["k3_hard"]), p["F0"]  # kg, N s/m, N/m, N/m^3; N
     n_w = p["n_sweep"]
     w = np.linspace(p["omega_sweep_min"], p["omega_sweep_max"], n_w)  # rad/s
 

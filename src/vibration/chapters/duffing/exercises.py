@@ -29,7 +29,7 @@ PREREQUISITES = ("chapter 4: the resonance curve", "harmonic balance (one-term F
 def exercises(params: Params) -> tuple[Exercise, ...]:
     """The chapter's exercises for ``params``, answers computed by the package."""
     p = params
-    d = Duffing(p.m, p.c_nominal, p.k, p.k3_hard)
+    d = Duffing(m=p.m, c=p.c_nominal, k=p.k, k3=p.k3_hard)
     wn = math.sqrt(p.k / p.m)
     amp = 1.0  # m
     wb = backbone(d, amp)
@@ -69,7 +69,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     ]
     if p.c_nominal > 0:
         a_lin = linear_trust_amplitude(d)
-        d2 = Duffing(p.m, p.c_nominal, p.k, min(2 * p.k3_hard, 1000.0))
+        d2 = Duffing(m=p.m, c=p.c_nominal, k=p.k, k3=min(2 * p.k3_hard, 1000.0))
         a2 = linear_trust_amplitude(d2)
         out.append(
             Exercise(

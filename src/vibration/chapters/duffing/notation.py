@@ -56,7 +56,7 @@ LENGTH_FACTOR = 10.0
 
 def exponent_approx(value: float, n_periods: float) -> Approx:
     """A chaotic exponent (or λ₂ = −c/m − λ₁) from ``n_periods`` forcing periods, with its tolerance."""
-    return Approx(value, atol=float(f"{EXPONENT_SPREAD / math.sqrt(n_periods):.2g}"))
+    return Approx(value=value, atol=float(f"{EXPONENT_SPREAD / math.sqrt(n_periods):.2g}"))
 
 
 def exponent(value: float, n_periods: float, digits: int = 4) -> str:
@@ -67,7 +67,7 @@ def exponent(value: float, n_periods: float, digits: int = 4) -> str:
 def inverse(numerator: float, exponent_: float, digits: int = 2) -> str:
     """A time ``numerator / exponent_`` (1/λ₁, ln 10/λ₁, s) of the pooled exponent, with its tolerance."""
     value = numerator / exponent_
-    return Approx(value, rtol=INVERSE_RTOL).html(sig(value, digits))
+    return Approx(value=value, rtol=INVERSE_RTOL).html(sig(value, digits))
 
 
 def apm(value: float, se: float, n_periods: float) -> str:
@@ -79,7 +79,7 @@ def apm(value: float, se: float, n_periods: float) -> str:
     m = re.fullmatch(r"(\(?)(.+) ± (.+?)(\)×10.+)?", pm(value, se))
     head, v, e, tail = m.group(1), m.group(2), m.group(3), m.group(4) or ""
     approx_v = exponent_approx(value, n_periods).html(v)
-    return f"{head}{approx_v} ± {Approx(se, factor=ERROR_FACTOR).html(e)}{tail}"
+    return f"{head}{approx_v} ± {Approx(value=se, factor=ERROR_FACTOR).html(e)}{tail}"
 
 
 def within(fraction: float, floor: float = 1e-3) -> str:

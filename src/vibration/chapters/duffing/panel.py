@@ -164,7 +164,7 @@ class HBExplorer:
     def update(self) -> None:
         """Redraw the curve for the sliders' values."""
         p = self.params
-        d = Duffing(p["m"], p["c"], p["k"], float(self.k3_slider.value))
+        d = Duffing(m=p["m"], c=p["c"], k=p["k"], k3=float(self.k3_slider.value))
         F0 = float(self.F0_slider.value)
         ax = self.ax
         ax.clear()

@@ -80,7 +80,7 @@ N_PERIODIC, N_OTHER_RUNS, N_SECTION = 5000, 20_000, 3000
 # ----------------------------------------------------------------------------------- records
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class StabilityCheck:
     """One harmonic-balance root inside the band against the periodic orbit of the full equation there."""
 
@@ -97,7 +97,7 @@ class StabilityCheck:
         return None if self.floquet_stable is None else self.floquet_stable == self.stable
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class SpringCase:
     """One cubic spring (hardening or softening) at the paper's mass, damping, stiffness and force."""
 
@@ -171,7 +171,7 @@ class SpringCase:
         return (min(ws), max(ws)) if len(ws) >= 2 else (math.nan, math.nan)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FoldRow:
     """Where one sweep leaves its branch: one-harmonic fold, fold of the periodic orbit and the refined jump."""
 
@@ -200,7 +200,7 @@ class FoldRow:
         return abs(self.jump - self.orbit) <= 0.5 * self.bracket
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class HistoryRow:
     """Steady amplitudes of the hardening spring at one frequency, by where the motion comes from (m)."""
 
@@ -219,7 +219,7 @@ class HistoryRow:
         return abs(self.up - self.down) > 0.1 * max(self.up, self.down)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Pooled:
     """Inverse-variance pooled exponent of runs that share no trajectory (1/s) and their chi-square."""
 
@@ -243,7 +243,7 @@ class Pooled:
         return 0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Published:
     """The pooled exponent against the published one (only meaningful when ``applies``)."""
 
@@ -259,7 +259,7 @@ class Published:
     step_z: tuple[tuple[int, float], ...]  # (steps per period, (run - pooled) / its error) of the other step sizes
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ConvergenceRow:
     """The main chaotic run's estimate from its first ``n`` periods."""
 
@@ -290,7 +290,7 @@ class ChaosMap:
         return float(np.mean(self.chaotic))
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class DuffingStudy:
     """Everything chapter 9 shows, computed once (SI units)."""
 
@@ -438,14 +438,46 @@ def _spring(label: str, d: Duffing, F0: float, ws: np.ndarray, omega_max: float)
                 try:
                     orb = periodic_orbit(d, F0, w, a)
                 except ParameterError:
-                    checks.append(StabilityCheck(w, a, st, math.nan, math.nan, None))
+                    checks.append(
+                        StabilityCheck(
+                            omega=w,
+                            amplitude=a,
+                            stable=st,
+                            orbit_amplitude=math.nan,
+                            max_multiplier=math.nan,
+                            floquet_stable=None,
+                        )
+                    )
                     continue
                 T = 2 * math.pi / w
                 liou = max(liou, abs(abs(np.prod(orb.multipliers)) / math.exp(-d.c * T / d.m) - 1))
-                checks.append(StabilityCheck(w, a, st, orb.amplitude, max(abs(x) for x in orb.multipliers), orb.stable))
+                checks.append(
+                    StabilityCheck(
+                        omega=w,
+                        amplitude=a,
+                        stable=st,
+                        orbit_amplitude=orb.amplitude,
+                        max_multiplier=max(abs(x) for x in orb.multipliers),
+                        floquet_stable=orb.stable,
+                    )
+                )
         width = f.omega_high - f.omega_low  # continue the periodic orbit from below the band to above it
         branch = continue_orbits(d, F0, f.omega_low - 0.5 * width, f.omega_high + 0.5 * width, step=CONTINUATION_STEP)
-    case = SpringCase(label, d, F0, f, w_c, a_c, s_c, up, down, jump_up, jump_down, tuple(checks), branch)
+    case = SpringCase(
+        label=label,
+        duffing=d,
+        F0=F0,
+        folds=f,
+        curve_omega=w_c,
+        curve_amplitude=a_c,
+        curve_stable=s_c,
+        up=up,
+        down=down,
+        jump_up=jump_up,
+        jump_down=jump_down,
+        checks=tuple(checks),
+        branch=branch,
+    )
     return case, amp_res, liou
 
 
@@ -459,7 +491,7 @@ def _fold_rows(cases) -> tuple[FoldRow, ...]:
         ):
             w_j = 0.5 * (jump[0] + jump[1]) if jump else math.nan
             width = abs(jump[1] - jump[0]) if jump else math.nan
-            rows.append(FoldRow(case.label, direction, hb, orbit, w_j, width))
+            rows.append(FoldRow(case=case.label, direction=direction, hb=hb, orbit=orbit, jump=w_j, bracket=width))
     return tuple(rows)
 
 
@@ -470,7 +502,7 @@ def _sweep_to(d: Duffing, F0: float, w_from: float, w_to: float, direction: str)
 
 def _history(p: Params, hard: SpringCase) -> tuple[HistoryRow, ...]:
     d, F0 = hard.duffing, p.F0
-    lin = Duffing(p.m, p.c_nominal, p.k, 0.0)
+    lin = Duffing(m=p.m, c=p.c_nominal, k=p.k, k3=0.0)
     targets = [("the paper's ω", p.omega_res)]
     if hard.folds.bistable:
         targets.append(("the middle of the band", 0.5 * (hard.folds.omega_low + hard.folds.omega_high)))
@@ -522,7 +554,7 @@ def _convergence(main: LyapunovEstimate) -> tuple[ConvergenceRow, ...]:
     rows = []
     for n in lengths:
         lam, se = main.at(n, n_blocks)
-        rows.append(ConvergenceRow(n, n * main.period, lam, se))
+        rows.append(ConvergenceRow(n=n, time=n * main.period, exponent=lam, standard_error=se))
     return tuple(rows)
 
 
@@ -537,7 +569,7 @@ def _lyapunov_runs(p: Params, ueda: Duffing) -> tuple[tuple[LyapunovEstimate, ..
         lyapunov_estimate(ueda, p.F0_ueda, p.omega_ueda, *start, n_periods=n, n_blocks=n_blocks, steps_per_period=spp)
         for (start, spp), n in zip(LYAPUNOV_RUNS, lengths, strict=True)
     )
-    return runs, Pooled(*pooled_exponent(runs))
+    return runs, Pooled(**dict(zip(("mean", "standard_error", "chi2", "dof"), pooled_exponent(runs), strict=True)))
 
 
 @dataclass(frozen=True, kw_only=True, eq=False)
@@ -564,7 +596,7 @@ def chaos_study(params: Params | None = None, **values) -> ChaosStudy:
     p = params if params is not None else Params.from_values(values)
     if not isinstance(p, Params):
         raise ParameterError(f"params = {p!r:.60} is not valid: allowed a duffing Params record or None")
-    runs, pooled = _lyapunov_runs(p, Duffing(1.0, p.c_ueda, 0.0, 1.0))
+    runs, pooled = _lyapunov_runs(p, Duffing(m=1.0, c=p.c_ueda, k=0.0, k3=1.0))
     return ChaosStudy(params=p, lyap_runs=runs, pooled=pooled)
 
 
@@ -618,18 +650,20 @@ def duffing_study(params: Params | None = None, **values) -> DuffingStudy:
         raise ParameterError(f"params = {p!r:.60} is not valid: allowed a duffing Params record or None")
     _check_values(p)
     ws = np.linspace(p.omega_sweep_min, p.omega_sweep_max, p.n_sweep)
-    hard, r1, l1 = _spring("hardening", Duffing(p.m, p.c_nominal, p.k, p.k3_hard), p.F0, ws, p.omega_sweep_max)
-    soft, r2, l2 = _spring("softening", Duffing(p.m, p.c_nominal, p.k, p.k3_soft), p.F0, ws, p.omega_sweep_max)
+    hard, r1, l1 = _spring("hardening", Duffing(m=p.m, c=p.c_nominal, k=p.k, k3=p.k3_hard), p.F0, ws, p.omega_sweep_max)
+    soft, r2, l2 = _spring("softening", Duffing(m=p.m, c=p.c_nominal, k=p.k, k3=p.k3_soft), p.F0, ws, p.omega_sweep_max)
     cases = (hard, soft)
-    lin = Duffing(p.m, p.c_nominal, p.k, 0.0)
+    lin = Duffing(m=p.m, c=p.c_nominal, k=p.k, k3=0.0)
     w_lin = np.linspace(hard.curve_omega.min(), hard.curve_omega.max(), 800)
     a_lin = np.array([hb_amplitudes(lin, p.F0, w)[0][0] for w in w_lin])
 
     t = np.linspace(0.0, p.t_end, 2001)
-    x_lin = exact_response(Oscillator(p.m, p.c_nominal, p.k), SineForce(p.F0, p.omega_res), t).x  # Part I's form
+    x_lin = exact_response(
+        Oscillator(m=p.m, c=p.c_nominal, k=p.k), SineForce(F0=p.F0, omega=p.omega_res), t
+    ).x  # Part I's form
     x_duf, _ = duffing_response(hard.duffing, p.F0, p.omega_res, t, sine=True)
 
-    ueda = Duffing(1.0, p.c_ueda, 0.0, 1.0)
+    ueda = Duffing(m=1.0, c=p.c_ueda, k=0.0, k3=1.0)
     w_u = p.omega_ueda
     section_chaos = poincare_section(ueda, p.F0_ueda, w_u, *UEDA_START, n_periods=N_SECTION, n_transient=300)
     section_periodic = poincare_section(ueda, p.F0_ueda_periodic, w_u, *UEDA_START, n_periods=200, n_transient=1000)

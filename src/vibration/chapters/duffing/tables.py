@@ -19,7 +19,7 @@ NO_ORBIT = "shooting did not converge"
 
 
 def _cell(value: float, digits: int, reason: str) -> str | Missing:
-    return column(value, digits) if math.isfinite(value) else Missing(reason)
+    return column(value, digits) if math.isfinite(value) else Missing(reason=reason)
 
 
 def _exponent(value: float, n_periods: float) -> Approx:
@@ -29,7 +29,7 @@ def _exponent(value: float, n_periods: float) -> Approx:
 
 def _error(value: float) -> Approx:
     """A standard error by batch means (its column prints 1 figure)."""
-    return Approx(value, factor=ERROR_FACTOR)
+    return Approx(value=value, factor=ERROR_FACTOR)
 
 
 def _k3(case: SpringCase) -> str:
@@ -43,7 +43,7 @@ def _spring(case: SpringCase) -> str:
 def _bound(value: float, tol: float) -> str | Missing:
     """A self-check against its tolerance: ``< 10⁻¹²`` when it holds, else the value and the tolerance."""
     text = bound(value, tol)
-    return Missing("not computed for this case") if text is None else text
+    return Missing(reason="not computed for this case") if text is None else text
 
 
 def hb_table(study: DuffingStudy) -> Table:
@@ -67,13 +67,13 @@ def hb_table(study: DuffingStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "spring"),
-            Column("wl", "ω_low (rad/s)"),
-            Column("wh", "ω_high (rad/s)"),
-            Column("wp", "ω_peak (rad/s)"),
-            Column("ap", "A_peak (m)"),
-            Column("abb", "F₀/(c ω_bb) (m)"),
-            Column("lin", "linear peak (m)"),
+            Column(key="case", header="spring"),
+            Column(key="wl", header="ω_low (rad/s)"),
+            Column(key="wh", header="ω_high (rad/s)"),
+            Column(key="wp", header="ω_peak (rad/s)"),
+            Column(key="ap", header="A_peak (m)"),
+            Column(key="abb", header="F₀/(c ω_bb) (m)"),
+            Column(key="lin", header="linear peak (m)"),
         ],
         caption=f"One-harmonic frequency response at m = {p.m:g} kg, k = {p.k:g} N/m, c = {p.c_nominal:g} N s/m, "
         f"F₀ = {p.F0:g} N: the folds ω_low and ω_high bounding the band of three amplitudes, the peak, its "
@@ -95,26 +95,26 @@ def stability_table(study: DuffingStudy) -> Table:
                     "st": "stable" if ch.stable else "unstable",
                     "ao": _cell(ch.orbit_amplitude, 4, NO_ORBIT),
                     "mu": _cell(ch.max_multiplier, 4, NO_ORBIT),
-                    "stf": Missing(NO_ORBIT)
+                    "stf": Missing(reason=NO_ORBIT)
                     if ch.floquet_stable is None
                     else ("stable" if ch.floquet_stable else "unstable"),  # fmt: skip
-                    "agree": Missing(NO_ORBIT) if ch.agree is None else ch.agree,
+                    "agree": Missing(reason=NO_ORBIT) if ch.agree is None else ch.agree,
                 }
             )
     if not rows:
-        none = Missing("no band of three amplitudes in either spring")
+        none = Missing(reason="no band of three amplitudes in either spring")
         rows = [{"case": "—", "w": none, "a": none, "st": none, "ao": none, "mu": none, "stf": none, "agree": none}]
     return Table(
         rows,
         [
-            Column("case", "spring"),
-            Column("w", "ω (rad/s)"),
-            Column("a", "A, one harmonic (m)"),
-            Column("st", "slow flow"),
-            Column("ao", "A, shooting (m)"),
-            Column("mu", "max |μ|"),
-            Column("stf", "Floquet"),
-            Column("agree", "agree"),
+            Column(key="case", header="spring"),
+            Column(key="w", header="ω (rad/s)"),
+            Column(key="a", header="A, one harmonic (m)"),
+            Column(key="st", header="slow flow"),
+            Column(key="ao", header="A, shooting (m)"),
+            Column(key="mu", header="max |μ|"),
+            Column(key="stf", header="Floquet"),
+            Column(key="agree", header="agree"),
         ],
         caption="Stability of each one-harmonic amplitude at two frequencies inside the band: the slow flow's "
         "verdict against the Floquet multipliers μ of the periodic orbit of the full equation found from it by "
@@ -150,14 +150,14 @@ def fold_table(study: DuffingStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "spring"),
-            Column("dir", "sweep"),
-            Column("orbit", "fold, periodic orbit (rad/s)"),
-            Column("hb", "fold, one harmonic (rad/s)"),
-            Column("jump", "jump, time integration (rad/s)"),
-            Column("bracket", "jump bracket (rad/s)"),
-            Column("hb_err", "one harmonic − orbit (rad/s)"),
-            Column("jump_err", "jump − orbit (rad/s)"),
+            Column(key="case", header="spring"),
+            Column(key="dir", header="sweep"),
+            Column(key="orbit", header="fold, periodic orbit (rad/s)"),
+            Column(key="hb", header="fold, one harmonic (rad/s)"),
+            Column(key="jump", header="jump, time integration (rad/s)"),
+            Column(key="bracket", header="jump bracket (rad/s)"),
+            Column(key="hb_err", header="one harmonic − orbit (rad/s)"),
+            Column(key="jump_err", header="jump − orbit (rad/s)"),
         ],
         caption="Where each sweep leaves its branch: the fold of the periodic orbit of the full equation "
         "(pseudo-arclength continuation by shooting; the branch turns where a Floquet multiplier passes +1), the "
@@ -194,14 +194,14 @@ def history_table(study: DuffingStudy) -> Table:
     return Table(
         rows,
         [
-            Column("where", "frequency"),
-            Column("omega", "ω (rad/s)"),
-            Column("linear", "linear (m)"),
-            Column("hb_low", "lower stable A (m)"),
-            Column("hb_high", "upper stable A (m)"),
-            Column("rest", "from rest (m)"),
-            Column("up", "sweep up (m)"),
-            Column("down", "sweep down (m)"),
+            Column(key="where", header="frequency"),
+            Column(key="omega", header="ω (rad/s)"),
+            Column(key="linear", header="linear (m)"),
+            Column(key="hb_low", header="lower stable A (m)"),
+            Column(key="hb_high", header="upper stable A (m)"),
+            Column(key="rest", header="from rest (m)"),
+            Column(key="up", header="sweep up (m)"),
+            Column(key="down", header="sweep down (m)"),
         ],
         caption=f"Hardening spring, {_k3(study.hardening)}: steady amplitudes by one harmonic and "
         f"by time integration from rest and after sweeps from either side; {verdict}.",
@@ -227,7 +227,7 @@ def lyapunov_table(study: DuffingStudy) -> Table:
                 "se": _error(e.standard_error),
                 "l2": _exponent(e.second, e.n_periods)
                 if e.method == "qr"
-                else Missing("the two-trajectory method gives λ₁ only"),
+                else Missing(reason="the two-trajectory method gives λ₁ only"),
             }
         )
     for r in (study.periodic_qr, study.periodic_benettin):
@@ -237,22 +237,22 @@ def lyapunov_table(study: DuffingStudy) -> Table:
                 "method": "variational + QR" if r.method == "qr" else "two trajectories",
                 "n": r.running.size,
                 "l1": column(r.exponents[0], 4),
-                "se": Missing("a periodic orbit: the estimate converges instead of scattering"),
+                "se": Missing(reason="a periodic orbit: the estimate converges instead of scattering"),
                 "l2": column(r.exponents[1], 4)
                 if len(r.exponents) > 1
-                else Missing("the two-trajectory method gives λ₁ only"),  # fmt: skip
+                else Missing(reason="the two-trajectory method gives λ₁ only"),  # fmt: skip
             }
         )
     main = study.main_run
     return Table(
         rows,
         [
-            Column("case", "forcing"),
-            Column("method", "method"),
-            Column("n", "periods"),
-            Column("l1", "λ_1 (1/s)"),
-            Column("se", "standard error (1/s)", digits=1),
-            Column("l2", "λ_2 (1/s)"),
+            Column(key="case", header="forcing"),
+            Column(key="method", header="method"),
+            Column(key="n", header="periods"),
+            Column(key="l1", header="λ_1 (1/s)"),
+            Column(key="se", header="standard error (1/s)", digits=1),
+            Column(key="l2", header="λ_2 (1/s)"),
         ],
         caption=f"Lyapunov exponents of Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = {forcing_term(p)} from "
         f"{_start(*study_start(study))} (per unit time, natural logarithm); standard errors by batch means over "
@@ -277,7 +277,7 @@ def lyapunov_runs_table(study: DuffingStudy) -> Table:
             "n": e.n_periods,
             "l1": _exponent(e.exponent, e.n_periods),
             "se": _error(e.standard_error),
-            "z": Approx((e.exponent - pooled.mean) / e.standard_error, atol=Z_ATOL),
+            "z": Approx(value=(e.exponent - pooled.mean) / e.standard_error, atol=Z_ATOL),
         }
         for e in study.lyap_runs
     ]
@@ -288,13 +288,13 @@ def lyapunov_runs_table(study: DuffingStudy) -> Table:
     return Table(
         rows,
         [
-            Column("start", "initial state"),
-            Column("spp", "RK4 steps per period"),
-            Column("h", "step h (s)"),
-            Column("n", "periods"),
-            Column("l1", "λ_1 (1/s)"),
-            Column("se", "standard error (1/s)", digits=1),
-            Column("z", "(λ_1 − pooled) / error", digits=2),
+            Column(key="start", header="initial state"),
+            Column(key="spp", header="RK4 steps per period"),
+            Column(key="h", header="step h (s)"),
+            Column(key="n", header="periods"),
+            Column(key="l1", header="λ_1 (1/s)"),
+            Column(key="se", header="standard error (1/s)", digits=1),
+            Column(key="z", header="(λ_1 − pooled) / error", digits=2),
         ],
         caption=f"Largest exponent at F = {study.params.F0_ueda:g} N from runs that share no trajectory (other "
         "initial states, other RK4 steps; variational equations with QR), the first being the main run.",
@@ -316,10 +316,10 @@ def lyapunov_convergence_table(study: DuffingStudy) -> Table:
     return Table(
         rows,
         [
-            Column("n", "periods N"),
-            Column("time", "averaging time (s)"),
-            Column("l1", "λ_1 (1/s)"),
-            Column("se", "standard error (1/s)", digits=1),
+            Column(key="n", header="periods N"),
+            Column(key="time", header="averaging time (s)"),
+            Column(key="l1", header="λ_1 (1/s)"),
+            Column(key="se", header="standard error (1/s)", digits=1),
         ],
         caption="The main run's largest exponent from its first N periods; its standard error falls as 1/√N.",
         name="tab-duffing-lyapunov-convergence",
@@ -342,7 +342,7 @@ def checks_table(study: DuffingStudy) -> Table:
     ]
     return Table(
         rows,
-        [Column("check", "check"), Column("bound", "bound")],
+        [Column(key="check", header="check"), Column(key="bound", header="bound")],
         caption="Self-checks: identities the computation must meet to rounding, with the bound each meets.",
         name="tab-duffing-checks",
     )

@@ -223,7 +223,7 @@ def lyapunov_sentence(study: DuffingStudy) -> str:
     lam_main = apm(main.exponent, main.standard_error, main.n_periods)
     lam_partner = apm(partner.exponent, partner.standard_error, partner.n_periods)
     lam_pooled = apm(pooled.mean, pooled.standard_error, _pooled_periods(study))
-    chi2 = Approx(pooled.chi2, factor=CHI2_FACTOR).html(sig(pooled.chi2, 2))
+    chi2 = Approx(value=pooled.chi2, factor=CHI2_FACTOR).html(sig(pooled.chi2, 2))
     agree = (
         f"agree within their errors (χ² = {chi2} for {pooled.dof} degrees of freedom)"
         if pooled.consistent
@@ -264,12 +264,12 @@ def _round_count(n: float) -> str:
 
 def _z(z: float) -> str:
     """A z-score (a difference in standard errors) of the chaotic runs, signed, with its tolerance."""
-    return Approx(z, atol=Z_ATOL).html(signed(z, 2))
+    return Approx(value=z, atol=Z_ATOL).html(signed(z, 2))
 
 
 def _difference(value: float, text: str) -> str:
     """``text`` of a quantity computed from the pooled exponent's small difference from the published one."""
-    return Approx(value, factor=DIFFERENCE_FACTOR).html(text)
+    return Approx(value=value, factor=DIFFERENCE_FACTOR).html(text)
 
 
 def published_sentence(study: DuffingStudy) -> str:
@@ -291,14 +291,16 @@ def published_sentence(study: DuffingStudy) -> str:
     by_step = ", ".join(f"{spp} steps per period {_z(z)}" for spp, z in pub.step_z) or "no run"
     step_ok = all(abs(z) <= AGREE_Z for _, z in pub.step_z)
     # the averaging length needed grows as (σ₁/Δ)²: it takes the standard error's tolerance squared
-    n_text = Approx(pub.n_needed, factor=LENGTH_FACTOR).html(_round_count(pub.n_needed))
-    t_text = Approx(pub.n_needed * main.period, factor=LENGTH_FACTOR).html(_round_count(pub.n_needed * main.period))
-    z_text = Approx(abs(pub.z), factor=DIFFERENCE_FACTOR).html(sig(abs(pub.z), 2))
+    n_text = Approx(value=pub.n_needed, factor=LENGTH_FACTOR).html(_round_count(pub.n_needed))
+    t_text = Approx(value=pub.n_needed * main.period, factor=LENGTH_FACTOR).html(
+        _round_count(pub.n_needed * main.period)
+    )
+    z_text = Approx(value=abs(pub.z), factor=DIFFERENCE_FACTOR).html(sig(abs(pub.z), 2))
     delta, share = (
         _difference(pub.delta, signed(pub.delta, 2)),
         _difference(pub.delta, signed(100 * pub.delta / pub.exponent, 2)),
     )
-    sigma1 = Approx(pub.sigma1, factor=ERROR_FACTOR).html(sig(pub.sigma1, 2))
+    sigma1 = Approx(value=pub.sigma1, factor=ERROR_FACTOR).html(sig(pub.sigma1, 2))
     miss = _difference(abs(pub.delta), sig(abs(pub.delta), 2))
     return head + (
         f" The pooled {lam_pooled} 1/s is {z_text} standard errors "

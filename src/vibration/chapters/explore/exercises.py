@@ -33,9 +33,9 @@ PREREQUISITES = ("chapters 1 and 4: the steady amplitude, the magnification and 
 def exercises(params: Params) -> tuple[Exercise, ...]:
     """The chapter's exercises for ``params``, answers computed by the package."""
     p = params
-    nom = Oscillator(p.m, p.c_nominal, p.k)
+    nom = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     wn, cc = nom.natural_frequency, nom.critical_damping
-    ss = steady_state(nom, SineForce(p.F0, p.omega_res))
+    ss = steady_state(nom, SineForce(F0=p.F0, omega=p.omega_res))
     c_need = cc / (2 * M_ALLOWED)
     out = [
         Exercise(
@@ -88,7 +88,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     ]
     w_set = round(0.8 * wn, 2)
     c_set = float(f"{max(0.2 * cc, 1e-3):.2g}")
-    sl = steady_state(Oscillator(p.m, c_set, p.k), SineForce(p.F0, w_set))
+    sl = steady_state(Oscillator(m=p.m, c=c_set, k=p.k), SineForce(F0=p.F0, omega=w_set))
     out.append(
         Exercise(
             id="05.4",

@@ -59,7 +59,7 @@ def asset(name: str) -> str:
     return files("vibration.chapters.explore").joinpath("panel", name).read_text(encoding="utf-8")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class PanelFacts:
     """What the panel draws: line-style words, the width below which plots stack, its frequency plot's axes."""
 
@@ -94,12 +94,12 @@ def panel_facts() -> PanelFacts:
     stack = re.search(r"@container \(max-width: (\d+)px\)\s*\{\s*\.vib-panel \.vib-body", css)
     freq = js.split("function drawFreq", 1)[1].split("function setText", 1)[0]
     return PanelFacts(
-        _pattern_word(STYLES["envelope"]["dash"]),
-        _pattern_word(STYLES["settle"]["dash"]),
-        _pattern_word(STYLES["natural"]["dash"]),
-        int(stack.group(1)) if stack else 0,
-        re.search(r"\by: \{[^}]*\blog: true", freq) is not None,
-        "(Hz)" in freq,
+        envelope=_pattern_word(STYLES["envelope"]["dash"]),
+        settle=_pattern_word(STYLES["settle"]["dash"]),
+        natural=_pattern_word(STYLES["natural"]["dash"]),
+        stack_below_px=int(stack.group(1)) if stack else 0,
+        log_magnification=re.search(r"\by: \{[^}]*\blog: true", freq) is not None,
+        hz_axis="(Hz)" in freq,
     )
 
 

@@ -10,8 +10,8 @@ from vibration.presentation.parameters import paper_window, shared
 from vibration.presentation.schema import Schema
 
 SCHEMA = Schema(
-    "05_explore",
-    (
+    notebook="05_explore",
+    params=(
         shared("m"),
         shared("k"),
         shared("F0"),

@@ -38,7 +38,7 @@ N_POINTS = 5001
 FAR_BELOW = 0.5
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Readout:
     """The explorer's numbers for one setting of its controls (SI units)."""
 
@@ -76,23 +76,23 @@ def readout(osc: Oscillator, force: SineForce, t_end: float, n_points: int = N_P
     ts = settling_time(osc, force)
     omega_n = osc.natural_frequency
     return Readout(
-        omega_n,
-        omega_n / (2.0 * math.pi),
-        force.omega,
-        force.frequency_hz,
-        force.omega / omega_n,
-        osc.damping_ratio,
-        osc.regime,
-        ss.magnification,
-        ss.amplitude,
-        float(np.max(np.abs(resp.x))),
-        ts,
-        "yes" if ts <= t_end else "no",
-        t_end,
+        omega_n=omega_n,
+        f_n=omega_n / (2.0 * math.pi),
+        omega=force.omega,
+        f=force.frequency_hz,
+        ratio=force.omega / omega_n,
+        zeta=osc.damping_ratio,
+        regime=osc.regime,
+        magnification=ss.magnification,
+        amplitude=ss.amplitude,
+        peak=float(np.max(np.abs(resp.x))),
+        settling=ts,
+        steady_reached="yes" if ts <= t_end else "no",
+        t_end=t_end,
     )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ExploreStudy:
     """The explorer's starting point and the experiments the chapter reports (SI units)."""
 
@@ -133,18 +133,18 @@ def explore_study(params: Params | None = None, **values) -> ExploreStudy:
     wn = math.sqrt(p.k / p.m)
 
     def at(w: float, damping: float) -> Readout:
-        return readout(Oscillator(p.m, damping, p.k), SineForce(p.F0, w), p.t_end)
+        return readout(Oscillator(m=p.m, c=damping, k=p.k), SineForce(F0=p.F0, omega=w), p.t_end)
 
     return ExploreStudy(
-        p,
-        c,
-        at(p.omega_res, c),
-        at(p.omega_res, c / 2),
-        at(p.omega_res, 2 * c),
-        at(FAR_BELOW * wn, c),
-        at(FAR_BELOW * wn, c / 2),
-        2.0 * math.sqrt(p.k * p.m),
-        math.sqrt(2.0 * p.k * p.m),
-        at(p.omega_res, 2.0 * math.sqrt(p.k * p.m)),
-        at(p.omega_res, 4.0 * math.sqrt(p.k * p.m)),
+        params=p,
+        c_start=c,
+        start=at(p.omega_res, c),
+        halved=at(p.omega_res, c / 2),
+        doubled=at(p.omega_res, 2 * c),
+        far=at(FAR_BELOW * wn, c),
+        far_halved=at(FAR_BELOW * wn, c / 2),
+        c_critical=2.0 * math.sqrt(p.k * p.m),
+        c_no_peak=math.sqrt(2.0 * p.k * p.m),
+        critical=at(p.omega_res, 2.0 * math.sqrt(p.k * p.m)),
+        twice_critical=at(p.omega_res, 4.0 * math.sqrt(p.k * p.m)),
     )

@@ -150,7 +150,7 @@ def readout_table(study: ExploreStudy) -> Table:
     ]
     return Table(
         [{"q": q, "v": v, "u": u} for q, v, u in rows],
-        [Column("q", "quantity"), Column("v", "value", 5), Column("u", "unit")],
+        [Column(key="q", header="quantity"), Column(key="v", header="value", digits=5), Column(key="u", header="unit")],
         caption=(
             f"The explorer's readout at its starting point (ω = {num(r.omega)} rad/s, c = {num(study.c_start)} "
             "N s/m): what the live explorer shows before any slider moves."

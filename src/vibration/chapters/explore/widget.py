@@ -55,7 +55,7 @@ __all__ = ["Explorer", "explorer", "live_explorer"]
 INPUT_ERRORS = (ValueError, TypeError, ArithmeticError, RuntimeError)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class _Row:
     key: str  # key in Explorer.values
     label: str  # quantity, with symbol
@@ -64,23 +64,23 @@ class _Row:
 
 
 _ROWS = (
-    _Row("omega_n", "natural frequency ω_n", "rad/s", ".5g"),
-    _Row("f_n", "natural frequency f_n", "Hz", ".5g"),
-    _Row("omega", "forcing frequency ω", "rad/s", ".5g"),
-    _Row("f", "forcing frequency f", "Hz", ".5g"),
-    _Row("ratio", "frequency ratio ω/ω_n", "", ".5g"),
-    _Row("zeta", "damping ratio ζ", "", ".5g"),
-    _Row("regime", "regime", "", "s"),
-    _Row("magnification", "magnification |X|/(F0/k)", "", ".5g"),
-    _Row("amplitude", "steady-state amplitude |X|", "m", ".5g"),
-    _Row("peak", "peak |x| in the window", "m", ".5g"),
-    _Row("settling", "2 % settling time", "s", ".5g"),
-    _Row("steady_reached", "steady state reached in the window", "", "s"),
-    _Row("t_end", "time window", "s", ".5g"),
+    _Row(key="omega_n", label="natural frequency ω_n", unit="rad/s", fmt=".5g"),
+    _Row(key="f_n", label="natural frequency f_n", unit="Hz", fmt=".5g"),
+    _Row(key="omega", label="forcing frequency ω", unit="rad/s", fmt=".5g"),
+    _Row(key="f", label="forcing frequency f", unit="Hz", fmt=".5g"),
+    _Row(key="ratio", label="frequency ratio ω/ω_n", unit="", fmt=".5g"),
+    _Row(key="zeta", label="damping ratio ζ", unit="", fmt=".5g"),
+    _Row(key="regime", label="regime", unit="", fmt="s"),
+    _Row(key="magnification", label="magnification |X|/(F0/k)", unit="", fmt=".5g"),
+    _Row(key="amplitude", label="steady-state amplitude |X|", unit="m", fmt=".5g"),
+    _Row(key="peak", label="peak |x| in the window", unit="m", fmt=".5g"),
+    _Row(key="settling", label="2 % settling time", unit="s", fmt=".5g"),
+    _Row(key="steady_reached", label="steady state reached in the window", unit="", fmt="s"),
+    _Row(key="t_end", label="time window", unit="s", fmt=".5g"),
 )
 _RK45_ROWS = (
-    _Row("rk45_max_error", "RK45 max |x − x_exact|", "m", ".3e"),
-    _Row("rk45_nfev", "RK45 right-hand-side evaluations", "", "d"),
+    _Row(key="rk45_max_error", label="RK45 max |x − x_exact|", unit="m", fmt=".3e"),
+    _Row(key="rk45_nfev", label="RK45 right-hand-side evaluations", unit="", fmt="d"),
 )
 
 
@@ -138,8 +138,8 @@ class Explorer(widgets.VBox):
         n_points: int = N_POINTS,
         show_rk45: bool = False,
     ) -> None:
-        osc = Oscillator(m, c, k)
-        force = SineForce(F0, omega)
+        osc = Oscillator(m=m, c=c, k=k)
+        force = SineForce(F0=F0, omega=omega)
         check_real("c", c, low=0.0, low_open=True, unit="N s/m")
         check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
         t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
@@ -302,8 +302,8 @@ class Explorer(widgets.VBox):
     # ------------------------------------------------------------------ update
     def _read(self):
         """Validated parameters from the controls (raises ParameterError)."""
-        osc = Oscillator(self.m_text.value, self.c_slider.value, self.k_text.value)
-        force = SineForce(self.F0_text.value, self.omega_slider.value)
+        osc = Oscillator(m=self.m_text.value, c=self.c_slider.value, k=self.k_text.value)
+        force = SineForce(F0=self.F0_text.value, omega=self.omega_slider.value)
         t_end = check_real("t_end", self.t_end_text.value, low=0.0, low_open=True, unit="s")
         return osc, force, t_end
 

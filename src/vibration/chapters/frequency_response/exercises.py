@@ -31,9 +31,9 @@ PREREQUISITES = ("chapter 1: ω<sub>n</sub>, ζ and the steady amplitude", "loga
 def exercises(params: Params) -> tuple[Exercise, ...]:
     """The chapter's exercises for ``params``, answers computed by the package."""
     p = params
-    nom = Oscillator(p.m, p.c_nominal, p.k)
+    nom = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     wn, zeta = nom.natural_frequency, nom.damping_ratio
-    ss = steady_state(nom, SineForce(p.F0, p.omega_ref))
+    ss = steady_state(nom, SineForce(F0=p.F0, omega=p.omega_ref))
     r = p.omega_ref / wn
     out = [
         Exercise(
@@ -122,7 +122,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     )
     if p.c_nominal > 0 and 2 * zeta < 1 / math.sqrt(2):
         _, m1 = peak_magnification(nom)
-        _, m2 = peak_magnification(Oscillator(p.m, 2 * p.c_nominal, p.k))
+        _, m2 = peak_magnification(Oscillator(m=p.m, c=2 * p.c_nominal, k=p.k))
         out.append(
             Exercise(
                 id="04.5",

@@ -10,8 +10,8 @@ from vibration.presentation.parameters import ordered, paper_window, shared
 from vibration.presentation.schema import Param, Schema
 
 SCHEMA = Schema(
-    "04_frequency_response",
-    (
+    notebook="04_frequency_response",
+    params=(
         shared("m"),
         shared("k"),
         shared("F0"),
@@ -22,13 +22,36 @@ SCHEMA = Schema(
         shared("c_nominal"),
         shared("c_high"),
         shared("n_points"),
-        Param("n_omega", "N_ω", 200, "", 2, 2000, "design-map frequencies"),
-        Param("n_damping", "N_c", 200, "", 2, 2000, "design-map dampings"),
+        Param(name="n_omega", symbol="N_ω", default=200, unit="", low=2, high=2000, meaning="design-map frequencies"),
+        Param(name="n_damping", symbol="N_c", default=200, unit="", low=2, high=2000, meaning="design-map dampings"),
         Param(
-            "omega_max", "ω_max", 10.0, "rad/s", 0.0, 1000.0, "upper forcing frequency of the design map", low_open=True
+            name="omega_max",
+            symbol="ω_max",
+            default=10.0,
+            unit="rad/s",
+            low=0.0,
+            high=1000.0,
+            meaning="upper forcing frequency of the design map",
+            low_open=True,
         ),
-        Param("c_min", "c_min", 0.01, "N s/m", 0.001, 10000.0, "lowest damping of the design map"),
-        Param("c_max", "c_max", 20.0, "N s/m", 0.001, 10000.0, "highest damping of the design map"),
+        Param(
+            name="c_min",
+            symbol="c_min",
+            default=0.01,
+            unit="N s/m",
+            low=0.001,
+            high=10000.0,
+            meaning="lowest damping of the design map",
+        ),
+        Param(
+            name="c_max",
+            symbol="c_max",
+            default=20.0,
+            unit="N s/m",
+            low=0.001,
+            high=10000.0,
+            meaning="highest damping of the design map",
+        ),
     ),
     together=(
         paper_window,

@@ -60,7 +60,7 @@ CONTROL = 0.9
 N_CURVE, SPAN = 2001, 20.0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Check:
     """Two independent routes to one quantity: their relative difference and the bound it must stay under."""
 
@@ -74,7 +74,7 @@ class Check:
         return bool(self.value < self.tol)
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class DampingCase:
     """One of the paper's three dampings at the run's forcing frequencies (SI units, magnifications in 1)."""
 
@@ -122,7 +122,7 @@ class DampingCase:
         return bool((self.lo is None or self.lo <= self.omega_res) and self.omega_res <= self.hi)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Decomposition:
     """The resonance case from rest split into steady state and transient (SI units)."""
 
@@ -133,7 +133,7 @@ class Decomposition:
     t_s: float  # 2 % settling time, s (inf when it never settles)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Control:
     """Which term sets the nominal damping's steady amplitude at one forcing frequency."""
 
@@ -159,11 +159,18 @@ def control(osc: Oscillator, w: float) -> Control:
     r = w / osc.natural_frequency
     undamped = 1.0 / abs(1.0 - r * r) if r != 1.0 else math.inf
     damping_only = 1.0 / (2.0 * osc.damping_ratio * r) if osc.c > 0 else math.inf
-    twice = Oscillator(osc.m, 2.0 * osc.c, osc.k)
-    return Control(w, r, _mag(osc, w), undamped, damping_only, _mag(twice, w) / _mag(osc, w))
+    twice = Oscillator(m=osc.m, c=2.0 * osc.c, k=osc.k)
+    return Control(
+        omega=w,
+        r=r,
+        M=_mag(osc, w),
+        undamped=undamped,
+        damping_only=damping_only,
+        doubled=_mag(twice, w) / _mag(osc, w),
+    )
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class DesignMap:
     """Largest |x| in the window from rest over a grid of forcing frequency and damping."""
 
@@ -199,7 +206,7 @@ class DesignMap:
         return float(high.max() / high.min())
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class FrequencyStudy:
     """Everything chapter 4 computes, once (SI units)."""
 
@@ -257,28 +264,30 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
             zeta_hp = None
     if 0.0 < z < ZETA_DECREMENT_MAX:
         t_free = 6 * 2 * np.pi / osc.damped_natural_frequency
-        decay = simulate(osc, SineForce(0.0, 0.0), t_free, 20001, x0=1.0, method="DOP853", rtol=1e-10, atol=1e-13)
+        decay = simulate(
+            osc, SineForce(F0=0.0, omega=0.0), t_free, 20001, x0=1.0, method="DOP853", rtol=1e-10, atol=1e-13
+        )
         zeta_ld = log_decrement(decay.t, decay.x)[1]
     name = case_name(sc.scenario_id)
     row = DampingCase(
-        case,
-        name,
-        osc,
-        p.omega_ref,
-        p.omega_res,
-        w_pk,
-        m_pk,
-        lo,
-        hi,
-        _mag(osc, p.omega_ref),
-        _mag(osc, p.omega_res),
-        zeta_hp,
-        zeta_ld,
-        magnification(osc, omegas),
-        phase_lag(osc, omegas),
+        case=case,
+        name=name,
+        osc=osc,
+        omega_ref=p.omega_ref,
+        omega_res=p.omega_res,
+        omega_peak=w_pk,
+        M_peak=m_pk,
+        lo=lo,
+        hi=hi,
+        M_ref=_mag(osc, p.omega_ref),
+        M_res=_mag(osc, p.omega_res),
+        zeta_hp=zeta_hp,
+        zeta_ld=zeta_ld,
+        magnification=magnification(osc, omegas),
+        phase=phase_lag(osc, omegas),
     )
     checks = [
-        Check(f"ζ from the {what}, {name}, against c/(2√(km))", abs(est / z - 1), TOL_ESTIMATE)
+        Check(check=f"ζ from the {what}, {name}, against c/(2√(km))", value=abs(est / z - 1), tol=TOL_ESTIMATE)
         for est, what in ((zeta_hp, "half-power points"), (zeta_ld, "log decrement"))
         if est is not None
     ]
@@ -286,9 +295,9 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
     if math.isfinite(ss.magnification):
         checks.append(
             Check(
-                f"magnification at the resonant forcing, {name}, against the steady amplitude X/(F₀/k)",
-                abs(row.M_res / ss.magnification - 1),
-                TOL_CLOSED,
+                check=f"magnification at the resonant forcing, {name}, against the steady amplitude X/(F₀/k)",
+                value=abs(row.M_res / ss.magnification - 1),
+                tol=TOL_CLOSED,
             )
         )
     return row, checks
@@ -301,17 +310,17 @@ def _design(p: Params, study_t: np.ndarray, cases: tuple[DampingCase, ...]) -> t
     peaks = peak_displacement_map(p.m, p.k, p.F0, omegas, dampings, p.t_end, n)
     cs = [c.c for c in cases]
     at = peak_displacement_map(p.m, p.k, p.F0, [p.omega_res], cs, p.t_end, n)[:, 0]
-    force = SineForce(p.F0, p.omega_res)
-    direct = [float(np.max(np.abs(exact_response(Oscillator(p.m, c, p.k), force, study_t).x))) for c in cs]
+    force = SineForce(F0=p.F0, omega=p.omega_res)
+    direct = [float(np.max(np.abs(exact_response(Oscillator(m=p.m, c=c, k=p.k), force, study_t).x))) for c in cs]
     checks = [
         Check(
-            f"design-map kernel against the exact response at the resonant forcing, {case.name}",
-            abs(a / d - 1) if d > 0 else abs(a - d),
-            TOL_CLOSED,
+            check=f"design-map kernel against the exact response at the resonant forcing, {case.name}",
+            value=abs(a / d - 1) if d > 0 else abs(a - d),
+            tol=TOL_CLOSED,
         )
         for case, a, d in zip(cases, at, direct, strict=True)
     ]
-    return DesignMap(omegas, dampings, peaks, tuple(float(a) for a in at)), checks
+    return DesignMap(omegas=omegas, dampings=dampings, peaks=peaks, at_res=tuple(float(a) for a in at)), checks
 
 
 def frequency_response_study(params: Params | None = None, **values) -> FrequencyStudy:
@@ -352,41 +361,43 @@ def frequency_response_study(params: Params | None = None, **values) -> Frequenc
     ss = steady_state(osc, force)
     steady = ss.amplitude * np.sin(force.omega * t - ss.phase)
     a, b = ss.amplitude * math.sin(ss.phase), -force.omega * ss.amplitude * math.cos(ss.phase)
-    transient = exact_response(osc, SineForce(0.0, 0.0), t, x0=a, v0=b)
+    transient = exact_response(osc, SineForce(F0=0.0, omega=0.0), t, x0=a, v0=b)
     scale = max(float(np.max(np.abs(total.x))), 1e-300)
     checks.append(
         Check(
-            "exact response from rest against steady state + transient, resonance case",
-            float(np.max(np.abs(total.x - steady - transient.x))) / scale,
-            TOL_CLOSED,
+            check="exact response from rest against steady state + transient, resonance case",
+            value=float(np.max(np.abs(total.x - steady - transient.x))) / scale,
+            tol=TOL_CLOSED,
         )
     )
-    decomposition = Decomposition(ss.amplitude, ss.phase, a, float(transient.x[-1]), settling_time(osc, force))
+    decomposition = Decomposition(
+        X=ss.amplitude, phase=ss.phase, x_h0=a, x_h_end=float(transient.x[-1]), t_s=settling_time(osc, force)
+    )
     fine = np.linspace(0.0, p.t_end, 5 * (p.n_points - 1) + 1)
     eb_exact = energy_balance(osc, force, exact_response(osc, force, fine))
     eb_paper = energy_balance(osc, force, simulate(osc, force, p.t_end, fine.size))
     checks.append(
         Check(
-            "energy balance W − D − ΔE on the exact response, resonance case (relative to max W)",
-            float(np.max(np.abs(eb_exact.residual)) / np.max(np.abs(eb_exact.work))),
-            TOL_CLOSED,
+            check="energy balance W − D − ΔE on the exact response, resonance case (relative to max W)",
+            value=float(np.max(np.abs(eb_exact.residual)) / np.max(np.abs(eb_exact.work))),
+            tol=TOL_CLOSED,
         )
     )
     cases = tuple(cases)
     design, design_checks = _design(p, t, cases)
     return FrequencyStudy(
-        p,
-        scenarios,
-        omegas,
-        cases,
-        t,
-        total,
-        steady,
-        transient,
-        decomposition,
-        (("exact", eb_exact), ("RK45 at SciPy's defaults", eb_paper)),
-        fine,
-        design,
-        tuple(checks + design_checks),
-        tuple(control(cases[1].osc, w) for w in (p.omega_ref, p.omega_res)) if cases[1].steady else (),
+        params=p,
+        scenarios=scenarios,
+        omegas=omegas,
+        cases=cases,
+        t=t,
+        total=total,
+        steady=steady,
+        transient=transient,
+        decomposition=decomposition,
+        energy=(("exact", eb_exact), ("RK45 at SciPy's defaults", eb_paper)),
+        energy_t=fine,
+        design=design,
+        checks=tuple(checks + design_checks),
+        controls=tuple(control(cases[1].osc, w) for w in (p.omega_ref, p.omega_res)) if cases[1].steady else (),
     )

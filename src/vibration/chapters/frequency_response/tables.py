@@ -30,23 +30,23 @@ NO_DECAY = "no decay and no finite peak to measure when c ≤ 0"
 
 
 def _steady(c: DampingCase, value):
-    return value if c.steady else Missing(NO_STEADY)
+    return value if c.steady else Missing(reason=NO_STEADY)
 
 
 def _peak(c: DampingCase, value):
     if not c.steady:
-        return Missing(NO_STEADY)
-    return value if value is not None else Missing(NO_PEAK)
+        return Missing(reason=NO_STEADY)
+    return value if value is not None else Missing(reason=NO_PEAK)
 
 
 def _band(c: DampingCase, value):
     if not c.steady:
-        return Missing(NO_STEADY)
+        return Missing(reason=NO_STEADY)
     if c.c == 0:
-        return Missing(NO_BAND_UNDAMPED)
+        return Missing(reason=NO_BAND_UNDAMPED)
     if c.hi is None:
-        return Missing(NO_PEAK)
-    return value if value is not None else Missing(NO_LOWER)
+        return Missing(reason=NO_PEAK)
+    return value if value is not None else Missing(reason=NO_LOWER)
 
 
 def dampings_table(study: FrequencyStudy) -> Table:
@@ -69,15 +69,15 @@ def dampings_table(study: FrequencyStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "case"),
-            Column("c", "c (N s/m)", 3),
-            Column("zeta", "ζ", 3),
-            Column("regime", "regime"),
-            Column("Q", "Q", 3),
-            Column("wp", "ω_peak (rad/s)", 4),
-            Column("Mp", "M_peak", 4),
-            Column("Mref", "M(ω_ref)", 4),
-            Column("Mres", "M(ω_res)", 4),
+            Column(key="case", header="case"),
+            Column(key="c", header="c (N s/m)", digits=3),
+            Column(key="zeta", header="ζ", digits=3),
+            Column(key="regime", header="regime"),
+            Column(key="Q", header="Q", digits=3),
+            Column(key="wp", header="ω_peak (rad/s)", digits=4),
+            Column(key="Mp", header="M_peak", digits=4),
+            Column(key="Mref", header="M(ω_ref)", digits=4),
+            Column(key="Mres", header="M(ω_res)", digits=4),
         ],
         caption=(
             "The three dampings: damping ratio ζ, regime, quality factor Q = 1/(2ζ), the peak of the "
@@ -96,7 +96,7 @@ def band_table(study: FrequencyStudy) -> Table:
         if isinstance(hi, Missing):
             width = hi
         elif isinstance(lo, Missing):
-            width = Missing(NO_LOWER)
+            width = Missing(reason=NO_LOWER)
         else:
             width = hi - lo
         rows.append(
@@ -105,19 +105,19 @@ def band_table(study: FrequencyStudy) -> Table:
                 "lo": lo,
                 "hi": hi,
                 "width": width,
-                "cm": c.c / c.osc.m if c.c >= 0 else Missing(NO_STEADY),
+                "cm": c.c / c.osc.m if c.c >= 0 else Missing(reason=NO_STEADY),
                 "inside": c.inside if c.inside is not None else hi,
             }
         )
     return Table(
         rows,
         [
-            Column("case", "case"),
-            Column("lo", "ω_1 (rad/s)", 4),
-            Column("hi", "ω_2 (rad/s)", 4),
-            Column("width", "ω_2 − ω_1 (rad/s)", 3),
-            Column("cm", "c/m (rad/s)", 3),
-            Column("inside", f"ω_res = {g(study.params.omega_res)} rad/s in band"),
+            Column(key="case", header="case"),
+            Column(key="lo", header="ω_1 (rad/s)", digits=4),
+            Column(key="hi", header="ω_2 (rad/s)", digits=4),
+            Column(key="width", header="ω_2 − ω_1 (rad/s)", digits=3),
+            Column(key="cm", header="c/m (rad/s)", digits=3),
+            Column(key="inside", header=f"ω_res = {g(study.params.omega_res)} rad/s in band"),
         ],
         caption=(
             "Exact half-power band of the displacement: the frequencies ω_1 < ω_2 where the magnification is "
@@ -134,14 +134,14 @@ def estimates_table(study: FrequencyStudy) -> Table:
     for c in study.cases:
         z = c.zeta
         if z <= 0:
-            hp = ld = Missing(NO_DECAY)
+            hp = ld = Missing(reason=NO_DECAY)
         else:
-            hp = c.zeta_hp if c.zeta_hp is not None else Missing(NO_PEAK if z >= 2**-0.5 else NO_LOWER)
+            hp = c.zeta_hp if c.zeta_hp is not None else Missing(reason=NO_PEAK if z >= 2**-0.5 else NO_LOWER)
             ld = (
                 c.zeta_ld
                 if c.zeta_ld is not None
                 else Missing(
-                    "no oscillation to measure when ζ ≥ 1"
+                    reason="no oscillation to measure when ζ ≥ 1"
                     if z >= 1
                     else f"fitted only for ζ < {g(ZETA_DECREMENT_MAX)} (faster decays leave too few clean peaks)"
                 )
@@ -150,10 +150,10 @@ def estimates_table(study: FrequencyStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "case"),
-            Column("zeta", "ζ = c/(2√(km))", 4),
-            Column("hp", "ζ from half-power points", 4),
-            Column("ld", "ζ from log decrement", 4),
+            Column(key="case", header="case"),
+            Column(key="zeta", header="ζ = c/(2√(km))", digits=4),
+            Column(key="hp", header="ζ from half-power points", digits=4),
+            Column(key="ld", header="ζ from log decrement", digits=4),
         ],
         caption=(
             "The damping ratio three independent ways: from the parameters, from the exact half-power relation "
@@ -167,16 +167,16 @@ def estimates_table(study: FrequencyStudy) -> Table:
 def decomposition_table(study: FrequencyStudy) -> Table:
     """The resonance case: steady amplitude and phase, transient at the start and the end, settling time."""
     d = study.decomposition
-    ts = d.t_s if math.isfinite(d.t_s) else Missing("the transient never decays when c ≤ 0")
+    ts = d.t_s if math.isfinite(d.t_s) else Missing(reason="the transient never decays when c ≤ 0")
     row = {"X": d.X, "phase": d.phase, "x0": d.x_h0, "x_end": d.x_h_end, "ts": ts}
     return Table(
         [row],
         [
-            Column("X", "X (m)", 4),
-            Column("phase", "φ (rad)", 4),
-            Column("x0", "x_h(0) (m)", 4),
-            Column("x_end", "x_h(t_end) (m)", 3),
-            Column("ts", "t_s (s)", 3),
+            Column(key="X", header="X (m)", digits=4),
+            Column(key="phase", header="φ (rad)", digits=4),
+            Column(key="x0", header="x_h(0) (m)", digits=4),
+            Column(key="x_end", header="x_h(t_end) (m)", digits=3),
+            Column(key="ts", header="t_s (s)", digits=3),
         ],
         caption=(
             f"The resonance case (c = {g(study.resonance.oscillator.c)} N s/m) from rest: steady amplitude X and "
@@ -204,11 +204,11 @@ def energy_table(study: FrequencyStudy) -> Table:
     return Table(
         rows,
         [
-            Column("response", "response"),
-            Column("W", "W (J)", 5),
-            Column("D", "D (J)", 5),
-            Column("E", "ΔE (J)", 5),
-            Column("res", "max |W − D − ΔE| / max W", 3),
+            Column(key="response", header="response"),
+            Column(key="W", header="W (J)", digits=5),
+            Column(key="D", header="D (J)", digits=5),
+            Column(key="E", header="ΔE (J)", digits=5),
+            Column(key="res", header="max |W − D − ΔE| / max W", digits=3),
         ],
         caption=(
             f"Energy of the resonance case at t_end = {g(study.params.t_end)} s: work of the force W, energy "
@@ -224,7 +224,11 @@ def checks_table(study: FrequencyStudy) -> Table:
     rows = [{"check": c.check, "value": at_least(c.value, c.tol), "ok": c.ok} for c in study.checks]
     return Table(
         rows,
-        [Column("check", "check"), Column("value", "relative difference", 3), Column("ok", "within bound")],
+        [
+            Column(key="check", header="check"),
+            Column(key="value", header="relative difference", digits=3),
+            Column(key="ok", header="within bound"),
+        ],
         caption="Self-checks of the chapter: independent routes to the same quantity, with their relative differences.",
         name="tab-frequency-checks",
     )
@@ -242,10 +246,10 @@ def design_table(study: FrequencyStudy) -> Table:
     return Table(
         rows,
         [
-            Column("point", "point"),
-            Column("omega", "ω (rad/s)", 4),
-            Column("c", "c (N s/m)", 3),
-            Column("peak", "peak |x| (m)", 4),
+            Column(key="point", header="point"),
+            Column(key="omega", header="ω (rad/s)", digits=4),
+            Column(key="c", header="c (N s/m)", digits=3),
+            Column(key="peak", header="peak |x| (m)", digits=4),
         ],
         caption=(
             f"Largest |x| in the window [0, {g(study.params.t_end)}] s from rest: the largest on the "

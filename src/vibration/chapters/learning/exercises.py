@@ -30,7 +30,7 @@ PREREQUISITES = ("chapter 7: LQR and the closed loop", "expectation and variance
 def exercises(params: Params) -> tuple[Exercise, ...]:
     """The chapter's exercises for ``params``, answers computed by the package."""
     p = params
-    plant = Oscillator(p.m, p.c_nominal, p.k)
+    plant = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     wn = plant.natural_frequency
     t_ep = p.n_steps * p.dt
     per = 2 * math.pi / (wn * p.dt)

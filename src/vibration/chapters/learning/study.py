@@ -77,7 +77,7 @@ ROBUST = ("LQR", "learned (ARS)", "best fixed gain")
 # ----------------------------------------------------------------------------- records
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Paired:
     """Law ``b`` against law ``a`` on the same episodes: ``diff = J_b - J_a`` (s) and its standard error."""
 
@@ -100,7 +100,7 @@ class Paired:
         return abs(self.diff) > RESOLVED_Z * self.se
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class CostSurface:
     """Exact expected cost of the unclipped linear law on a grid of gains (no disturbance)."""
 
@@ -109,7 +109,7 @@ class CostSurface:
     cost: np.ndarray = field(repr=False)  # (nv, nx) s; inf where the sampled loop is unstable
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class LearningStudy:
     """Every result the learning chapter shows, at one set of parameters."""
 
@@ -160,7 +160,7 @@ class LearningStudy:
     def paired(self, cmp: Comparison, a: int, b: int) -> Paired:
         """Law ``b`` against law ``a`` on the comparison's common episodes."""
         d, se = cmp.paired_gain(a, b)
-        return Paired(d, se, cmp.runs[a].mean_cost)
+        return Paired(diff=d, se=se, base=cmp.runs[a].mean_cost)
 
     def learned_vs(self, name: str) -> Paired:
         """The learned law against a controller of the force-actuator comparison (``rel > 0``: learned costs more)."""
@@ -212,7 +212,7 @@ def _surface(task: OscillatorTask, ref: LQRReference, learners) -> CostSurface:
     kx = np.linspace(kx_all.min() - 0.15 * span_x, kx_all.max() + 0.15 * span_x, SURFACE_POINTS)
     kv = np.linspace(kv_all.min() - 0.15 * span_v, kv_all.max() + 0.15 * span_v, SURFACE_POINTS)
     cost = np.array([[_moments(task, np.array([a, b]))[0] for a in kx] for b in kv])
-    return CostSurface(kx, kv, cost)
+    return CostSurface(kx=kx, kv=kv, cost=cost)
 
 
 def learning_study(params: Params | None = None, **values) -> LearningStudy:

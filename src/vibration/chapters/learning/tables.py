@@ -22,13 +22,13 @@ EXCESS_FLOOR = 1e-6
 #: Tolerance the self-checks are printed against.
 CHECK_TOL = 1e-12
 
-NO_EPISODES = Missing("computed from the model, no episodes")
+NO_EPISODES = Missing(reason="computed from the model, no episodes")
 
 
 def _episodes(e: float, never: str):
     """Episodes (a whole number, or a half for a median of an even count), or "—" with the reason."""
     if not math.isfinite(e):
-        return Missing(never)
+        return Missing(reason=never)
     return int(e) if e == int(e) else f"{e:.1f}"
 
 
@@ -52,13 +52,13 @@ def lqr_table(st: LearningStudy) -> Table:
     return Table(
         [row],
         [
-            Column("kx", "K_x (N/m)"),
-            Column("kv", "K_v (N s/m)"),
-            Column("rates", "decay rates (1/s)"),
-            Column("J", "J* (s)"),
-            Column("Jinf", "J*_∞ (s)"),
-            Column("peak", "max |u| (N)"),
-            Column("umax", "u_max (N)"),
+            Column(key="kx", header="K_x (N/m)"),
+            Column(key="kv", header="K_v (N s/m)"),
+            Column(key="rates", header="decay rates (1/s)"),
+            Column(key="J", header="J* (s)"),
+            Column(key="Jinf", header="J*_∞ (s)"),
+            Column(key="peak", header="max |u| (N)"),
+            Column(key="umax", header="u_max (N)"),
         ],
         caption="Discrete-time LQR of the sampled task: gains of u = −K [x, v], closed-loop decay rates, "
         "expected episode cost J* and its value over an infinite horizon, largest force over every initial state.",
@@ -81,7 +81,7 @@ def learning_table(st: LearningStudy) -> Table:
         }
         for i, target in enumerate(TARGETS):
             e = st.episodes_to(res, target)
-            row[f"e{i}"] = int(e) if math.isfinite(e) else Missing(f"not within {target:.0%} of J* in this run")
+            row[f"e{i}"] = int(e) if math.isfinite(e) else Missing(reason=f"not within {target:.0%} of J* in this run")
         rows.append(row)
     lqr = {"method": "LQR (Riccati)", "episodes": NO_EPISODES, "steps": NO_EPISODES, "ratio": sig(1.0, 6)}
     lqr |= {"kx": sig(st.ref.gains[0], 4), "kv": sig(st.ref.gains[1], 4), "J": sig(st.ref.expected_cost, 6)}
@@ -91,15 +91,15 @@ def learning_table(st: LearningStudy) -> Table:
     return Table(
         rows,
         [
-            Column("method", "learner"),
-            Column("episodes", "episodes"),
-            Column("steps", "steps"),
-            Column("kx", "K_x (N/m)"),
-            Column("kv", "K_v (N s/m)"),
-            Column("J", "J (s)"),
-            Column("ratio", "J / J*"),
+            Column(key="method", header="learner"),
+            Column(key="episodes", header="episodes"),
+            Column(key="steps", header="steps"),
+            Column(key="kx", header="K_x (N/m)"),
+            Column(key="kv", header="K_v (N s/m)"),
+            Column(key="J", header="J (s)"),
+            Column(key="ratio", header="J / J*"),
         ]
-        + [Column(f"e{i}", f"episodes to {100 * t:g} %") for i, t in enumerate(TARGETS)],
+        + [Column(key=f"e{i}", header=f"episodes to {100 * t:g} %") for i, t in enumerate(TARGETS)],
         caption="What the learners found from episodes alone: gains, exact expected cost J of the learned law, "
         f"its ratio to the LQR optimum J*, and the training episodes each needed to come within {targets} of J*.",
         name="tab-learning-learners",
@@ -132,15 +132,15 @@ def seed_table(st: LearningStudy) -> Table:
     return Table(
         rows,
         [
-            Column("method", "learner"),
-            Column("seeds", "seeds"),
-            Column("iters", "iterations"),
-            Column("episodes", "episodes per seed"),
-            Column("med", "median J/J* − 1"),
-            Column("worst", "worst J/J* − 1"),
-            Column("reached", f"seeds within {tgt:g} %"),
-            Column("emed", f"median episodes to {tgt:g} %"),
-            Column("eworst", f"worst episodes to {tgt:g} %"),
+            Column(key="method", header="learner"),
+            Column(key="seeds", header="seeds"),
+            Column(key="iters", header="iterations"),
+            Column(key="episodes", header="episodes per seed"),
+            Column(key="med", header="median J/J* − 1"),
+            Column(key="worst", header="worst J/J* − 1"),
+            Column(key="reached", header=f"seeds within {tgt:g} %"),
+            Column(key="emed", header=f"median episodes to {tgt:g} %"),
+            Column(key="eworst", header=f"worst episodes to {tgt:g} %"),
         ],
         caption=f"Each learner trained from seeds {st.params.seed} to {st.params.seed + st.params.n_seeds - 1} on the "
         f"task without disturbance: final exact cost over the LQR optimum J*, and the training episodes to come "
@@ -175,7 +175,9 @@ def comparison_table(cmp: Comparison, caption: str, name: str, reference: int) -
                 "law": _realised(cmp, i),
                 "J": sig(run.mean_cost, 4),
                 "sem": sig(run.cost_sem, 2),
-                "exact": sig(cmp.exact[i], 4) if math.isfinite(cmp.exact[i]) else Missing("not linear on this task"),
+                "exact": sig(cmp.exact[i], 4)
+                if math.isfinite(cmp.exact[i])
+                else Missing(reason="not linear on this task"),
                 "rel": sig(run.mean_cost / cmp.runs[reference].mean_cost, 4),
                 "xpk": sig(run.peak_x, 3),
                 "xrms": sig(run.rms_x, 3),
@@ -186,16 +188,16 @@ def comparison_table(cmp: Comparison, caption: str, name: str, reference: int) -
     return Table(
         rows,
         [
-            Column("name", "controller"),
-            Column("law", "law"),
-            Column("J", "J (s)"),
-            Column("sem", "± (s)"),
-            Column("exact", "J exact (s)"),
-            Column("rel", "J / J_ref"),
-            Column("xpk", "max |x| (m)"),
-            Column("xrms", "x_rms (m)"),
-            Column("urms", "u_rms (N)"),
-            Column("upk", "max |u| (N)"),
+            Column(key="name", header="controller"),
+            Column(key="law", header="law"),
+            Column(key="J", header="J (s)"),
+            Column(key="sem", header="± (s)"),
+            Column(key="exact", header="J exact (s)"),
+            Column(key="rel", header="J / J_ref"),
+            Column(key="xpk", header="max |x| (m)"),
+            Column(key="xrms", header="x_rms (m)"),
+            Column(key="urms", header="u_rms (N)"),
+            Column(key="upk", header="max |u| (N)"),
         ],
         caption=caption,
         name=name,
@@ -243,7 +245,7 @@ def references_table(st: LearningStudy) -> Table:
         }
     ]
     lqr_exact = st.active.exact[st.a("LQR")]
-    nonlinear = Missing("the force bound binds: not linear on the task")
+    nonlinear = Missing(reason="the force bound binds: not linear on the task")
     for label, name, exact, peak in (
         ("best fixed gain on [x, v]", "best fixed gain", fixed.expected_cost, fixed.peak_force),
         ("LQR (designed without F(t))", "LQR", lqr_exact, st.active.runs[st.a("LQR")].peak_u),
@@ -262,12 +264,12 @@ def references_table(st: LearningStudy) -> Table:
     return Table(
         rows,
         [
-            Column("name", "reference"),
-            Column("info", "what the law uses"),
-            Column("J", "J exact (s)"),
-            Column("peak", "max |u| (N)"),
-            Column("gap", "learned law's excess (%)"),
-            Column("gse", "± (%)"),
+            Column(key="name", header="reference"),
+            Column(key="info", header="what the law uses"),
+            Column(key="J", header="J exact (s)"),
+            Column(key="peak", header="max |u| (N)"),
+            Column(key="gap", header="learned law's excess (%)"),
+            Column(key="gse", header="± (%)"),
         ],
         caption=f"The force-actuator task under F_0 sin(ωt) (F_0 = {num(t.F0, 4)} N, ω = {num(t.omega, 4)} rad/s): "
         "its exact optimum, the best fixed gain, LQR, and how much more the learned law costs than each.",
@@ -291,9 +293,9 @@ def robustness_table(st: LearningStudy) -> Table:
             row[f"r{j}"] = sig(rb.cost[v, j] / rb.optimum[v], 4)
             row[f"s{j}"] = sig(rb.stderr[v, j] / rb.optimum[v], 2)
         rows.append(row)
-    cols = [Column("var", "plant change"), Column("opt", "J_opt (s)")]
+    cols = [Column(key="var", header="plant change"), Column(key="opt", header="J_opt (s)")]
     for j, law in enumerate(rb.laws):
-        cols += [Column(f"r{j}", f"{law}: J / J_opt"), Column(f"s{j}", "±")]
+        cols += [Column(key=f"r{j}", header=f"{law}: J / J_opt"), Column(key=f"s{j}", header="±")]
     return Table(
         rows,
         cols,
@@ -318,7 +320,7 @@ CHECK_LABELS = {
 def _bound(value: float, tol: float):
     """``< 10⁻¹²`` when the check holds (stable on every machine), else the value and the tolerance."""
     if not math.isfinite(value):
-        return Missing("not computed for this case")
+        return Missing(reason="not computed for this case")
     tol_text = power(round(math.log10(tol)))
     return f"< {tol_text}" if abs(value) < tol else f"{num(abs(value), 2)} (above {tol_text})"
 
@@ -331,7 +333,11 @@ def checks_table(st: LearningStudy) -> Table:
         rows.append({"what": what, "against": against, "bound": _bound(value, CHECK_TOL)})
     return Table(
         rows,
-        [Column("what", "quantity"), Column("against", "independent method"), Column("bound", "relative difference")],
+        [
+            Column(key="what", header="quantity"),
+            Column(key="against", header="independent method"),
+            Column(key="bound", header="relative difference"),
+        ],
         caption="Self-checks of the optimum and of the simulators (relative differences, printed as bounds).",
         name="tab-learning-checks",
     )

@@ -10,8 +10,8 @@ from vibration.presentation.parameters import paper_window, shared
 from vibration.presentation.schema import Schema
 
 SCHEMA = Schema(
-    "00_overview",
-    (
+    notebook="00_overview",
+    params=(
         shared("m"),
         shared("k"),
         shared("F0"),

@@ -41,7 +41,7 @@ PAPER_SAYS = {
 N_POINTS = 5001
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class OverviewStudy:
     """The run's exact values behind the front page (SI units)."""
 
@@ -90,13 +90,13 @@ def overview_study(params: Params | None = None, **values) -> OverviewStudy:
         The validated parameters; or give them as keyword arguments (checked by the schema).
     """
     p = params if params is not None else Params.from_values(values)
-    nominal = Oscillator(p.m, p.c_nominal, p.k)
-    ref = steady_state(nominal, SineForce(p.F0, p.omega_ref))
-    res = steady_state(nominal, SineForce(p.F0, p.omega_res))
+    nominal = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
+    ref = steady_state(nominal, SineForce(F0=p.F0, omega=p.omega_ref))
+    res = steady_state(nominal, SineForce(F0=p.F0, omega=p.omega_res))
     t = np.linspace(0.0, p.t_end, N_POINTS)
-    x = exact_response(nominal, SineForce(p.F0, p.omega_res), t).x
-    low, high = Oscillator(p.m, p.c_low, p.k), Oscillator(p.m, p.c_high, p.k)
-    force = SineForce(p.F0, p.omega_res)
+    x = exact_response(nominal, SineForce(F0=p.F0, omega=p.omega_res), t).x
+    low, high = Oscillator(m=p.m, c=p.c_low, k=p.k), Oscillator(m=p.m, c=p.c_high, k=p.k)
+    force = SineForce(F0=p.F0, omega=p.omega_res)
     peak_low = float(np.max(np.abs(exact_response(low, force, t).x)))
     growth_low = float(max(s.real for s in poles(low)))
     bounded_low = steady_state(low, force).amplitude if p.c_low > 0 else math.inf
@@ -104,7 +104,16 @@ def overview_study(params: Params | None = None, **values) -> OverviewStudy:
     rows = audit_claims(scenarios_of(p), load_claims())
     verdicts = {v: sum(r["verdict"] == v for r in rows) for v in VERDICTS}
     return OverviewStudy(
-        p, ref.amplitude if p.c_nominal >= 0 else math.nan, res.amplitude if p.c_nominal >= 0 else math.nan,
-        p.omega_res * res.amplitude if p.c_nominal >= 0 else math.nan, peak_low, growth_low, bounded_low,
-        peak_high, t, x, verdicts, _solver_gap(rows),
-    )  # fmt: skip
+        params=p,
+        x_ref=ref.amplitude if p.c_nominal >= 0 else math.nan,
+        x_res=res.amplitude if p.c_nominal >= 0 else math.nan,
+        v_res=p.omega_res * res.amplitude if p.c_nominal >= 0 else math.nan,
+        peak_low=peak_low,
+        growth_low=growth_low,
+        bounded_low=bounded_low,
+        peak_high=peak_high,
+        t=t,
+        x=x,
+        verdicts=verdicts,
+        solver_gap=_solver_gap(rows),
+    )

@@ -104,7 +104,7 @@ def findings_markdown(st: OverviewStudy) -> str:
 
 def _cell(value: float, unit: str, digits: int = 4):
     if not math.isfinite(value):
-        return Missing(NO_STEADY)
+        return Missing(reason=NO_STEADY)
     return f"{fixed(value, digits)} {unit}".strip()
 
 
@@ -143,7 +143,11 @@ def headline_table(st: OverviewStudy) -> Table:
     ]
     return Table(
         rows,
-        [Column("q", "quantity"), Column("paper", "the paper says"), Column("exact", "exact, this run")],
+        [
+            Column(key="q", header="quantity"),
+            Column(key="paper", header="the paper says"),
+            Column(key="exact", header="exact, this run"),
+        ],
         caption="The paper's headline numbers beside the exact solution of its own equation.",
         name="tab-front-headline",
         notes=(
@@ -159,7 +163,7 @@ def verdict_table(st: OverviewStudy) -> Table:
     rows = [{"verdict": v, "n": n} for v, n in counts] + [{"verdict": "total", "n": st.n_claims}]
     return Table(
         rows,
-        [Column("verdict", "verdict"), Column("n", "claims")],
+        [Column(key="verdict", header="verdict"), Column(key="n", header="claims")],
         caption="Verdicts of the claims audit (chapter 2) for this run.",
         name="tab-front-verdicts",
     )

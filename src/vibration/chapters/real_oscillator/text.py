@@ -18,7 +18,7 @@ from vibration.chapters.real_oscillator.study import PAPER_LAW, RealOscillatorSt
 from vibration.presentation.narrative import g
 from vibration.presentation.tables import Approx, Column, Composite, Missing, Table
 
-NONE = Missing("not available with these data")
+NONE = Missing(reason="not available with these data")
 
 
 def deg(x: float) -> float:
@@ -122,12 +122,12 @@ def law_table(st: RealOscillatorStudy) -> Table:
     t = Table(
         rows,
         [
-            Column("brake", "brake"),
-            Column("current", "I (A)", 3),
-            Column("law", "law (summed BIC)"),
-            Column("wins", "runs choosing each law"),
-            Column("range", "X (rad)"),
-            Column("zeta", "ζ_eq in the band"),
+            Column(key="brake", header="brake"),
+            Column(key="current", header="I (A)", digits=3),
+            Column(key="law", header="law (summed BIC)"),
+            Column(key="wins", header="runs choosing each law"),
+            Column(key="range", header="X (rad)"),
+            Column(key="zeta", header="ζ_eq in the band"),
         ],
         f"The damping law each brake setting's free decays choose, and the mean equivalent damping ratio "
         f"with its run-to-run error over the common amplitude band{band}.",
@@ -176,12 +176,12 @@ def brake_table(st: RealOscillatorStudy) -> Table | None:
     t = Table(
         rows,
         [
-            Column("pair", "settings"),
-            Column("band", "X band (rad)"),
-            Column("dz", "ζ_eq difference (bootstrap)"),
-            Column("ci", "95 % interval"),
-            Column("joint", "brake-only ζ (joint fit)"),
-            Column("resolved", "resolved"),
+            Column(key="pair", header="settings"),
+            Column(key="band", header="X band (rad)"),
+            Column(key="dz", header="ζ_eq difference (bootstrap)"),
+            Column(key="ci", header="95 % interval"),
+            Column(key="joint", header="brake-only ζ (joint fit)"),
+            Column(key="resolved", header="resolved"),
         ],
         "The brake at matched amplitude: the difference of mean equivalent damping inside the band, by bootstrap "
         "over runs, and the brake-only viscous term of a joint fit with one shared amplitude law.",
@@ -244,13 +244,13 @@ def resonance_table(st: RealOscillatorStudy) -> Table:
     t = Table(
         rows,
         [
-            Column("brake", "brake"),
-            Column("session", "session"),
-            Column("omega", "ω (rad/s)", 4),
-            Column("amp", "amplitude (rad)"),
-            Column("deg", "amplitude (°)", 3),
-            Column("steady", "steady runs"),
-            Column("t90", "t_90 (s)", 2),
+            Column(key="brake", header="brake"),
+            Column(key="session", header="session"),
+            Column(key="omega", header="ω (rad/s)", digits=4),
+            Column(key="amp", header="amplitude (rad)"),
+            Column(key="deg", header="amplitude (°)", digits=3),
+            Column(key="steady", header="steady runs"),
+            Column(key="t90", header="t_90 (s)", digits=2),
         ],
         "Driven runs grouped by measured drive frequency: the mean late amplitude of the steady runs with its "
         "run-to-run error, and the median time to 90 % of the final amplitude.",
@@ -304,22 +304,24 @@ def prediction_table(st: RealOscillatorStudy) -> Table | None:
                 "law": LAW_WORDS[law],
                 "brake": b,
                 "gain": p.gain,
-                "err": 100 * p.pooled_error if math.isfinite(p.pooled_error) else Missing("unbounded"),
-                "sim": 100 * p.sim_pooled_error if math.isfinite(p.sim_pooled_error) else Missing("not simulated"),
-                "res": res if math.isfinite(res) else Missing("unbounded"),
-                "resdeg": deg(res) if math.isfinite(res) else Missing("unbounded"),
+                "err": 100 * p.pooled_error if math.isfinite(p.pooled_error) else Missing(reason="unbounded"),
+                "sim": 100 * p.sim_pooled_error
+                if math.isfinite(p.sim_pooled_error)
+                else Missing(reason="not simulated"),
+                "res": res if math.isfinite(res) else Missing(reason="unbounded"),
+                "resdeg": deg(res) if math.isfinite(res) else Missing(reason="unbounded"),
             }
         )
     t = Table(
         rows,
         [
-            Column("law", "law"),
-            Column("brake", "brake"),
-            Column("gain", "g", 3),
-            Column("err", "error, harmonic balance (%)", 3),
-            Column("sim", "error, simulated (%)", 3),
-            Column("res", "resonance (rad)", 3),
-            Column("resdeg", "resonance (°)", 3),
+            Column(key="law", header="law"),
+            Column(key="brake", header="brake"),
+            Column(key="gain", header="g", digits=3),
+            Column(key="err", header="error, harmonic balance (%)", digits=3),
+            Column(key="sim", header="error, simulated (%)", digits=3),
+            Column(key="res", header="resonance (rad)", digits=3),
+            Column(key="resdeg", header="resonance (°)", digits=3),
         ],
         "Each law, its gain calibrated off resonance, predicting the other steady runs: pooled rms relative error "
         "by harmonic balance and by simulating each run from its measured start with its measured drive, and the "
@@ -436,14 +438,14 @@ def steadiness_table(st: RealOscillatorStudy) -> Table:
     t = Table(
         rows,
         [
-            Column("run", "session/run"),
-            Column("brake", "brake"),
-            Column("omega", "ω (rad/s)", 4),
-            Column("drift", "late drift (%)"),
-            Column("t90", "t_90 (s)", 2),
-            Column("label", "state"),
-            Column("fdrift", "drive drift (%)", 2),
-            Column("centre", "centre drift (rad)", 2),
+            Column(key="run", header="session/run"),
+            Column(key="brake", header="brake"),
+            Column(key="omega", header="ω (rad/s)", digits=4),
+            Column(key="drift", header="late drift (%)"),
+            Column(key="t90", header="t_90 (s)", digits=2),
+            Column(key="label", header="state"),
+            Column(key="fdrift", header="drive drift (%)", digits=2),
+            Column(key="centre", header="centre drift (rad)", digits=2),
         ],
         "Every driven run: late drift with its standard error, time to 90 % of the final amplitude, and the "
         "change of drive frequency and of the wheel's centre over the record.",
@@ -470,20 +472,20 @@ def session_table(st: RealOscillatorStudy) -> Table | None:
                 "runs": f"{ss.steady} of {ss.runs}",
                 "fdrift": f"{g(fm, 2)} ({g(fl, 2)} to {g(fh, 2)})",
                 "centre": f"{g(cm, 2)} ({g(cl, 2)} to {g(ch, 2)})",
-                "hb": 100 * hb if math.isfinite(hb) else Missing("no predicted run"),
-                "sim": 100 * sim if math.isfinite(sim) else Missing("no predicted run"),
+                "hb": 100 * hb if math.isfinite(hb) else Missing(reason="no predicted run"),
+                "sim": 100 * sim if math.isfinite(sim) else Missing(reason="no predicted run"),
             }
         )
     law = f" ({LAW_WORDS[best.law]})" if best else ""
     t = Table(
         rows,
         [
-            Column("session", "session"),
-            Column("runs", "steady runs"),
-            Column("fdrift", "drive drift (%), median (range)"),
-            Column("centre", "centre drift (rad), median (range)"),
-            Column("hb", "error, harmonic balance (%)", 3),
-            Column("sim", "error, simulated (%)", 3),
+            Column(key="session", header="session"),
+            Column(key="runs", header="steady runs"),
+            Column(key="fdrift", header="drive drift (%), median (range)"),
+            Column(key="centre", header="centre drift (rad), median (range)"),
+            Column(key="hb", header="error, harmonic balance (%)", digits=3),
+            Column(key="sim", header="error, simulated (%)", digits=3),
         ],
         "Each session's driven runs: how many are steady, the change of drive frequency from the first to the second "
         f"half of each record and of the wheel's centre from the first to the last period, and the prediction "
@@ -524,7 +526,7 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
             loose = "power" in law  # a weakly determined exponent: its digits depend on the machine's rounding
 
             def num(value, digits, *, loose=loose, **tolerance):
-                return (Approx(value, **tolerance), digits) if loose else g(value, digits)
+                return (Approx(value=value, **tolerance), digits) if loose else g(value, digits)
 
             parts = []
             for k, v in p.coefficients.items():
@@ -541,21 +543,21 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
                 {
                     "brake": s.brake,
                     "law": LAW_WORDS[law],
-                    "omega_n": Composite(omega) if loose else "".join(omega),
-                    "coef": Composite(tuple(parts)) if loose else "".join(parts),
-                    "bic": Approx(p.bic, rtol=LOOSE_BIC) if loose else p.bic,
-                    "rms": Approx(p.rms_over_step, rtol=LOOSE_VALUE) if loose else p.rms_over_step,
+                    "omega_n": Composite(parts=omega) if loose else "".join(omega),
+                    "coef": Composite(parts=tuple(parts)) if loose else "".join(parts),
+                    "bic": Approx(value=p.bic, rtol=LOOSE_BIC) if loose else p.bic,
+                    "rms": Approx(value=p.rms_over_step, rtol=LOOSE_VALUE) if loose else p.rms_over_step,
                 }
             )
     t = Table(
         rows,
         [
-            Column("brake", "brake"),
-            Column("law", "law"),
-            Column("omega_n", "ω_n (rad/s)"),
-            Column("coef", "coefficients (run-to-run error)"),
-            Column("bic", "BIC (sum)", 6),
-            Column("rms", "rms / (step/√12)", 3),
+            Column(key="brake", header="brake"),
+            Column(key="law", header="law"),
+            Column(key="omega_n", header="ω_n (rad/s)"),
+            Column(key="coef", header="coefficients (run-to-run error)"),
+            Column(key="bic", header="BIC (sum)", digits=6),
+            Column(key="rms", header="rms / (step/√12)", digits=3),
         ],
         "Every law fitted to every free decay, pooled per brake setting: coefficients (ζ; Δ in rad; b in 1/rad; a; "
         "p) with run-to-run standard errors, summed BIC, and the residual rms over the encoder's rounding noise.",
@@ -595,18 +597,23 @@ def damping_csv(st: RealOscillatorStudy) -> Table:
     rows = [
         {
             "brake": s.brake,
-            "brake_current_A": s.current if s.current is not None else Missing("unknown"),
-            "zeta_eq": s.zeta_eq if math.isfinite(s.zeta_eq) else Missing("no band"),
-            "zeta_eq_stderr": s.zeta_eq_stderr if math.isfinite(s.zeta_eq_stderr) else Missing("one run"),
-            "band_low_rad": lo if math.isfinite(lo) else Missing("no band"),
-            "band_high_rad": hi if math.isfinite(hi) else Missing("no band"),
+            "brake_current_A": s.current if s.current is not None else Missing(reason="unknown"),
+            "zeta_eq": s.zeta_eq if math.isfinite(s.zeta_eq) else Missing(reason="no band"),
+            "zeta_eq_stderr": s.zeta_eq_stderr if math.isfinite(s.zeta_eq_stderr) else Missing(reason="one run"),
+            "band_low_rad": lo if math.isfinite(lo) else Missing(reason="no band"),
+            "band_high_rad": hi if math.isfinite(hi) else Missing(reason="no band"),
             "law": s.law,
             "n_runs": s.n_band,
         }
         for s in st.settings
     ]
     cols = ["brake", "brake_current_A", "zeta_eq", "zeta_eq_stderr", "band_low_rad", "band_high_rad", "law", "n_runs"]
-    return Table(rows, [Column(c, c, 6) for c in cols], "Equivalent damping per brake setting.", "tab-real-damping")
+    return Table(
+        rows,
+        [Column(key=c, header=c, digits=6) for c in cols],
+        "Equivalent damping per brake setting.",
+        "tab-real-damping",
+    )
 
 
 def resonance_csv(st: RealOscillatorStudy) -> Table:
@@ -616,8 +623,10 @@ def resonance_csv(st: RealOscillatorStudy) -> Table:
             "brake": gr.brake,
             "session": gr.session,
             "omega_rad_s": gr.omega,
-            "amplitude_rad": gr.amplitude if gr.n_steady else Missing("no steady run"),
-            "amplitude_stderr_rad": gr.amplitude_stderr if math.isfinite(gr.amplitude_stderr) else Missing("none"),
+            "amplitude_rad": gr.amplitude if gr.n_steady else Missing(reason="no steady run"),
+            "amplitude_stderr_rad": gr.amplitude_stderr
+            if math.isfinite(gr.amplitude_stderr)
+            else Missing(reason="none"),
             "steady_runs": gr.n_steady,
             "runs": len(gr.runs),
         }
@@ -625,8 +634,8 @@ def resonance_csv(st: RealOscillatorStudy) -> Table:
     ]
     cols = ["brake", "session", "omega_rad_s", "amplitude_rad", "amplitude_stderr_rad", "steady_runs", "runs"]
     if not rows:
-        rows = [dict.fromkeys(cols, Missing("no driven runs"))]
-    return Table(rows, [Column(c, c, 6) for c in cols], "Driven-run groups.", "tab-real-resonance")
+        rows = [dict.fromkeys(cols, Missing(reason="no driven runs"))]
+    return Table(rows, [Column(key=c, header=c, digits=6) for c in cols], "Driven-run groups.", "tab-real-resonance")
 
 
 def claims_csv(st: RealOscillatorStudy) -> Table:
@@ -638,7 +647,9 @@ def claims_csv(st: RealOscillatorStudy) -> Table:
         for c in claims(st)
     ]
     cols = ["claim_id", "claim", "verdict", "detail"]
-    return Table(rows, [Column(c, c) for c in cols], "The paper's claims on the hardware.", "tab-real-claims")
+    return Table(
+        rows, [Column(key=c, header=c) for c in cols], "The paper's claims on the hardware.", "tab-real-claims"
+    )
 
 
 def ascii_detail(text: str) -> str:

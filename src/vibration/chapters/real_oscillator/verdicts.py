@@ -259,7 +259,11 @@ def claims_table(st: RealOscillatorStudy) -> Table:
     rows = [{"claim": f"“{c.claim}”", "verdict": c.verdict, "detail": c.detail} for c in claims(st)]
     t = Table(
         rows,
-        [Column("claim", "the paper"), Column("verdict", "verdict"), Column("detail", "evidence")],
+        [
+            Column(key="claim", header="the paper"),
+            Column(key="verdict", header="verdict"),
+            Column(key="detail", header="evidence"),
+        ],
         "The paper's claims on the real oscillator, each with the verdict the measurements support and its evidence.",
         "tab-real-claim-verdicts",
     )

@@ -35,7 +35,7 @@ PREREQUISITES = (
 def exercises(params: Params) -> tuple[Exercise, ...]:
     """The chapter's exercises for ``params``, answers computed by the package."""
     p = params
-    nom = Oscillator(p.m, p.c_nominal, p.k)
+    nom = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     wn, zeta, cc = nom.natural_frequency, nom.damping_ratio, nom.critical_damping
     sigma, wd = nom.decay_rate, nom.damped_natural_frequency
     out = [
@@ -80,7 +80,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             ),
         ),
     ]
-    ss = steady_state(nom, SineForce(p.F0, p.omega_ref))
+    ss = steady_state(nom, SineForce(F0=p.F0, omega=p.omega_ref))
     den = math.hypot(p.k - p.m * p.omega_ref**2, p.c_nominal * p.omega_ref)
     out.append(
         Exercise(
@@ -104,7 +104,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             ),
         )
     )
-    high = Oscillator(p.m, p.c_high, p.k)
+    high = Oscillator(m=p.m, c=p.c_high, k=p.k)
     regimes = {"a": "underdamped", "b": "critically damped", "c": "overdamped", "d": "undamped or unstable"}
     key = next((k for k, v in regimes.items() if v == high.regime), "d")
     out.append(
@@ -129,7 +129,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             correct=key,
         )
     )
-    res = lambda c: steady_state(Oscillator(p.m, c, p.k), SineForce(p.F0, p.omega_res)).amplitude  # noqa: E731
+    res = lambda c: steady_state(Oscillator(m=p.m, c=c, k=p.k), SineForce(F0=p.F0, omega=p.omega_res)).amplitude  # noqa: E731
     if p.c_nominal > 0:
         x1, x2 = res(p.c_nominal), res(2 * p.c_nominal)
         out.append(

@@ -36,7 +36,7 @@ from vibration.presentation.findings import same_run, scenarios_of
 DAMPING_IDS = ("damping_low", "damping_nominal", "damping_high")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class CaseRun:
     """One scenario's findings: exact quantities and the paper's method side by side (SI units)."""
 
@@ -73,7 +73,7 @@ class CaseRun:
         return self.omega / self.omega_n
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ReproductionStudy:
     """Every scenario of the paper run once by its method and exactly, with its findings."""
 
@@ -150,7 +150,9 @@ def reproduce(scenarios: dict[str, Scenario], n_points: int, params: Params) -> 
             paper[sid], exact[sid] = paper[twin[0]], exact[twin[0]]
             runs[runs.index(twin)] = (*twin, sid)
     cases = {sid: _case(sc, paper[sid], exact[sid]) for sid, sc in scenarios.items()}
-    return ReproductionStudy(params, dict(scenarios), paper, exact, cases, tuple(runs))
+    return ReproductionStudy(
+        params=params, scenarios=dict(scenarios), paper=paper, exact=exact, cases=cases, runs=tuple(runs)
+    )
 
 
 def reproduction_study(params: Params | None = None, **values) -> ReproductionStudy:

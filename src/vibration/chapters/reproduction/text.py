@@ -288,18 +288,18 @@ def designer_text(st: ReproductionStudy) -> str:
 
 def _xss_cell(f: CaseRun, value: float, digits: int = 4):
     if f.c < 0:
-        return Missing(NO_STEADY)
-    return fixed(value, digits) if math.isfinite(value) else Missing("infinite at undamped exact resonance")
+        return Missing(reason=NO_STEADY)
+    return fixed(value, digits) if math.isfinite(value) else Missing(reason="infinite at undamped exact resonance")
 
 
 def _settle_cell(f: CaseRun):
-    return fixed(f.t_settle, 3) if math.isfinite(f.t_settle) else Missing(NO_STEADY)
+    return fixed(f.t_settle, 3) if math.isfinite(f.t_settle) else Missing(reason=NO_STEADY)
 
 
 def _tau_cell(f: CaseRun):
     if f.c < 0:
-        return Missing("the free vibration grows when c < 0: no decay time")
-    return fixed(f.tau, 3) if math.isfinite(f.tau) else Missing("the free vibration never decays when c = 0")
+        return Missing(reason="the free vibration grows when c < 0: no decay time")
+    return fixed(f.tau, 3) if math.isfinite(f.tau) else Missing(reason="the free vibration never decays when c = 0")
 
 
 def findings_table(st: ReproductionStudy) -> Table:
@@ -329,15 +329,15 @@ def findings_table(st: ReproductionStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "case"),
-            Column("c", "c (N s/m)", 4, zeros=False),
-            Column("omega", "ω (rad/s)", 4, zeros=False),
-            Column("zeta", "ζ"),
-            Column("regime", "regime"),
-            Column("xss", "x_ss (m)"),
-            Column("peak", "peak |x| (m)"),
-            Column("ts", "t_s (s)"),
-            Column("settled", "settles by t_end"),
+            Column(key="case", header="case"),
+            Column(key="c", header="c (N s/m)", digits=4, zeros=False),
+            Column(key="omega", header="ω (rad/s)", digits=4, zeros=False),
+            Column(key="zeta", header="ζ"),
+            Column(key="regime", header="regime"),
+            Column(key="xss", header="x_ss (m)"),
+            Column(key="peak", header="peak |x| (m)"),
+            Column(key="ts", header="t_s (s)"),
+            Column(key="settled", header="settles by t_end"),
         ],
         caption=(
             f"Findings per run, exact: steady amplitude x_ss, largest |x| in the window [0, {g(st.t_end)}] s from "
@@ -367,13 +367,13 @@ def methods_table(st: ReproductionStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "case"),
-            Column("vss", "v_ss (m/s)"),
-            Column("pv", "peak |v| (m/s)"),
-            Column("pv45", "peak |v| RK45 (m/s)"),
-            Column("px45", "peak |x| RK45 (m)"),
-            Column("err", "max |x_RK45 − x| (% of peak |x|)"),
-            Column("tau", "τ (s)"),
+            Column(key="case", header="case"),
+            Column(key="vss", header="v_ss (m/s)"),
+            Column(key="pv", header="peak |v| (m/s)"),
+            Column(key="pv45", header="peak |v| RK45 (m/s)"),
+            Column(key="px45", header="peak |x| RK45 (m)"),
+            Column(key="err", header="max |x_RK45 − x| (% of peak |x|)"),
+            Column(key="tau", header="τ (s)"),
         ],
         caption=(
             "The paper's method (RK45 at SciPy's default tolerances) beside the exact solution: velocity amplitude "

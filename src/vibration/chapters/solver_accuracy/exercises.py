@@ -33,7 +33,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     periods = p.omega_res * p.t_end / (2 * math.pi)
     dt = p.t_end / (p.n_points - 1)
     per_period = 2 * math.pi / (p.omega_res * dt)
-    nom = Oscillator(p.m, p.c_nominal, p.k)
+    nom = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     out = [
         Exercise(
             id="03.1",
@@ -77,7 +77,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
         ),
     ]
     if p.c_nominal > 0:
-        ts = settling_time(nom, SineForce(p.F0, p.omega_res))
+        ts = settling_time(nom, SineForce(F0=p.F0, omega=p.omega_res))
         out.append(
             Exercise(
                 id="03.3",

@@ -10,8 +10,8 @@ from vibration.presentation.parameters import paper_window, shared
 from vibration.presentation.schema import Schema
 
 SCHEMA = Schema(
-    "03_solver_accuracy",
-    (
+    notebook="03_solver_accuracy",
+    params=(
         shared("m"),
         shared("k"),
         shared("F0"),

@@ -62,7 +62,7 @@ def atol_for(rtol: float) -> float:
     return 1e-6 if rtol == 1e-3 else rtol * 1e-3
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LadderRun:
     """One method at one tolerance, against the exact solution on the output grid."""
 
@@ -81,7 +81,7 @@ class LadderRun:
         return self.method in MACHINE_DEPENDENT
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class OwnSteps:
     """RK45 returning only its own steps (no output grid), and the peaks a line through them reaches."""
 
@@ -100,7 +100,7 @@ class OwnSteps:
         return 1.0 - self.late_mean_peak / self.late_exact_peak if self.late_exact_peak > 0 else 0.0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Reach:
     """The error every method reaches (m), and the fewest evaluations with which each method reaches it.
 
@@ -121,7 +121,7 @@ class Reach:
         return dict(self.cost).get(method)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SolverStudy:
     """Every run of chapter 3, done once (SI units)."""
 
@@ -175,7 +175,7 @@ class SolverStudy:
             reached = [r.nfev for r in self.ladder(m) if r.err_x <= target]
             if reached:
                 cost.append((m, min(reached)))
-        return Reach(target, tuple(cost))
+        return Reach(target=target, cost=tuple(cost))
 
     @property
     def step_window(self) -> tuple[float, float]:
@@ -190,14 +190,14 @@ def _ladder_run(osc: Oscillator, force: SineForce, t_end: float, n: int, exact: 
     elapsed = time.perf_counter() - start
     err_x = float(np.max(np.abs(r.x - exact.x)))
     return LadderRun(
-        method,
-        rtol,
-        atol_for(rtol),
-        int(r.nfev),
-        err_x,
-        float(np.max(np.abs(r.v - exact.v))),
-        err_x / peak if peak > 0 else math.inf,
-        elapsed,
+        method=method,
+        rtol=rtol,
+        atol=atol_for(rtol),
+        nfev=int(r.nfev),
+        err_x=err_x,
+        err_v=float(np.max(np.abs(r.v - exact.v))),
+        rel_err_x=err_x / peak if peak > 0 else math.inf,
+        time_s=elapsed,
     )
 
 
@@ -207,14 +207,14 @@ def _own_steps(r: Response, rtol: float, t_end: float, period: float, late_exact
     half = np.floor(r.t[late] / (0.5 * period))  # index of the half period of each late step
     per_half = [float(np.max(np.abs(r.x[late][half == h]))) for h in np.unique(half)[1:-1]]
     return OwnSteps(
-        rtol,
-        atol_for(rtol),
-        int(dt.size),
-        float(np.max(dt)),
-        float(period / np.mean(dt)),
-        float(np.mean(per_half)) if per_half else math.nan,
-        float(np.min(per_half)) if per_half else math.nan,
-        late_exact,
+        rtol=rtol,
+        atol=atol_for(rtol),
+        steps=int(dt.size),
+        max_step=float(np.max(dt)),
+        per_period=float(period / np.mean(dt)),
+        late_mean_peak=float(np.mean(per_half)) if per_half else math.nan,
+        late_low_peak=float(np.min(per_half)) if per_half else math.nan,
+        late_exact_peak=late_exact,
     )
 
 
@@ -240,7 +240,7 @@ def solver_accuracy_study(params: Params | None = None, **values) -> SolverStudy
     vibration.physics.model.ParameterError: n_points = 1 is out of range: allowed ...
     """
     p = params if params is not None else Params.from_values(values)
-    osc, force = Oscillator(p.m, p.c_nominal, p.k), SineForce(p.F0, p.omega_res)
+    osc, force = Oscillator(m=p.m, c=p.c_nominal, k=p.k), SineForce(F0=p.F0, omega=p.omega_res)
     t = np.linspace(0.0, p.t_end, p.n_points)
     exact = exact_response(osc, force, t)
     runs = tuple(
@@ -255,14 +255,14 @@ def solver_accuracy_study(params: Params | None = None, **values) -> SolverStudy
     ]
     steps = tuple(_own_steps(r, rtol, p.t_end, period, late_exact) for r, rtol in zip(own, STEP_RTOLS, strict=True))
     return SolverStudy(
-        p,
-        osc,
-        force,
-        exact,
-        runs,
-        steps,
-        own[0],
-        rk45_pair(),
-        tuple(scipy_rk45_nodes()),
-        tuple((name, tuple(nodes)) for name, nodes in RK_PAIRS.items()),
+        params=p,
+        osc=osc,
+        force=force,
+        exact=exact,
+        runs=runs,
+        steps=steps,
+        own=own[0],
+        pair=rk45_pair(),
+        nodes=tuple(scipy_rk45_nodes()),
+        pairs=tuple((name, tuple(nodes)) for name, nodes in RK_PAIRS.items()),
     )

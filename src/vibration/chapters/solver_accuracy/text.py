@@ -65,8 +65,8 @@ def ladder_table(study: SolverStudy) -> Table:
     for r in study.runs:
         # A machine-dependent method's counts scatter by up to about 10 % and its errors by a factor of
         # up to 4 between machines (see MACHINE_DEPENDENT): the tolerances of the regression comparison.
-        count = (lambda v: Approx(v, rtol=NFEV_RTOL)) if r.machine_dependent else (lambda v: v)
-        error = (lambda v: Approx(v, factor=ERROR_FACTOR)) if r.machine_dependent else (lambda v: v)
+        count = (lambda v: Approx(value=v, rtol=NFEV_RTOL)) if r.machine_dependent else (lambda v: v)
+        error = (lambda v: Approx(value=v, factor=ERROR_FACTOR)) if r.machine_dependent else (lambda v: v)
         rows.append(
             {
                 "method": r.method,
@@ -81,13 +81,13 @@ def ladder_table(study: SolverStudy) -> Table:
     return Table(
         rows,
         [
-            Column("method", "method"),
-            Column("rtol", "relative tolerance", 2),
-            Column("atol", "absolute tolerance (m, m/s)", 2),
-            Column("nfev", "evaluations"),
-            Column("ex", "max |x − x_exact| (m)", 3),
-            Column("ev", "max |v − v_exact| (m/s)", 3),
-            Column("rel", "relative to peak |x|", 3),
+            Column(key="method", header="method"),
+            Column(key="rtol", header="relative tolerance", digits=2),
+            Column(key="atol", header="absolute tolerance (m, m/s)", digits=2),
+            Column(key="nfev", header="evaluations"),
+            Column(key="ex", header="max |x − x_exact| (m)", digits=3),
+            Column(key="ev", header="max |v − v_exact| (m/s)", digits=3),
+            Column(key="rel", header="relative to peak |x|", digits=3),
         ],
         caption=(
             f"Each method at a ladder of tolerances on the resonance case (c = {g(study.osc.c)} N s/m, "
@@ -123,14 +123,14 @@ def steps_table(study: SolverStudy) -> Table:
     return Table(
         rows,
         [
-            Column("rtol", "relative tolerance", 2),
-            Column("atol", "absolute tolerance (m, m/s)", 2),
-            Column("steps", "steps"),
-            Column("h", "largest step (s)", 3),
-            Column("pp", "steps per period", 3),
-            Column("ps", "mean peak of the steps (m)", 4),
-            Column("pl", "lowest peak of the steps (m)", 4),
-            Column("pe", "exact peak |x| (m)", 4),
+            Column(key="rtol", header="relative tolerance", digits=2),
+            Column(key="atol", header="absolute tolerance (m, m/s)", digits=2),
+            Column(key="steps", header="steps"),
+            Column(key="h", header="largest step (s)", digits=3),
+            Column(key="pp", header="steps per period", digits=3),
+            Column(key="ps", header="mean peak of the steps (m)", digits=4),
+            Column(key="pl", header="lowest peak of the steps (m)", digits=4),
+            Column(key="pe", header="exact peak |x| (m)", digits=4),
         ],
         caption=(
             f"RK45 without an output grid returns only its own steps. Peaks in the last part of the window "
@@ -147,7 +147,7 @@ def pair_table(study: SolverStudy) -> Table:
     rows += [{"pair": name.replace("-", "–"), "nodes": ", ".join(str(c) for c in ref)} for name, ref in study.pairs]
     return Table(
         rows,
-        [Column("pair", "Runge–Kutta pair"), Column("nodes", "nodes c_i")],
+        [Column(key="pair", header="Runge–Kutta pair"), Column(key="nodes", header="nodes c_i")],
         caption="The nodes of SciPy's RK45 tableau beside those of the Dormand–Prince and Fehlberg pairs.",
         name="tab-solvers-pair",
     )

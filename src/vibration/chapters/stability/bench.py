@@ -46,7 +46,7 @@ def run(quick: bool, table: Callable[[str, list[Row]], None] = table) -> None:
 
     ``table(title, rows)`` reports each table (default: printed like ``vibration.bench``'s own tables).
     """
-    osc, S0 = Oscillator(1.0, 0.1, 20.0), 0.1
+    osc, S0 = Oscillator(m=1.0, c=0.1, k=20.0), 0.1
     n_paths = 200
     k = 1 if quick else 3
     tau = osc.time_constant
@@ -66,7 +66,7 @@ def run(quick: bool, table: Callable[[str, list[Row]], None] = table) -> None:
     t_closed = median_time(lambda: settling_optimal_zeta(0.02), 1000 * k)
 
     def settle(z: float) -> float:
-        return step_metrics(Oscillator(1.0, 2.0 * z * math.sqrt(20.0), 20.0)).settling_time
+        return step_metrics(Oscillator(m=1.0, c=2.0 * z * math.sqrt(20.0), k=20.0)).settling_time
 
     t_min = median_time(
         lambda: minimize_scalar(settle, bounds=(0.5, 1.0), method="bounded", options={"xatol": 1e-6}), k

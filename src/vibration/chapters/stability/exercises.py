@@ -30,7 +30,7 @@ PREREQUISITES = ("Part I (chapters 1-5)", "the roots of a quadratic in the compl
 def exercises(params: Params) -> tuple[Exercise, ...]:
     """The chapter's exercises for ``params``, answers computed by the package."""
     p = params
-    nom = Oscillator(p.m, p.c_nominal, p.k)
+    nom = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     zeta, wn = nom.damping_ratio, nom.natural_frequency
     out = []
     if 0 < zeta < 1:

@@ -352,7 +352,7 @@ def step_figure(st: StabilityStudy) -> Captioned:
     ax.set_ylim(-0.05, 2.05)
     ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.02), ncols=2, frameon=False, fontsize=7.5)
     zetas = np.geomspace(0.005, 8.0, 700)
-    metrics = [step_metrics(Oscillator(st.m, z * st.c_crit, st.k), BAND) for z in zetas]
+    metrics = [step_metrics(Oscillator(m=st.m, c=z * st.c_crit, k=st.k), BAND) for z in zetas]
     am.loglog(zetas, [s.settling_time for s in metrics], color="k", lw=1.0, label="2 % settling time")
     am.loglog(zetas, [s.rise_time for s in metrics], color=REF_GREY, lw=1.0, ls="--", label="10–90 % rise time")
     for n, s in st.steps.items():
@@ -442,7 +442,7 @@ def labels_figure(st: StabilityStudy) -> Captioned:
     """Pareto view: resonant peak against isolation, shaded by step settling time, with the paper's labels."""
     fig, ax = figure(height=4.0)
     zetas = np.geomspace(0.004, 6.0, 400)
-    pts = [design_metrics(Oscillator(st.m, z * st.c_crit, st.k), st.isolation_ratio, BAND) for z in zetas]
+    pts = [design_metrics(Oscillator(m=st.m, c=z * st.c_crit, k=st.k), st.isolation_ratio, BAND) for z in zetas]
     x = np.array([p.transmissibility for p in pts])
     y = np.array([p.peak_magnification for p in pts])
     ts = np.array([p.settling_time for p in pts])

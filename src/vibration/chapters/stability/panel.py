@@ -148,7 +148,7 @@ class StabilityExplorer:
     def values(self) -> dict:
         """Current numbers: c (N s/m), T at omega, poles (1/s), step metrics (s, fraction)."""
         zeta, w = float(self.zeta_slider.value), float(self.omega_slider.value)
-        osc = Oscillator(self.m, zeta * 2 * math.sqrt(self.k * self.m), self.k)
+        osc = Oscillator(m=self.m, c=zeta * 2 * math.sqrt(self.k * self.m), k=self.k)
         s = step_metrics(osc, BAND)
         return {"osc": osc, "T": float(transmissibility(osc, w)), "poles": poles(osc), "step": s, "omega": w}
 

@@ -46,7 +46,7 @@ PAPER_LOW_ZETA = 0.1 / (2.0 * math.sqrt(20.0))
 GROWTH_CASES = ("bounded", "linear", "exponential")
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class GrowthCase:
     """One forced response from rest over a window, with its closed-form envelope."""
 
@@ -69,7 +69,7 @@ class GrowthCase:
         return float(np.max(np.abs(self.x)))
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class StabilityStudy:
     """Every number of the chapter, computed once by :func:`stability_study` (SI units)."""
 
@@ -143,7 +143,7 @@ class StabilityStudy:
 
     def osc(self, c: float) -> Oscillator:
         """The oscillator of this run with damping ``c`` (N s/m)."""
-        return Oscillator(self.m, c, self.k)
+        return Oscillator(m=self.m, c=c, k=self.k)
 
     def by_value(self) -> list[tuple[str, float]]:
         """The paper's three dampings as (name, c), sorted by the value of c (ties in paper order)."""
@@ -171,7 +171,15 @@ def _growth_case(case: str, osc: Oscillator, force: SineForce, t_end: float, cap
     lo, hi = GROWTH_SAMPLES
     n = int(min(hi, max(lo, 40 * t_end * max(osc.natural_frequency, force.omega))))
     t = np.linspace(0.0, t_end, n)
-    return GrowthCase(case, osc, force, t, exact_response(osc, force, t).x, growth_envelope(osc, force, t), capped)
+    return GrowthCase(
+        case=case,
+        osc=osc,
+        force=force,
+        t=t,
+        x=exact_response(osc, force, t).x,
+        env=growth_envelope(osc, force, t),
+        capped=capped,
+    )
 
 
 def stability_study(params: Params | None = None, **values) -> StabilityStudy:
@@ -201,17 +209,17 @@ def stability_study(params: Params | None = None, **values) -> StabilityStudy:
     p = params if params is not None else Params.from_values(values)
     dampings = {"low": p.c_low + 0.0, "nominal": p.c_nominal + 0.0, "high": p.c_high + 0.0}
     for c in (*dampings.values(), p.c_unstable):
-        Oscillator(p.m, c, p.k)  # representable rates, or a ParameterError naming c
+        Oscillator(m=p.m, c=c, k=p.k)  # representable rates, or a ParameterError naming c
     design, steps, mc = {}, {}, {}
     for i, (name, c) in enumerate(dampings.items()):
-        osc = Oscillator(p.m, c, p.k)
+        osc = Oscillator(m=p.m, c=c, k=p.k)
         design[name] = design_metrics(osc, p.isolation_ratio, BAND)
         if c > 0.0:
             steps[name] = step_metrics(osc, BAND)
             mc[name] = white_noise_monte_carlo(osc, p.S0, n_paths=p.n_paths, seed=p.seed + i)
     zeta_star = settling_optimal_zeta(BAND)
     c_crit = 2.0 * math.sqrt(p.k) * math.sqrt(p.m)
-    star_osc = Oscillator(p.m, zeta_star * c_crit, p.k)
+    star_osc = Oscillator(m=p.m, c=zeta_star * c_crit, k=p.k)
     # growth: bounded (the lightest positive damping with oscillating poles, at omega_res),
     # linear (c = 0 at omega_n exactly), exponential (c_unstable at omega_res)
     order = list(dampings)
@@ -220,14 +228,22 @@ def stability_study(params: Params | None = None, **values) -> StabilityStudy:
     )
     bounded_name, c_b = positive[0] if positive else (None, PAPER_LOW_ZETA * c_crit)
     c_u = p.c_unstable + 0.0
-    rate = stability_class(Oscillator(p.m, c_u, p.k)).spectral_abscissa
+    rate = stability_class(Oscillator(m=p.m, c=c_u, k=p.k)).spectral_abscissa
     t_exp = p.t_growth if rate <= 0.0 else min(p.t_growth, MAX_GROWTH / rate)
     wn = math.sqrt(p.k / p.m)
     growth = {
-        "bounded": _growth_case("bounded", Oscillator(p.m, c_b, p.k), SineForce(p.F0, p.omega_res), p.t_growth, False),
-        "linear": _growth_case("linear", Oscillator(p.m, 0.0, p.k), SineForce(p.F0, wn), p.t_growth, False),
+        "bounded": _growth_case(
+            "bounded", Oscillator(m=p.m, c=c_b, k=p.k), SineForce(F0=p.F0, omega=p.omega_res), p.t_growth, False
+        ),
+        "linear": _growth_case(
+            "linear", Oscillator(m=p.m, c=0.0, k=p.k), SineForce(F0=p.F0, omega=wn), p.t_growth, False
+        ),
         "exponential": _growth_case(
-            "exponential", Oscillator(p.m, c_u, p.k), SineForce(p.F0, p.omega_res), t_exp, t_exp < p.t_growth
+            "exponential",
+            Oscillator(m=p.m, c=c_u, k=p.k),
+            SineForce(F0=p.F0, omega=p.omega_res),
+            t_exp,
+            t_exp < p.t_growth,
         ),
     }
     return StabilityStudy(

@@ -30,11 +30,11 @@ from vibration.physics.stability import (
 from vibration.presentation.tables import Column, Missing, Table, bound
 
 #: Reasons shown in tables (as "—" with a footnote).
-WHY_UNDAMPED_PEAK = Missing(f"unbounded: with c = 0 a force at {WN_CELL} grows the response like t")
-WHY_NO_STEADY = Missing("no steady state: with c < 0 every free motion grows")
-WHY_NO_SETTLING_0 = Missing("never settles: with c = 0 the step response oscillates for ever")
-WHY_NO_VARIANCE = Missing("no stationary variance: with c ≤ 0 it grows without bound")
-NO_PEAK = Missing("no peak: the response rises monotonically")
+WHY_UNDAMPED_PEAK = Missing(reason=f"unbounded: with c = 0 a force at {WN_CELL} grows the response like t")
+WHY_NO_STEADY = Missing(reason="no steady state: with c < 0 every free motion grows")
+WHY_NO_SETTLING_0 = Missing(reason="never settles: with c = 0 the step response oscillates for ever")
+WHY_NO_VARIANCE = Missing(reason="no stationary variance: with c ≤ 0 it grows without bound")
+NO_PEAK = Missing(reason="no peak: the response rises monotonically")
 
 
 def _s(value, digits: int):
@@ -76,15 +76,15 @@ def poles_table(st: StabilityStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "case"),
-            Column("c", "c (N s/m)"),
-            Column("zeta", "ζ"),
-            Column("poles", "poles s (1/s)"),
-            Column("abscissa", "max Re s (1/s)"),
-            Column("asym", "free motion decays"),
-            Column("lyap", "free motion bounded"),
-            Column("bibo", "bounded force, bounded x"),
-            Column("verdict", "verdict"),
+            Column(key="case", header="case"),
+            Column(key="c", header="c (N s/m)"),
+            Column(key="zeta", header="ζ"),
+            Column(key="poles", header="poles s (1/s)"),
+            Column(key="abscissa", header="max Re s (1/s)"),
+            Column(key="asym", header="free motion decays"),
+            Column(key="lyap", header="free motion bounded"),
+            Column(key="bibo", header="bounded force, bounded x"),
+            Column(key="verdict", header="verdict"),
         ],
         caption="Poles of m s² + c s + k and the three notions of stability.",
         name="tab-stability-poles",
@@ -97,7 +97,7 @@ def poles_table(st: StabilityStudy) -> Table:
 def growth_table(st: StabilityStudy) -> Table:
     """Growth law, rate and the size reached at the end of the window, per case."""
     rows = []
-    none = Missing("not this growth law")
+    none = Missing(reason="not this growth law")
     for case, g in st.growth.items():
         osc, force = g.osc, g.force
         row = {
@@ -121,15 +121,15 @@ def growth_table(st: StabilityStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "growth"),
-            Column("c", "c (N s/m)"),
-            Column("omega", "ω (rad/s)"),
-            Column("t_end", "window (s)"),
-            Column("steady", "steady amplitude (m)"),
-            Column("slope", "F_0/(2mω_n) (m/s)"),
-            Column("rate", "max Re s (1/s)"),
-            Column("peak", "max |x| in window (m)"),
-            Column("env_end", "envelope at window end (m)"),
+            Column(key="case", header="growth"),
+            Column(key="c", header="c (N s/m)"),
+            Column(key="omega", header="ω (rad/s)"),
+            Column(key="t_end", header="window (s)"),
+            Column(key="steady", header="steady amplitude (m)"),
+            Column(key="slope", header="F_0/(2mω_n) (m/s)"),
+            Column(key="rate", header="max Re s (1/s)"),
+            Column(key="peak", header="max |x| in window (m)"),
+            Column(key="env_end", header="envelope at window end (m)"),
         ],
         caption=f"Three ways a response from rest grows over up to {st.t_growth:g} s (exact closed forms).",
         name="tab-stability-growth",
@@ -172,13 +172,13 @@ def transmissibility_table(st: StabilityStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "damping"),
-            Column("zeta", "ζ"),
-            Column("t_res", "T at ω_n"),
-            Column("t_iso", "T at √2 ω_n"),
-            Column("t_r", f"T at {r:g} ω_n"),
-            Column("wp", "ω_peak (rad/s)"),
-            Column("tp", "T_max"),
+            Column(key="case", header="damping"),
+            Column(key="zeta", header="ζ"),
+            Column(key="t_res", header="T at ω_n"),
+            Column(key="t_iso", header="T at √2 ω_n"),
+            Column(key="t_r", header=f"T at {r:g} ω_n"),
+            Column(key="wp", header="ω_peak (rad/s)"),
+            Column(key="tp", header="T_max"),
         ],
         caption="Base-excitation transmissibility |X/Y| (steady state) of the run's dampings and of the damping "
         "ratios 0.2, ζ* and 1, by damping.",
@@ -213,7 +213,7 @@ def _step_row(st: StabilityStudy, label: str, c: float, s: StepMetrics | None) -
             }
         )
     else:
-        why = Missing("grows without bound: c < 0")
+        why = Missing(reason="grows without bound: c < 0")
         row.update({key: why for key in ("os", "tp", "tr", "ts", "wts")})
     return row
 
@@ -225,14 +225,14 @@ def step_table(st: StabilityStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "damping"),
-            Column("c", "c (N s/m)"),
-            Column("zeta", "ζ"),
-            Column("os", "overshoot (%)"),
-            Column("tp", "t_peak (s)"),
-            Column("tr", "t_rise (s)"),
-            Column("ts", "t_s, 2 % (s)"),
-            Column("wts", "ω_n t_s"),
+            Column(key="case", header="damping"),
+            Column(key="c", header="c (N s/m)"),
+            Column(key="zeta", header="ζ"),
+            Column(key="os", header="overshoot (%)"),
+            Column(key="tp", header="t_peak (s)"),
+            Column(key="tr", header="t_rise (s)"),
+            Column(key="ts", header="t_s, 2 % (s)"),
+            Column(key="wts", header="ω_n t_s"),
         ],
         caption="Response to a step force, normalised by its final value F/k (exact; settling is the last exit "
         "from the 2 % band).",
@@ -271,16 +271,16 @@ def random_table(st: StabilityStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "damping"),
-            Column("c", "c (N s/m)"),
-            Column("exact", "πS_0/(kc) (m²)"),
-            Column("mc", "Monte Carlo (m²)"),
-            Column("se", "std. error (m²)"),
-            Column("z", "deviation (std. errors)"),
-            Column("rms", "σ_x (m)"),
-            Column("vexact", "πS_0/(mc) (m²/s²)"),
-            Column("vmc", "Monte Carlo (m²/s²)"),
-            Column("vz", "deviation (std. errors)"),
+            Column(key="case", header="damping"),
+            Column(key="c", header="c (N s/m)"),
+            Column(key="exact", header="πS_0/(kc) (m²)"),
+            Column(key="mc", header="Monte Carlo (m²)"),
+            Column(key="se", header="std. error (m²)"),
+            Column(key="z", header="deviation (std. errors)"),
+            Column(key="rms", header="σ_x (m)"),
+            Column(key="vexact", header="πS_0/(mc) (m²/s²)"),
+            Column(key="vmc", header="Monte Carlo (m²/s²)"),
+            Column(key="vz", header="deviation (std. errors)"),
         ],
         caption=f"Displacement and velocity variance under a white-noise force, S_0 = {st.S0:g} N² s/rad "
         f"(two-sided); Monte Carlo with {st.n_paths} paths per damping, independent draws for each damping "
@@ -304,10 +304,10 @@ def random_force_table(st: StabilityStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "damping"),
-            Column("c", "c (N s/m)"),
-            Column("var", "var F_T (N²)"),
-            Column("ratio", "over the least"),
+            Column(key="case", header="damping"),
+            Column(key="c", header="c (N s/m)"),
+            Column(key="var", header="var F_T (N²)"),
+            Column(key="ratio", header="over the least"),
         ],
         caption=(
             f"Force passed to the support, F_T = k x + c v, under a white-noise force of S_0 = {st.S0:g} N² s/rad: "
@@ -346,12 +346,12 @@ def cost_table(st: StabilityStudy) -> Table:
     return Table(
         rows,
         [
-            Column("case", "damping"),
-            Column("c", "c (N s/m)"),
-            Column("w", "ω"),
-            Column("x", "|X| (m)"),
-            Column("f", "damper force (N)"),
-            Column("p", "mean power (W)"),
+            Column(key="case", header="damping"),
+            Column(key="c", header="c (N s/m)"),
+            Column(key="w", header="ω"),
+            Column(key="x", header="|X| (m)"),
+            Column(key="f", header="damper force (N)"),
+            Column(key="p", header="mean power (W)"),
         ],
         caption=f"Cost of damping under F_0 = {st.F0:g} N on the mass, in the steady state.",
         name="tab-stability-cost",
@@ -364,8 +364,10 @@ def cost_table(st: StabilityStudy) -> Table:
 def checks_table(st: StabilityStudy) -> Table:
     """Rounding-level self-checks, printed as bounds."""
     zetas = np.geomspace(1e-4, 1e2, 200)
-    cross = max(abs(float(transmissibility(Oscillator(st.m, z * st.c_crit, st.k), math.sqrt(2) * st.omega_n)) - 1.0)
-                for z in zetas)  # fmt: skip
+    cross = max(
+        abs(float(transmissibility(Oscillator(m=st.m, c=z * st.c_crit, k=st.k), math.sqrt(2) * st.omega_n)) - 1.0)
+        for z in zetas
+    )
     roots = 0.0
     for _k, c in st.pole_cases():
         p, ref = poles(st.osc(c)), np.roots([st.m, c, st.k])
@@ -386,7 +388,7 @@ def checks_table(st: StabilityStudy) -> Table:
     ]
     return Table(
         rows,
-        [Column("check", "self-check"), Column("value", "value")],
+        [Column(key="check", header="self-check"), Column(key="value", header="value")],
         caption="Self-checks at rounding level (printed as bounds).",
         name="tab-stability-checks",
     )

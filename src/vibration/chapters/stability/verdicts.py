@@ -17,7 +17,7 @@ from vibration.chapters.stability.words import WN_CELL, c_text, join, sig
 from vibration.presentation.tables import Column, Table
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LabelVerdict:
     """One of the paper's names, judged."""
 
@@ -103,7 +103,7 @@ def label_verdicts(st: StabilityStudy) -> list[LabelVerdict]:
                     f"at ζ* = {st.zeta_star:.3f}"
                 )
                 holds, verdict = False, "no compromise to judge: the others are not both stable"
-        out.append(LabelVerdict(n, LABELS[n], c, holds, verdict, check))
+        out.append(LabelVerdict(name=n, label=LABELS[n], c=c, holds=holds, verdict=verdict, check=check))
     return out
 
 
@@ -135,15 +135,15 @@ def labels_table(st: StabilityStudy) -> Table:
     return Table(
         rows,
         [
-            Column("label", "paper's label"),
-            Column("c", "c (N s/m)"),
-            Column("zeta", "ζ"),
-            Column("peak", "resonant peak"),
-            Column("iso", f"T at {st.isolation_ratio:g} ω_n"),
-            Column("ts", "t_s, 2 % (s)"),
-            Column("rms", "σ_x, white noise (m)"),
-            Column("check", "where it lands"),
-            Column("verdict", "verdict"),
+            Column(key="label", header="paper's label"),
+            Column(key="c", header="c (N s/m)"),
+            Column(key="zeta", header="ζ"),
+            Column(key="peak", header="resonant peak"),
+            Column(key="iso", header=f"T at {st.isolation_ratio:g} ω_n"),
+            Column(key="ts", header="t_s, 2 % (s)"),
+            Column(key="rms", header="σ_x, white noise (m)"),
+            Column(key="check", header="where it lands"),
+            Column(key="verdict", header="verdict"),
         ],
         caption="The paper's names for its three dampings, checked on the axes of the trade-off.",
         name="tab-stability-labels",

@@ -28,7 +28,7 @@ def sig(x: float, digits: int = 4) -> str:
     return column(x, digits)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Sig:
     """A table cell printed to a fixed count of significant figures (see :func:`sig`)."""
 

@@ -72,7 +72,7 @@ CHOPRA_STOREY_STIFFNESS = 31.54 * 4448.2216152605 / 0.0254
 CHOPRA_STOREYS = 5
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LoadCase:
     """The building's largest roof response near the first mode under one load, without and with the absorber."""
 
@@ -91,7 +91,7 @@ class LoadCase:
         return 1.0 - self.peak_with / self.peak_without
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Check:
     """One independent check of the chapter's numbers: what is compared, the difference, its tolerance."""
 
@@ -104,7 +104,7 @@ class Check:
         return self.value < self.tolerance
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class TMDStudy:
     """Every result of the chapter (SI units; ratios dimensionless)."""
 
@@ -252,7 +252,7 @@ def tmd_study(params: Params | None = None, **values) -> TMDStudy:
     """
     p = params if params is not None else Params.from_values(values)
     check_real("c_nominal", p.c_nominal, low=0.0, unit="N s/m")
-    osc = Oscillator(p.m, p.c_nominal, p.k)
+    osc = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     zeta_p = osc.damping_ratio
     check_real(f"c_nominal (damping ratio ζ_p = {zeta_p:.4g} of m and k)", zeta_p, high=ZETA_P_MAX)
     mu, band = p.mu, p.mistuning
@@ -264,7 +264,7 @@ def tmd_study(params: Params | None = None, **values) -> TMDStudy:
     }
     chosen = tunings[mu][RULES[3]]
     t = np.linspace(0.0, p.t_end, p.n_points)
-    force = SineForce(p.F0, p.omega_res)
+    force = SineForce(F0=p.F0, omega=p.omega_res)
     x_without = exact_response(osc, force, t).x
     model = tmd_system(p.m, p.c_nominal, p.k, chosen)
     resp = model.response(t, [p.F0, 0.0], p.omega_res)
@@ -333,7 +333,18 @@ def _load_cases(b: MDOF, bt: MDOF) -> tuple[LoadCase, LoadCase]:
     ):
         h0, w0 = frf_peak(b, p0, b.n - 1, 0.0, top)
         h1, w1 = frf_peak(bt, p1, b.n - 1, 0.0, top)  # the roof is still degree of freedom n - 1
-        out.append(LoadCase(name, unit, scale, h0, w0, h1, w1, top))
+        out.append(
+            LoadCase(
+                name=name,
+                unit=unit,
+                scale=scale,
+                peak_without=h0,
+                omega_without=w0,
+                peak_with=h1,
+                omega_with=w1,
+                omega_max=top,
+            )
+        )
     return out[0], out[1]
 
 
@@ -341,30 +352,30 @@ def _checks(p, osc, zeta_p, model, t, x_without, x_with, chosen, robust_design, 
     """The chapter's numbers against independent methods, each with its tolerance."""
     closed, numerical = hinf_tuning(p.mu), hinf_tuning(p.mu, method="numerical")
     Xs = model.frf([p.omega_res], [1.0, 0.0])[0]  # per newton, m
-    one = MDOF([[p.m]], [[p.c_nominal]], [[p.k]]).response(t, [p.F0], p.omega_res).x[:, 0]
+    one = MDOF(M=[[p.m]], C=[[p.c_nominal]], K=[[p.k]]).response(t, [p.F0], p.omega_res).x[:, 0]
     step = max(1, p.n_points // 50)
     expm_x = model.response(t[::step], [p.F0, 0.0], p.omega_res, method="expm").x[:, 0]
     r_force = p.omega_res / math.sqrt(p.k / p.m)
     stroke = float(tmd_stroke(p.mu, chosen.f, chosen.zeta_a, r_force, zeta_p))
     return (
-        Check("H∞ closed form against the numerical min-max at ζₚ = 0: tuning ratio f (relative)",
-              abs(numerical.f / closed.f - 1), 1e-6),
-        Check("H∞ closed form against the numerical min-max at ζₚ = 0: ζₐ (relative)",
-              abs(numerical.zeta_a / closed.zeta_a - 1), 1e-4),
-        Check("H∞ closed form against the numerical min-max at ζₚ = 0: peak (relative)",
-              abs(numerical.peak / closed.peak - 1), 1e-9),
-        Check("one-mass MDOF response against the closed form of Part I: largest |Δx| (m)",
-              float(np.max(np.abs(one - x_without))), 1e-9),
-        Check("two-mass response: modal superposition against the matrix exponential, largest |Δx| (m)",
-              float(np.max(np.abs(x_with[::step] - expm_x))), 1e-9),
-        Check("stroke |Xₐ − Xₚ|: closed form against the two-mass complex solve (relative)",
-              abs(stroke / (p.k * abs(Xs[1] - Xs[0])) - 1.0), 1e-9),
-        Check("roof under ground acceleration: complex solve against modal superposition (relative)",
-              _ground_modal_check(building, load_cases[1].omega_without), 1e-9),
-        Check("robust design: lowest worst peak of its 8 neighbours at ±0.1 % in f and ζₐ, shortfall (relative)",
-              _robust_neighbours(robust_design, zeta_p, p.mistuning), 1e-9),
-        Check("numerical optimisations stopped at their iteration limit (count)",
-              float(sum(not tn.converged for tn in [numerical, *optimisations])), 1.0),
+        Check(name="H∞ closed form against the numerical min-max at ζₚ = 0: tuning ratio f (relative)",
+              value=abs(numerical.f / closed.f - 1), tolerance=1e-6),
+        Check(name="H∞ closed form against the numerical min-max at ζₚ = 0: ζₐ (relative)",
+              value=abs(numerical.zeta_a / closed.zeta_a - 1), tolerance=1e-4),
+        Check(name="H∞ closed form against the numerical min-max at ζₚ = 0: peak (relative)",
+              value=abs(numerical.peak / closed.peak - 1), tolerance=1e-9),
+        Check(name="one-mass MDOF response against the closed form of Part I: largest |Δx| (m)",
+              value=float(np.max(np.abs(one - x_without))), tolerance=1e-9),
+        Check(name="two-mass response: modal superposition against the matrix exponential, largest |Δx| (m)",
+              value=float(np.max(np.abs(x_with[::step] - expm_x))), tolerance=1e-9),
+        Check(name="stroke |Xₐ − Xₚ|: closed form against the two-mass complex solve (relative)",
+              value=abs(stroke / (p.k * abs(Xs[1] - Xs[0])) - 1.0), tolerance=1e-9),
+        Check(name="roof under ground acceleration: complex solve against modal superposition (relative)",
+              value=_ground_modal_check(building, load_cases[1].omega_without), tolerance=1e-9),
+        Check(name="robust design: lowest worst peak of its 8 neighbours at ±0.1 % in f and ζₐ, shortfall (relative)",
+              value=_robust_neighbours(robust_design, zeta_p, p.mistuning), tolerance=1e-9),
+        Check(name="numerical optimisations stopped at their iteration limit (count)",
+              value=float(sum(not tn.converged for tn in [numerical, *optimisations])), tolerance=1.0),
     )  # fmt: skip
 
 
@@ -385,7 +396,15 @@ def _robust_neighbours(t: TMDTuning, zeta_p: float, band: float) -> float:
     best = math.inf
     for a, b in itertools.product((-1, 0, 1), repeat=2):
         if a or b:
-            n = TMDTuning(t.rule, t.mu, t.f * (1 + 1e-3 * a), t.zeta_a * (1 + 1e-3 * b), zeta_p, t.peak, t.r_peak)
+            n = TMDTuning(
+                rule=t.rule,
+                mu=t.mu,
+                f=t.f * (1 + 1e-3 * a),
+                zeta_a=t.zeta_a * (1 + 1e-3 * b),
+                zeta_p=zeta_p,
+                peak=t.peak,
+                r_peak=t.r_peak,
+            )
             best = min(best, worst_peak(n, band, zeta_p)[0])
     return max(0.0, 1.0 - best / w0)
 

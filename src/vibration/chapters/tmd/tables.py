@@ -25,16 +25,17 @@ __all__ = [
     "tuning_table",
 ]
 
-_NO_ABSORBER = Missing("no absorber")
-_NO_REDUCTION = Missing("a reduction of the absorber's own motion is not meaningful")
-_UNDAMPED = Missing("the bare primary is undamped: its rms displacement under white noise is infinite")
+_NO_ABSORBER = Missing(reason="no absorber")
+_NO_REDUCTION = Missing(reason="a reduction of the absorber's own motion is not meaningful")
+_UNDAMPED = Missing(reason="the bare primary is undamped: its rms displacement under white noise is infinite")
 
 
 def _table(rows: list[dict], columns: list[Column], caption: str, name: str, notes=()) -> Table:
     """A :class:`Table` whose float cells print with their column's significant figures, trailing zeros kept."""
     digits = {c.key: c.digits for c in columns}
     fixed = [
-        {k: (Sig(v, digits[k]) if isinstance(v, float) and k in digits else v) for k, v in row.items()} for row in rows
+        {k: (Sig(value=v, digits=digits[k]) if isinstance(v, float) and k in digits else v) for k, v in row.items()}
+        for row in rows
     ]
     return Table(fixed, columns, caption=caption, name=name, notes=tuple(notes))
 
@@ -60,14 +61,14 @@ def tuning_table(st: TMDStudy) -> Table:
     return _table(
         rows,
         [
-            Column("mu", "μ"),
-            Column("rule", "rule"),
-            Column("f", "f = ω_a/ω_p", 5),
-            Column("za", "ζ_a on ω_a", 4),
-            Column("zap", "ζ'_a = f ζ_a on ω_p", 4),
-            Column("peak0", "peak, ζ_p = 0", 5),
-            Column("peak", f"peak, ζ_p = {sig(st.zeta_p, 3)}", 5),
-            Column("excess", "excess over the best (%)", 2),
+            Column(key="mu", header="μ"),
+            Column(key="rule", header="rule"),
+            Column(key="f", header="f = ω_a/ω_p", digits=5),
+            Column(key="za", header="ζ_a on ω_a", digits=4),
+            Column(key="zap", header="ζ'_a = f ζ_a on ω_p", digits=4),
+            Column(key="peak0", header="peak, ζ_p = 0", digits=5),
+            Column(key="peak", header=f"peak, ζ_p = {sig(st.zeta_p, 3)}", digits=5),
+            Column(key="excess", header="excess over the best (%)", digits=2),
         ],
         caption=(
             "Absorber tunings and the largest magnification |X_p|/(F_0/k_p) they give on an undamped primary and on "
@@ -102,10 +103,10 @@ def response_table(st: TMDStudy) -> Table:
     return _table(
         rows,
         [
-            Column("case", "case"),
-            Column("amp", "steady amplitude (m)", 4),
-            Column("peak", f"largest |x|, 0 ≤ t ≤ {st.t_end:g} s (m)", 4),
-            Column("red", "steady reduction (%)", 3),
+            Column(key="case", header="case"),
+            Column(key="amp", header="steady amplitude (m)", digits=4),
+            Column(key="peak", header=f"largest |x|, 0 ≤ t ≤ {st.t_end:g} s (m)", digits=4),
+            Column(key="red", header="steady reduction (%)", digits=3),
         ],
         caption=f"Response from rest to F_0 sin(ωt) at ω = {st.omega_res:g} rad/s with F_0 = {st.F0:g} N.",
         name="tab-tmd-response",
@@ -150,16 +151,16 @@ def design_table(st: TMDStudy) -> Table:
     return _table(
         rows,
         [
-            Column("design", "tuning"),
-            Column("f", "f = ω_a/ω_p", 4),
-            Column("za", "ζ_a on ω_a", 4),
-            Column("nominal", "peak, nominal", 4),
-            Column("lo", f"peak, k_p −{e} %", 4),
-            Column("hi", f"peak, k_p +{e} %", 4),
-            Column("worst", f"worst peak, k_p ±{e} %", 4),
-            Column("rms", "rms / rms without absorber", 4),
-            Column("zmax", "largest stroke / (F_0/k_p)", 4),
-            Column("zf", f"stroke at ω = {st.omega_res:g} rad/s (m)", 4),
+            Column(key="design", header="tuning"),
+            Column(key="f", header="f = ω_a/ω_p", digits=4),
+            Column(key="za", header="ζ_a on ω_a", digits=4),
+            Column(key="nominal", header="peak, nominal", digits=4),
+            Column(key="lo", header=f"peak, k_p −{e} %", digits=4),
+            Column(key="hi", header=f"peak, k_p +{e} %", digits=4),
+            Column(key="worst", header=f"worst peak, k_p ±{e} %", digits=4),
+            Column(key="rms", header="rms / rms without absorber", digits=4),
+            Column(key="zmax", header="largest stroke / (F_0/k_p)", digits=4),
+            Column(key="zf", header=f"stroke at ω = {st.omega_res:g} rad/s (m)", digits=4),
         ],
         caption=(
             f"Every tuning judged on every criterion on the actual primary (ζ_p = {sig(st.zeta_p, 3)}, μ = {st.mu:g}): "
@@ -213,11 +214,11 @@ def building_table(st: TMDStudy) -> Table:
     return _table(
         rows,
         [
-            Column("mode", "mode"),
-            Column("T", "T (s)", 4),
-            Column("fhz", "f (Hz)", 4),
-            Column("zeta", "ζ", 3),
-            Column("roof", "roof / largest component", 3),
+            Column(key="mode", header="mode"),
+            Column(key="T", header="T (s)", digits=4),
+            Column(key="fhz", header="f (Hz)", digits=4),
+            Column(key="zeta", header="ζ", digits=3),
+            Column(key="roof", header="roof / largest component", digits=3),
         ],
         caption=f"Modes of the {b.n}-storey shear building (classical modal damping).",
         name="tab-tmd-building",
@@ -243,13 +244,13 @@ def building_load_table(st: TMDStudy) -> Table:
     return _table(
         rows,
         [
-            Column("load", "load"),
-            Column("unit", "unit"),
-            Column("h0", "largest roof amplitude without absorber", 4),
-            Column("f0", "its frequency (Hz)", 4),
-            Column("h1", "largest with the roof absorber", 4),
-            Column("f1", "its frequency with (Hz)", 4),
-            Column("red", "reduction (%)", 3),
+            Column(key="load", header="load"),
+            Column(key="unit", header="unit"),
+            Column(key="h0", header="largest roof amplitude without absorber", digits=4),
+            Column(key="f0", header="its frequency (Hz)", digits=4),
+            Column(key="h1", header="largest with the roof absorber", digits=4),
+            Column(key="f1", header="its frequency with (Hz)", digits=4),
+            Column(key="red", header="reduction (%)", digits=3),
         ],
         caption=(
             f"Largest steady roof amplitude between 0 and {sig(top, 4)} Hz (near the first mode) per unit load: a "
@@ -262,7 +263,7 @@ def building_load_table(st: TMDStudy) -> Table:
 def _bound(value: float, tol: float) -> str | Missing:
     """A check against its tolerance, as the printed tolerance (stable on every machine) or the failure."""
     if not math.isfinite(value):
-        return Missing("not finite")
+        return Missing(reason="not finite")
     if abs(value) < tol:
         return f"< {power(tol) if tol < 1.0 else f'{tol:g}'}"
     return f"{sig(abs(value), 2)} (above {power(tol) if tol < 1.0 else f'{tol:g}'})"
@@ -273,7 +274,11 @@ def checks_table(st: TMDStudy) -> Table:
     rows = [{"check": c.name, "bound": _bound(c.value, c.tolerance), "ok": c.ok} for c in st.checks]
     return _table(
         rows,
-        [Column("check", "check"), Column("bound", "difference"), Column("ok", "within")],
+        [
+            Column(key="check", header="check"),
+            Column(key="bound", header="difference"),
+            Column(key="ok", header="within"),
+        ],
         caption="Independent checks of the chapter's numbers.",
         name="tab-tmd-checks",
     )

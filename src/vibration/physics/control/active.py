@@ -48,7 +48,7 @@ def pd_oscillator(osc: Oscillator, kp: float, kd: float) -> Oscillator:
 
     Examples
     --------
-    >>> cl = pd_oscillator(Oscillator(1.0, 0.5, 20.0), kp=16.0, kd=5.5)
+    >>> cl = pd_oscillator(Oscillator(m=1.0, c=0.5, k=20.0), kp=16.0, kd=5.5)
     >>> cl.c, cl.k, round(cl.damping_ratio, 3)      # N s/m, N/m, 1
     (6.0, 36.0, 0.5)
     """
@@ -56,7 +56,7 @@ def pd_oscillator(osc: Oscillator, kp: float, kd: float) -> Oscillator:
     kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
     kd = check_real("kd", kd, unit="N s/m")
     try:
-        return Oscillator(osc.m, osc.c + kd, osc.k + kp)
+        return Oscillator(m=osc.m, c=osc.c + kd, k=osc.k + kp)
     except ParameterError as exc:
         raise ParameterError(
             f"kp = {kp!r} N/m and kd = {kd!r} N s/m make the closed loop (m, c + kd, k + kp) invalid ({exc}); allowed "
@@ -74,14 +74,14 @@ def stabilising_velocity_gain(osc: Oscillator) -> float:
 
     Examples
     --------
-    >>> stabilising_velocity_gain(Oscillator(1.0, -0.5, 20.0))     # N s/m
+    >>> stabilising_velocity_gain(Oscillator(m=1.0, c=-0.5, k=20.0))     # N s/m
     0.5
     """
     _check_osc(osc)
     return -osc.c + 0.0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LQRResult:
     """Linear-quadratic regulator ``u = -K [x, v]`` for ``J = int (q_x x^2 + q_v v^2 + r u^2) dt``."""
 
@@ -133,7 +133,7 @@ def lqr(osc: Oscillator, q_x: float, q_v: float, r: float) -> LQRResult:
 
     Examples
     --------
-    >>> res = lqr(Oscillator(1.0, 0.5, 20.0), q_x=96.0, q_v=1.0, r=0.01)
+    >>> res = lqr(Oscillator(m=1.0, c=0.5, k=20.0), q_x=96.0, q_v=1.0, r=0.01)
     >>> np.round(res.K, 4)                                # N/m, N s/m
     array([80.    , 15.6323])
     >>> round(res.closed_loop.k, 10)                      # sqrt(k^2 + q_x/r), N/m
@@ -180,7 +180,7 @@ def lqr_closed_form(osc: Oscillator, q_x: float, q_v: float, r: float) -> np.nda
 
     Examples
     --------
-    >>> np.round(lqr_closed_form(Oscillator(1.0, 0.5, 20.0), 96.0, 1.0, 0.01), 4)
+    >>> np.round(lqr_closed_form(Oscillator(m=1.0, c=0.5, k=20.0), 96.0, 1.0, 0.01), 4)
     array([80.    , 15.6323])
     """
     q_x, q_v, r = _lqr_args(osc, q_x, q_v, r)
@@ -200,7 +200,7 @@ def lqr_closed_form(osc: Oscillator, q_x: float, q_v: float, r: float) -> np.nda
 # ----------------------------------------------------------------------------- simulation with a callable
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ControlledResponse:
     """Response of the controlled oscillator on a uniform grid."""
 
@@ -270,7 +270,7 @@ def simulate_controlled(
     ``(1, 6, 36)`` (see :func:`pd_oscillator`):
 
     >>> from vibration import exact_response
-    >>> osc, force = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47)
+    >>> osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)
     >>> r = simulate_controlled(osc, lambda t, x, v: -16.0 * x - 5.5 * v, force, t_end=10.0, n_points=101)
     >>> ex = exact_response(pd_oscillator(osc, 16.0, 5.5), force, r.t)
     >>> bool(np.max(np.abs(r.x - ex.x)) < 1e-9)
@@ -350,7 +350,7 @@ def simulate_controlled(
 # ----------------------------------------------------------------------------- metrics
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Metrics:
     """Performance and cost of one controller over a window."""
 

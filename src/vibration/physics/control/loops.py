@@ -39,7 +39,7 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LoopCosts:
     """Robustness and noise costs of the loop ``C(s) = kp + kd s + ki/s`` around ``1/(m s^2 + c s + k)``."""
 
@@ -104,7 +104,7 @@ def loop_costs(osc: Oscillator, kp: float, kd: float, ki: float = 0.0, omega: fl
 
     Examples
     --------
-    >>> lc = loop_costs(Oscillator(1.0, 0.5, 20.0), kp=16.0, kd=5.5, omega=4.47)
+    >>> lc = loop_costs(Oscillator(m=1.0, c=0.5, k=20.0), kp=16.0, kd=5.5, omega=4.47)
     >>> round(lc.delay_margin, 3), round(lc.crossover, 3)      # s, rad/s
     (0.16, 8.239)
     """
@@ -176,7 +176,7 @@ def force_floor(osc: Oscillator, force: SineForce, X) -> np.ndarray | float:
 
     Examples
     --------
-    >>> round(force_floor(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47), 0.0), 4)   # F0/sqrt(2), N
+    >>> round(force_floor(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), 0.0), 4)   # F0/sqrt(2), N
     3.5355
     """
     _check_osc(osc)
@@ -196,7 +196,7 @@ def hold_force(osc: Oscillator, force: SineForce | None, x_ref: float) -> float:
 
     Examples
     --------
-    >>> hold_force(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 4.47), 0.5)
+    >>> hold_force(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), 0.5)
     15.0
     """
     _check_osc(osc)
@@ -213,7 +213,7 @@ def largest_holdable_reference(osc: Oscillator, force: SineForce | None, u_max: 
     return (u_max - F0) / osc.k if u_max >= F0 else math.nan
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class PIDPoles:
     """Closed-loop poles of ``m s^3 + (c + kd) s^2 + (k + kp) s + ki``."""
 
@@ -228,7 +228,7 @@ def pid_poles(osc: Oscillator, kp: float, ki: float, kd: float) -> PIDPoles:
 
     Examples
     --------
-    >>> p = pid_poles(Oscillator(1.0, 0.5, 20.0), 133.6, 512.0, 18.7)
+    >>> p = pid_poles(Oscillator(m=1.0, c=0.5, k=20.0), 133.6, 512.0, 18.7)
     >>> round(p.real_pole, 6), round(p.pair_omega, 6), round(p.pair_zeta, 6)
     (-8.0, 8.0, 0.7)
     """

@@ -184,7 +184,7 @@ def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) 
     return out, MAX_NFEV - budget[0]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class PIDResponse:
     """PID loop response: ``u = sat(kp e + ki I - kd v)``, ``e = x_ref - x``, ``I' = e`` (+ anti-windup)."""
 
@@ -212,8 +212,8 @@ def pid_work_check(osc: Oscillator, kp: float, ki: float, kd: float, t_end: floa
     forcing frequency ``omega`` (rad/s); the report runner calls this on a chapter's parameters before any
     kernel starts, so that a run it accepts finishes within the budget.
 
-    >>> pid_work_check(Oscillator(1.0, 0.5, 20.0), 133.6, 512.0, 18.7, 50.0, 4.47)  # the chapter's loop: fine
-    >>> pid_work_check(Oscillator(1.0, 0.5, 20.0), 133.6, 1e5, 18.7, 1000.0)  # doctest: +ELLIPSIS
+    >>> pid_work_check(Oscillator(m=1.0, c=0.5, k=20.0), 133.6, 512.0, 18.7, 50.0, 4.47)  # the chapter's loop: fine
+    >>> pid_work_check(Oscillator(m=1.0, c=0.5, k=20.0), 133.6, 1e5, 18.7, 1000.0)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
     vibration.physics.model.ParameterError: t_end = 1000.0 s spans ... time scales of the PID loop ...
@@ -280,7 +280,7 @@ def pid_response(
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> r = pid_response(osc, None, 80.0, 100.0, 10.0, x_ref=0.1, t_end=20.0, n_points=201)
     >>> round(float(r.x[-1]), 6)                        # m: integral action removes the offset
     0.1
@@ -345,7 +345,7 @@ def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, ki:
 
     Examples
     --------
-    >>> x, v, i = pid_linear_response(Oscillator(1.0, 0.5, 20.0), None, 80.0, 100.0, 10.0, [0.0, 60.0], 0.1)
+    >>> x, v, i = pid_linear_response(Oscillator(m=1.0, c=0.5, k=20.0), None, 80.0, 100.0, 10.0, [0.0, 60.0], 0.1)
     >>> np.round(x, 9)
     array([0. , 0.1])
     """

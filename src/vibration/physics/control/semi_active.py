@@ -30,7 +30,7 @@ def passive_transmissibility(osc: Oscillator, omegas) -> np.ndarray:
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> float(passive_transmissibility(osc, np.sqrt(40.0)).round(12))   # at sqrt(2) omega_n: 1
     1.0
     """
@@ -60,7 +60,7 @@ def skyhook_transmissibility(osc: Oscillator, c_sky: float, omegas) -> np.ndarra
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> w = osc.natural_frequency
     >>> round(float(skyhook_transmissibility(osc, 8.0, w)), 4)          # at resonance
     0.5294
@@ -86,7 +86,7 @@ def skyhook_transmissibility(osc: Oscillator, c_sky: float, omegas) -> np.ndarra
     return out
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class MRDamper:
     """Modified Bouc-Wen model of an MR damper (Spencer, Dyke, Sain and Carlson 1997), SI units.
 
@@ -214,7 +214,7 @@ def _sa_params(osc, law, c_sky, c_min, c_max, damper):
     return SEMI_ACTIVE_LAWS.index(law), p
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SemiActiveResponse:
     """Time response of the base-excited oscillator with a controllable device."""
 
@@ -315,7 +315,7 @@ def semi_active_response(
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> r = semi_active_response(osc, "clipped", 4.47, 0.25, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=10.0, n_points=11)
     >>> r.t.shape, r.law
     ((11,), 'clipped')
@@ -369,7 +369,7 @@ def semi_active_response(
     )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SemiActiveSweep:
     """Steady-state measures of a semi-active law across base frequencies."""
 
@@ -414,7 +414,7 @@ def semi_active_sweep(
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> s = semi_active_sweep(osc, "skyhook", [4.4721], 0.25, c_sky=8.0, periods=2)
     >>> bool(abs(s.fundamental[0] - skyhook_transmissibility(osc, 8.0, 4.4721)) < 1e-6)
     True
@@ -559,7 +559,7 @@ def semi_active_controller(
     return controller
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SkyhookPower:
     """Steady mean powers of the ideal skyhook force ``f = -c_sky v`` under base motion ``Y sin(omega t)``, W."""
 
@@ -581,7 +581,7 @@ def skyhook_power(osc: Oscillator, c_sky: float, Y: float, omega: float) -> Skyh
 
     Examples
     --------
-    >>> p = skyhook_power(Oscillator(1.0, 0.5, 20.0), 8.0, 0.25, 20.0**0.5)
+    >>> p = skyhook_power(Oscillator(m=1.0, c=0.5, k=20.0), 8.0, 0.25, 20.0**0.5)
     >>> round(p.removed, 4), round(p.net, 4), round(p.supplied, 4), round(p.gross, 4)
     (1.4014, -1.1073, 0.4242, 1.9556)
     """

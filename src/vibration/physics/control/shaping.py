@@ -17,7 +17,7 @@ from ._common import _finite, _grid
 SHAPER_IMPULSES_MAX = 64
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Shaper:
     """Input shaper: impulses of ``amplitudes`` (summing to 1) at ``times`` (s)."""
 
@@ -73,13 +73,15 @@ def zv_shaper(osc: Oscillator) -> Shaper:
 
     Examples
     --------
-    >>> s = zv_shaper(Oscillator(1.0, 0.0, 4.0 * np.pi**2))       # 1 Hz, undamped
+    >>> s = zv_shaper(Oscillator(m=1.0, c=0.0, k=4.0 * np.pi**2))       # 1 Hz, undamped
     >>> s.times, s.amplitudes
     (array([0. , 0.5]), array([0.5, 0.5]))
     """
     zeta, wn, wd = _underdamped(osc)
     K = math.exp(-zeta * math.pi / math.sqrt(1.0 - zeta * zeta))
-    return Shaper(np.array([0.0, math.pi / wd]), np.array([1.0, K]) / (1.0 + K), wn, zeta, "ZV")
+    return Shaper(
+        times=np.array([0.0, math.pi / wd]), amplitudes=np.array([1.0, K]) / (1.0 + K), omega_n=wn, zeta=zeta, kind="ZV"
+    )
 
 
 def zvd_shaper(osc: Oscillator) -> Shaper:
@@ -90,14 +92,16 @@ def zvd_shaper(osc: Oscillator) -> Shaper:
 
     Examples
     --------
-    >>> s = zvd_shaper(Oscillator(1.0, 0.0, 4.0 * np.pi**2))
+    >>> s = zvd_shaper(Oscillator(m=1.0, c=0.0, k=4.0 * np.pi**2))
     >>> s.times, s.amplitudes
     (array([0. , 0.5, 1. ]), array([0.25, 0.5 , 0.25]))
     """
     zeta, wn, wd = _underdamped(osc)
     K = math.exp(-zeta * math.pi / math.sqrt(1.0 - zeta * zeta))
     amps = np.array([1.0, 2.0 * K, K * K]) / (1.0 + K) ** 2
-    return Shaper(np.array([0.0, math.pi / wd, 2.0 * math.pi / wd]), amps, wn, zeta, "ZVD")
+    return Shaper(
+        times=np.array([0.0, math.pi / wd, 2.0 * math.pi / wd]), amplitudes=amps, omega_n=wn, zeta=zeta, kind="ZVD"
+    )
 
 
 def _check_shaper(shaper) -> Shaper:
@@ -122,10 +126,10 @@ def shaper_residual(shaper: Shaper | None, osc: Oscillator) -> float:
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> shaper_residual(zv_shaper(osc), osc) < 1e-15
     True
-    >>> round(shaper_residual(zv_shaper(osc), Oscillator(1.0, 0.5, 20.0 * 1.1**2)), 4)    # 10 % frequency error
+    >>> round(shaper_residual(zv_shaper(osc), Oscillator(m=1.0, c=0.5, k=20.0 * 1.1**2)), 4)    # 10 % frequency error
     0.1431
     """
     _check_shaper(shaper)
@@ -140,7 +144,7 @@ def shaper_residual(shaper: Shaper | None, osc: Oscillator) -> float:
 
 def _step_response(osc: Oscillator, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Response (m, m/s) to a unit-displacement step command ``F = k H(t)`` from rest: ``1 + free(-1, 0)``."""
-    free = exact_response(osc, SineForce(0.0, 0.0), t, x0=-1.0, v0=0.0)
+    free = exact_response(osc, SineForce(F0=0.0, omega=0.0), t, x0=-1.0, v0=0.0)
     return 1.0 + free.x, free.v
 
 
@@ -171,7 +175,7 @@ def shaped_move(
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> t, x, v, u = shaped_move(osc, zv_shaper(osc), 0.1, t_end=20.0, n_points=3)
     >>> np.round(x, 6)                                     # m
     array([0. , 0.1, 0.1])
@@ -203,7 +207,7 @@ def residual_amplitude(osc: Oscillator, t, x, v, target: float) -> np.ndarray:
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.0, 4.0)
+    >>> osc = Oscillator(m=1.0, c=0.0, k=4.0)
     >>> float(residual_amplitude(osc, 0.0, 1.0, 2.0, 0.0)[0])     # sqrt(1 + (2/2)^2)
     1.4142135623730951
     """
@@ -244,7 +248,7 @@ def insensitivity_band(shaper: Shaper, osc: Oscillator, level: float = 0.05) -> 
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.0, 20.0)                       # undamped: V = |cos(pi q / 2)| for ZV
+    >>> osc = Oscillator(m=1.0, c=0.0, k=20.0)                       # undamped: V = |cos(pi q / 2)| for ZV
     >>> lo, hi = insensitivity_band(zv_shaper(osc), osc)
     >>> round(lo, 6), round(float(2 * np.arccos(0.05) / np.pi), 6)
     (0.968156, 0.968156)
@@ -258,7 +262,7 @@ def insensitivity_band(shaper: Shaper, osc: Oscillator, level: float = 0.05) -> 
     m, c, k = osc.m, osc.c, osc.k
 
     def g(q: float) -> float:
-        return shaper_residual(shaper, Oscillator(m, c, k * q * q)) - level
+        return shaper_residual(shaper, Oscillator(m=m, c=c, k=k * q * q)) - level
 
     if not g(1.0) < 0.0:
         raise ParameterError(

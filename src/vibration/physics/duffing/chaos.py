@@ -124,7 +124,7 @@ def _rk4_kernel():
     return rk4_kernel
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LyapunovResult:
     """Lyapunov exponents of the forced oscillator (per unit time, 1/s)."""
 
@@ -270,7 +270,7 @@ def poincare_section(
 
     Examples
     --------
-    >>> pts = poincare_section(Duffing(1.0, 0.5, 20.0, 2.0), 5.0, 3.0, n_periods=3)
+    >>> pts = poincare_section(Duffing(m=1.0, c=0.5, k=20.0, k3=2.0), 5.0, 3.0, n_periods=3)
     >>> bool(np.ptp(pts[:, 0]) < 1e-9)           # a period-1 orbit: one point
     True
     """
@@ -319,7 +319,7 @@ def lyapunov_qr(
 
     Examples
     --------
-    >>> r = lyapunov_qr(Duffing(1.0, 0.5, 20.0, 2.0), 5.0, 3.0, n_periods=200)
+    >>> r = lyapunov_qr(Duffing(m=1.0, c=0.5, k=20.0, k3=2.0), 5.0, 3.0, n_periods=200)
     >>> round(sum(r.exponents), 6)        # = -c/m, 1/s
     -0.5
     """
@@ -368,7 +368,7 @@ def lyapunov_benettin(
 
     Examples
     --------
-    >>> r = lyapunov_benettin(Duffing(1.0, 0.5, 20.0, 2.0), 5.0, 3.0, n_periods=200)
+    >>> r = lyapunov_benettin(Duffing(m=1.0, c=0.5, k=20.0, k3=2.0), 5.0, 3.0, n_periods=200)
     >>> r.exponents[0] < 0                # a stable periodic orbit
     True
     """
@@ -380,7 +380,7 @@ def lyapunov_benettin(
 # ------------------------------------------------------------------- uncertainty of the exponent
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LyapunovEstimate:
     """Largest Lyapunov exponent of one long run with its batch-means standard error (per unit time, 1/s).
 
@@ -469,7 +469,7 @@ def lyapunov_estimate(
 
     Examples
     --------
-    >>> u = Duffing(1.0, 0.05, 0.0, 1.0)                   # Ueda's oscillator
+    >>> u = Duffing(m=1.0, c=0.05, k=0.0, k3=1.0)                   # Ueda's oscillator
     >>> e = lyapunov_estimate(u, 7.5, 1.0, 3.0, 0.0, n_periods=4000)
     >>> 0.09 < e.exponent < 0.115 and 0.0005 < e.standard_error < 0.004   # 1/s
     True

@@ -80,7 +80,7 @@ def hb_amplitudes(duffing: Duffing, F0: float, omega: float) -> list[tuple[float
     >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
     >>> [(round(a, 4), s) for a, s in hb_amplitudes(d, 5.0, 5.07)]       # m
     [(1.0411, True), (1.625, False), (1.9703, True)]
-    >>> [(round(a, 4), s) for a, s in hb_amplitudes(Duffing(1.0, 0.5, 20.0, 0.0), 5.0, 3.0)]
+    >>> [(round(a, 4), s) for a, s in hb_amplitudes(Duffing(m=1.0, c=0.5, k=20.0, k3=0.0), 5.0, 3.0)]
     [(0.4504, True)]
     """
     d = _check_duffing(duffing)
@@ -134,7 +134,7 @@ def backbone(duffing: Duffing, amplitude):
 
     Examples
     --------
-    >>> round(float(backbone(Duffing(1.0, 0.5, 20.0, 2.0), 2.0)), 4)     # rad/s
+    >>> round(float(backbone(Duffing(m=1.0, c=0.5, k=20.0, k3=2.0), 2.0)), 4)     # rad/s
     5.099
     """
     d = _check_duffing(duffing)
@@ -174,7 +174,7 @@ def linear_trust_amplitude(duffing: Duffing) -> float:
 
     Examples
     --------
-    >>> round(linear_trust_amplitude(Duffing(1.0, 0.5, 20.0, 2.0)), 4)    # m
+    >>> round(linear_trust_amplitude(Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)), 4)    # m
     1.7743
     """
     d = _check_duffing(duffing)
@@ -190,7 +190,7 @@ def linear_trust_amplitude(duffing: Duffing) -> float:
     return math.sqrt(z)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Folds:
     """Fold (saddle-node) points and peak of the one-harmonic response curve.
 
@@ -287,7 +287,14 @@ def folds(duffing: Duffing, F0: float) -> Folds:
     a_peak, w_peak = _peak(d, F0)
     nan = math.nan
     if kap == 0.0:
-        return Folds(nan, nan, nan, nan, a_peak, w_peak)
+        return Folds(
+            omega_low=nan,
+            omega_high=nan,
+            amplitude_low=nan,
+            amplitude_high=nan,
+            peak_amplitude=a_peak,
+            peak_omega=w_peak,
+        )
     g = kap * F0 * F0
     # scale y by y0 so that the coefficients are O(1)
     y0 = abs(g) ** (1.0 / 3.0)
@@ -320,11 +327,22 @@ def folds(duffing: Duffing, F0: float) -> Folds:
     found.sort()
     if len(found) == 1 and kap < 0:  # an open softening curve: only the sweep-up jump exists
         (wh, ah) = found[0]
-        return Folds(nan, wh, nan, ah, a_peak, w_peak)
+        return Folds(
+            omega_low=nan, omega_high=wh, amplitude_low=nan, amplitude_high=ah, peak_amplitude=a_peak, peak_omega=w_peak
+        )
     if len(found) < 2:
-        return Folds(nan, nan, nan, nan, a_peak, w_peak)
+        return Folds(
+            omega_low=nan,
+            omega_high=nan,
+            amplitude_low=nan,
+            amplitude_high=nan,
+            peak_amplitude=a_peak,
+            peak_omega=w_peak,
+        )
     (wl, al), (wh, ah) = found[0], found[-1]
-    return Folds(wl, wh, al, ah, a_peak, w_peak)
+    return Folds(
+        omega_low=wl, omega_high=wh, amplitude_low=al, amplitude_high=ah, peak_amplitude=a_peak, peak_omega=w_peak
+    )
 
 
 @_overflow_is_error
@@ -359,7 +377,7 @@ def response_curve(duffing: Duffing, F0: float, omega_max: float, n: int = 801, 
 
     Examples
     --------
-    >>> w, a, st = response_curve(Duffing(1.0, 0.5, 20.0, 2.0), 5.0, 8.0)
+    >>> w, a, st = response_curve(Duffing(m=1.0, c=0.5, k=20.0, k3=2.0), 5.0, 8.0)
     >>> round(float(a.max()), 3), bool(st.all())     # m
     (1.97, False)
     """

@@ -140,7 +140,7 @@ def _rates(d: Duffing) -> str:
 # --------------------------------------------------------------------------------------- model
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Duffing:
     """Duffing oscillator ``m x'' + c x' + k x + k3 x^3 = F(t)``.
 
@@ -153,9 +153,9 @@ class Duffing:
     >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
     >>> round(d.natural_frequency, 4), d.character          # rad/s
     (4.4721, 'hardening')
-    >>> Duffing(1.0, 0.05, 0.0, 1.0).natural_frequency      # Ueda's oscillator
+    >>> Duffing(m=1.0, c=0.05, k=0.0, k3=1.0).natural_frequency      # Ueda's oscillator
     0.0
-    >>> Duffing(1.0, 0.5, 0.0, -1.0)
+    >>> Duffing(m=1.0, c=0.5, k=0.0, k3=-1.0)
     Traceback (most recent call last):
     ...
     vibration.physics.model.ParameterError: k3 = -1.0 N/m^3 is out of range: allowed k3 > 0 N/m^3, finite
@@ -266,7 +266,7 @@ def duffing_response(
 
     Examples
     --------
-    >>> x, v = duffing_response(Duffing(1.0, 0.5, 20.0, 0.0), 5.0, 4.47, [0.0, 50.0], sine=True)
+    >>> x, v = duffing_response(Duffing(m=1.0, c=0.5, k=20.0, k3=0.0), 5.0, 4.47, [0.0, 50.0], sine=True)
     >>> round(float(x[-1]), 4)          # m, as the linear closed form of Part I
     2.009
     """

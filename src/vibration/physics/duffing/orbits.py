@@ -12,7 +12,7 @@ from .harmonic_balance import hb_amplitudes
 from .model import MAX_RHS_EVALUATIONS, Duffing, _check_duffing, _Counted, _linear_rate, _OverBudget, _rates, _x_ref
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class PeriodicOrbit:
     """A periodic orbit of the forcing period, found by shooting, with its Floquet multipliers."""
 
@@ -239,7 +239,7 @@ def _shoot(d: Duffing, F0: float, w: float, x: float, v: float, rtol: float, max
 # ------------------------------------------------------------------------ continuation and folds
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class OrbitFold:
     """A fold (saddle-node) of the periodic orbit of the full equation: the branch turns back in omega."""
 
@@ -249,7 +249,7 @@ class OrbitFold:
     det: float  # det(M - I) at the located fold (0 at an exact fold)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class OrbitBranch:
     """Periodic orbits of the forcing period along a branch, by pseudo-arclength continuation in omega."""
 

@@ -227,7 +227,7 @@ def _sweep_kernel():
 # ------------------------------------------------------------------------------- frequency sweeps
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SweepResult:
     """Steady responses of a stepped frequency sweep, aligned with the frequencies given."""
 

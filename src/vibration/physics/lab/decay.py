@@ -680,9 +680,29 @@ def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
             guesses.append(peak_decay_fit(ta, ya, law=g_law))
         except ParameterError:  # the extrema do not fit this law's recursion: not a usable start
             pass
-    guesses.append(PeakDecayFit("combined", math.pi / half, 0.01, 0.0, float(np.median(ya)), {}, n_ext))
+    guesses.append(
+        PeakDecayFit(
+            law="combined",
+            omega_n=math.pi / half,
+            zeta=0.01,
+            friction=0.0,
+            offset=float(np.median(ya)),
+            stderr={},
+            n_peaks=n_ext,
+        )
+    )
     g_fric, g_zeta, g_quad = _curve_guess(peaks, k0, math.pi / half)
-    guesses.append(PeakDecayFit("combined", math.pi / half, g_zeta, g_fric, float(np.median(ya)), {}, n_ext))
+    guesses.append(
+        PeakDecayFit(
+            law="combined",
+            omega_n=math.pi / half,
+            zeta=g_zeta,
+            friction=g_fric,
+            offset=float(np.median(ya)),
+            stderr={},
+            n_peaks=n_ext,
+        )
+    )
     t_start = float(ta[peaks.index[k0]])
     t_end = min(float(ta[-1]), float(peaks.t[-1]) + 0.5 * half)
     w = (ta >= t_start) & (ta <= t_end)

@@ -18,7 +18,7 @@ MAX_TRIAL = 20_000
 MAX_GRID_SAMPLES = 5_000
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class HarmonicFit:
     """``offset + amplitude sin(omega t + phase)`` fitted by least squares.
 

@@ -70,7 +70,7 @@ _HEADER = re.compile(r"(?P<quantity>.+?) Run #(?P<run>[0-9]{1,6})")
 _NUMBER = re.compile(r"[+-]?[0-9]+(,[0-9]+)?([eE][+-]?[0-9]{1,3})?")
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class LoggerRun:
     """One run of a logger export, in SI units.
 

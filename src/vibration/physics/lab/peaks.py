@@ -27,7 +27,7 @@ MIN_SWING_FRACTION = 0.2
 # ----------------------------------------------------------------------------- peaks
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class DecayPeaks:
     """Extrema of a free decay, refined by a local parabola.
 
@@ -168,7 +168,7 @@ def _start(ta, ya, peaks: DecayPeaks) -> int:
 # ----------------------------------------------------------------------------- peak-based estimator
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class PeakDecayFit:
     """Free-decay parameters estimated from the extrema alone (independent of :func:`fit_free_decay`).
 

@@ -15,7 +15,7 @@ from .task import MAX_RECORDED_STEPS, MAX_STATES, OscillatorTask, _check_gains, 
 # ----------------------------------------------------------------------------- comparisons and checks
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Comparison:
     """Controllers of one task rolled out on the same seeded episodes.
 
@@ -66,7 +66,9 @@ def compare_controllers(task: OscillatorTask, controllers: dict, n_episodes: int
         elif g[0] == 0.0 and task.c_min <= g[1] <= task.c_max:
             ex = _passive_cost(task, float(g[1]))
         exact.append(ex)
-    return Comparison(task, tuple(names), tuple(gains), tuple(runs), tuple(exact), seed)
+    return Comparison(
+        task=task, names=tuple(names), gains=tuple(gains), runs=tuple(runs), exact=tuple(exact), seed=seed
+    )
 
 
 def verification(task: OscillatorTask, gains) -> dict[str, float]:

@@ -74,7 +74,7 @@ def exosystem_matrices(task: OscillatorTask | None = None) -> tuple[np.ndarray, 
     return a_z, b_z, np.array([0.0, 1.0])
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ExosystemOptimum:
     """Finite-horizon LQ optimum of the disturbed task with the forcing phase known."""
 
@@ -128,10 +128,12 @@ def exosystem_optimum(task: OscillatorTask | None = None) -> ExosystemOptimum:
         row = gains[k] @ phi
         peak = max(peak, float(np.abs(row[:2]) @ box + abs(row[2:] @ w0)))
         phi = (a_z - np.outer(b_z, gains[k])) @ phi
-    return ExosystemOptimum(cost, peak, gains[0].copy(), bool(peak <= task.u_max))
+    return ExosystemOptimum(
+        expected_cost=cost, peak_force=peak, gains0=gains[0].copy(), within_bound=bool(peak <= task.u_max)
+    )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FixedGainOptimum:
     """The linear law on ``[x, v]`` of least exact expected cost (force bound ignored)."""
 
@@ -173,10 +175,12 @@ def best_fixed_gain(task: OscillatorTask | None = None) -> FixedGainOptimum:
     total, peak = _moments(task, g)
     if not math.isfinite(total):
         raise ParameterError("no stabilising fixed gain found: allowed a task that LQR stabilises")
-    return FixedGainOptimum(g, float(total), float(peak), bool(peak <= task.u_max))
+    return FixedGainOptimum(
+        gains=g, expected_cost=float(total), peak_force=float(peak), within_bound=bool(peak <= task.u_max)
+    )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class CostCurvature:
     """Hessian of the exact expected cost in the gains, and its eigen-decomposition."""
 
@@ -225,4 +229,4 @@ def cost_hessian(task: OscillatorTask | None, gains, step: float = 1e-3) -> Cost
         raise ParameterError(f"gains = {g.tolist()!r}: the cost is not finite around them: allowed stabilising gains")
     vals, vecs = np.linalg.eigh(hess)
     valley = vecs[:, 0] * (1.0 if vecs[0, 0] >= 0 else -1.0)
-    return CostCurvature(hess, vals, valley)
+    return CostCurvature(hessian=hess, eigenvalues=vals, valley=valley)

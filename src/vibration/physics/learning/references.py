@@ -159,7 +159,7 @@ def _moment_kernel():
     return kernel
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class PassiveOptimum:
     """The best constant damping for a task and its exact expected cost.
 
@@ -219,10 +219,10 @@ def best_passive_damping(task: OscillatorTask | None = None) -> PassiveOptimum:
         lambda c: _passive_cost(task, float(c)), bounds=(a, b), method="bounded", options={"xatol": 1e-9 * hi}
     )
     c, cost = (float(res.x), float(res.fun)) if res.fun <= costs[i] else (float(grid[i]), float(costs[i]))
-    return PassiveOptimum(c, cost, bool(c <= lo + 1e-6 * hi or c >= hi * (1 - 1e-6)))
+    return PassiveOptimum(c=c, expected_cost=cost, at_bound=bool(c <= lo + 1e-6 * hi or c >= hi * (1 - 1e-6)))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LQRReference:
     """Discrete-time LQR of the sampled task: gains, Riccati solution, exact expected cost.
 

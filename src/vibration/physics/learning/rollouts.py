@@ -202,7 +202,7 @@ def episode_costs(task: OscillatorTask | None, gains, x0) -> np.ndarray:
     return _run(task, g, states, record=False)[0]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Rollouts:
     """Episodes of one linear law: sampled states and forces at the step starts, and costs.
 
@@ -277,4 +277,4 @@ def rollout(task: OscillatorTask | None, gains, x0) -> Rollouts:
             f"gains = {g.tolist()!r} destabilise the plant: the state overflows (not finite) within "
             f"{task.n_steps} steps: allowed gains whose episodes stay finite"
         )
-    return Rollouts(task.t, xs[0], vs[0], us[0], costs[0])
+    return Rollouts(t=task.t, x=xs[0], v=vs[0], u=us[0], cost=costs[0])

@@ -24,7 +24,7 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SeedStudy:
     """One learner trained from several seeds on one task, scored against a reference cost ``J_ref``."""
 
@@ -99,10 +99,19 @@ def seed_study(
         hit = np.nonzero(ratio <= 1.0 + target)[0]
         reach.append(float(res.curve_episodes[hit[0]]) if hit.size else math.nan)
         episodes, iters = res.episodes, res.curve_episodes.size - 1
-    return SeedStudy(method, seeds, np.array(ratios), np.array(reach), episodes, iters, target, float(j_ref))
+    return SeedStudy(
+        method=method,
+        seeds=seeds,
+        final_ratio=np.array(ratios),
+        episodes_to_target=np.array(reach),
+        episodes=episodes,
+        iterations=iters,
+        target=target,
+        reference_cost=float(j_ref),
+    )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Robustness:
     """Laws designed on the nominal plant, run on changed plants (sampled episodes, force bound applied)."""
 
@@ -158,12 +167,19 @@ def robustness_study(task: OscillatorTask, laws: dict, n_episodes: int = 400, se
         se.append(c.std(axis=1, ddof=1) / math.sqrt(n_episodes))
         opt.append(exosystem_optimum(t).expected_cost)
     return Robustness(
-        tuple(v[0] for v in VARIATIONS), tuple(tasks), names, gains, np.array(cost), np.array(se), np.array(opt),
-        n_episodes, seed,
-    )  # fmt: skip
+        variations=tuple(v[0] for v in VARIATIONS),
+        tasks=tuple(tasks),
+        laws=names,
+        gains=gains,
+        cost=np.array(cost),
+        stderr=np.array(se),
+        optimum=np.array(opt),
+        n_episodes=n_episodes,
+        seed=seed,
+    )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class IdentifyDesign:
     """Identify the plant from one short test record, then design on the fitted model."""
 
@@ -197,15 +213,15 @@ def identify_then_design(
     task = _check_task(task)
     duration = check_real("duration", duration, low=1.0, high=1e4, unit="s")
     noise = check_real("noise", noise, low=0.0, high=1.0)
-    rec = simulated_test(Oscillator(task.m, task.c, task.k), duration, task.dt, noise, seed=seed)
+    rec = simulated_test(Oscillator(m=task.m, c=task.c, k=task.k), duration, task.dt, noise, seed=seed)
     fit = identify(rec.t, rec.force, x=rec.x)
     model = replace(task, m=fit.m, c=max(fit.c, 0.0), k=fit.k)
     return IdentifyDesign(
-        float(rec.t[-1]),
-        len(rec),
-        noise,
-        np.array([fit.m, fit.c, fit.k]),
-        np.asarray(fit.stderr, dtype=float),
-        lqr_reference(replace(model, F0=0.0)).gains,
-        best_fixed_gain(model).gains,
+        duration=float(rec.t[-1]),
+        samples=len(rec),
+        noise=noise,
+        fitted=np.array([fit.m, fit.c, fit.k]),
+        stderr=np.asarray(fit.stderr, dtype=float),
+        lqr_gains=lqr_reference(replace(model, F0=0.0)).gains,
+        fixed_gains=best_fixed_gain(model).gains,
     )

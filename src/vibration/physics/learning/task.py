@@ -26,7 +26,7 @@ MAX_STATES = 1_000_000
 # ----------------------------------------------------------------------------- the task
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class OscillatorTask:
     """The control task: plant, sampling, initial states, cost, disturbance and actuator.
 

@@ -15,7 +15,7 @@ from .task import MAX_EPISODE_STEPS, METHODS, OscillatorTask, _check_gains, _che
 # ----------------------------------------------------------------------------- policies and learning
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class LinearPolicy:
     """A linear desired-force law ``u_des = -K [x, v]`` realised by the task's device.
 
@@ -27,10 +27,10 @@ class LinearPolicy:
     Examples
     --------
     >>> from vibration.physics.learning import semi_active_task
-    >>> pol = LinearPolicy([1.0, 2.0], OscillatorTask())
+    >>> pol = LinearPolicy(gains=[1.0, 2.0], task=OscillatorTask())
     >>> pol(np.array([0.5, -1.0]))                    # N
     array([1.5])
-    >>> LinearPolicy([1.0, 2.0], semi_active_task())(np.array([0.5, -1.0]))   # N s/m
+    >>> LinearPolicy(gains=[1.0, 2.0], task=semi_active_task())(np.array([0.5, -1.0]))   # N s/m
     array([1.5])
     """
 
@@ -55,7 +55,7 @@ class LinearPolicy:
         return np.array([c])
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class TrainingResult:
     """What :func:`train` learned, and how it got there.
 
@@ -250,7 +250,7 @@ def train(
             costs.append(c)
             exact.append(e)
     return TrainingResult(
-        policy=LinearPolicy(theta, task),
+        policy=LinearPolicy(gains=theta, task=task),
         method=method,
         seed=seed,
         curve_episodes=np.array(episodes),

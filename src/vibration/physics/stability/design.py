@@ -17,7 +17,7 @@ from .transmissibility import peak_magnification, transmissibility
 # ----------------------------------------------------------------------------- cost and design
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DamperLoad:
     """Steady-state load on the damper under ``F0 sin(omega t)`` on the mass."""
 
@@ -47,7 +47,7 @@ def damper_load(osc: Oscillator, F0: float, omegas) -> DamperLoad:
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> d = damper_load(osc, 5.0, [3.0, osc.natural_frequency])
     >>> np.round(d.force_amplitude, 4), np.round(d.mean_power, 4)     # N, W
     (array([0.6756, 5.    ]), array([ 0.4564, 25.    ]))
@@ -74,7 +74,7 @@ def damper_load(osc: Oscillator, F0: float, omegas) -> DamperLoad:
     return DamperLoad(omega=w, amplitude=amp, force_amplitude=force, mean_power=power)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DesignMetrics:
     """One damping on the three axes of the trade-off, plus its random response.
 
@@ -116,10 +116,10 @@ def design_metrics(osc: Oscillator, isolation_ratio: float = 3.0, band: float = 
 
     Examples
     --------
-    >>> d = design_metrics(Oscillator(1.0, 15.0, 20.0))
+    >>> d = design_metrics(Oscillator(m=1.0, c=15.0, k=20.0))
     >>> round(d.peak_magnification, 3), round(d.transmissibility, 4), round(d.settling_time, 3)
     (1.0, 0.7866, 2.723)
-    >>> d = design_metrics(Oscillator(1.0, 0.0, 20.0))
+    >>> d = design_metrics(Oscillator(m=1.0, c=0.0, k=20.0))
     >>> d.peak_magnification, round(d.transmissibility, 12), d.overshoot, d.settling_time, d.stability
     (None, 0.125, 1.0, None, 'marginally stable')
     """

@@ -32,11 +32,11 @@ def poles(osc: Oscillator) -> np.ndarray:
 
     Examples
     --------
-    >>> np.round(poles(Oscillator(1.0, 0.5, 20.0)), 4)          # 1/s
+    >>> np.round(poles(Oscillator(m=1.0, c=0.5, k=20.0)), 4)          # 1/s
     array([-0.25+4.4651j, -0.25-4.4651j])
-    >>> np.round(poles(Oscillator(1.0, 15.0, 20.0)), 4)
+    >>> np.round(poles(Oscillator(m=1.0, c=15.0, k=20.0)), 4)
     array([ -1.4792+0.j, -13.5208+0.j])
-    >>> poles(Oscillator(1.0, 0.0, 4.0))
+    >>> poles(Oscillator(m=1.0, c=0.0, k=4.0))
     array([0.+2.j, 0.-2.j])
     """
     osc = _check_osc(osc)
@@ -57,7 +57,7 @@ def poles(osc: Oscillator) -> np.ndarray:
     return np.array([complex(hi, 0.0), complex(lo, 0.0)])
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Stability:
     """Which notions of stability an oscillator has, and its slowest pole."""
 
@@ -87,12 +87,12 @@ def stability_class(osc: Oscillator) -> Stability:
 
     Examples
     --------
-    >>> stability_class(Oscillator(1.0, 0.1, 20.0)).verdict
+    >>> stability_class(Oscillator(m=1.0, c=0.1, k=20.0)).verdict
     'asymptotically stable'
-    >>> s = stability_class(Oscillator(1.0, 0.0, 20.0))
+    >>> s = stability_class(Oscillator(m=1.0, c=0.0, k=20.0))
     >>> s.verdict, s.lyapunov, s.bibo
     ('marginally stable', True, False)
-    >>> stability_class(Oscillator(1.0, -0.2, 20.0)).spectral_abscissa     # 1/s
+    >>> stability_class(Oscillator(m=1.0, c=-0.2, k=20.0)).spectral_abscissa     # 1/s
     0.1
     """
     p = poles(osc)
@@ -149,10 +149,11 @@ def growth_envelope(osc: Oscillator, force: SineForce, t):
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.0, 4.0)
-    >>> round(growth_envelope(osc, SineForce(1.0, 2.0), 10.0), 6)       # m: (1/8) sqrt(1 + 400)
+    >>> osc = Oscillator(m=1.0, c=0.0, k=4.0)
+    >>> round(growth_envelope(osc, SineForce(F0=1.0, omega=2.0), 10.0), 6)       # m: (1/8) sqrt(1 + 400)
     2.503123
-    >>> round(growth_envelope(Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0), 1e3), 4)   # steady amplitude, m
+    >>> osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
+    >>> round(growth_envelope(osc, force, 1e3), 4)   # steady amplitude, m
     0.4504
     """
     _check_osc(osc)

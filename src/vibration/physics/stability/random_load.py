@@ -53,7 +53,7 @@ def white_noise_variance(osc: Oscillator, S0: float) -> float:
 
     Examples
     --------
-    >>> round(white_noise_variance(Oscillator(1.0, 0.5, 20.0), 1.0), 6)      # m^2
+    >>> round(white_noise_variance(Oscillator(m=1.0, c=0.5, k=20.0), 1.0), 6)      # m^2
     0.314159
     """
     _check_osc(osc)
@@ -69,7 +69,7 @@ def white_noise_velocity_variance(osc: Oscillator, S0: float) -> float:
 
     Examples
     --------
-    >>> round(white_noise_velocity_variance(Oscillator(1.0, 0.5, 20.0), 1.0), 6)     # m^2/s^2
+    >>> round(white_noise_velocity_variance(Oscillator(m=1.0, c=0.5, k=20.0), 1.0), 6)     # m^2/s^2
     6.283185
     """
     _check_osc(osc)
@@ -174,7 +174,7 @@ def simulate_white_noise(
 
     Examples
     --------
-    >>> t, x, v = simulate_white_noise(Oscillator(1.0, 0.5, 20.0), 1.0, 10.0, dt=0.01, n_paths=2)
+    >>> t, x, v = simulate_white_noise(Oscillator(m=1.0, c=0.5, k=20.0), 1.0, 10.0, dt=0.01, n_paths=2)
     >>> x.shape, float(x[0, 0]), float(v[1, 0])
     ((2, 1001), 0.0, 0.0)
     """
@@ -220,7 +220,7 @@ def simulate_white_noise(
     return t, x, v
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class MonteCarlo:
     """A seeded Monte Carlo estimate of the stationary displacement and velocity variances."""
 
@@ -278,7 +278,7 @@ def white_noise_monte_carlo(
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> mc = white_noise_monte_carlo(osc, 1.0, n_paths=50)
     >>> bool(abs(mc.variance - white_noise_variance(osc, 1.0)) < 4 * mc.standard_error)
     True
@@ -338,7 +338,7 @@ def white_noise_force_variance(osc: Oscillator, S0: float) -> float:
 
     Examples
     --------
-    >>> round(white_noise_force_variance(Oscillator(1.0, 0.5, 20.0), 0.1), 4)     # N^2
+    >>> round(white_noise_force_variance(Oscillator(m=1.0, c=0.5, k=20.0), 0.1), 4)     # N^2
     12.7235
     """
     _check_osc(osc)

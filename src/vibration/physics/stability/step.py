@@ -21,7 +21,7 @@ STEP_SAMPLES_MAX = 1_000_000
 # ----------------------------------------------------------------------------- shock: step response
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class StepMetrics:
     """Metrics of the response to a unit step force, normalised by its final value ``1/k``.
 
@@ -89,7 +89,7 @@ def step_response(osc: Oscillator, t):
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.0, 4.0)                    # undamped: y = 1 - cos(2 t)
+    >>> osc = Oscillator(m=1.0, c=0.0, k=4.0)                    # undamped: y = 1 - cos(2 t)
     >>> np.round(step_response(osc, [0.0, np.pi / 2]), 12)
     array([0., 2.])
     """
@@ -163,10 +163,10 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
 
     Examples
     --------
-    >>> s = step_metrics(Oscillator(1.0, 0.5, 20.0))
+    >>> s = step_metrics(Oscillator(m=1.0, c=0.5, k=20.0))
     >>> round(s.overshoot, 4), round(s.peak_time, 4), round(s.rise_time, 4), round(s.settling_time, 3)
     (0.8387, 0.7036, 0.2382, 15.544)
-    >>> s = step_metrics(Oscillator(1.0, 15.0, 20.0))
+    >>> s = step_metrics(Oscillator(m=1.0, c=15.0, k=20.0))
     >>> s.overshoot, s.peak_time, round(s.settling_time, 4)       # 1, s, s
     (0.0, inf, 2.723)
     """
@@ -206,7 +206,15 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
         level = band * math.exp(-n * log_mp)
         tau = _solve(lambda t: f(t) - level, 0.0, half)
         settle = n * half + tau
-        return StepMetrics(zeta, overshoot, half, rise, settle, band, 1.0 / osc.k)
+        return StepMetrics(
+            zeta=zeta,
+            overshoot=overshoot,
+            peak_time=half,
+            rise_time=rise,
+            settling_time=settle,
+            band=band,
+            final_value=1.0 / osc.k,
+        )
 
     hi = osc.time_constant
     for _ in range(2100):  # doubling from any normal float reaches the overflow in < 2100 steps
@@ -215,7 +223,15 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
         hi *= 2.0
     rise = crossing(0.9, 0.0, hi) - crossing(0.1, 0.0, hi)
     settle = crossing(1.0 - band, 0.0, hi)
-    return StepMetrics(zeta, 0.0, math.inf, rise, settle, band, 1.0 / osc.k)
+    return StepMetrics(
+        zeta=zeta,
+        overshoot=0.0,
+        peak_time=math.inf,
+        rise_time=rise,
+        settling_time=settle,
+        band=band,
+        final_value=1.0 / osc.k,
+    )
 
 
 def settling_optimal_zeta(band: float = 0.02) -> float:

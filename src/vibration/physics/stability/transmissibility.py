@@ -36,11 +36,11 @@ def transmissibility(osc: Oscillator, omegas):
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> wn = osc.natural_frequency
     >>> np.round(transmissibility(osc, [0.0, wn, np.sqrt(2) * wn, 3 * wn]), 4)
     array([1.    , 9.    , 1.    , 0.1317])
-    >>> round(transmissibility(Oscillator(1.0, 15.0, 20.0), 3 * wn), 4)
+    >>> round(transmissibility(Oscillator(m=1.0, c=15.0, k=20.0), 3 * wn), 4)
     0.7866
     """
     _check_osc(osc)
@@ -62,7 +62,7 @@ def isolation_frequency(osc: Oscillator) -> float:
 
     Examples
     --------
-    >>> round(isolation_frequency(Oscillator(1.0, 0.5, 20.0)), 4)     # rad/s
+    >>> round(isolation_frequency(Oscillator(m=1.0, c=0.5, k=20.0)), 4)     # rad/s
     6.3246
     """
     return math.sqrt(2.0) * _check_osc(osc).natural_frequency
@@ -76,7 +76,7 @@ def peak_transmissibility(osc: Oscillator) -> tuple[float, float]:
 
     Examples
     --------
-    >>> w, t = peak_transmissibility(Oscillator(1.0, 0.5, 20.0))
+    >>> w, t = peak_transmissibility(Oscillator(m=1.0, c=0.5, k=20.0))
     >>> round(w, 4), round(t, 4)          # rad/s, 1
     (4.4583, 9.0137)
     """
@@ -86,7 +86,7 @@ def peak_transmissibility(osc: Oscillator) -> tuple[float, float]:
     if zeta == 0.0:
         return wn, math.inf
     r = math.sqrt(2.0 / (1.0 + math.sqrt(1.0 + 8.0 * zeta * zeta)))
-    return r * wn, float(transmissibility(Oscillator(osc.m, abs(osc.c), osc.k), r * wn))
+    return r * wn, float(transmissibility(Oscillator(m=osc.m, c=abs(osc.c), k=osc.k), r * wn))
 
 
 def peak_magnification(osc: Oscillator) -> tuple[float, float]:
@@ -98,10 +98,10 @@ def peak_magnification(osc: Oscillator) -> tuple[float, float]:
 
     Examples
     --------
-    >>> w, g = peak_magnification(Oscillator(1.0, 0.5, 20.0))
+    >>> w, g = peak_magnification(Oscillator(m=1.0, c=0.5, k=20.0))
     >>> round(w, 4), round(g, 4)          # rad/s, 1
     (4.4581, 8.9583)
-    >>> peak_magnification(Oscillator(1.0, 15.0, 20.0))
+    >>> peak_magnification(Oscillator(m=1.0, c=15.0, k=20.0))
     (0.0, 1.0)
     """
     _check_osc(osc)

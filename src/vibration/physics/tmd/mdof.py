@@ -17,7 +17,7 @@ class DampingNotClassical(ParameterError):
     """The damping matrix is not uncoupled by the undamped modes: modal damping ratios do not exist."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class MDOFResponse:
     """Response of an :class:`MDOF` model on a time grid."""
 
@@ -71,7 +71,7 @@ def _positive_definite(name: str, A: np.ndarray, semi: bool = False) -> None:
         raise ParameterError(f"{name} has eigenvalue {w.min():.6g} (smallest): allowed a symmetric {what} matrix")
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class MDOF:
     """Linear structure M x'' + C x' + K x = F(t), SI units.
 
@@ -86,7 +86,7 @@ class MDOF:
 
     Examples
     --------
-    >>> s = MDOF([[1.0, 0], [0, 1.0]], [[0.0, 0], [0, 0.0]], [[2.0, -1.0], [-1.0, 2.0]])
+    >>> s = MDOF(M=[[1.0, 0], [0, 1.0]], C=[[0.0, 0], [0, 0.0]], K=[[2.0, -1.0], [-1.0, 2.0]])
     >>> s.natural_frequencies.round(6).tolist()             # rad/s
     [1.0, 1.732051]
     >>> s.modal_damping_ratios.tolist()
@@ -230,7 +230,7 @@ class MDOF:
 
         Examples
         --------
-        >>> s = MDOF([[1.0]], [[0.5]], [[20.0]])
+        >>> s = MDOF(M=[[1.0]], C=[[0.5]], K=[[20.0]])
         >>> round(float(abs(s.frf([4.47], [5.0])[0, 0])), 4)     # the paper's resonance amplitude, m
         2.2371
         """
@@ -288,7 +288,7 @@ class MDOF:
 
         Examples
         --------
-        >>> s = MDOF([[1.0]], [[0.5]], [[20.0]])
+        >>> s = MDOF(M=[[1.0]], C=[[0.5]], K=[[20.0]])
         >>> r = s.response([0.0, 50.0], [5.0], 4.47)
         >>> round(float(r.x[0, 0]), 12), round(float(r.x[1, 0]), 4)
         (0.0, 2.009)
@@ -334,7 +334,7 @@ class MDOF:
                         f"omega = {omega!r} rad/s is a natural frequency of the undamped model: the modal method has "
                         "no steady state there; allowed method='expm' or 'auto' (secular growth)"
                     ) from None
-                return _finite_response(MDOFResponse(t, x, v))
+                return _finite_response(MDOFResponse(t=t, x=x, v=v))
         Minv_p = np.linalg.solve(self.M, p)
         Aa = np.zeros((2 * n + 2, 2 * n + 2))
         Aa[: 2 * n, : 2 * n] = self.state_matrix
@@ -350,7 +350,7 @@ class MDOF:
             )
         with np.errstate(all="ignore"):  # a non-finite result is refused below
             z = sla.expm(Aa[None] * t[:, None, None]) @ za
-        return _finite_response(MDOFResponse(t, z[:, :n], z[:, n : 2 * n]))
+        return _finite_response(MDOFResponse(t=t, x=z[:, :n], v=z[:, n : 2 * n]))
 
     def _state(self, name: str, value) -> np.ndarray:
         a = check_array(name, value, ndim=(0, 1, 2), max_size=N_DOF_MAX).reshape(-1)

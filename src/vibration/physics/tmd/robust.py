@@ -168,7 +168,16 @@ def robust_tuning(mu, zeta_p=0.0, band=0.1, maxiter=None) -> TMDTuning:
     start = hinf_tuning(mu, zp)
     rule = f"robust min-max, ±{100 * band:g} %"
     if band == 0.0:
-        return TMDTuning(rule, mu, start.f, start.zeta_a, zp, start.peak, start.r_peak, start.converged)
+        return TMDTuning(
+            rule=rule,
+            mu=mu,
+            f=start.f,
+            zeta_a=start.zeta_a,
+            zeta_p=zp,
+            peak=start.peak,
+            r_peak=start.r_peak,
+            converged=start.converged,
+        )
     f_top = F_MAX * math.sqrt(1.0 - band)
 
     def cost(x, eps):
@@ -200,10 +209,10 @@ def robust_tuning(mu, zeta_p=0.0, band=0.1, maxiter=None) -> TMDTuning:
         eps.append(e_w)
     f, za = float(x[0]), math.exp(float(x[1]))
     peak, r_peak = _peak(mu, f, za, zp)
-    return TMDTuning(rule, mu, f, za, zp, peak, r_peak, converged)
+    return TMDTuning(rule=rule, mu=mu, f=f, zeta_a=za, zeta_p=zp, peak=peak, r_peak=r_peak, converged=converged)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DesignScore:
     """One absorber design judged on every criterion, on the actual primary (ratios to F0 / k_p, nominal)."""
 

@@ -34,7 +34,7 @@ def modal_damping_matrix(M, K, zeta) -> np.ndarray:
     >>> round(float(C[0, 0]), 3)
     0.5
     """
-    model = MDOF(M, np.zeros_like(_matrix("M", M, None)), K)
+    model = MDOF(M=M, C=np.zeros_like(_matrix("M", M, None)), K=K)
     z = check_array("zeta", zeta, low=0.0, high=ZETA_MAX, ndim=(0, 1), max_size=N_DOF_MAX)
     if np.any((z > 0.0) & (z < ZETA_MIN)):
         raise ParameterError(
@@ -102,7 +102,7 @@ def shear_building(masses, stiffnesses, zeta=0.05) -> MDOF:
             K[i, i] += k[i + 1]
             K[i, i + 1] = K[i + 1, i] = -k[i + 1]
     M = np.diag(m)
-    return MDOF(M, modal_damping_matrix(M, K, zeta), K)
+    return MDOF(M=M, C=modal_damping_matrix(M, K, zeta), K=K)
 
 
 def add_absorber(model: MDOF, dof: int, m_a, k_a, c_a) -> MDOF:
@@ -124,7 +124,7 @@ def add_absorber(model: MDOF, dof: int, m_a, k_a, c_a) -> MDOF:
 
     Examples
     --------
-    >>> s = add_absorber(MDOF([[1.0]], [[0.0]], [[20.0]]), 0, 0.05, 0.9, 0.01)
+    >>> s = add_absorber(MDOF(M=[[1.0]], C=[[0.0]], K=[[20.0]]), 0, 0.05, 0.9, 0.01)
     >>> s.n, s.is_classically_damped
     (2, False)
     """
@@ -147,7 +147,7 @@ def add_absorber(model: MDOF, dof: int, m_a, k_a, c_a) -> MDOF:
         A[n, n] += v
         A[j, n] -= v
         A[n, j] -= v
-    return MDOF(M, C, K)
+    return MDOF(M=M, C=C, K=K)
 
 
 def tmd_system(m, c, k, tuning: TMDTuning) -> MDOF:
@@ -176,10 +176,10 @@ def tmd_system(m, c, k, tuning: TMDTuning) -> MDOF:
                 f"{tuning.zeta_a!r}) give the absorber's {name} = {value:.3g} {unit}: allowed {ENTRY_MIN:g} to "
                 f"{ENTRY_MAX:g} {unit}"
             )
-    return add_absorber(MDOF([[m]], [[c]], [[k]]), 0, m_a, k_a, c_a)
+    return add_absorber(MDOF(M=[[m]], C=[[c]], K=[[k]]), 0, m_a, k_a, c_a)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ModeAbsorber:
     """An absorber tuned to one mode of an MDOF structure through its equivalent single-degree-of-freedom system."""
 
@@ -216,7 +216,7 @@ def first_mode_absorber(model: MDOF, mu, dof: int = -1, rule: str = "H∞") -> M
 
     Examples
     --------
-    >>> a = first_mode_absorber(MDOF([[1.0]], [[0.5]], [[20.0]]), 0.05)
+    >>> a = first_mode_absorber(MDOF(M=[[1.0]], C=[[0.5]], K=[[20.0]]), 0.05)
     >>> round(a.modal_mass, 3), round(a.zeta, 4), round(a.tuning.f, 4)
     (1.0, 0.0559, 0.9331)
     """
@@ -236,7 +236,7 @@ def first_mode_absorber(model: MDOF, mu, dof: int = -1, rule: str = "H∞") -> M
     z1 = float(model.modal_damping_ratios[0])
     tuning = rules[rule](mu, zeta_p=min(z1, ZETA_P_OPT_MAX))
     m_a, k_a, c_a = tuning.absorber(m1, w1 * w1 * m1)
-    return ModeAbsorber(tuning, m1, w1, z1, m_a, k_a, c_a)
+    return ModeAbsorber(tuning=tuning, modal_mass=m1, omega=w1, zeta=z1, m_a=m_a, k_a=k_a, c_a=c_a)
 
 
 def ground_acceleration_load(model: MDOF) -> np.ndarray:
@@ -286,7 +286,7 @@ def frf_peak(model: MDOF, load, dof: int, omega_min, omega_max) -> tuple[float, 
 
     Examples
     --------
-    >>> s = MDOF([[1.0]], [[0.5]], [[20.0]])
+    >>> s = MDOF(M=[[1.0]], C=[[0.5]], K=[[20.0]])
     >>> x, w = frf_peak(s, [5.0], 0, 3.0, 6.0)
     >>> round(x, 4), round(w, 4)        # F0/k / (2ζ sqrt(1 − ζ²)) at ω_n sqrt(1 − 2ζ²)
     (2.2396, 4.4581)

@@ -15,7 +15,7 @@ from ._limits import F_MAX, MISTUNED_MAX, ZETA_MAX, ZETA_P_OPT_MAX, _f, _mu, _no
 from .magnification import _outer_peaks, _peak, h2_norm
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class TMDTuning:
     """One absorber tuning and the peak it gives (dimensionless groups, see the module docstring)."""
 
@@ -78,7 +78,7 @@ class TMDTuning:
 
 def _record(rule, mu, f, za, zp, converged: bool = True) -> TMDTuning:
     peak, r_peak = _peak(mu, f, za, zp)
-    return TMDTuning(rule, mu, f, za, zp, peak, r_peak, bool(converged))
+    return TMDTuning(rule=rule, mu=mu, f=f, zeta_a=za, zeta_p=zp, peak=peak, r_peak=r_peak, converged=bool(converged))
 
 
 #: Largest Nelder-Mead iteration limit a caller may ask for.
@@ -231,7 +231,9 @@ def hinf_tuning(mu, zeta_p=0.0, method="auto", maxiter=None) -> TMDTuning:
     zp = _zeta("zeta_p", zeta_p, ZETA_P_OPT_MAX)
     if _closed_form(method, zp):
         f, za, peak = _hinf_closed(mu)
-        return TMDTuning("H∞ closed form", mu, f, za, 0.0, peak, _peak(mu, f, za, 0.0)[1])
+        return TMDTuning(
+            rule="H∞ closed form", mu=mu, f=f, zeta_a=za, zeta_p=0.0, peak=peak, r_peak=_peak(mu, f, za, 0.0)[1]
+        )
     maxiter = _maxiter(maxiter, 400)
     f0, z0 = 1.0 / (1.0 + mu), math.sqrt(3.0 * mu / (8.0 * (1.0 + mu)))
     f, za, converged = _hinf_numerical(mu, zp, f0, z0, maxiter)

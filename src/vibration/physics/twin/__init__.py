@@ -55,7 +55,7 @@ Examples
 --------
 >>> from vibration import Oscillator
 >>> t = np.arange(0.0, 60.0, 0.02)
->>> meas = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, random_force(t, seed=1), noise=1e-3, seed=2)
+>>> meas = synthetic_measurements(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t, seed=1), noise=1e-3, seed=2)
 >>> fit = identify(meas.t, meas.force, x=meas.x)
 >>> [round(v, 2) for v in (fit.m, fit.c, fit.k)]      # kg, N s/m, N/m
 [1.0, 0.5, 20.0]

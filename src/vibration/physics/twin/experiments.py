@@ -48,7 +48,7 @@ MAX_EXPERIMENT_SAMPLES = 20_000_000
 # --------------------------------------------------------------------------- Monte Carlo experiments
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class CoverageExperiment:
     """Repeated identification of one oscillator from noisy records (seeded), with the residual tests of each run."""
 
@@ -190,7 +190,7 @@ def identification_experiment(
 
     Examples
     --------
-    >>> ex = identification_experiment(Oscillator(1.0, 0.5, 20.0), duration=20.0, runs=20)
+    >>> ex = identification_experiment(Oscillator(m=1.0, c=0.5, k=20.0), duration=20.0, runs=20)
     >>> ex.estimates.shape, bool(np.all(ex.coverage >= 0.8))
     ((20, 3), True)
     """
@@ -213,7 +213,18 @@ def identification_experiment(
         np.array([osc.m, osc.c, osc.k]), t, force, clean, sd, runs, seed, stream, sensor, lags=lags
     )
     truth = np.array([osc.m, osc.c, osc.k])
-    return CoverageExperiment(truth, est, se, ci, noise, float(t[-1]), dt, sensor, white, inp)
+    return CoverageExperiment(
+        truth=truth,
+        estimates=est,
+        stderr=se,
+        ci95=ci,
+        noise=noise,
+        duration=float(t[-1]),
+        dt=dt,
+        sensor=sensor,
+        whiteness_p=white,
+        input_p=inp,
+    )
 
 
 # --------------------------------------------------------------------------- violated assumptions
@@ -228,7 +239,7 @@ ASSUMPTION_CASES = {
 }
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class AssumptionStudy:
     """Coverage and residual tests when the records break one assumption at a time (one experiment per case)."""
 
@@ -286,7 +297,7 @@ def assumption_study(
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> ref = identification_experiment(osc, duration=20.0, runs=4)
     >>> st = assumption_study(osc, ref, runs=3)
     >>> list(st.experiments)[:2], st.experiments["coloured sensor noise"].flagged()
@@ -336,13 +347,32 @@ def assumption_study(
             lags=lags,
         )
         experiments[label] = CoverageExperiment(
-            truth, est, se, ci, reference.noise * uy, float(t[-1]), dt, "x", white, inp, label
+            truth=truth,
+            estimates=est,
+            stderr=se,
+            ci95=ci,
+            noise=reference.noise * uy,
+            duration=float(t[-1]),
+            dt=dt,
+            sensor="x",
+            whiteness_p=white,
+            input_p=inp,
+            case=label,
         )
         predicted[label] = predicted_coverage(osc, t, force, colour) if uc else None
-    return AssumptionStudy(experiments, predicted, force_noise, reference.noise, colour, cubic, k3, lags)
+    return AssumptionStudy(
+        experiments=experiments,
+        predicted=predicted,
+        force_noise=force_noise,
+        noise=reference.noise,
+        colour=colour,
+        cubic=cubic,
+        k3=k3,
+        lags=lags,
+    )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DetectionExperiment:
     """Seeded healthy and faulty records run through :func:`detect_change`, for many thresholds."""
 
@@ -455,7 +485,7 @@ def detection_experiment(
     Examples
     --------
     >>> t = np.arange(0.0, 120.0, 0.02)
-    >>> osc, f = Oscillator(1.0, 0.5, 20.0), random_force(t)
+    >>> osc, f = Oscillator(m=1.0, c=0.5, k=20.0), random_force(t)
     >>> ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=60.0, drop=0.05)
     >>> ex = detection_experiment(osc, t, f, ks, 60.0, noise=2e-3, runs=5, reference=osc, thresholds=[40, 80])
     >>> ex.detection_probability.tolist(), ex.false_alarm_probability.tolist()
@@ -509,7 +539,14 @@ def detection_experiment(
                 idx = np.searchsorted(run_max, thr, side="right")
                 ok = idx < t.size
                 first[i, ok] = t[idx[ok]]
-    return DetectionExperiment(thr, change_time, monitored, peaks, first, drift)
+    return DetectionExperiment(
+        thresholds=thr,
+        change_time=change_time,
+        monitored=monitored,
+        healthy_peak=peaks,
+        first_crossing=first,
+        drift=drift,
+    )
 
 
 def identification_sweep(
@@ -546,7 +583,7 @@ def identification_sweep(
 
     Examples
     --------
-    >>> by_noise, by_length = identification_sweep(Oscillator(1.0, 0.5, 20.0), noises=(0.01, 0.3),
+    >>> by_noise, by_length = identification_sweep(Oscillator(m=1.0, c=0.5, k=20.0), noises=(0.01, 0.3),
     ...                                            durations=(20.0, 40.0), runs=5)
     >>> float(by_noise[1].rel_rmse[2] / by_noise[0].rel_rmse[2]) > 10     # error grows with the noise (30x)
     True
@@ -569,7 +606,7 @@ def identification_sweep(
     return by_noise, by_length
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class EstimateGrid:
     """One seeded identification per (noise, record length): what the slider panels show."""
 
@@ -614,7 +651,7 @@ def estimate_grid(
 
     Examples
     --------
-    >>> g = estimate_grid(Oscillator(1.0, 0.5, 20.0), noises=(0.01, 0.1), durations=(20.0, 40.0))
+    >>> g = estimate_grid(Oscillator(m=1.0, c=0.5, k=20.0), noises=(0.01, 0.1), durations=(20.0, 40.0))
     >>> g.estimates.shape, g.ci95.shape
     ((2, 2, 3), (2, 2, 3, 2))
     """
@@ -644,7 +681,9 @@ def estimate_grid(
             fit = identify(t[:n], force[:n], **{sensor: clean[:n] + s * rms_y * draw[:n]}, search="local")
             est[i, j] = (fit.m, fit.c, fit.k)
             ci[i, j] = fit.ci95
-    return EstimateGrid(np.array([osc.m, osc.c, osc.k]), noises, durations, est, ci)
+    return EstimateGrid(
+        truth=np.array([osc.m, osc.c, osc.k]), noises=noises, durations=durations, estimates=est, ci95=ci
+    )
 
 
 # --------------------------------------------------------------------------- chapter scenarios
@@ -653,7 +692,7 @@ def estimate_grid(
 THRESHOLDS = tuple(float(v) for v in np.geomspace(4.0, 400.0, 15))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FaultScenario:
     """The monitored record's stiffness history: decline from ``decline_start``, drop at ``drop_time``."""
 
@@ -692,7 +731,12 @@ def fault_scenario(k: float, t_monitor: float, dt: float, decline_rate: float, d
         )
     t = np.arange(_grid_size(t_monitor, dt, "t_monitor")) * dt
     start, when = 0.4 * t_monitor, 0.7 * t_monitor
-    return FaultScenario(t, stiffness_profile(t, k, start, decline_rate, drop_time=when, drop=drop), start, when)
+    return FaultScenario(
+        t=t,
+        k=stiffness_profile(t, k, start, decline_rate, drop_time=when, drop=drop),
+        decline_start=start,
+        drop_time=when,
+    )
 
 
 def detection_study(
@@ -718,7 +762,7 @@ def detection_study(
 
     Examples
     --------
-    >>> osc = Oscillator(1.0, 0.5, 20.0)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> st = detection_study(osc, osc, 100.0, 0.02, 0.01, 0.001, 0.05, runs=3, thresholds=(40.0,))
     >>> sorted(st), [float(e.detection_probability[0]) for e in st.values()]
     (['slow decline', 'sudden drop'], [1.0, 1.0])

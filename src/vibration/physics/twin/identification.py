@@ -31,7 +31,7 @@ GRID_ZETAS = (0.05, 0.3)
 # --------------------------------------------------------------------------- identification
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Identification:
     """Least-squares estimate of the oscillator from one record, with its uncertainty."""
 
@@ -53,7 +53,7 @@ class Identification:
     @property
     def oscillator(self) -> Oscillator:
         """The identified oscillator."""
-        return Oscillator(self.m, self.c, self.k)
+        return Oscillator(m=self.m, c=self.c, k=self.k)
 
     @property
     def natural_frequency(self) -> float:
@@ -227,7 +227,7 @@ def identify(t, force, x=None, a=None, *, search: str = "global") -> Identificat
     --------
     >>> from vibration.physics.twin import random_force, synthetic_measurements
     >>> t = np.arange(0.0, 40.0, 0.01)
-    >>> meas = synthetic_measurements(Oscillator(2.0, 1.0, 50.0), t, random_force(t, (0.2, 3.0)),
+    >>> meas = synthetic_measurements(Oscillator(m=2.0, c=1.0, k=50.0), t, random_force(t, (0.2, 3.0)),
     ...                               sensor="a", noise=0.05, seed=3)
     >>> fit = identify(meas.t, meas.force, a=meas.a)
     >>> [round(v, 1) for v in (fit.m, fit.c, fit.k)], fit.ci95.shape        # kg, N s/m, N/m
@@ -337,27 +337,27 @@ def _identify(t, h, force, y, sensor, local: bool) -> Identification:
     ci = np.column_stack([est - q * stderr, est + q * stderr])
     hold = float(np.max(np.abs(np.diff(force, 2))) / 8.0 / max(np.sqrt(np.mean(force**2)), 1e-300))
     return Identification(
-        float(m),
-        float(c),
-        float(k),
-        stderr,
-        ci,
-        cov,
-        float(z0[0]),
-        float(z0[1]),
-        math.sqrt(s2),
-        int(n),
-        h,
-        sensor,
-        hold,
-        -res,
+        m=float(m),
+        c=float(c),
+        k=float(k),
+        stderr=stderr,
+        ci95=ci,
+        cov=cov,
+        x0=float(z0[0]),
+        v0=float(z0[1]),
+        sigma=math.sqrt(s2),
+        n=int(n),
+        dt=h,
+        sensor=sensor,
+        force_hold_error=hold,
+        residual=-res,
     )
 
 
 # --------------------------------------------------------------------------- frequency domain
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FrequencyResponse:
     """Measured receptance (Welch H1 estimate): ``omega`` (rad/s), ``H`` (m/N, complex), ``coherence`` (1)."""
 
@@ -367,7 +367,7 @@ class FrequencyResponse:
     force_psd: np.ndarray  # one-sided PSD of the force, N^2/Hz
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FrequencyEstimate:
     """m (kg), c (N s/m), k (N/m), omega_n (rad/s), zeta (1) from the measured FRF; nan and a reason if none."""
 
@@ -399,7 +399,7 @@ def frf_estimate(t, force, x=None, a=None, nperseg: int | None = None) -> Freque
     --------
     >>> from vibration.physics.twin import random_force, synthetic_measurements
     >>> t = np.arange(0.0, 200.0, 0.02)
-    >>> meas = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, random_force(t))
+    >>> meas = synthetic_measurements(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t))
     >>> frf = frf_estimate(**meas)
     >>> i = int(np.argmin(np.abs(frf.omega - 2.0)))
     >>> bool(abs(abs(frf.H[i]) * abs(20 - frf.omega[i] ** 2 + 0.5j * frf.omega[i]) - 1) < 0.02)
@@ -408,11 +408,14 @@ def frf_estimate(t, force, x=None, a=None, nperseg: int | None = None) -> Freque
     t, h, force, y, sensor = _record(t, force, x, a)
     if nperseg is not None:
         nperseg = check_int("nperseg", nperseg, low=16, high=t.size)
-    return FrequencyResponse(*_frf(force, y, h, sensor, nperseg))
+    omega, H, coherence, force_psd = _frf(force, y, h, sensor, nperseg)
+    return FrequencyResponse(omega=omega, H=H, coherence=coherence, force_psd=force_psd)
 
 
 def _nan_estimate(method: str, reason: str) -> FrequencyEstimate:
-    return FrequencyEstimate(method, math.nan, math.nan, math.nan, math.nan, math.nan, reason)
+    return FrequencyEstimate(
+        method=method, m=math.nan, c=math.nan, k=math.nan, omega_n=math.nan, zeta=math.nan, reason=reason
+    )
 
 
 def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, FrequencyEstimate]:
@@ -436,7 +439,7 @@ def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, Freq
     --------
     >>> from vibration.physics.twin import random_force, synthetic_measurements
     >>> t = np.arange(0.0, 400.0, 0.02)
-    >>> meas = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, random_force(t))
+    >>> meas = synthetic_measurements(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t))
     >>> hp, cf = frequency_estimates(frf_estimate(**meas, nperseg=10000))
     >>> float(round(hp.k, 0)), float(round(cf.m, 1))                                  # N/m, kg
     (20.0, 1.0)
@@ -483,7 +486,12 @@ def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, Freq
             k = 1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta**2) * h_pk)
             m = k / wn**2
             hp = FrequencyEstimate(
-                "half-power", float(m), 2.0 * zeta * math.sqrt(k * m), float(k), float(wn), float(zeta)
+                method="half-power",
+                m=float(m),
+                c=2.0 * zeta * math.sqrt(k * m),
+                k=float(k),
+                omega_n=float(wn),
+                zeta=float(zeta),
             )
     lo_i, hi_i = i, i
     while lo_i - 1 >= 0 and mag[lo_i - 1] >= 0.5 * h_pk:
@@ -507,5 +515,12 @@ def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, Freq
     (m, k), *_ = np.linalg.lstsq(np.column_stack([ws**2, -np.ones_like(ws)]), -c * ws * np.tan(theta / 2.0), rcond=None)
     if not (m > 0 and k > 0):
         return hp, _nan_estimate("circle fit", "circle fit gave m or k <= 0")
-    cf = FrequencyEstimate("circle fit", float(m), float(c), float(k), math.sqrt(k / m), c / (2 * math.sqrt(k * m)))
+    cf = FrequencyEstimate(
+        method="circle fit",
+        m=float(m),
+        c=float(c),
+        k=float(k),
+        omega_n=math.sqrt(k / m),
+        zeta=c / (2 * math.sqrt(k * m)),
+    )
     return hp, cf

@@ -42,7 +42,7 @@ SEED_MAX = 2**62
 # --------------------------------------------------------------------------- measurements
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class Measurements:
     """A uniformly sampled record: time (s), force (N), and displacement (m) or acceleration (m/s^2).
 
@@ -261,7 +261,7 @@ def _parse(text: str, name: str) -> Measurements:
                     )
         data[col] = values
     _sampling(data[TIME], lambda i: where(TIME, i))
-    return Measurements(data[TIME], data[FORCE], data.get(DISPLACEMENT), data.get(ACCELERATION))
+    return Measurements(t=data[TIME], force=data[FORCE], x=data.get(DISPLACEMENT), a=data.get(ACCELERATION))
 
 
 def measurements_csv(meas: Measurements, digits: int = 9) -> str:
@@ -269,7 +269,7 @@ def measurements_csv(meas: Measurements, digits: int = 9) -> str:
 
     Examples
     --------
-    >>> print(measurements_csv(Measurements(np.arange(3) * 0.5, np.ones(3), x=np.zeros(3))))
+    >>> print(measurements_csv(Measurements(t=np.arange(3) * 0.5, force=np.ones(3), x=np.zeros(3))))
     t_s,force_N,x_m
     0,1,0
     0.5,1,0

@@ -48,7 +48,7 @@ MAX_RHS_EVALUATIONS = 300_000
 # --------------------------------------------------------------------------- exact discretisation
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Discretization:
     """Exact first-order-hold step: ``z[n+1] = phi z[n] + gamma0 F[n] + gamma1 F[n+1]``, ``z = (x, v)``."""
 
@@ -156,7 +156,7 @@ def discretize(osc: Oscillator, dt: float) -> Discretization:
 
     Examples
     --------
-    >>> d = discretize(Oscillator(1.0, 0.0, 1.0), 0.5)
+    >>> d = discretize(Oscillator(m=1.0, c=0.0, k=1.0), 0.5)
     >>> bool(np.allclose(d.phi, [[np.cos(0.5), np.sin(0.5)], [-np.sin(0.5), np.cos(0.5)]]))
     True
     >>> float(np.round(d.gamma0.sum() + d.gamma1.sum() - (1 - np.cos(0.5)) - np.sin(0.5), 12))  # constant F = 1 N
@@ -165,7 +165,7 @@ def discretize(osc: Oscillator, dt: float) -> Discretization:
     _check_osc(osc)
     dt = check_real("dt", dt, low=0.0, low_open=True, unit="s")
     phi, g0, g1 = _foh(osc.m, osc.c, osc.k, dt)
-    return Discretization(dt, phi[0], g0[0], g1[0])
+    return Discretization(dt=dt, phi=phi[0], gamma0=g0[0], gamma1=g1[0])
 
 
 def _filters(phi, g0, g1, row, feed):
@@ -199,7 +199,7 @@ def _run(phi, g0, g1, row, feed, force, z0):
     return signal.lfilter(b, a, force) + free
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SampledResponse:
     """Response at the samples: ``t`` (s), ``x`` (m), ``v`` (m/s), ``a`` (m/s^2)."""
 
@@ -231,7 +231,7 @@ def sampled_response(osc: Oscillator, t, force, x0: float = 0.0, v0: float = 0.0
     Examples
     --------
     >>> from vibration import SineForce, exact_response
-    >>> osc, f = Oscillator(1.0, 0.5, 20.0), SineForce(5.0, 3.0)
+    >>> osc, f = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
     >>> t = np.linspace(0.0, 10.0, 2001)
     >>> r = sampled_response(osc, t, f(t))
     >>> bool(np.max(np.abs(r.x - exact_response(osc, f, t).x)) < 2e-5)    # m: h^2 omega^2 F0 / 8 force interpolation
@@ -256,7 +256,7 @@ def sampled_response(osc: Oscillator, t, force, x0: float = 0.0, v0: float = 0.0
             f"the oscillator {osc} grows without bound over {float(t[-1] - t[0]):.3g} s, or the force or initial "
             "state is too large: allowed a response that stays a finite float",
         )
-    return SampledResponse(t, x, v, acc)
+    return SampledResponse(t=t, x=x, v=v, a=acc)
 
 
 # --------------------------------------------------------------------------- synthetic data
@@ -401,8 +401,9 @@ def synthetic_measurements(
     Examples
     --------
     >>> t = np.arange(0.0, 10.0, 0.01)
-    >>> a = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, np.ones_like(t))
-    >>> b = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, np.ones_like(t), stiffness=np.full(t.size, 20.0))
+    >>> a = synthetic_measurements(Oscillator(m=1.0, c=0.5, k=20.0), t, np.ones_like(t))
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
+    >>> b = synthetic_measurements(osc, t, np.ones_like(t), stiffness=np.full(t.size, 20.0))
     >>> bool(np.allclose(a.x, b.x, rtol=0, atol=1e-12))
     True
     """
@@ -441,7 +442,7 @@ def synthetic_measurements(
         f"the oscillator {osc} grows without bound, or the force, initial state or noise is too large: allowed a "
         "record that stays a finite float",
     )
-    return Measurements(t, force, x=y) if sensor == "x" else Measurements(t, force, a=y)
+    return Measurements(t=t, force=force, x=y) if sensor == "x" else Measurements(t=t, force=force, a=y)
 
 
 def example_measurements() -> Measurements:
@@ -460,9 +461,9 @@ def example_measurements() -> Measurements:
     """
     t = np.round(np.arange(3001) * 0.02, 10)
     force = random_force(t, band=(0.1, 2.0), rms=2.0, seed=13)
-    meas = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, force, noise=2e-3, seed=14)
+    meas = synthetic_measurements(Oscillator(m=1.0, c=0.5, k=20.0), t, force, noise=2e-3, seed=14)
     r = np.vectorize(lambda v: float(f"{v:.7g}"))
-    return Measurements(t, r(meas.force), x=r(meas.x))
+    return Measurements(t=t, force=r(meas.force), x=r(meas.x))
 
 
 # --------------------------------------------------------------------------- test records and checks
@@ -497,7 +498,7 @@ def simulated_test(
 
     Examples
     --------
-    >>> rec = simulated_test(Oscillator(1.0, 0.5, 20.0), 10.0, 0.02, 0.1)
+    >>> rec = simulated_test(Oscillator(m=1.0, c=0.5, k=20.0), 10.0, 0.02, 0.1)
     >>> len(rec), rec.sensor
     (501, 'x')
     """
@@ -511,7 +512,7 @@ def simulated_test(
     force = random_force(t, band=band, rms=rms, seed=seed)
     clean = synthetic_measurements(osc, t, force, sensor=sensor, stiffness=stiffness).response
     y = clean + noise * float(np.sqrt(np.mean(clean**2))) * np.random.default_rng(seed + 1).standard_normal(t.size)
-    return Measurements(t, force, x=y) if sensor == "x" else Measurements(t, force, a=y)
+    return Measurements(t=t, force=force, x=y) if sensor == "x" else Measurements(t=t, force=force, a=y)
 
 
 def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float, n: int) -> dict:
@@ -529,7 +530,7 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
 
     Examples
     --------
-    >>> ch = discretisation_checks(Oscillator(1.0, 0.5, 20.0), 5.0, 4.47, 50.0, 5001)
+    >>> ch = discretisation_checks(Oscillator(m=1.0, c=0.5, k=20.0), 5.0, 4.47, 50.0, 5001)
     >>> all(v < b for v, b in ch.values())
     True
     """
@@ -559,7 +560,7 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
             f"{MAX_RHS_EVALUATIONS} (more samples n, a shorter t_end or a less stiff oscillator)"
         )
     budget = _Counted(None, MAX_RHS_EVALUATIONS)
-    force = SineForce(F0, omega)
+    force = SineForce(F0=F0, omega=omega)
     f = force(t)
     ours = sampled_response(osc, t, f)
     exact = exact_response(osc, force, t)

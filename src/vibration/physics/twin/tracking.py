@@ -54,7 +54,7 @@ def _reference(reference, t, force, y, sensor, n_cal, name="reference"):
         raise ParameterError(
             f"{name} = {reference!r:.60}: allowed None, an Identification, an Oscillator or (m kg, c N s/m, k N/m)"
         ) from None
-    return Oscillator(m, c, k), None
+    return Oscillator(m=m, c=c, k=k), None
 
 
 def _calibration(calibration, n):
@@ -87,7 +87,7 @@ def _reference_output(osc, force, y, h, sensor, n_cal):
     return model, s2, z0
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class StiffnessTrack:
     """Online stiffness estimate: ``t`` (s), ``k`` (N/m) and its standard deviation ``k_std`` (N/m)."""
 
@@ -129,7 +129,7 @@ def track_stiffness(
     >>> from vibration.physics.twin import random_force, stiffness_profile, synthetic_measurements
     >>> t = np.arange(0.0, 120.0, 0.02)
     >>> ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=60.0, drop=0.2)
-    >>> meas = synthetic_measurements(Oscillator(1.0, 0.5, 20.0), t, random_force(t), noise=2e-3, stiffness=ks)
+    >>> meas = synthetic_measurements(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t), noise=2e-3, stiffness=ks)
     >>> tr = track_stiffness(**meas, reference=(1.0, 0.5, 20.0))
     >>> round(float(tr.k[t < 60][-1])), round(float(tr.k[-1]))          # N/m
     (20, 16)
@@ -193,10 +193,10 @@ def track_stiffness(
         p11 = q10 * f10 + q11 * f11 + q12 * s1
         p02, p12, p22 = q02, q12, p22 + q
         x_, v_ = xn, vn
-    return StiffnessTrack(t, ks, kstd, osc, walk, math.sqrt(r_var))
+    return StiffnessTrack(t=t, k=ks, k_std=kstd, reference=osc, walk=walk, sigma=math.sqrt(r_var))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class ChangeDetection:
     """CUSUM on the normalised squared residual of the reference model.
 
@@ -291,7 +291,7 @@ def detect_change(
     --------
     >>> from vibration.physics.twin import random_force, stiffness_profile, synthetic_measurements
     >>> t = np.arange(0.0, 200.0, 0.02)
-    >>> osc, f = Oscillator(1.0, 0.5, 20.0), random_force(t, seed=4)
+    >>> osc, f = Oscillator(m=1.0, c=0.5, k=20.0), random_force(t, seed=4)
     >>> ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=120.0, drop=0.05)
     >>> healthy = detect_change(**synthetic_measurements(osc, t, f, noise=2e-3, seed=5))
     >>> faulty = detect_change(**synthetic_measurements(osc, t, f, noise=2e-3, seed=5, stiffness=ks))
@@ -316,15 +316,15 @@ def detect_change(
         zeros = np.nonzero(g[n_cal:alarm] == 0.0)[0]
         onset = float(t[n_cal + zeros[-1] + 1]) if zeros.size else float(t[n_cal])
     return ChangeDetection(
-        float(t[alarm]) if alarm is not None else None,
-        alarm,
-        onset,
-        t,
-        g,
-        r,
-        threshold,
-        drift,
-        math.sqrt(s2),
-        osc,
-        float(t[n_cal]),
+        alarm_time=float(t[alarm]) if alarm is not None else None,
+        alarm_index=alarm,
+        change_time=onset,
+        t=t,
+        statistic=g,
+        residual=r,
+        threshold=threshold,
+        drift=drift,
+        sigma=math.sqrt(s2),
+        reference=osc,
+        calibration_end=float(t[n_cal]),
     )

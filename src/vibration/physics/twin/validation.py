@@ -158,8 +158,8 @@ def cubic_response(osc: Oscillator, k3: float, t, force, substeps: int = 8) -> n
     >>> from vibration.physics.twin import random_force
     >>> t = np.arange(0.0, 10.0, 0.02)
     >>> f = random_force(t, seed=1)
-    >>> bool(np.max(np.abs(cubic_response(Oscillator(1, 0.5, 20), 0.0, t, f) - sampled_response(
-    ...     Oscillator(1, 0.5, 20), t, f).x)) < 1e-8)
+    >>> bool(np.max(np.abs(cubic_response(Oscillator(m=1, c=0.5, k=20), 0.0, t, f) - sampled_response(
+    ...     Oscillator(m=1, c=0.5, k=20), t, f).x)) < 1e-8)
     True
     """
     _check_osc(osc)
@@ -214,7 +214,10 @@ def _response_jacobian(osc: Oscillator, t, force) -> np.ndarray:
         hi[j] += step
         lo[j] -= step
         cols.append(
-            (sampled_response(Oscillator(*hi), t, force).x - sampled_response(Oscillator(*lo), t, force).x)
+            (
+                sampled_response(Oscillator(m=hi[0], c=hi[1], k=hi[2]), t, force).x
+                - sampled_response(Oscillator(m=lo[0], c=lo[1], k=lo[2]), t, force).x
+            )
             / (2.0 * step)
         )
     zero = np.zeros_like(force)
@@ -245,7 +248,7 @@ def predicted_coverage(osc: Oscillator, t, force, colour: float = 0.0) -> np.nda
     --------
     >>> from vibration.physics.twin import random_force
     >>> t = np.arange(0.0, 30.0, 0.02)
-    >>> p = predicted_coverage(Oscillator(1.0, 0.5, 20.0), t, random_force(t), 0.0)
+    >>> p = predicted_coverage(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t), 0.0)
     >>> [round(float(v), 3) for v in p]
     [0.95, 0.95, 0.95]
     """
