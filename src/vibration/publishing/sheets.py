@@ -570,9 +570,36 @@ def _source_tree() -> Path:
     )
 
 
+def build_wheel(folder: Path) -> Path:
+    """The package's wheel, built into ``folder`` from a copy of its sources; returns its path.
+
+    A copy, so setuptools' scratch folders (``build/lib``, which would keep deleted modules) stay out of the
+    project; the same sources give the same bytes (zip times from ``SOURCE_DATE_EPOCH``), so an unchanged
+    package leaves the book's downloads, and so the book, unchanged.
+    """
+    import subprocess
+
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix="vibration-wheel-") as tmp:
+        tree = _source_tree()
+        copy = Path(tmp) / "src-copy"
+        copy.mkdir()
+        for name in ("pyproject.toml", "README.md", "LICENSE", "LICENSE-text"):
+            if (tree / name).is_file():
+                shutil.copy2(tree / name, copy / name)
+        shutil.copytree(tree / "src", copy / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+        cmd = [sys.executable, "-m", "pip", "wheel", str(copy), "--no-deps", "--no-build-isolation", "-q"]
+        env = {**os.environ, "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "315532800")}
+        done = subprocess.run([*cmd, "-w", str(folder)], capture_output=True, text=True, timeout=300, env=env)
+    wheel = folder / wheel_name()
+    if done.returncode != 0 or not wheel.exists():
+        raise RuntimeError(f"the package's wheel was not built: {done.stderr.strip()[-400:]}")
+    return wheel
+
+
 def write_downloads(pages, folder: Path) -> list[Path]:
     """Each chapter's executed notebook and the package's wheel in ``folder`` (copied into the book)."""
-    import subprocess
 
     import nbformat
 
@@ -586,21 +613,6 @@ def write_downloads(pages, folder: Path) -> list[Path]:
         written.append(path)
     wheel = folder / wheel_name()
     if not wheel.exists():
-        # built from a copy, so setuptools' scratch folders (build/lib, which would keep deleted modules) stay out
-        # of the project; the same sources give the same bytes (zip times from SOURCE_DATE_EPOCH), so an unchanged
-        # package leaves the book's downloads, and so the book, unchanged
-        with tempfile.TemporaryDirectory(prefix="vibration-wheel-") as tmp:
-            tree = _source_tree()
-            copy = Path(tmp) / "src-copy"
-            copy.mkdir()
-            for name in ("pyproject.toml", "README.md", "LICENSE", "LICENSE-text"):
-                if (tree / name).is_file():
-                    shutil.copy2(tree / name, copy / name)
-            shutil.copytree(tree / "src", copy / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
-            cmd = [sys.executable, "-m", "pip", "wheel", str(copy), "--no-deps", "--no-build-isolation", "-q"]
-            env = {**os.environ, "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "315532800")}
-            done = subprocess.run([*cmd, "-w", str(folder)], capture_output=True, text=True, timeout=300, env=env)
-        if done.returncode != 0 or not wheel.exists():
-            raise RuntimeError(f"the package's wheel was not built: {done.stderr.strip()[-400:]}")
+        build_wheel(folder)
     written.append(wheel)
     return written

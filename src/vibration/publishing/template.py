@@ -88,7 +88,7 @@ def {topic}_study(params: Params | None = None, **values) -> {record}:
     magnification = 1.0 / np.sqrt((1.0 - r**2) ** 2 + (2.0 * p.{prefix}zeta * r) ** 2)
     i = int(np.argmax(magnification))
     exact = 1.0 / (2.0 * p.{prefix}zeta * math.sqrt(1.0 - p.{prefix}zeta**2)) if p.{prefix}zeta < 2**-0.5 else 1.0
-    return {record}(p.{prefix}zeta, float(r[i]), float(magnification[i]), exact)
+    return {record}(zeta=p.{prefix}zeta, r_peak=float(r[i]), peak=float(magnification[i]), peak_exact=exact)
 '''
 
 _TEXT = '''"""The chapter's sentences and tables, functions of the study's record."""

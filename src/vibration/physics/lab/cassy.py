@@ -25,13 +25,11 @@ from __future__ import annotations
 import csv
 import io
 import math
-import os
 import re
-from pathlib import Path
 
 import numpy as np
 
-from vibration.physics.lab.logger import MAX_FILE_BYTES, MAX_RAGGED_END, MAX_ROWS, MIN_SAMPLES, LoggerRun
+from vibration.physics.lab.logger import MAX_RAGGED_END, MAX_ROWS, MIN_SAMPLES, LoggerRun, read_text_file
 from vibration.physics.model import ParameterError
 
 _HEADER = re.compile(r"(?P<quantity>.+?)\s+(?P<symbol>\S+)\s*/\s*(?P<unit>\S.*)")
@@ -93,24 +91,7 @@ def load_cassy_runs(path) -> list[LoggerRun]:
     >>> runs[0].n, float(runs[0].t[-1]), runs[0].drive_unit
     (25, 2.4, 'V')
     """
-    if isinstance(path, bytes) or not isinstance(path, (str, os.PathLike)):
-        raise ParameterError(f"path = {path!r} is not a path: allowed str or os.PathLike")
-    p = Path(path)
-    name = str(p)
-    try:
-        size = p.stat().st_size
-    except OSError as exc:
-        raise ParameterError(
-            f"path = {name!r} cannot be read: {exc.strerror or exc}: allowed an existing, readable CASSY Lab 2 CSV file"
-        ) from None
-    if not p.is_file():
-        raise ParameterError(f"path = {name!r} is not a file: allowed a CASSY Lab 2 CSV file")
-    if size > MAX_FILE_BYTES:
-        raise ParameterError(f"path = {name!r} has {size} bytes: allowed at most {MAX_FILE_BYTES} bytes")
-    try:
-        text = p.read_bytes().decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        raise ParameterError(f"file {name!r} is not UTF-8 (byte {exc.start}): allowed UTF-8 text") from None
+    name, text = read_text_file(path, "CASSY Lab 2 CSV file")
     first = text.split("\n", 1)[0]
     sep = ";" if ";" in first else ("\t" if "\t" in first else ",")
     rows = list(csv.reader(io.StringIO(text, newline=""), delimiter=sep))

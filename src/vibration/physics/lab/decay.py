@@ -304,6 +304,10 @@ def _half_cycles(theta0, offset, omega_n, zeta, friction, quad, power, p, t_span
     return np.asarray(T), np.asarray(e), np.asarray(centre), np.asarray(zk), (n if stop is None else stop)
 
 
+#: The arguments of :func:`_response_general` after the times, in order.
+_GENERAL_ARGS = ("omega_n", "zeta", "friction", "quadratic", "power", "power_exponent", "offset", "theta0", "t0")
+
+
 def _response_general(t, omega_n, zeta, friction, quad, power, p, offset, theta0, t0):
     """The trace of the energy-balance model (exactly the closed form when quad = power = 0)."""
     if quad == 0.0 and power == 0.0:
@@ -742,23 +746,11 @@ def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
             p["power"] = p["power"] * math.pi / (_sine_power_integral(pe + 1.0) * p["omega_n"] ** (pe - 2.0))
         return p
 
+    def misfit(p):
+        return _response_general(tw, *(p[k] for k in _GENERAL_ARGS)) - yw
+
     def resid(x):
-        p = params(x)
-        return (
-            _response_general(
-                tw,
-                p["omega_n"],
-                p["zeta"],
-                p["friction"],
-                p["quadratic"],
-                p["power"],
-                p["power_exponent"],
-                p["offset"],
-                p["theta0"],
-                p["t0"],
-            )
-            - yw
-        )
+        return misfit(params(x))
 
     lb = np.array([lo[k] for k in free])
     ub = np.array([hi[k] for k in free])
@@ -792,23 +784,7 @@ def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
     xp0 = np.array([phys[k] for k in free])
 
     def resid_phys(v):
-        p = dict(base)
-        p.update(zip(free, v, strict=True))
-        return (
-            _response_general(
-                tw,
-                p["omega_n"],
-                p["zeta"],
-                p["friction"],
-                p["quadratic"],
-                p["power"],
-                p["power_exponent"],
-                p["offset"],
-                p["theta0"],
-                p["t0"],
-            )
-            - yw
-        )
+        return misfit({**base, **dict(zip(free, v, strict=True))})
 
     J = np.empty((r.size, xp0.size))
     scale = np.array([max(abs(v), 1e-3) for v in xp0])
