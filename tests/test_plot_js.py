@@ -175,8 +175,13 @@ def test_helper_loads_twice_and_redraws_at_the_new_width(browser, tmp_path):
     page, outside, errors = open_offline(browser, _blank(tmp_path, body), viewport=(1280, 700))
     try:
         assert page.evaluate("() => window.VibPlot.mark") == 1  # the second copy changed nothing
-        width = page.evaluate("() => document.getElementById('s').viewBox.baseVal.width")
-        assert width == pytest.approx(page.evaluate("() => document.getElementById('s').clientWidth"), abs=1)
+        # the first draw may come before layout; the resize observer redraws at the laid-out width
+        page.wait_for_function(
+            "() => { const s = document.getElementById('s');"
+            " return Math.abs(s.viewBox.baseVal.width - s.clientWidth) <= 1; }",
+            timeout=10_000,
+        )
+        assert page.evaluate("() => document.getElementById('s').clientWidth") > 1000
         sub = page.evaluate("() => [...document.querySelectorAll('#s tspan')].map(t => t.textContent)")
         assert "n" in sub  # ω_n: the n is a subscript
         assert page.evaluate("() => document.querySelectorAll('#s polyline').length") == 2  # NaN breaks the line
