@@ -210,12 +210,18 @@ def objectives(chapter: str) -> _Block:
     )
 
 
-_INTRO = (
-    'Every number below follows this run\'s parameters. In JupyterLab, `check("{first}", answer)` says whether '
-    "an answer is right within the stated tolerance and gives a hint if not, without giving the answer away. "
+_INTRO = "Every number below follows this run's parameters. "
+#: In the notebook the reader can call the checker; the book's page names no code and no tool.
+_INTRO_NOTEBOOK = (
+    _INTRO
+    + 'In JupyterLab, `check("{first}", answer)` says whether an answer is right within the stated tolerance and '
+    "gives a hint if not, without giving the answer away. The worked answers are in the book, folded under each "
+    "exercise, and in its appendix."
 )
-_INTRO_NOTEBOOK = _INTRO + "The worked answers are in the book, folded under each exercise, and in its appendix."
-_INTRO_BOOK = _INTRO + "The worked answers are folded under each exercise."
+_INTRO_BOOK = (
+    _INTRO + "The worked answers are folded under each exercise; the chapter's notebook, downloaded above, checks "
+    "an answer within its tolerance and gives a hint without showing the answer."
+)
 
 #: Key of the exercise section's output metadata: the chapter and the parameters it was shown with.
 SECTION_KEY = "vibration-exercises"
