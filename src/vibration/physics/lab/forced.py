@@ -22,6 +22,7 @@ import math
 import numpy as np
 from scipy import optimize
 
+from vibration.physics.checks import check_array
 from vibration.physics.lab.decay import _sine_power_integral
 from vibration.physics.model import ParameterError, check_real
 
@@ -116,17 +117,8 @@ MAX_OMEGA_STEP = 0.2
 
 
 def _coefficient_array(name, value, n, *, low, high, unit=""):
-    try:
-        a = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
-    except (TypeError, ValueError):
-        raise ParameterError(
-            f"{name} = {value!r:.80} is not a real number: allowed finite values {low} to {high} {unit}".rstrip()
-        ) from None
-    if not np.all(np.isfinite(a)) or np.any(a < low) or np.any(a > high):
-        raise ParameterError(
-            f"{name} = {value!r:.80} is out of range: allowed finite values {low} to {high} {unit}".rstrip()
-        )
-    return a
+    """``value`` (one number, or one per wheel) checked by the shared validator and spread over ``n`` wheels."""
+    return np.broadcast_to(check_array(name, value, low=low, high=high, unit=unit), (n,)).copy()
 
 
 def simulate_driven(
