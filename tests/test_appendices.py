@@ -8,7 +8,7 @@ from importlib.resources import files
 import pytest
 
 from vibration.publishing.appendices import symbols_markdown, usage_markdown
-from vibration.publishing.report import chapter_packages, chapter_schemas
+from vibration.publishing.registry import chapter_packages, chapter_schemas
 
 USAGE = [
     (pkg, files(f"vibration.chapters.{pkg}").joinpath("usage.md"))

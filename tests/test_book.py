@@ -19,11 +19,13 @@ import pytest
 from conftest import CHROMIUM, SCREENSHOTS, open_offline
 
 from vibration.publishing import report
-from vibration.publishing.book import BOOK_TITLE, PARTS, split_help, summary
+from vibration.publishing.book import split_help, summary
+from vibration.publishing.registry import read_contents
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = sorted(p for p in (ROOT / "notebooks").glob("*.ipynb"))
 CHAPTERS = [p.stem for p in NOTEBOOKS if not p.stem.startswith("00_")]
+CONTENTS = read_contents(ROOT)
 
 
 @pytest.fixture(scope="module")
@@ -148,7 +150,7 @@ def test_pdf_has_a_page_or_more_per_chapter(printed):
     reader = PdfReader(str(printed / "report.pdf"))
     assert len(reader.pages) >= len(CHAPTERS) + 1
     texts = [" ".join((page.extract_text() or "").replace("\u2019", "'").split()) for page in reader.pages]
-    assert texts[0].startswith(BOOK_TITLE) or BOOK_TITLE in texts[0]
+    assert texts[0].startswith(CONTENTS.title) or CONTENTS.title in texts[0]
     starts = []
     for nb_path in [p for p in NOTEBOOKS if not p.stem.startswith("00_")]:
         nb = json.loads(nb_path.read_text(encoding="utf-8"))
@@ -157,7 +159,7 @@ def test_pdf_has_a_page_or_more_per_chapter(printed):
         pages = [
             i
             for i, t in enumerate(texts)
-            if re.sub(r"^vibdoc\d+mark ", "", t.replace(BOOK_TITLE, "", 1).strip()).startswith(head)
+            if re.sub(r"^vibdoc\d+mark ", "", t.replace(CONTENTS.title, "", 1).strip()).startswith(head)
         ]
         later = [i for i in pages if i > (starts[-1] if starts else 0)]
         assert later, f"{title!r} is not in the PDF after the previous chapter ({pages})"
@@ -211,9 +213,8 @@ def test_every_chapter_is_reachable_from_the_sidebar_of_every_page(visited):
         targets = facts["targets"]
         for name in CHAPTERS:
             assert f"{name}.html" in targets or (path.stem == name and "" in targets), (path.name, name)
-        for caption, lo, _ in PARTS:
-            if any(int(n.split("_")[0]) >= lo for n in CHAPTERS):
-                assert caption in facts["sidebar"], (path.name, caption)
+        for part in CONTENTS.parts:
+            assert part.title in facts["sidebar"], (path.name, part.title)
 
 
 @pytest.mark.browser
@@ -319,9 +320,9 @@ def test_the_print_edition_has_a_title_page_contents_and_bookmarks(printed):
 
     reader = PdfReader(str(printed / "report.pdf"))
     texts = [" ".join((page.extract_text() or "").replace("\u2019", "'").split()) for page in reader.pages]
-    assert texts[0].startswith(BOOK_TITLE), texts[0][:200]
+    assert texts[0].startswith(CONTENTS.title), texts[0][:200]
     contents = next(i for i, t in enumerate(texts) if t.startswith("Contents"))
-    listing = texts[contents].removeprefix("Contents").split(f" {BOOK_TITLE} ")[0]  # the header line ends it
+    listing = texts[contents].removeprefix("Contents").split(f" {CONTENTS.title} ")[0]  # the header line ends it
     stop = r"(?= (?:\d+\. |Part |Table |Glossary |Running |Using |Answers |Licences|References|Overview)|$)"
     entries = [(t.strip(), p) for t, p in re.findall(r"(.+?) (\d{1,3})" + stop, listing)]
     entries = [(re.sub(r"^Part [IVX]+: .*? (?=\d+\. )", "", t), p) for t, p in entries]

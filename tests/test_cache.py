@@ -11,6 +11,7 @@ import pytest
 
 from vibration.publishing import report
 from vibration.publishing.cache import ChapterCache, differences, import_closure, manifest, notebook_imports
+from vibration.publishing.registry import add_chapter
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -97,6 +98,7 @@ def test_a_second_run_reuses_unchanged_chapters_and_says_why_others_run(tmp_path
     code = "from vibration.presentation.tables import fmt\nprint(fmt(a * 2))"
     a = report.Chapter(path=_notebook(root / "notebooks" / "01_a.ipynb", code), params={})
     b = report.Chapter(path=_notebook(root / "notebooks" / "02_b.ipynb", code.replace("2)", "3)")), params={})
+    add_chapter("01_a", root, 1), add_chapter("02_b", root, 1)  # the project's table of contents: one part
     chapters = report.discover(root)
     assert [c.name for c in chapters] == [a.name, b.name]
     out = tmp_path / "out"
@@ -129,6 +131,7 @@ def test_nothing_changed_only_checks_and_one_edit_rebuilds_only_its_pages(tmp_pa
     code = "from vibration.presentation.tables import fmt\nprint(fmt(a * 2))"
     _notebook(root / "notebooks" / "01_a.ipynb", code)
     b = _notebook(root / "notebooks" / "02_b.ipynb", code.replace("2)", "3)"))
+    add_chapter("01_a", root, 1), add_chapter("02_b", root, 1)
     chapters = report.discover(root)
     out = tmp_path / "out"
     logs: list[str] = []

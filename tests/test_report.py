@@ -12,6 +12,7 @@ import pytest
 import vibration
 from vibration.physics.model import ParameterError
 from vibration.publishing import engine, report
+from vibration.publishing.registry import add_chapter
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -251,6 +252,7 @@ def _stuck_project(root: Path, seconds: float = 600.0) -> Path:
     )
     nb.cells = [params, nbformat.v4.new_code_cell(spin)]
     nbformat.write(nb, root / "notebooks" / "01_spin.ipynb")
+    add_chapter("01_spin", root, 1)  # its table of contents: one part
     return root
 
 

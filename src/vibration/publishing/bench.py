@@ -32,6 +32,7 @@ from ..physics.frequency import peak_displacement_map
 from ..physics.model import Oscillator, SineForce
 from ..physics.numerics import simulate
 from ..presentation.timing import median_time, table
+from .registry import chapter_packages
 
 
 def bench_exact(quick: bool) -> None:
@@ -242,8 +243,6 @@ def bench_chapters(quick: bool) -> None:
     benchmark runs with no edit here). ``run`` may accept ``median_time`` and ``table``, this module's helpers."""
     import importlib
     import inspect
-
-    from .report import chapter_packages
 
     helpers = {"median_time": median_time, "table": table}
     for pkg in chapter_packages().values():

@@ -31,14 +31,22 @@ from pathlib import Path
 
 import nbformat
 
-BOOK_TITLE = "Resonance and damping, reproduced and audited"
-#: (caption, first chapter number, last chapter number) of the sidebar's parts.
-PARTS = (
-    ("Part I: the paper, reproduced and audited (core course)", 1, 5),
-    ("Part II: beyond the paper (advanced)", 6, 11),
-    ("Part III: the real oscillator (advanced)", 12, 99),
+from .appendices import (
+    APPENDICES,
+    answers_markdown,
+    glossary_markdown,
+    licences_markdown,
+    references_markdown,
+    symbols_markdown,
+    usage_markdown,
 )
-FRONT = 0  # chapter number of the front page
+from .mathml import external_urls
+from .print_edition import print_book
+from .registry import chapter_packages, chapter_schemas
+from .sheets import chapter_blurb, course_plan_markdown, download_cell, fold_answers, write_downloads
+
+#: The title when a build is given none (the runner passes the table of contents' title).
+BOOK_TITLE = "Resonance and damping, reproduced and audited"
 CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = [
     "--no-sandbox",
@@ -82,6 +90,11 @@ class ChapterPage:
     notebook: nbformat.NotebookNode
     parameters: list[Parameter] = field(default_factory=list)
     elapsed_s: float | None = None
+    part: str = ""  # the heading of its part in the table of contents; "" for the front page
+
+    @property
+    def is_front(self) -> bool:
+        return not self.part
 
     @property
     def number(self) -> int | None:
@@ -240,7 +253,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
         cell.metadata.pop("execution", None)
         tags = _tags(cell)
         if cell.cell_type == "code" and ("parameters" in tags or "injected-parameters" in tags):
-            if not params_done and page.parameters and page.number != FRONT:  # the front page: findings first
+            if not params_done and page.parameters and not page.is_front:  # the front page: findings first
                 cells.append(nbformat.v4.new_markdown_cell(parameters_table(page.parameters)))
                 params_done = True
             continue
@@ -259,7 +272,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
             if rest.strip():
                 cells.insert(1, nbformat.v4.new_markdown_cell(rest))
         cells.insert(at, nbformat.v4.new_markdown_cell(banner))
-    if page.number == FRONT and page.parameters:
+    if page.is_front and page.parameters:
         cells.append(nbformat.v4.new_markdown_cell("## Parameters of this run\n\n" + parameters_table(page.parameters)))
     # The execution time stays in the runner's log and return value, not in the reader's text.
     nb.cells = cells
@@ -284,8 +297,8 @@ def findings_markdown(pages: list[ChapterPage]) -> str:
     """The front page's findings of every part: each chapter's key results, as this run computed them."""
     lines = ["## What Parts II and III find", "", "Each chapter opens with its key results; here are those "
              "beyond the paper, computed by this run.", ""]  # fmt: skip
-    for caption, lo, hi in PARTS[1:]:  # the front page states Part I's findings itself
-        members = [(p, key_results(p.notebook)) for p in pages if p.number is not None and lo <= p.number <= hi]
+    for caption, members in parts(pages)[1:]:  # the front page states Part I's findings itself
+        members = [(p, key_results(p.notebook)) for p in members]
         members = [(p, box) for p, box in members if box]
         if not members:
             continue
@@ -389,17 +402,6 @@ suppress_warnings = ["mystnb.unknown_mime_type", "myst.header", "toc.not_include
 
 def write_appendices(src: Path, pages: list[ChapterPage] = ()) -> None:
     """The generated appendices: glossary, parameters, using the package, answers, licences, references."""
-    from .appendices import (
-        APPENDICES,
-        answers_markdown,
-        glossary_markdown,
-        licences_markdown,
-        references_markdown,
-        symbols_markdown,
-        usage_markdown,
-    )
-    from .report import chapter_packages, chapter_schemas
-
     text = {
         "glossary": glossary_markdown(),
         "symbols": symbols_markdown(chapter_schemas()),
@@ -412,16 +414,21 @@ def write_appendices(src: Path, pages: list[ChapterPage] = ()) -> None:
         (src / f"{name}.md").write_text(text[name], encoding="utf-8")
 
 
+def parts(pages: list[ChapterPage]) -> list[tuple[str, list[ChapterPage]]]:
+    """The parts that ``pages`` fill, in the order of their first pages, each with its pages (the front
+    page belongs to none)."""
+    out: dict[str, list[ChapterPage]] = {}
+    for p in pages:
+        if not p.is_front:
+            out.setdefault(p.part, []).append(p)
+    return list(out.items())
+
+
 def _toctree(pages: list[ChapterPage]) -> str:
     blocks = []
-    for caption, lo, hi in PARTS:
-        members = [p for p in pages if p.number is not None and lo <= p.number <= hi]
-        if not members:
-            continue
+    for caption, members in parts(pages):
         entries = "\n".join(p.name for p in members)
         blocks.append(f"```{{toctree}}\n:caption: {caption}\n:maxdepth: 1\n:hidden:\n\n{entries}\n```")
-    from .appendices import APPENDICES
-
     entries = "\n".join(name for name, _ in APPENDICES)
     blocks.append(f"```{{toctree}}\n:caption: Appendices\n:maxdepth: 1\n:hidden:\n\n{entries}\n```")
     return "\n\n".join(blocks)
@@ -430,21 +437,12 @@ def _toctree(pages: list[ChapterPage]) -> str:
 def contents_markdown(pages: list[ChapterPage]) -> str:
     """The front page's list of parts and chapters, one plain sentence each."""
     lines = ["## Chapters", ""]
-    for caption, lo, hi in PARTS:
-        members = [p for p in pages if p.number is not None and lo <= p.number <= hi]
-        if not members:
-            continue
+    for caption, members in parts(pages):
         lines += [f"**{caption}**", ""]
-        from .sheets import chapter_blurb
-
         for p in members:
             lines.append(f"- [{p.title}]({p.name}.ipynb): {chapter_blurb(p.name) or p.summary}")
         lines.append("")
-    from .sheets import course_plan_markdown
-
     lines += [course_plan_markdown(), ""]
-    from .appendices import APPENDICES
-
     lines += ["**Appendices**", ""] + [f"- [{title}]({name}.md)" for name, title in APPENDICES]
     return "\n".join(lines)
 
@@ -455,21 +453,21 @@ def _css() -> str:
     return files("vibration.publishing").joinpath("book.css").read_text(encoding="utf-8")
 
 
-def write_source(pages: list[ChapterPage], src: Path) -> None:
+def write_source(pages: list[ChapterPage], src: Path, title: str = BOOK_TITLE) -> None:
     """Write the Sphinx source tree: conf.py, prepared notebooks, the front page, CSS."""
     src.mkdir(parents=True, exist_ok=True)
     (src / "_static").mkdir(exist_ok=True)
     (src / "_static" / "vibration-book.css").write_text(_css(), encoding="utf-8")
     footer = "Every number on these pages was computed by this run (papermill, then Sphinx)."
-    (src / "conf.py").write_text(CONF.format(title=BOOK_TITLE, footer=footer), encoding="utf-8")
-    front = [p for p in pages if p.number == FRONT]
-    chapters = [p for p in pages if p.number != FRONT]
+    (src / "conf.py").write_text(CONF.format(title=title, footer=footer), encoding="utf-8")
+    front = [p for p in pages if p.is_front]
+    chapters = [p for p in pages if not p.is_front]
     changes = run_changes(pages)
     if front:
         nb = prepare(front[0], changes)
     else:
         nb = nbformat.v4.new_notebook()
-        nb.cells = [nbformat.v4.new_markdown_cell(f"# {BOOK_TITLE}")]
+        nb.cells = [nbformat.v4.new_markdown_cell(f"# {title}")]
         banner = banner_html([], changes)
         if banner:
             nb.cells.append(nbformat.v4.new_markdown_cell(banner))
@@ -480,8 +478,6 @@ def write_source(pages: list[ChapterPage], src: Path) -> None:
     nb.cells.insert(at + 1, nbformat.v4.new_markdown_cell(contents_markdown(chapters)))
     nb.cells.append(nbformat.v4.new_markdown_cell(_toctree(chapters)))
     nbformat.write(nb, src / "index.ipynb")
-    from .sheets import download_cell, fold_answers, write_downloads
-
     write_downloads(chapters, src / "_static" / "downloads")  # the notebooks as students get them: no answers
     for p in chapters:
         fold_answers(p.notebook)  # the book folds each worked answer under its exercise
@@ -528,16 +524,10 @@ def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), ti
     bookmarks, page numbers; see :mod:`vibration.publishing.print_edition`); returns its :class:`Edition`."""
     from playwright.sync_api import sync_playwright
 
-    from .print_edition import print_book
-
     if not Path(CHROMIUM).exists():
         raise RuntimeError(f"{CHROMIUM} is missing: the PDF needs Debian's chromium (make browser installs it)")
-    chapters = [p for p in pages if p.number is not None]  # the front page's heading comes first in the print
-    parts = []
-    for caption, lo, hi in PARTS:
-        first = next((i for i, p in enumerate(chapters) if lo <= p.number <= hi), None)
-        if first is not None:
-            parts.append((caption, first))
+    chapters = [p for p in pages if not p.is_front]  # the front page's heading comes first in the print
+    starts = [(caption, chapters.index(members[0])) for caption, members in parts(pages)]
     options = {
         "format": "A4",
         "print_background": True,
@@ -561,7 +551,7 @@ def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), ti
                 page.goto(html_path.resolve().as_uri())
                 page.wait_for_load_state("load")
                 page.emulate_media(media="print")
-                return print_book(page, pdf_path, title, parts, options)
+                return print_book(page, pdf_path, title, starts, options)
             finally:
                 browser.close()
 
@@ -611,7 +601,9 @@ def _stable_cell_ids(src: Path) -> None:
         nbformat.write(nb, path)
 
 
-def build_incremental(pages: list[ChapterPage], out: Path, work: Path, state: Path, pdf: bool = True) -> dict:
+def build_incremental(
+    pages: list[ChapterPage], out: Path, work: Path, state: Path, *, pdf: bool = True, title: str = BOOK_TITLE
+) -> dict:
     """:func:`build` with a persistent Sphinx folder ``state``: only changed pages are rebuilt, the PDF is
     reprinted only when a page changed, and ``out`` receives a finished copy (the caller swaps it into place).
 
@@ -619,7 +611,7 @@ def build_incremental(pages: list[ChapterPage], out: Path, work: Path, state: Pa
     """
     t0 = time.perf_counter()
     try:
-        write_source(pages, work / "book-src")
+        write_source(pages, work / "book-src", title=title)
         _stable_cell_ids(work / "book-src")
         src = state / "book-src"
         changed = sync_tree(work / "book-src", src)
@@ -635,7 +627,7 @@ def build_incremental(pages: list[ChapterPage], out: Path, work: Path, state: Pa
             if changed or not (printed.is_file() and record.is_file()):
                 record.unlink(missing_ok=True)
                 sphinx_build(src, state / "single", "singlehtml", incremental=True)
-                edition = print_pdf(state / "single" / "index.html", state / "report.part.pdf", pages)
+                edition = print_pdf(state / "single" / "index.html", state / "report.part.pdf", pages, title=title)
                 (state / "report.part.pdf").replace(printed)
                 record.write_text(json.dumps({"pages": edition.page_count}), encoding="utf-8")
                 info["pdf_s"] = time.perf_counter() - t1
@@ -647,7 +639,15 @@ def build_incremental(pages: list[ChapterPage], out: Path, work: Path, state: Pa
         raise
 
 
-def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, state: Path | None = None) -> dict:
+def build(
+    pages: list[ChapterPage],
+    out: Path,
+    work: Path,
+    *,
+    pdf: bool = True,
+    state: Path | None = None,
+    title: str = BOOK_TITLE,
+) -> dict:
     """Build the HTML book into ``out`` (``out/index.html``) and ``out/report.pdf``.
 
     ``work`` holds the Sphinx sources and the single-page build used for the PDF; with ``state``, a
@@ -655,10 +655,10 @@ def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, sta
     Returns timings and the PDF's page count.
     """
     if state is not None:
-        return build_incremental(pages, out, work, state, pdf=pdf)
+        return build_incremental(pages, out, work, state, pdf=pdf, title=title)
     t0 = time.perf_counter()
     src = work / "book-src"
-    write_source(pages, src)
+    write_source(pages, src, title=title)
     sphinx_build(src, out, "html")
     _check_offline(out)
     info = {"html_s": time.perf_counter() - t0}
@@ -666,7 +666,7 @@ def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, sta
         t1 = time.perf_counter()
         single = work / "book-single"
         sphinx_build(src, single, "singlehtml")
-        edition = print_pdf(single / "index.html", out / "report.pdf", pages)
+        edition = print_pdf(single / "index.html", out / "report.pdf", pages, title=title)
         info["pdf_pages"] = edition.page_count
         info["pdf_s"] = time.perf_counter() - t1
     shutil.rmtree(out / ".doctrees", ignore_errors=True)
@@ -677,7 +677,6 @@ def build(pages: list[ChapterPage], out: Path, work: Path, pdf: bool = True, sta
 
 def _check_offline(out: Path) -> None:
     """Refuse a build whose pages would load anything from outside the build folder."""
-    from .mathml import external_urls
 
     bad = {}
     for page in out.glob("*.html"):

@@ -26,6 +26,8 @@ from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
 
+from .registry import chapter_schemas
+
 #: Bump when the manifest's meaning changes, so older entries are not reused.
 VERSION = 1
 #: Packages whose versions enter every manifest (the rest follow from environment.txt).
@@ -120,7 +122,6 @@ def path_parameters(notebook: Path, params: dict, root: Path) -> dict[str, Path]
     A value equal to the declared default is taken relative to the project folder (as the chapter resolves
     it); any other value is the folder itself.
     """
-    from .report import chapter_schemas
 
     schema = chapter_schemas().get(Path(notebook).stem)
     if schema is None:

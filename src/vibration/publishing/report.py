@@ -19,9 +19,7 @@ moved into place only when every chapter succeeded.
 from __future__ import annotations
 
 import argparse
-import math
 import os
-import re
 import shutil
 import signal
 import sys
@@ -32,50 +30,15 @@ from pathlib import Path
 
 from ..physics.model import ParameterError
 from ..presentation.tables import TABLES_ENV
+from .book import ChapterPage, Parameter, differs, split_help
+from .book import build as build_book
+from .cache import ChapterCache, manifest
+from .cli import SUBCOMMANDS, convert, protect_negative_values, terminate
+from .engine import announce, cluster
+from .registry import chapter_schemas, project_root, read_contents
+from .template import new_chapter
 
 KERNEL = "vibration"
-
-
-def chapter_packages() -> dict[str, str]:
-    """Notebook stem -> chapter package name (``vibration.chapters.<name>``), in report order."""
-    import importlib
-    import pkgutil
-
-    from .. import chapters
-
-    out = {}
-    for info in pkgutil.iter_modules(chapters.__path__):
-        if info.ispkg:
-            schema = importlib.import_module(f"{chapters.__name__}.{info.name}.params").SCHEMA
-            out[schema.notebook] = info.name
-    return dict(sorted(out.items()))
-
-
-def chapter_schemas() -> dict:
-    """The parameter schemas of the chapter packages (``vibration.chapters.<name>.params.SCHEMA``), by notebook."""
-    import importlib
-
-    return {
-        nb: importlib.import_module(f"vibration.chapters.{pkg}.params").SCHEMA for nb, pkg in chapter_packages().items()
-    }
-
-
-def project_root() -> Path:
-    """The project folder (holding ``notebooks/``): ``$VIBRATION_ROOT``, the source checkout this package
-    runs from, or the working directory; an installed package without the notebooks says what to set."""
-    env = os.environ.get("VIBRATION_ROOT")
-    if env:
-        return Path(env)
-    here = Path(__file__).resolve()
-    for candidate in (*here.parents, Path.cwd()):
-        if (candidate / "notebooks").is_dir() and (candidate / "src" / "vibration").is_dir():
-            return candidate
-    if (Path.cwd() / "notebooks").is_dir():
-        return Path.cwd()
-    raise ParameterError(
-        "no notebooks/ folder found next to the package or in the working directory: set $VIBRATION_ROOT "
-        "to the project folder (the one holding notebooks/)"
-    )
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -97,11 +60,11 @@ class Chapter:
 
 
 def discover(root: Path | None = None) -> list[Chapter]:
-    """All chapters in ``notebooks/``, sorted by file name."""
+    """All chapters in ``notebooks/``, in the order of the table of contents (``notebooks/contents.toml``)."""
     import papermill
 
-    folder = (root or project_root()) / "notebooks"
-    paths = sorted(p for p in folder.glob("*.ipynb") if not p.name.startswith("."))
+    root = root or project_root()
+    paths = [root / "notebooks" / f"{stem}.ipynb" for stem in read_contents(root).order]
     return [Chapter(path=p, params=papermill.inspect_notebook(str(p))) for p in paths]
 
 
@@ -117,32 +80,6 @@ def select(chapters: list[Chapter], keys: list[str]) -> list[Chapter]:
             raise ParameterError(f"chapter {key!r} does not exist: allowed {names}")
         chosen += [c for c in hits if c not in chosen]
     return [c for c in chapters if c in chosen]
-
-
-def _convert(name: str, text: str, type_name: str):
-    """Parse ``text`` as the declared type of parameter ``name``."""
-    text = text.strip()
-    if type_name == "int":
-        try:
-            return int(text)
-        except ValueError:
-            raise ParameterError(f"{name} = {text!r} is not an integer: allowed an integer") from None
-    if type_name == "float":
-        try:
-            value = float(text)
-        except ValueError:
-            raise ParameterError(f"{name} = {text!r} is not a number: allowed a real number") from None
-        if not math.isfinite(value):
-            raise ParameterError(f"{name} = {text!r} is not finite: allowed a finite real number")
-        return value
-    if type_name == "bool":
-        low = text.lower()
-        if low not in ("true", "false", "1", "0"):
-            raise ParameterError(f"{name} = {text!r} is not a boolean: allowed true or false")
-        return low in ("true", "1")
-    if len(text) >= 2 and text[0] == text[-1] and text[0] in "'\"":  # a quoted literal, as notebooks write them
-        return text[1:-1]
-    return text
 
 
 def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> dict[str, object]:
@@ -173,7 +110,7 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
             raise ParameterError(
                 f"parameter {name!r} (value {text!r}) is not declared by any chapter run: allowed {allowed}"
             )
-        value = _convert(name, text, declared[name])
+        value = convert(name, text, declared[name])
         for ch in chapters:
             if name in ch.params and ch.name in schemas:
                 value = schemas[ch.name][name].check(value)  # each chapter's own range
@@ -230,8 +167,6 @@ def run_chapter(task: ChapterTask) -> dict:
     import logging
 
     import papermill
-
-    from .engine import announce
 
     announce(task.name)
     for name in ("papermill", "traitlets", "nbclient"):
@@ -305,7 +240,6 @@ def execute_notebooks(
 
     ``kernel`` names the kernel (default: the project's when the worker has it); ``scheduler`` an existing cluster.
     """
-    from .engine import cluster
 
     with cluster(jobs, scheduler) as client:
         tasks = [
@@ -325,7 +259,6 @@ def chapter_parameters(ch: Chapter, values: dict) -> list:
     import ast
 
     from ..physics.paper import paper_defaults
-    from .book import Parameter, differs, split_help
 
     paper = paper_defaults()
     schema = chapter_schemas().get(ch.name)
@@ -382,10 +315,6 @@ def run(
     import grimp
     import nbformat
 
-    from .book import ChapterPage
-    from .book import build as build_book
-    from .cache import ChapterCache
-
     out = out.resolve()  # kernels run in notebooks/: every path they get must be absolute
     out.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".report-", dir=out))
@@ -427,18 +356,20 @@ def run(
         if todo:
             _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, cell_timeout, log)
         t_run = time.perf_counter() - t0
+        contents = _contents(chapters)
         pages = [
             ChapterPage(
                 ch.name,
                 nbformat.read(results[ch.name]["executed"], as_version=4),
                 chapter_parameters(ch, values),
                 results[ch.name]["elapsed_s"],
+                part=_part(contents, ch),
             )
             for ch in chapters
         ]
         t1 = time.perf_counter()
         state = out / "book-state" if cache else None  # Sphinx's folder, kept: only changed pages are rebuilt
-        info = build_book(pages, work / "report", work / "book", pdf=pdf, state=state)
+        info = build_book(pages, work / "report", work / "book", pdf=pdf, state=state, title=contents.title)
         shutil.rmtree(work / "book", ignore_errors=True)
         pdf_text = f", PDF {_plural(info['pdf_pages'], 'page')}" if "pdf_pages" in info else ""
         if "pdf_pages" in info and "pdf_s" not in info:
@@ -470,8 +401,6 @@ def run(
 def _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, cell_timeout, log) -> None:
     """Run the chapters of ``todo`` as tasks, longest first; store each as it finishes (the client writes all)."""
     from distributed import wait
-
-    from .engine import cluster
 
     # longest first by the last run's time; chapters never timed after those, the later chapters first (Parts II
     # and III hold the long studies), so a cold build does not end with its longest chapters on one worker
@@ -541,7 +470,6 @@ def _tree_complete(out: Path, pdf: bool) -> bool:
 
 
 def _manifest(ch: Chapter, params: dict, graph) -> dict[str, str]:
-    from .cache import manifest
 
     return manifest(ch.path, params, ch.path.parent.parent, graph)
 
@@ -552,6 +480,17 @@ def _why(reasons: tuple[str, ...]) -> str:
     return shown + (f" and {len(reasons) - 3} more" if len(reasons) > 3 else "")
 
 
+def _contents(chapters: list[Chapter]):
+    """The table of contents of the project the chapters come from."""
+    return read_contents(chapters[0].path.parent.parent) if chapters else read_contents()
+
+
+def _part(contents, ch: Chapter) -> str:
+    """The heading of the part ``ch`` belongs to ("" for the front page)."""
+    part = contents.part_of(ch.name)
+    return part.title if part else ""
+
+
 def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True) -> dict:
     """Build the book from the committed notebooks as they are (their stored outputs), no kernel.
 
@@ -559,17 +498,18 @@ def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True) -> d
     """
     import nbformat
 
-    from .book import ChapterPage
-    from .book import build as build_book
-
     out = Path(out).resolve()
     out.parent.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".book-", dir=out.parent))
     try:
+        contents = _contents(chapters)
         pages = [
-            ChapterPage(ch.name, nbformat.read(ch.path, as_version=4), chapter_parameters(ch, {})) for ch in chapters
+            ChapterPage(
+                ch.name, nbformat.read(ch.path, as_version=4), chapter_parameters(ch, {}), part=_part(contents, ch)
+            )
+            for ch in chapters
         ]
-        return build_book(pages, out, work, pdf=pdf)
+        return build_book(pages, out, work, pdf=pdf, title=contents.title)
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
@@ -610,14 +550,6 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
         log(f"{ch.name} re-executed in {time.perf_counter() - start:.1f} s")
 
 
-#: The runner's subcommands (its first argument, which no chapter may take as its name): name -> the
-#: ``module:function`` that takes the remaining arguments and returns the exit status.
-SUBCOMMANDS = {
-    "sweep": "vibration.publishing.sweep:main",
-    "exercises": "vibration.publishing.sheets:main",
-}
-
-
 def _subcommand(name: str, argv: list[str]) -> int:
     import importlib
 
@@ -655,12 +587,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--new-chapter", metavar="NN_topic", help="write a new chapter from the template (package, notebook, test)"
     )
+    parser.add_argument(
+        "--part", type=int, default=2, help="with --new-chapter: the part of the contents it joins (default: 2)"
+    )
     parser.add_argument("--in-place", action="store_true", help="re-execute notebooks/ in place (no parameters)")
     parser.add_argument(
         "--check-lab", metavar="DIR", help="validate a lab data folder (runs.csv, logger files) and exit"
     )
-    args = parser.parse_args(_protect_negative_values(argv))
-    previous = signal.signal(signal.SIGTERM, _terminate)
+    args = parser.parse_args(protect_negative_values(argv))
+    previous = signal.signal(signal.SIGTERM, terminate)
     try:
         if args.check_lab:
             from ..physics.lab.manifest import check_lab_data
@@ -668,9 +603,7 @@ def main(argv: list[str] | None = None) -> int:
             print(check_lab_data(args.check_lab).summary())
             return 0
         if args.new_chapter:
-            from .template import new_chapter
-
-            for path in new_chapter(args.new_chapter, project_root()):
+            for path in new_chapter(args.new_chapter, project_root(), part=args.part):
                 print(f"wrote {path.relative_to(project_root())}")
             return 0
         chapters = select(discover(), args.chapters)
@@ -707,32 +640,6 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         signal.signal(signal.SIGTERM, previous)
     return 0
-
-
-def _protect_negative_values(argv: list[str]) -> list[str]:
-    """``-p c_low -2e4``: argparse would read ``-2e4`` as an option; a leading space keeps it a value.
-
-    Examples
-    --------
-    >>> _protect_negative_values(["-p", "c_low", "-2e4", "01"])
-    ['-p', 'c_low', ' -2e4', '01']
-    >>> _protect_negative_values(["-p", "m", "--no-pdf"])  # a missing value stays missing
-    ['-p', 'm', '--no-pdf']
-    """
-    out = list(argv)
-    for i in range(2, len(out)):
-        if out[i - 2] in ("-p", "--parameter") and _NEGATIVE.match(out[i]):
-            out[i] = " " + out[i]
-    return out
-
-
-#: A negative number (``-2``, ``-2.5e4``, ``-.5``, ``-inf``): an option such as ``--no-pdf`` is not one.
-_NEGATIVE = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
-
-
-def _terminate(signum, frame):
-    """SIGTERM ends the run like Ctrl-C, so the temporary folder is removed."""
-    raise KeyboardInterrupt
 
 
 if __name__ == "__main__":

@@ -52,6 +52,8 @@ from ..presentation.exercises import (
     section_markdown,
     section_text,
 )
+from .cli import protect_negative_values
+from .registry import chapter_packages, project_root
 
 __all__ = [
     "ANSWERS_HEADER",
@@ -88,7 +90,6 @@ _RUN_PARAMS: dict[str, object] = {}  # chapter stem -> the parameters its exerci
 
 
 def _packages() -> dict[str, str]:
-    from .report import chapter_packages
 
     return chapter_packages()
 
@@ -467,9 +468,8 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--variants", help="a roster CSV (first column id, then -p names) or a number N of sets")
     parser.add_argument("--seed", type=int, default=0, help="seed of --variants N (default 0)")
     parser.add_argument("--out", required=True, help="output folder: sheets/ and tables/answers.csv")
-    from .report import _protect_negative_values
 
-    args = parser.parse_args(_protect_negative_values(list(argv)))
+    args = parser.parse_args(protect_negative_values(list(argv)))
     try:
         mods = _modules()
         stems = [_stem(c) for c in args.chapters] or list(mods)
@@ -564,7 +564,6 @@ def download_cell(stem: str):
 
 def _source_tree() -> Path:
     """The package's source (the folder of its ``pyproject.toml``), wherever the notebooks are."""
-    from .report import project_root
 
     here = Path(__file__).resolve()
     for candidate in (*here.parents, project_root()):

@@ -41,6 +41,9 @@ from pathlib import Path
 import numpy as np
 
 from ..physics.model import ParameterError
+from .cli import convert, protect_negative_values, terminate
+from .engine import announce
+from .registry import chapter_packages, project_root
 
 #: Most points one sweep may have (a budget: a mistyped N cannot queue a billion tasks).
 MAX_POINTS = 1_000_000
@@ -111,7 +114,6 @@ def parse_values(param, spec: str) -> Axis:
     vibration.physics.model.ParameterError: n grid 1:4:3 gives 2.5, not an integer: allowed integer values on an \
 integer grid (e.g. 1:5:3)
     """
-    from .report import _convert
 
     name, text = param.name, spec.strip()
     type_name = "int" if _is_int(param) else "float" if isinstance(param.default, float) else "str"
@@ -119,7 +121,7 @@ integer grid (e.g. 1:5:3)
         raise ParameterError(f"{name} grid {spec!r} is empty: allowed START:STOP:N, START:STOP:Nlog or V1,V2,...")
     parts = text.split(":")
     if len(parts) == 3 and type_name != "str":
-        start, stop = (_convert(name, s, "float") for s in parts[:2])
+        start, stop = (convert(name, s, "float") for s in parts[:2])
         count, log = parts[2].strip(), parts[2].strip().lower().endswith("log")
         count = count[:-3] if log else count
         try:
@@ -151,7 +153,7 @@ integer grid (e.g. 1:5:3)
         else:
             values = tuple(float(v) for v in raw)
     else:
-        values = tuple(_convert(name, s, type_name) for s in text.split(",") if s.strip())
+        values = tuple(convert(name, s, type_name) for s in text.split(",") if s.strip())
         if not values:
             raise ParameterError(f"{name} grid {spec!r} is empty: allowed START:STOP:N, START:STOP:Nlog or V1,V2,...")
         log = False
@@ -162,7 +164,6 @@ integer grid (e.g. 1:5:3)
 
 def _resolve(chapter: str) -> tuple[str, str]:
     """(notebook stem, package) of a chapter named by stem, number or topic, that declares key results."""
-    from .report import chapter_packages
 
     packages = chapter_packages()
     found = None
@@ -205,7 +206,6 @@ def make_grid(chapter: str, grid: Mapping[str, Sequence | str], params: Mapping 
     parameter: unknown, swept twice or also fixed, out of range, an empty grid, or a combination the
     schema's rules refuse.
     """
-    from .report import _convert
 
     stem, package = _resolve(chapter)
     schema = _schema(package)
@@ -241,7 +241,7 @@ def make_grid(chapter: str, grid: Mapping[str, Sequence | str], params: Mapping 
             raise ParameterError(f"parameter {name!r} is both swept and fixed: allowed one of -g {name} or -p {name}")
         param = schema[name]
         if isinstance(value, str) and not param.choices:
-            value = _convert(name, value, "int" if _is_int(param) else "float")
+            value = convert(name, value, "int" if _is_int(param) else "float")
         fixed_in[name] = param.check(value)
     fixed = schema.defaults() | schema.check(fixed_in)
     for a in axes:
@@ -268,7 +268,6 @@ class PointTask:
 
 def run_point(task: PointTask) -> dict:
     """The chapter's study at one point, on a worker: its key results, or NaN and the error's message."""
-    from .engine import announce
 
     announce(f"point {task.index}")
     keys = _key_results(task.package)
@@ -472,7 +471,6 @@ def _cf_unit(unit: str) -> str:
 
 def project_commit() -> str:
     """The project's git commit (``unknown`` outside a checkout), with ``+changes`` when the tree differs."""
-    from .report import project_root
 
     try:
         root = project_root()
@@ -658,7 +656,6 @@ def summary(ds, grid: Grid, figures: Sequence[str] = ()) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     """``python -m vibration.report sweep ...``: see the module's docstring."""
-    from .report import _protect_negative_values, _terminate
 
     parser = argparse.ArgumentParser(prog="python -m vibration.report sweep", description=__doc__.split("\n\n")[0])
     parser.add_argument("chapter", help="the chapter (stem, number or topic), one that declares key results")
@@ -671,8 +668,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--scheduler", metavar="ADDRESS", help="run on this Dask scheduler instead")
     parser.add_argument("--resume", action="store_true", help="compute only the points missing from --out")
     parser.add_argument("--no-progress", action="store_true", help="no progress bar")
-    args = parser.parse_args(_protect_negative_values(list(sys.argv[2:] if argv is None else argv)))
-    previous = signal.signal(signal.SIGTERM, _terminate)
+    args = parser.parse_args(protect_negative_values(list(sys.argv[2:] if argv is None else argv)))
+    previous = signal.signal(signal.SIGTERM, terminate)
     out = Path(args.out).resolve()
     grid = {}
     try:

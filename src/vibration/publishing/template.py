@@ -11,8 +11,8 @@
 
 The template's physics is a placeholder a chapter author replaces: the resonant peak of the
 linear magnification, found on a grid and compared with its closed form. The runner finds the
-chapter by its schema, range-checks its ``-p`` values and builds it into the book with no central
-edit; a chapter number above the last part's first number lands in that part (``book.PARTS``).
+chapter by its schema, range-checks its ``-p`` values and builds it into the book; the chapter joins
+the part of the table of contents (``notebooks/contents.toml``) its author names, at its end.
 """
 
 from __future__ import annotations
@@ -22,6 +22,8 @@ import re
 from pathlib import Path
 
 from ..physics.model import ParameterError
+from .cli import SUBCOMMANDS
+from .registry import add_chapter
 
 _STEM = re.compile(r"(?P<number>[0-9]{2})_(?P<topic>[a-z][a-z0-9_]{1,40})")
 
@@ -183,7 +185,9 @@ def _notebook(stem: str, title: str, question: str, topic: str, prefix: str) -> 
     }
 
 
-def new_chapter(stem: str, root: Path, package_dir: Path | None = None, prefix: str = "") -> list[Path]:
+def new_chapter(
+    stem: str, root: Path, *, part: int = 2, package_dir: Path | None = None, prefix: str = ""
+) -> list[Path]:
     """Write a chapter from the template; returns the files written (none is overwritten).
 
     Parameters
@@ -192,6 +196,9 @@ def new_chapter(stem: str, root: Path, package_dir: Path | None = None, prefix: 
         ``NN_topic``: the chapter number (two digits) and a lower-case topic name, e.g. ``13_damping_map``.
     root : Path
         The project folder (``notebooks/`` and ``tests/`` are written there).
+    part : int
+        The part of the table of contents (``notebooks/contents.toml``, 1-based) the chapter joins, at its
+        end; a project without a table of contents gets one whose only part holds the chapter.
     package_dir : Path, optional
         Where the chapter package goes (default ``src/vibration/chapters`` under ``root``).
     prefix : str
@@ -201,7 +208,6 @@ def new_chapter(stem: str, root: Path, package_dir: Path | None = None, prefix: 
     if not m:
         raise ParameterError(f"stem = {stem!r} is not a chapter name: allowed NN_topic, e.g. 13_damping_map")
     topic = m["topic"]
-    from .report import SUBCOMMANDS
 
     if topic in SUBCOMMANDS:  # "python -m vibration.report sweep" must stay the subcommand
         raise ParameterError(
@@ -225,6 +231,7 @@ def new_chapter(stem: str, root: Path, package_dir: Path | None = None, prefix: 
     existing = [p for p in files if p.exists()]
     if existing:
         raise ParameterError(f"stem = {stem!r}: {existing[0]} exists already: allowed a chapter that does not exist")
+    add_chapter(stem, root, part)  # refuses a part that does not exist before anything is written
     for path, text in files.items():
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(text, encoding="utf-8")
