@@ -16,13 +16,14 @@ import contextlib
 import numbers
 import os
 import re
+from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, settings
 
 import vibration
 
-#: pytester runs nbval with the numeric plugin on small notebooks (tests/test_portable.py).
+#: pytester runs nbval with the numeric plugin on small notebooks (tests/notebooks/test_portable.py).
 pytest_plugins = ["pytester"]
 
 settings.register_profile(
@@ -103,6 +104,7 @@ CHROMIUM_ARGS = [
     "--no-first-run",
 ]
 SCREENSHOTS = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "screenshots")
+SCREENSHOT_DIR = Path(SCREENSHOTS)  # the same folder, as a path
 
 
 @pytest.fixture(scope="session")
@@ -155,3 +157,31 @@ def pytest_collection_modifyitems(config, items):
         callspec = getattr(item, "callspec", None)
         if callspec is not None and set(callspec.id.split("-")) & SLOW_PARAMETER_SETS:
             item.add_marker(pytest.mark.slow)
+
+
+def panel_state(page, index: int = 0) -> dict:
+    return page.evaluate(
+        """(i) => {
+            const p = document.querySelectorAll('div.vib-panel')[i];
+            return {
+                points: p.querySelector('svg.vib-time polyline.vib-x').getAttribute('points'),
+                vel: p.querySelector('svg.vib-vel polyline.vib-x').getAttribute('points'),
+                frf: p.querySelector('svg.vib-freq circle.vib-op').getAttribute('cx'),
+                readout: p.querySelector('table.vib-readout').innerText,
+                omega: p.querySelector('output.vib-omega-out').textContent,
+                c: p.querySelector('output.vib-c-out').textContent,
+            };
+        }""",
+        index,
+    )
+
+
+def nbval_sanitize(text: str) -> str:
+    """``text`` after the regex sanitisers of tests/nbval_sanitize.cfg, as strict nbval compares it."""
+    import configparser
+
+    cfg = configparser.ConfigParser()
+    cfg.read(Path(__file__).with_name("nbval_sanitize.cfg"), encoding="utf-8")
+    for section in cfg.sections():
+        text = re.sub(cfg[section]["regex"], cfg[section]["replace"], text)
+    return text

@@ -258,11 +258,11 @@ for _rec in (v.DampingCurve, v.DampingDifference, v.JointBrakeFit, v.LabCheck, v
 for _rec in (v.PooledDecayFit, v.Rig, v.Steadiness):
     fuzz(_rec, record=True, why="a result record the library builds and returns")
 
-# runs at scale: a chapter's study over a grid (the chapter and grid battery is in tests/test_sweep.py)
+# runs at scale: a chapter's study over a grid (the chapter and grid battery is in tests/publishing/test_sweep.py)
 fuzz(v.sweep, chapter="04_frequency_response", grid={"c_nominal": [0.5, 1.0]}, params=None, client=None,
      serial=True, skip=("chapter", "grid", "params", "client", "serial"), check=lambda out: out is not None,
      why="chapter, grid, params: validated against the chapter's schema, refused naming the parameter in "
-     "tests/test_sweep.py; client: a dask Client or None; serial: computes in this process, "
+     "tests/publishing/test_sweep.py; client: a dask Client or None; serial: computes in this process, "
      "not on a cluster")  # fmt: skip
 # teaching: exercises and their check (chapter names and parameters are validated against the schemas)
 fuzz(v.exercises, chapter="04_frequency_response", params={"c_nominal": 0.8},

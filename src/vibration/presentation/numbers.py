@@ -20,7 +20,7 @@ Rules
   declared beside the value and is what the regression comparison applies (see ``tests/nbval_numeric.py``).
 
 The panels' JavaScript (``assets/plot.js``) implements :func:`sig` and the power-of-ten rule again for
-the browser; ``tests/test_plot_js.py`` compares the two character for character.
+the browser; ``tests/presentation/test_plot_js.py`` compares the two character for character.
 
 Examples
 --------

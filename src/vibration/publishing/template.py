@@ -6,7 +6,7 @@
   computation, a frozen record), ``text.py`` (a table and a sentence from the record);
 * ``notebooks/13_topic.ipynb`` (title, question, parameters cell matching the schema, one call per
   table and sentence, versions);
-* ``tests/test_topic.py`` (the study against an independent closed form, the notebook's
+* ``tests/chapters/topic/test_topic.py`` (the study against an independent closed form, the notebook's
   parameters against the schema).
 
 The template's physics is a placeholder a chapter author replaces: the resonant peak of the
@@ -134,7 +134,7 @@ def test_the_grid_peak_meets_the_closed_form(zeta):
 
 
 def test_the_notebook_declares_the_schema():
-    nb = json.loads((Path(__file__).resolve().parents[1] / "notebooks" / "{stem}.ipynb").read_text(encoding="utf-8"))
+    nb = json.loads((Path(__file__).resolve().parents[3] / "notebooks" / "{stem}.ipynb").read_text(encoding="utf-8"))
     cell = next(c for c in nb["cells"] if "parameters" in c["metadata"].get("tags", []))
     assert {{line.split(":")[0] for line in "".join(cell["source"]).splitlines()}} == {{p.name for p in SCHEMA.params}}
 '''
@@ -226,7 +226,7 @@ def new_chapter(
         package / "text.py": _TEXT.format(**fill),
         root / "notebooks" / f"{stem}.ipynb": json.dumps(_notebook(stem, title, question, topic, prefix), indent=1)
         + "\n",
-        root / "tests" / f"test_{topic}.py": _TEST.format(**fill),
+        root / "tests" / "chapters" / topic / f"test_{topic}.py": _TEST.format(**fill),
     }
     existing = [p for p in files if p.exists()]
     if existing:

@@ -1,0 +1,165 @@
+"""Damping laws, damping against amplitude, steadiness, CASSY files and manifests, checked against independent
+computations (SciPy's solve_ivp on the same law, the Coulomb energy balance, numpy directly)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+from vibration.physics.lab import (
+    compare_damping,
+    damping_vs_amplitude,
+    fit_free_decay,
+    fit_free_decays,
+    free_decay_response,
+    load_cassy_runs,
+    load_lab_data,
+    steadiness,
+)
+from vibration.physics.model import ParameterError
+
+W = 4.5
+
+
+def _ode(t, *, zeta=0.0, delta=0.0, b=0.0, a=0.0, p=2.0, theta0=5.0):
+    """Free decay from rest, integrated directly (smooth friction, 1e-4 rad/s regularisation)."""
+
+    def rhs(_t, x):
+        v = x[1]
+        s = math.tanh(v / 1e-4)
+        return [v, -W * W * x[0] - 2 * zeta * W * v - W * W * delta * s - b * v * abs(v) - a * abs(v) ** p * s]
+
+    sol = integrate.solve_ivp(rhs, (0, t[-1]), [theta0, 0.0], method="LSODA", rtol=1e-9, atol=1e-11, t_eval=t)
+    return sol.y[0]
+
+
+T = np.arange(0.0, 30.0, 0.05)
+
+
+@pytest.mark.parametrize(
+    ("law", "kw", "expect"),
+    [
+        ("coulomb+quadratic", {"delta": 0.1, "b": 0.02}, {"coulomb": 0.1, "quadratic": 0.02}),
+        ("coulomb+viscous", {"delta": 0.1, "zeta": 0.01}, {"coulomb": 0.1, "viscous": 0.01}),
+        ("coulomb+power", {"delta": 0.1, "a": 2e-4, "p": 4.0}, {"coulomb": 0.1, "power_exponent": 4.0}),
+    ],
+)
+def test_fits_recover_a_law_integrated_by_scipy(law, kw, expect):
+    y = np.round(_ode(T, **kw) / 0.01745) * 0.01745  # the PASCO encoder's step
+    f = fit_free_decay(T, y, law)
+    for key, value in expect.items():
+        assert f.coefficients[key] == pytest.approx(value, rel=0.08), (key, f.coefficients)
+    assert set(f.coefficients) == set(expect) | ({"power"} if "power" in law else set())
+    assert f.omega_n == pytest.approx(W, rel=2e-3)
+
+
+def test_law_strings():
+    t = np.arange(0.0, 10.0, 0.05)
+    y = free_decay_response(t, W, 0.01, 0.02, theta0=1.0)
+    assert fit_free_decay(t, y, "combined").law == fit_free_decay(t, y, "viscous+coulomb").law == "coulomb+viscous"
+    with pytest.raises(ParameterError, match="quadratic\\+power"):
+        fit_free_decay(t, y, "coulomb+quadratic+power")
+    with pytest.raises(ParameterError, match="law"):
+        fit_free_decay(t, y, "coulomb+cubic")
+
+
+def test_coulomb_energy_balance_and_viscous_ratio():
+    """Coulomb: the half-period amplitude drops by 2 Delta per half period; viscous: zeta_eq is zeta."""
+    t = np.arange(0.0, 12.0, 0.005)
+    c = damping_vs_amplitude(t, free_decay_response(t, W, 0.0, 0.07, theta0=3.0))
+    assert c.n > 10
+    np.testing.assert_allclose(c.loss, 2 * 0.07, atol=2e-3)
+    v = damping_vs_amplitude(t, free_decay_response(t, W, 0.03, 0.0, theta0=3.0))
+    np.testing.assert_allclose(v.zeta_eq, 0.03, atol=5e-4)
+    assert v.amplitude.size == v.zeta_eq.size == v.loss.size == v.t.size
+    # quadratic law: loss per half period (4/3) b X^2 to first order (energy balance), from the direct integration
+    q = damping_vs_amplitude(T, _ode(T, b=0.02, theta0=4.0))
+    big = q.amplitude > 1.0
+    ratio = q.loss[big] / (4.0 / 3.0 * 0.02 * (q.amplitude[big] - q.loss[big] / 2) ** 2)
+    np.testing.assert_allclose(ratio, 1.0, atol=0.05)
+
+
+def test_pooled_errors_are_the_run_to_run_scatter():
+    runs = [(T, free_decay_response(T, W, z, 0.05, theta0=2.0)) for z in (0.004, 0.006, 0.008, 0.01)]
+    p = fit_free_decays(runs, "coulomb+viscous")
+    zs = np.array([f.zeta for f in p.fits])
+    assert p.stderr["zeta"] == pytest.approx(zs.std(ddof=1) / 2.0, rel=1e-9)
+    assert p.mean["zeta"] == pytest.approx(0.007, rel=1e-3)
+    assert p.bic == pytest.approx(sum(f.bic for f in p.fits))
+    assert p.n_runs == 4
+
+
+def test_compare_damping_methods():
+    a = [(T, free_decay_response(T, W, 0.01, 0.0, theta0=x)) for x in (3.0, 3.3, 3.6)]
+    b = [(T, free_decay_response(T, W, 0.015, 0.0, theta0=x)) for x in (3.0, 3.3, 3.6)]
+    d = compare_damping(a, b, (0.5, 2.5))
+    assert d.delta_zeta == pytest.approx(0.005, abs=2e-4) and d.method == "bootstrap over runs"
+    assert d.n_a == d.n_b == 3
+    d2 = compare_damping(a[:2], b, (0.5, 2.5))
+    assert d2.method == "bootstrap over half periods"
+    assert compare_damping(a, b, (0.5, 2.5)).stderr == d.stderr  # fixed seed
+    with pytest.raises(ParameterError, match="band"):
+        compare_damping(a, b, (10.0, 20.0))
+
+
+def test_steadiness_against_an_exact_build_up():
+    t = np.arange(0.0, 40.0, 0.05)
+    w, tau = 4.0, 3.0
+    s = steadiness(t, (1 - np.exp(-t / tau)) * np.sin(w * t), w)
+    assert s.steady and s.t90 == pytest.approx(tau * math.log(10), abs=0.3)
+    cut = t < 8.0  # cut during the build-up: still growing
+    g = steadiness(t[cut], (1 - np.exp(-t[cut] / tau)) * np.sin(w * t[cut]), w)
+    assert not g.steady and g.drift > 0.02
+    beat = np.sin(w * t) + 0.3 * np.sin(1.15 * w * t)
+    assert not steadiness(t, beat, w).steady
+
+
+def _cassy(path, header, rows, sep=";"):
+    path.write_bytes(("\ufeff" + sep.join(header) + "\r\n" + "\r\n".join(sep.join(r) for r in rows)).encode())
+
+
+def test_cassy_german_and_english(tmp_path):
+    n = 40
+    de = [[f"{0.1 * i:.1f}".replace(".", ","), f"{math.sin(i):.3f}".replace(".", ","), "0,01", "1,2"] for i in range(n)]
+    _cassy(tmp_path / "de.csv", ["Zeit t / s", "Weg &b_A1 / rad", "Spannung U_B1 / V", "Frequenz f / Hz"], de)
+    en = [[f"{0.1 * i:.1f}", f"{math.sin(i):.3f}"] for i in range(n)]
+    _cassy(tmp_path / "en.csv", ["Time t / s", "Angle &b_A1 / rad"], en)
+    r_de, r_en = load_cassy_runs(tmp_path / "de.csv")[0], load_cassy_runs(tmp_path / "en.csv")[0]
+    np.testing.assert_allclose(r_de.angle, r_en.angle)
+    np.testing.assert_allclose(r_de.t, 0.1 * np.arange(n), atol=1e-12)
+    assert r_de.drive_unit == "V" and r_en.drive_angle is None
+    bad = [list(r) for r in de]
+    bad[5][1] = "x"
+    _cassy(tmp_path / "bad.csv", ["Zeit t / s", "Weg &b_A1 / rad", "Spannung U_B1 / V", "Frequenz f / Hz"], bad)
+    with pytest.raises(ParameterError, match=r"data row 6 .*column 'Weg &b_A1 / rad'"):
+        load_cassy_runs(tmp_path / "bad.csv")
+
+
+def test_todays_folder_and_manifest_errors(tmp_path):
+    data = load_lab_data(Path(__file__).resolve().parents[3] / "data" / "lab_oscillator")
+    assert len(data.select(kind="free", brake="off")) == len(data.select(kind="free", brake="on")) == 10
+    assert len(data.select(kind="driven")) == 54 and data.sessions == ["decays", "1", "2"]
+    assert data.rig.encoder_step_rad == pytest.approx(math.pi / 180)
+    src = tmp_path / "src.csv"
+    _cassy(src, ["Zeit t / s", "Weg &b_A1 / rad"], [[f"{0.1 * i:.1f}", f"{i % 3}"] for i in range(30)], sep=";")
+    head = "file,kind,brake,brake_current_A,session,run\n"
+    cases = {
+        "src.csv,freee,off,,A,\n": "row 1, column 'kind'",
+        "src.csv,free,off,-1,A,\n": "row 1, column 'brake_current_A'",
+        "src.csv,free,off,,A,2\n": "row 1, column 'run'",
+        "nope.csv,free,off,,A,\n": "row 1, column 'file'",
+        "src.csv,free,,,A,\n": "row 1, column 'brake'",
+        "src.csv,free,off,,A,\nsrc.csv,free,off,,A,\n": "row 2, column 'run'",
+        "../x.csv,free,off,,A,\n": "row 1, column 'file'",
+    }
+    for body, where in cases.items():
+        (tmp_path / "runs.csv").write_text(head + body)
+        with pytest.raises(ParameterError, match=where):
+            load_lab_data(tmp_path)
+    (tmp_path / "runs.csv").write_text("file,kind,brake\nsrc.csv,free,off\n")
+    with pytest.raises(ParameterError, match="header"):
+        load_lab_data(tmp_path)

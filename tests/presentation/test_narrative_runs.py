@@ -1,0 +1,203 @@
+"""Part I chapters run with other parameters say what their own tables say.
+
+Each chapter is executed with papermill (in parallel, into a temporary folder) with changed
+parameters; the sentences are read from the executed notebook's Markdown outputs and the
+tables from the fixed-precision text of its Table outputs, and every statement of a regime,
+of settling, of which case is largest, of a verdict and of the half-power band is checked
+against the run's own table row.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import pytest
+
+from vibration.publishing.report import execute_notebooks
+
+pytestmark = [pytest.mark.notebooks, pytest.mark.slow]
+
+ROOT = Path(__file__).resolve().parents[2]
+NOTEBOOKS = ROOT / "notebooks"
+REGIMES = ("underdamped", "overdamped", "critically damped", "undamped", "unstable")
+
+#: (chapter, parameters) of each run.
+RUNS = {
+    "01-c_high-5": ("01_reproduction", {"c_high": 5.0}),
+    "01-c_low-0.05": ("01_reproduction", {"c_low": 0.05}),
+    "01-omega_res-3.5": ("01_reproduction", {"omega_res": 3.5}),
+    "01-undamped-negative": ("01_reproduction", {"c_low": 0.0, "c_nominal": -0.1}),
+    "02-c_low-0.05": ("02_claims_audit", {"c_low": 0.05}),
+    "02-c_high-5-c_low-0": ("02_claims_audit", {"c_high": 5.0, "c_low": 0.0}),
+    "04-omega_res-3.5": ("04_frequency_response", {"omega_res": 3.5}),
+    "04-c_high-5-c_low-0.05": ("04_frequency_response", {"c_high": 5.0, "c_low": 0.05}),
+    "04-c_low-0-c_high-0.7": ("04_frequency_response", {"c_low": 0.0, "c_high": 7.0}),
+}
+
+
+def parse_tables(nb: dict) -> dict[str, list[dict[str, str]]]:
+    """Every Table output of an executed notebook, by name: rows of {header: cell text}."""
+    tables = {}
+    for cell in nb["cells"]:
+        for out in cell.get("outputs", []):
+            text = "".join(out.get("data", {}).get("text/plain", ""))
+            if not text.startswith("Table tab-"):
+                continue
+            lines = text.splitlines()
+            name = lines[0].split()[1].rstrip(":")
+            header, dashes = lines[1], lines[2]
+            spans = [(m.start(), m.end()) for m in re.finditer(r"-+", dashes)]
+            cols = [header[a : b + (1 if i == len(spans) - 1 else 0)].strip() for i, (a, b) in enumerate(spans)]
+            rows = []
+            for line in lines[3:]:
+                if not line.startswith(tuple("CDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789")):
+                    break
+                if re.match(r"^[a-z]: ", line) or ": " in line[:40] and len(line) > len(dashes) + 5:
+                    break
+                cells = [
+                    line[a : (spans[i + 1][0] if i + 1 < len(spans) else None)].strip()
+                    for i, (a, _) in enumerate(spans)
+                ]
+                rows.append(dict(zip(cols, cells, strict=True)))
+            tables[name] = rows
+    return tables
+
+
+def markdown_outputs(nb: dict) -> list[str]:
+    """The Markdown displayed by the code cells (the generated sentences)."""
+    texts = []
+    for cell in nb["cells"]:
+        for out in cell.get("outputs", []):
+            md = out.get("data", {}).get("text/markdown")
+            if md and out.get("output_type") == "display_data":
+                texts.append("".join(md))
+    return texts
+
+
+@pytest.fixture(scope="module")
+def executed(tmp_path_factory):
+    """Execute every run of :data:`RUNS` once (3 kernels at a time); return {run: notebook dict}."""
+    folder = tmp_path_factory.mktemp("narrative_runs")
+    outs = {key: folder / f"{key}.ipynb" for key in RUNS}
+    # each in its own process, as the runner does (papermill's cwd is process-wide)
+    execute_notebooks([(NOTEBOOKS / f"{RUNS[key][0]}.ipynb", outs[key], RUNS[key][1]) for key in RUNS], jobs=3)
+    return {key: json.loads(out.read_text(encoding="utf-8")) for key, out in outs.items()}
+
+
+def _bullets(texts: list[str]) -> list[str]:
+    return [line[2:] for t in texts for line in t.splitlines() if line.startswith("- **")]
+
+
+def _regimes_in(text: str) -> set[str]:
+    found = set()
+    for word in REGIMES:
+        if re.search(rf"(?<![a-z]){word}(?![a-z])", text):
+            found.add(word)
+    return found
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", [k for k in RUNS if k.startswith("01")])
+def test_reproduction_sentences_follow_the_tables(executed, key):
+    nb = executed[key]
+    tables = parse_tables(nb)
+    rows = tables["tab-reproduction-findings"]
+    # a row per distinct run: "resonance = nominal damping" is one run, so both names find it
+    findings = {name: row for row in rows for name in row["case"].split(" = ")}
+    texts = markdown_outputs(nb)
+    checked = 0
+    for bullet in _bullets(texts):
+        case = re.match(r"\*\*([^*]+)\*\*", bullet).group(1)
+        if case not in findings or " is the resonance run " in bullet:
+            continue
+        row = findings[case]
+        before_settle = bullet.split("; it ")[0]
+        assert _regimes_in(before_settle) == {row["regime"]}, (key, bullet, row)
+        if row["settles by t_end"] == "yes":
+            assert "settles after" in bullet and "has not settled" not in bullet, (key, bullet)
+        else:
+            assert "has not settled" in bullet and "settles after" not in bullet, (key, bullet)
+        checked += 1
+    assert checked >= 4, f"{key}: only {checked} case sentences found"
+    damping = {c: float(findings[c]["peak |x| (m)"]) for c in ("low damping", "nominal damping", "high damping")}
+    largest = max(damping, key=damping.get)
+    said = [m.group(1) for t in texts for m in re.finditer(r"The largest response is the \*\*([^*]+)\*\*", t)]
+    assert said and all(s == largest for s in said), (key, said, damping)
+    changed = RUNS[key][1]
+    key_results = texts[0]
+    assert key_results.startswith("> **Key results**") and "This run changes the paper's parameters" in key_results
+    from vibration.presentation.narrative import PARAMETER_TEXT
+
+    for name, value in changed.items():
+        assert f"{PARAMETER_TEXT[name][0]} = {value:g} ".replace("-", "−") in key_results, (name, key_results)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", [k for k in RUNS if k.startswith("02")])
+def test_audit_sentences_follow_the_table_and_say_when_the_case_changed(executed, key):
+    nb = executed[key]
+    tables = parse_tables(nb)
+    claims = {row["claim"]: row for row in tables["tab-claims-audit"]}
+    details = next(t for t in markdown_outputs(nb) if "**C01** (" in t)
+    for cid, row in claims.items():
+        m = re.search(rf"\*\*{cid}\*\* \(([^)]*(?:\([^)]*\))?[^)]*)\): \*([a-z ]+)\*\.", details)
+        assert m, (key, cid)
+        assert m.group(2) == row["verdict"], (key, cid, m.group(2), row["verdict"])
+    from vibration.physics.audit import changed_text
+    from vibration.physics.paper import load_claims, load_scenarios
+
+    paper = load_scenarios()
+    params = RUNS[key][1]
+    for cl in load_claims():
+        sid = cl["scenario_id"]
+        uses_changed = sid and (
+            ("c_low" in params and sid == "damping_low") or ("c_high" in params and sid == "damping_high")
+        )
+        if uses_changed:
+            assert claims[cl["claim_id"]]["case run"] == "changed", (key, cl["claim_id"])
+            assert f"**{cl['claim_id']}**" in details
+    assert changed_text(paper["damping_low"], paper["damping_low"]) == ""
+    # the audit's regimes are the run's own: with c_high = 5 N s/m the "overdamped" claim is contradicted
+    if params.get("c_high") == 5.0:
+        assert claims["C05"]["exact"] == "underdamped" and claims["C05"]["verdict"] == "physics contradicts"
+    if params.get("c_low") == 0.0:
+        assert claims["C03"]["exact"] == "undamped"
+        assert claims["C14"]["exact"] == "marginal"  # c = 0 forced off omega_n: bounded beats
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", [k for k in RUNS if k.startswith("04")])
+def test_frequency_sentences_follow_the_band_table(executed, key):
+    """Regimes and "inside/outside the half-power band" as the chapter's own tables say."""
+    nb = executed[key]
+    tables = parse_tables(nb)
+    dampings = {row["case"]: row for row in tables["tab-frequency-dampings"]}
+    band_rows = tables["tab-frequency-band"]
+    in_band = next(h for h in band_rows[0] if h.endswith("in band"))
+    band = {row["case"]: row[in_band] for row in band_rows}
+    texts = markdown_outputs(nb)
+    bullets = [b for b in _bullets(texts) if "half-power band" in b and " (c = " in b]
+    assert len(bullets) == 3, (key, bullets)
+    for bullet in bullets:
+        case = re.match(r"\*\*([^*]+)\*\*", bullet).group(1)
+        assert _regimes_in(bullet.split("; ")[0]) == {dampings[case]["regime"]}, (key, bullet)
+        said_in = "**inside the half-power band**" in bullet
+        said_out = "**outside the half-power band**" in bullet
+        if band[case] == "yes":
+            assert said_in and not said_out, (key, bullet, band[case])
+        elif band[case] == "no":
+            assert said_out and not said_in, (key, bullet, band[case])
+        else:  # no band: a footnote mark
+            assert not (said_in or said_out) and "no half-power band" in bullet, (key, bullet, band[case])
+    key_results = next(t for t in texts if t.startswith("> **Key results**"))
+    first = next(s for s in key_results.splitlines() if re.search(r"lies (inside|outside)|no half-power band", s))
+    for case, value in band.items():
+        part = first.split(f"**{case}**")[0].rsplit(";", 1)[-1]
+        if value == "yes":
+            assert "inside" in part, (key, case, first)
+        elif value == "no":
+            assert "outside" in part, (key, case, first)
+    if "omega_res" in RUNS[key][1]:
+        assert f"= {RUNS[key][1]['omega_res']:g} rad/s" in key_results, key_results

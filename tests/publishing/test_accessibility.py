@@ -1,0 +1,60 @@
+"""axe-core (bundled by axe-playwright-python, pinned) on the book's pages, in the theme's light and dark modes.
+
+`make test` checks a sample of pages (the front page, one Part I and one Part II chapter with a panel);
+`make test-slow` checks every page. The site is built from the committed notebooks, as in tests/publishing/test_book.py.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from conftest import open_offline
+
+from vibration.publishing import report
+
+ROOT = Path(__file__).resolve().parents[2]
+SAMPLE = ("index.html", "05_explore.html", "07_control.html")
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("axe") / "report"
+    report.book_from_sources(report.discover(ROOT), out, pdf=False)
+    return out
+
+
+def violations(browser, path: Path, mode: str) -> list[str]:
+    """axe-core's violations on one page in ``mode`` ("light" or "dark"): rule id, impact and the first target."""
+    from axe_playwright_python.sync_playwright import Axe
+
+    page, _outside, errors = open_offline(browser, path, viewport=(1280, 900))
+    try:
+        page.evaluate(
+            "(mode) => { const d = document.documentElement.dataset; d.theme = mode; d.mode = mode; }",
+            mode,
+        )
+        page.wait_for_timeout(200)
+        results = Axe().run(page)
+        found = []
+        for v in results.response["violations"]:
+            targets = [", ".join(n["target"]) for n in v["nodes"][:3]]
+            found.append(f"{path.name} [{mode}] {v['id']} ({v['impact']}, {len(v['nodes'])} nodes): {targets}")
+        return found
+    finally:
+        page.close()
+
+
+@pytest.mark.browser
+@pytest.mark.parametrize("mode", ["light", "dark"], ids=["lightmode", "darkmode"])  # "light" alone marks slow
+def test_sample_pages_have_no_axe_violations(browser, site, mode):
+    found = [v for name in SAMPLE for v in violations(browser, site / name, mode)]
+    assert not found, "\n".join(found)
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@pytest.mark.parametrize("mode", ["light", "dark"], ids=["lightmode", "darkmode"])  # "light" alone marks slow
+def test_every_page_has_no_axe_violations(browser, site, mode):
+    found = [v for path in sorted(site.glob("*.html")) for v in violations(browser, path, mode)]
+    assert not found, "\n".join(found)
