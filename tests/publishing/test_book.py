@@ -445,3 +445,23 @@ def test_front_page_marks_the_core_course_and_the_advanced_parts(site):
         entries = [ln for ln in text.splitlines() if ln.strip().startswith(f"{int(page[:2])}. ") and f"{level}:" in ln]
         assert entries and entries[0].rstrip().endswith("?"), page
     assert "Authors, venue and year not stated" in (site / "references.html").read_text(encoding="utf-8")
+
+
+def test_each_folded_run_of_a_notebook_is_one_closed_fold_of_its_page_with_no_section_inside(site):
+    """The cells a chapter tags "details" (checks, convergence, secondary comparisons) leave its main text:
+    one closed <details> per run of tagged cells, every tagged table and figure inside one, no heading."""
+    import nbformat
+    from bs4 import BeautifulSoup
+
+    folded = 0
+    for path in NOTEBOOKS:
+        tags = [("details" in c.metadata.get("tags", [])) for c in nbformat.read(path, as_version=4).cells]
+        runs = sum(1 for i, t in enumerate(tags) if t and (i == 0 or not tags[i - 1]))
+        page = site / ("index.html" if path.stem.startswith("00_") else f"{path.stem}.html")
+        folds = BeautifulSoup(page.read_text(encoding="utf-8"), "html.parser").select("details.vib-details")
+        assert len(folds) == runs, (path.stem, len(folds), runs)
+        for fold in folds:
+            assert fold.find("section") is None and fold.find(re.compile(r"^h[1-6]$")) is None, path.stem
+            assert fold.find("summary").get_text().startswith("Details") and not fold.has_attr("open"), path.stem
+        folded += runs
+    assert folded >= 10  # the chapters of Part II fold their checks

@@ -263,6 +263,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
             if "show-input" not in tags and not {"hide-input", "remove-input", "remove-cell"} & set(tags):
                 cell.metadata.setdefault("tags", []).append("hide-input")
         cells.append(cell)
+    cells = fold_details(cells)
     banner = banner_html(page.parameters, changes)
     if banner:
         at = 1 if cells and cells[0].cell_type == "markdown" and cells[0].source.lstrip().startswith("# ") else 0
@@ -277,6 +278,65 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
     # The execution time stays in the runner's log and return value, not in the reader's text.
     nb.cells = cells
     return nb
+
+
+#: The cell tag of what a chapter folds away from its main text (checks, convergence, long comparisons).
+DETAILS = "details"
+_HEADING = re.compile(r"^(#{1,6})\s+(.+?)\s*$", re.M)
+
+
+def fold_details(cells: list) -> list:
+    """Each run of consecutive cells tagged :data:`DETAILS` folded into one ``<details>`` section: its
+    summary is the heading the run opens with ("Details" when it opens with none); headings inside it
+    become bold lines, so no section of the page starts inside a fold. The print edition unfolds them.
+
+    >>> md = nbformat.v4.new_markdown_cell
+    >>> a, b, c = md("### Convergence\\n\\nText."), md("## More\\nx"), md("after")
+    >>> a.metadata["tags"] = b.metadata["tags"] = ["details"]
+    >>> [x.source for x in fold_details([a, b, c])]  # doctest: +NORMALIZE_WHITESPACE
+    ['<details class="vib-details"><summary>Details: Convergence</summary>', '\\nText.', '**More**\\nx',
+     '</details>', 'after']
+    """
+    out, run = [], []
+
+    def _what(cells) -> str:
+        """What a run without a heading holds: ": 1 figure, 2 tables"."""
+        figures = tables = 0
+        for cell in cells:
+            for output in cell.get("outputs", []) if cell.cell_type == "code" else []:
+                data = output.get("data", {})
+                figures += "image/png" in data
+                tables += "<table" in "".join(data.get("text/html", ""))
+        parts = [f"{n} {word}{'s' if n > 1 else ''}" for n, word in ((figures, "figure"), (tables, "table")) if n]
+        return f": {', '.join(parts)}" if parts else ""
+
+    def flush():
+        if not run:
+            return
+        first = run[0]
+        title = "Details" + _what(run)
+        if first.cell_type == "markdown":
+            head = _HEADING.match(first.source.lstrip())
+            if head:
+                title = "Details" if head[2] == "Details" else f"Details: {head[2]}"
+                first.source = first.source.lstrip()[head.end() :]
+        for cell in run:
+            if cell.cell_type == "markdown":
+                cell.source = _HEADING.sub(lambda m: f"**{m[2]}**", cell.source)
+        summary = f"<summary>{html.escape(title)}</summary>"
+        out.append(nbformat.v4.new_markdown_cell(f'<details class="vib-details">{summary}'))
+        out.extend(c for c in run if c.cell_type == "code" or c.source.strip())
+        out.append(nbformat.v4.new_markdown_cell("</details>"))
+        run.clear()
+
+    for cell in cells:
+        if DETAILS in _tags(cell):
+            run.append(cell)
+        else:
+            flush()
+            out.append(cell)
+    flush()
+    return out
 
 
 KEY_RESULTS = "> **Key results**"

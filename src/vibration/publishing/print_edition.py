@@ -213,6 +213,7 @@ def print_book(page, pdf_path: Path, title: str, parts: list[tuple[str, int]], p
     from pypdf import PdfReader
 
     setup = [_PRINT_CSS, html.escape(title), html.escape(SUBTITLE), NOTE, parts, html.escape(edition_text())]
+    page.evaluate("document.querySelectorAll('details.vib-details').forEach((d) => { d.open = true; })")  # unfolded
     found = page.evaluate(_SETUP_JS, setup)
     titles, sections = found["titles"], [(int(d), str(t)) for d, t in found["sections"]]
     options = {**pdf_options, "path": str(pdf_path), "tagged": True}
