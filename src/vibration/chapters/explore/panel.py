@@ -224,7 +224,7 @@ data-styles="{e(json.dumps(STYLES))}">
 window 0 to {t_end:g} s</h3>
 <p class="vib-sub">Response from rest, <i>m x'' + c x' + k x = F<sub>0</sub> sin(ωt)</i>, computed in \
 your browser from the closed form (steady state plus transient). Here only ω, c and reset are controls; \
-m, k, F<sub>0</sub>, the window and the RK45 overlay need JupyterLab. The damping slider is logarithmic.</p>
+m, k, F<sub>0</sub>, the window and the RK45 overlay need the running notebook. The damping slider is logarithmic.</p>
 <noscript>This panel needs JavaScript to draw its plots.</noscript>
 <div class="vib-controls">
 <label for="{e(pid)}-omega">forcing frequency ω</label>

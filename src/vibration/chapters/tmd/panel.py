@@ -355,7 +355,7 @@ def sliders_text(st: TMDStudy) -> str:
         "$\\zeta_a$ to Den Hartog's, the H∞ and the H2 tuning of the current μ. The plot shows the magnification "
         "against $r = \\omega/\\omega_p$ with the H∞ curve of the same μ (black dashed), the primary without "
         "absorber (grey), the fixed points P and Q and the peak; a readout lists the peak, P and Q and each rule's "
-        "tuning with the peaks it gives on an undamped and on the current primary. In JupyterLab with a running "
+        "tuning with the peaks it gives on an undamped and on the current primary. In the notebook with a running "
         "kernel these are live widgets computed by the package; in the rendered book, without a kernel, the same "
         f"controls compute the closed forms in your browser. Both start at μ = {mu:g}{moved} with the H∞ tuning "
         f"$f$ = {sig(t.f)}, $\\zeta_a$ = {sig(t.zeta_a)} on an undamped primary ($\\zeta_p$ = 0), where P and Q are "
