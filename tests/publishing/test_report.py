@@ -169,6 +169,7 @@ def test_failed_chapter_leaves_previous_tree_untouched(tmp_path, monkeypatch):
     }
     nb["cells"].insert(3, bad)
     (root / "notebooks" / "02_claims_audit.ipynb").write_text(json.dumps(nb), encoding="utf-8")
+    add_chapter("02_claims_audit", root, 1)
     out = tmp_path / "out"
     (out / "report").mkdir(parents=True)
     (out / "report" / "index.html").write_text("previous", encoding="utf-8")

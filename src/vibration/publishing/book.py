@@ -586,8 +586,8 @@ def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), ti
 
     if not Path(CHROMIUM).exists():
         raise RuntimeError(f"{CHROMIUM} is missing: the PDF needs Debian's chromium (make browser installs it)")
-    chapters = [p for p in pages if not p.is_front]  # the front page's heading comes first in the print
-    starts = [(caption, chapters.index(members[0])) for caption, members in parts(pages)]
+    # each part starts at its first page's heading, counted among all pages (the front page's comes first)
+    starts = [(caption, list(pages).index(members[0])) for caption, members in parts(pages)]
     options = {
         "format": "A4",
         "print_background": True,

@@ -83,9 +83,9 @@ def start_text(study: ExploreStudy) -> str:
 
 
 def controls_text(study: ExploreStudy) -> str:
-    """Which controls exist where: JupyterLab (all of them) and the online book (ω, c and reset)."""
+    """Which controls exist where: the notebook (all of them) and the online book (ω, c and reset)."""
     return (
-        "* **In the running notebook** (a kernel behind it): the forcing frequency ω (rad/s, the Hz value beside it) and the "
+        "* **In the notebook** (a running kernel): the forcing frequency ω (rad/s, the Hz value beside it) and the "
         f"damping c (N s/m, logarithmic, from {num(C_MIN)} to {num(C_MAX)} N s/m, through critical damping) redraw "
         "the figure while the slider moves; boxes for m (kg), k (N/m), $F_0$ (N) and the window "
         r"$t_\mathrm{end}$ (s) apply when Enter is pressed (a value out of range is reported in red and the figure "
@@ -118,7 +118,7 @@ def layout_text(study: ExploreStudy) -> str:
     )
     log = " (logarithmic)" if f.log_magnification else ""
     return (
-        f"In the running notebook the figure shows the displacement x(t) ({w['x']}) and the velocity v(t) ({w['v']}) from "
+        f"In the notebook the figure shows the displacement x(t) ({w['x']}) and the velocity v(t) ({w['v']}) from "
         f"rest, the steady-state amplitudes ±|X| and ±ω|X| {w['envelope']} and the 2 % settling time {w['settle']} "
         f"when it falls inside the window; on the {w['m'].split(',')[0]} the magnification $|X|/(F_0/k)$ against "
         f"ω ({freq_axis}) with {W_N} {w['natural']} and the operating point as a dot; with the check box on, the "
