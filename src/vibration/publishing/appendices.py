@@ -127,7 +127,7 @@ def usage_markdown(packages: list[str]) -> str:
         f"pip install {wheel}",
         "```",
         "",
-        "Each chapter page offers its notebook, with its outputs, to open in JupyterLab beside it. The chapters "
+        "Each chapter page offers its notebook, with its outputs, to open beside it and run. The chapters "
         "call the package `vibration`; these short examples show the same calls outside the book, one per "
         "chapter. Each runs on its own in a fresh Python session (a test runs them).",
         "",

@@ -518,7 +518,7 @@ def write_source(pages: list[ChapterPage], src: Path, title: str = BOOK_TITLE) -
     src.mkdir(parents=True, exist_ok=True)
     (src / "_static").mkdir(exist_ok=True)
     (src / "_static" / "vibration-book.css").write_text(_css(), encoding="utf-8")
-    footer = "Every number on these pages was computed by this run (papermill, then Sphinx)."
+    footer = "Every number on these pages was computed by this run of the chapters."
     (src / "conf.py").write_text(CONF.format(title=title, footer=footer), encoding="utf-8")
     front = [p for p in pages if p.is_front]
     chapters = [p for p in pages if not p.is_front]

@@ -376,7 +376,7 @@ def takeaways_text(st: StabilityStudy) -> str:
         f"and hurts above; for broadband (white-noise) load on the support aim at {num(c_opt, 3)} N s/m."
     )
     lines.append(
-        f"When recovery after a shock matters, aim near ζ ≈ {st.zeta_star:.2f} ({num(st.c_star, 3)} N s/m for this "
+        f"When recovery after a shock matters, aim near ζ = {st.zeta_star:.2f} ({num(st.c_star, 3)} N s/m for this "
         "mass and spring)."
     )
     lines.append(
