@@ -4,8 +4,9 @@ Modules, by concept: :mod:`.measurements` (the record, its file format and input
 :mod:`.sampled` (exact discretisation, sampled response, synthetic records),
 :mod:`.identification` (least squares with intervals, frequency-domain estimates),
 :mod:`.tracking` (Kalman tracking of k, CUSUM change detection), :mod:`.validation` (residual
-tests, records that break the assumptions, first-order coverage) and :mod:`.experiments`
-(Monte Carlo studies). Their public names are re-exported here.
+tests, records that break the assumptions, first-order coverage), :mod:`.experiments` (Monte Carlo
+identification: coverage, error scaling), :mod:`.assumptions` (violated assumptions) and
+:mod:`.detection` (detection trade-offs, fault scenarios). Their public names are re-exported here.
 
 The twin is the linear oscillator ``m x'' + c x' + k x = F(t)`` fed with a measured
 force and compared with a measured displacement ``x`` or acceleration ``a``.
@@ -65,20 +66,20 @@ from __future__ import annotations
 
 import numpy as np  # noqa: F401 - the examples above use np
 
-from .experiments import (  # noqa: F401 - constants and helpers kept reachable as twin.NAME
-    ASSUMPTION_CASES,
-    MAX_EXPERIMENT_SAMPLES,
+from .assumptions import ASSUMPTION_CASES, AssumptionStudy, assumption_study  # noqa: F401 - as twin.NAME
+from .detection import (  # noqa: F401 - constants and helpers kept reachable as twin.NAME
     THRESHOLDS,
-    AssumptionStudy,
-    CoverageExperiment,
     DetectionExperiment,
-    EstimateGrid,
     FaultScenario,
-    assumption_study,
     detection_experiment,
     detection_study,
-    estimate_grid,
     fault_scenario,
+)
+from .experiments import (  # noqa: F401 - constants and helpers kept reachable as twin.NAME
+    MAX_EXPERIMENT_SAMPLES,
+    CoverageExperiment,
+    EstimateGrid,
+    estimate_grid,
     identification_experiment,
     identification_sweep,
 )
