@@ -9,7 +9,8 @@ from pathlib import Path
 import pytest
 
 from vibration.physics.model import ParameterError
-from vibration.publishing.book import ChapterPage, _toctree, parts
+from vibration.publishing.book import ChapterPage, parts
+from vibration.publishing.front_page import toctree_markdown
 from vibration.publishing.registry import CONTENTS_FILE, add_chapter, chapter_packages, read_contents
 from vibration.publishing.report import discover
 from vibration.publishing.template import new_chapter
@@ -100,5 +101,5 @@ def test_the_book_groups_chapters_by_their_part_not_by_their_number():
         ("First", ["01_a", "13_late"]),
         ("Second", ["02_b"]),
     ]
-    tree = _toctree(pages)
+    tree = toctree_markdown(pages)
     assert tree.index(":caption: First") < tree.index("13_late") < tree.index(":caption: Second")

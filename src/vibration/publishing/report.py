@@ -14,6 +14,9 @@ and values out of range are refused before any kernel starts. Output goes to
 ``DIR/report`` (HTML, ``index.html``), ``DIR/tables`` (CSV) and
 ``DIR/notebooks`` (executed copies); it is built in a temporary folder and
 moved into place only when every chapter succeeded.
+
+The chapters and their parameters are :mod:`~vibration.publishing.notebooks`, their execution
+:mod:`~vibration.publishing.execution`; this module runs them (with the cache) and builds the book.
 """
 
 from __future__ import annotations
@@ -25,267 +28,49 @@ import signal
 import sys
 import tempfile
 import time
-from dataclasses import dataclass
 from pathlib import Path
 
 from ..physics.model import ParameterError
-from ..presentation.tables import TABLES_ENV
-from .book import ChapterPage, Parameter, differs, split_help
 from .book import build as build_book
 from .cache import ChapterCache, manifest
-from .cli import SUBCOMMANDS, convert, protect_negative_values, terminate
-from .engine import announce, cluster
-from .registry import chapter_schemas, project_root, read_contents
+from .cli import SUBCOMMANDS, protect_negative_values, terminate
+from .engine import cluster
+from .execution import (
+    CELL_TIMEOUT_S,
+    KERNEL,
+    KERNEL_ARGS,
+    CellTimeout,
+    ChapterTask,
+    execute_in_place,
+    execute_notebooks,
+    kernel_name,
+    run_chapter,
+)
+from .notebooks import Chapter, chapter_parameters, check_parameters, discover, select
+from .pages import ChapterPage
+from .registry import chapter_schemas as chapter_schemas  # importable from here, as before
+from .registry import project_root, read_contents
 from .template import new_chapter
 
-KERNEL = "vibration"
-
-
-@dataclass(frozen=True, kw_only=True)
-class Chapter:
-    """One notebook of the report."""
-
-    path: Path  # source notebook
-    params: dict  # papermill's inspection: name -> {inferred_type_name, default, help}
-
-    @property
-    def name(self) -> str:
-        """File stem, e.g. ``01_reproduction``."""
-        return self.path.stem
-
-    def matches(self, key: str) -> bool:
-        """Whether ``key`` names this chapter (stem, number or stem without number)."""
-        num, _, rest = self.name.partition("_")
-        return key in (self.name, rest) or (key.isdigit() and num.isdigit() and int(key) == int(num))
-
-
-def discover(root: Path | None = None) -> list[Chapter]:
-    """All chapters in ``notebooks/``, in the order of the table of contents (``notebooks/contents.toml``)."""
-    import papermill
-
-    root = root or project_root()
-    paths = [root / "notebooks" / f"{stem}.ipynb" for stem in read_contents(root).order]
-    return [Chapter(path=p, params=papermill.inspect_notebook(str(p))) for p in paths]
-
-
-def select(chapters: list[Chapter], keys: list[str]) -> list[Chapter]:
-    """The chapters named by ``keys`` (all when empty), in report order."""
-    if not keys:
-        return chapters
-    chosen = []
-    for key in keys:
-        hits = [c for c in chapters if c.matches(key)]
-        if not hits:
-            names = ", ".join(c.name for c in chapters)
-            raise ParameterError(f"chapter {key!r} does not exist: allowed {names}")
-        chosen += [c for c in hits if c not in chosen]
-    return [c for c in chapters if c in chosen]
-
-
-def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> dict[str, object]:
-    """Validate ``-p NAME VALUE`` pairs against the schemas of the chapters that declare them.
-
-    Each chapter's schema (its package's ``params.SCHEMA``) is the one source of a parameter's type
-    and range and of the rules that tie several together; a value shared by several chapters must
-    suit each of them. Returns the typed values. Raises :class:`ParameterError` naming the
-    parameter, its value and what is allowed.
-    """
-    schemas = chapter_schemas()
-    asked = {name for name, _ in pairs}
-    missing = [ch.name for ch in chapters if ch.name not in schemas and asked & set(ch.params)]
-    if missing:  # a chapter without a schema runs at its notebook's own values, but takes no -p value
-        raise ParameterError(
-            f"chapter {missing[0]} has no parameter schema, so -p cannot set its parameters: allowed chapters with a "
-            f"package vibration.chapters.<topic> holding params.SCHEMA (python -m vibration.report --new-chapter "
-            f"writes one)"
-        )
-    declared: dict[str, str] = {}
-    for ch in chapters:
-        for name, info in ch.params.items():
-            declared.setdefault(name, info.get("inferred_type_name") or "str")
-    values: dict[str, object] = {}
-    for name, text in pairs:
-        if name not in declared:
-            allowed = ", ".join(sorted(declared))
-            raise ParameterError(
-                f"parameter {name!r} (value {text!r}) is not declared by any chapter run: allowed {allowed}"
-            )
-        value = convert(name, text, declared[name])
-        for ch in chapters:
-            if name in ch.params and ch.name in schemas:
-                value = schemas[ch.name][name].check(value)  # each chapter's own range
-        values[name] = value
-    for ch in chapters:  # the chapter's rules that tie several of its parameters together
-        if ch.name in schemas:
-            schemas[ch.name].check({k: v for k, v in values.items() if k in ch.params})
-    return values
-
-
-def kernel_name() -> str:
-    """The project's kernel if installed (``make setup`` installs it), else ``python3``."""
-    from jupyter_client.kernelspec import KernelSpecManager
-
-    return KERNEL if KERNEL in KernelSpecManager().find_kernel_specs() else "python3"
-
-
-#: Kernel arguments: the runner's output carries no kernel log lines, such as the warning
-#: that the kernel talks over TCP on the loopback interface, or the "KeyboardInterrupt caught"
-#: an idle kernel logs at ERROR when its client interrupts it before every shutdown. A cell's
-#: error still reaches the runner through papermill.
-KERNEL_ARGS = ["--IPKernelApp.log_level=CRITICAL"]
-#: Longest a single cell may run, s: a last resort that a run within the parameters' ranges never meets
-#: (the longest cell of the default run takes about 10 s). A cell that exceeds it fails its chapter,
-#: naming the chapter and the cell; a kernel message that never arrives becomes this failure, not a hang.
-CELL_TIMEOUT_S = 180
-
-
-class CellTimeout(RuntimeError):
-    """A chapter's cell ran longer than :data:`CELL_TIMEOUT_S`."""
-
-
-@dataclass(frozen=True, kw_only=True)
-class ChapterTask:
-    """One chapter's execution, as a task for the engine: everything a worker needs, by value."""
-
-    name: str  # notebook stem
-    source: str  # the notebook's path on the client (used as is when the worker sees the same file)
-    notebook: bytes  # its content (a worker on another machine runs this copy)
-    params: dict
-    cell_timeout: float = CELL_TIMEOUT_S
-    tables: bool = True  # collect the tables the notebook writes
-    kernel: str | None = None  # the kernel to start; None: the project's when the worker has it, else python3
-
-
-def run_chapter(task: ChapterTask) -> dict:
-    """Execute one notebook with papermill on a worker; returns the executed notebook, its tables and seconds.
-
-    Runs on a single-threaded Dask worker (papermill's ``cwd`` changes the working directory of the
-    whole process). The executed copy and the tables stay in a temporary folder of the worker and
-    come back by value: only the client writes the output folder.
-    """
-    import hashlib
-    import logging
-
-    import papermill
-
-    announce(task.name)
-    for name in ("papermill", "traitlets", "nbclient"):
-        logging.getLogger(name).setLevel(logging.ERROR)
-    with tempfile.TemporaryDirectory(prefix="vibration-chapter-") as tmp:
-        tmp = Path(tmp)
-        source = Path(task.source)
-        if not (source.is_file() and hashlib.sha256(source.read_bytes()).digest()
-                == hashlib.sha256(task.notebook).digest()):  # fmt: skip
-            source = tmp / "source" / Path(task.source).name  # another machine: the shipped copy
-            source.parent.mkdir()
-            source.write_bytes(task.notebook)
-        output, tables = tmp / "executed.ipynb", tmp / "tables"
-        tables.mkdir()
-        if task.tables:
-            os.environ[TABLES_ENV] = str(tables)
-        else:
-            os.environ.pop(TABLES_ENV, None)
-        start = time.perf_counter()
-        try:
-            papermill.execute_notebook(
-                str(source),
-                str(output),
-                parameters=dict(task.params),
-                kernel_name=task.kernel or kernel_name(),
-                cwd=str(source.parent),
-                progress_bar=False,
-                log_output=False,
-                execution_timeout=task.cell_timeout,
-                extra_arguments=KERNEL_ARGS,
-            )
-        except TimeoutError as exc:
-            raise CellTimeout(
-                f"{_cell_preview(str(exc))} ran longer than the runner's limit of {task.cell_timeout:g} s"
-            ) from None
-        finally:
-            os.environ.pop(TABLES_ENV, None)
-        elapsed = time.perf_counter() - start
-        return {
-            "notebook": output.read_bytes(),
-            "tables": {p.name: p.read_bytes() for p in sorted(tables.iterdir()) if p.is_file()},
-            "elapsed_s": elapsed,
-        }
-
-
-def _cell_preview(message: str) -> str:
-    """The timed-out cell's first line, from nbclient's message (which quotes the cell between dashed lines,
-    a long cell as the list of its first and last lines).
-
-    >>> _cell_preview("A cell timed out.\\n-------------------\\nstudy = run(a)\\nx = 1\\n-------------------\\n")
-    'the cell starting "study = run(a)"'
-    >>> _cell_preview("A cell timed out.\\n-------------------\\n['import numba', '']\\n...\\n-------------------\\n")
-    'the cell starting "import numba"'
-    """
-    import ast
-
-    parts = message.split("-------------------\n")
-    lines = parts[1].strip().splitlines() if len(parts) > 2 else []
-    if lines and lines[0].startswith("["):
-        try:
-            lines = [ln for ln in ast.literal_eval(lines[0]) if ln.strip()]
-        except (ValueError, SyntaxError):
-            pass
-    return f'the cell starting "{lines[0]}"' if lines else "a cell the message does not quote"
-
-
-def execute_notebooks(
-    runs: list[tuple[Path, Path, dict]], jobs: int = 2, kernel: str | None = None, scheduler: str | None = None
-) -> list[float]:
-    """Execute ``(source, output, parameters)`` runs with papermill, ``jobs`` at a time; seconds each, in order.
-
-    ``kernel`` names the kernel (default: the project's when the worker has it); ``scheduler`` an existing cluster.
-    """
-
-    with cluster(jobs, scheduler) as client:
-        tasks = [
-            ChapterTask(name=f"{Path(src).stem}#{i}", source=str(Path(src).resolve()), notebook=Path(src).read_bytes(),
-                        params=dict(params), tables=False, kernel=kernel)
-            for i, (src, _, params) in enumerate(runs)
-        ]  # fmt: skip
-        futures = [client.submit(run_chapter, task, key=f"chapter-{task.name}", pure=False) for task in tasks]
-        results = client.gather(futures)
-    for (_, out, _), res in zip(runs, results, strict=True):
-        Path(out).write_bytes(res["notebook"])
-    return [res["elapsed_s"] for res in results]
-
-
-def chapter_parameters(ch: Chapter, values: dict) -> list:
-    """The chapter's declared parameters with the values this run used (for the book)."""
-    import ast
-
-    from ..physics.paper import paper_defaults
-
-    paper = paper_defaults()
-    schema = chapter_schemas().get(ch.name)
-    out = []
-    for name, info in ch.params.items():
-        try:
-            default = ast.literal_eval(info.get("default", ""))
-        except (ValueError, SyntaxError):
-            default = info.get("default")
-        meaning, unit = split_help(info.get("help", ""))
-        symbol = ""
-        if schema is not None and name in schema.names():  # the schema is the source; the cell's comment a fallback
-            param = schema[name]
-            meaning, unit, symbol = param.meaning or meaning, param.unit, param.symbol
-        is_paper = name in paper and not differs(default, paper[name])
-        out.append(
-            Parameter(
-                name=name,
-                value=values.get(name, default),
-                default=default,
-                meaning=meaning,
-                unit=unit,
-                paper=is_paper,
-                symbol=symbol,
-            )
-        )
-    return out
+__all__ = [
+    "CELL_TIMEOUT_S",
+    "KERNEL",
+    "KERNEL_ARGS",
+    "CellTimeout",
+    "Chapter",
+    "ChapterTask",
+    "book_from_sources",
+    "chapter_parameters",
+    "check_parameters",
+    "discover",
+    "execute_in_place",
+    "execute_notebooks",
+    "kernel_name",
+    "main",
+    "run",
+    "run_chapter",
+    "select",
+]
 
 
 def _plural(n: int, word: str) -> str:
@@ -521,33 +306,6 @@ def _short(exc: Exception) -> str:
         return f"{name}: {value}"
     lines = [ln for ln in str(exc).splitlines() if ln.strip()]
     return lines[-1].strip() if lines else type(exc).__name__
-
-
-def execute_in_place(chapters: list[Chapter], log=print) -> None:
-    """Re-execute the source notebooks and store their outputs (the nbval references).
-
-    Uses nbclient directly, so no papermill timestamps enter the committed files.
-    """
-    import nbformat
-    from nbclient import NotebookClient
-
-    kernel = kernel_name()
-    for ch in chapters:
-        start = time.perf_counter()
-        nb = nbformat.read(ch.path, as_version=4)
-        NotebookClient(
-            nb,
-            kernel_name=kernel,
-            timeout=CELL_TIMEOUT_S,
-            extra_arguments=KERNEL_ARGS,
-            record_timing=False,
-            resources={"metadata": {"path": str(ch.path.parent)}},
-        ).execute()
-        nb.metadata.pop("widgets", None)
-        for cell in nb.cells:
-            cell.metadata.pop("execution", None)
-        nbformat.write(nb, ch.path)
-        log(f"{ch.name} re-executed in {time.perf_counter() - start:.1f} s")
 
 
 def _subcommand(name: str, argv: list[str]) -> int:

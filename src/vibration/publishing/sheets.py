@@ -29,11 +29,8 @@ import csv
 import html
 import importlib
 import math
-import os
 import re
-import shutil
 import sys
-import tempfile
 import time
 from collections.abc import Mapping
 from pathlib import Path
@@ -53,7 +50,11 @@ from ..presentation.exercises import (
     section_text,
 )
 from .cli import protect_negative_values
-from .registry import chapter_packages, project_root
+from .downloads import build_wheel as build_wheel  # the downloads, importable from here as before
+from .downloads import download_cell as download_cell
+from .downloads import wheel_name as wheel_name
+from .downloads import write_downloads as write_downloads
+from .registry import chapter_packages
 
 __all__ = [
     "ANSWERS_HEADER",
@@ -506,7 +507,7 @@ def main(argv: list[str]) -> int:
 
 
 # ---------------------------------------------------------------------------------------------------------
-# The book: chapter blurbs, the course plan, downloads
+# The book: chapter blurbs and the course plan (the downloads: vibration.publishing.downloads)
 
 #: Weeks of a suggested one-semester course: (weeks, chapters, exercises, what).
 COURSE_PLAN = (
@@ -542,82 +543,3 @@ def course_plan_markdown() -> str:
     ]
     lines += [f"| {w} | {c} | {e} | {t} |" for w, c, e, t in COURSE_PLAN]
     return "\n".join(lines)
-
-
-def wheel_name() -> str:
-    """The file name of the package's wheel as the book offers it."""
-    from importlib.metadata import version
-
-    return f"vibration-{version('vibration')}-py3-none-any.whl"
-
-
-def download_cell(stem: str):
-    """The Markdown cell under a chapter's title: its notebook and the package, as downloads of the book."""
-    import nbformat
-
-    return nbformat.v4.new_markdown_cell(
-        f'<p class="vib-downloads">Download <a href="_static/downloads/{stem}.ipynb" download>this chapter\'s '
-        f'notebook</a> (with its outputs) and <a href="_static/downloads/{wheel_name()}" download>the package</a> '
-        '(see "Using the package").</p>'
-    )
-
-
-def _source_tree() -> Path:
-    """The package's source (the folder of its ``pyproject.toml``), wherever the notebooks are."""
-
-    here = Path(__file__).resolve()
-    for candidate in (*here.parents, project_root()):
-        if (candidate / "pyproject.toml").is_file() and (candidate / "src" / "vibration").is_dir():
-            return candidate
-    raise ParameterError(
-        "the package's source (pyproject.toml beside src/vibration) was not found, so its wheel cannot be offered "
-        "for download: run the book from a source checkout, or set $VIBRATION_ROOT to one"
-    )
-
-
-def build_wheel(folder: Path) -> Path:
-    """The package's wheel, built into ``folder`` from a copy of its sources; returns its path.
-
-    A copy, so setuptools' scratch folders (``build/lib``, which would keep deleted modules) stay out of the
-    project; the same sources give the same bytes (zip times from ``SOURCE_DATE_EPOCH``), so an unchanged
-    package leaves the book's downloads, and so the book, unchanged.
-    """
-    import subprocess
-
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
-    with tempfile.TemporaryDirectory(prefix="vibration-wheel-") as tmp:
-        tree = _source_tree()
-        copy = Path(tmp) / "src-copy"
-        copy.mkdir()
-        for name in ("pyproject.toml", "README.md", "LICENSE", "LICENSE-text"):
-            if (tree / name).is_file():
-                shutil.copy2(tree / name, copy / name)
-        shutil.copytree(tree / "src", copy / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
-        cmd = [sys.executable, "-m", "pip", "wheel", str(copy), "--no-deps", "--no-build-isolation", "-q"]
-        env = {**os.environ, "SOURCE_DATE_EPOCH": os.environ.get("SOURCE_DATE_EPOCH", "315532800")}
-        done = subprocess.run([*cmd, "-w", str(folder)], capture_output=True, text=True, timeout=300, env=env)
-    wheel = folder / wheel_name()
-    if done.returncode != 0 or not wheel.exists():
-        raise RuntimeError(f"the package's wheel was not built: {done.stderr.strip()[-400:]}")
-    return wheel
-
-
-def write_downloads(pages, folder: Path) -> list[Path]:
-    """Each chapter's executed notebook and the package's wheel in ``folder`` (copied into the book)."""
-
-    import nbformat
-
-    folder.mkdir(parents=True, exist_ok=True)
-    written = []
-    for p in pages:
-        nb = nbformat.from_dict(p.notebook)
-        nb.metadata.pop("papermill", None)
-        path = folder / f"{p.name}.ipynb"
-        nbformat.write(nb, path)
-        written.append(path)
-    wheel = folder / wheel_name()
-    if not wheel.exists():
-        build_wheel(folder)
-    written.append(wheel)
-    return written
