@@ -152,12 +152,15 @@ def _greyish(hex_colour: str) -> bool:
     return max(r, g, b) - min(r, g, b) < 0.04 and 0.2 < r < 0.9
 
 
-def check_caption(fig, caption: str) -> None:
-    """Raise ``ValueError`` where ``caption`` contradicts ``fig`` (layout, line styles, colours, log axes)."""
+def check_caption(fig, caption: str, *, layout: bool = True) -> None:
+    """Raise ``ValueError`` where ``caption`` contradicts ``fig`` (layout, line styles, colours, log axes).
+
+    ``layout=False`` leaves the panel words out (a remark's "on top of each other" names no panel).
+    """
     text = caption.lower()
-    words = panel_words(fig)
+    words = panel_words(fig) if layout else []
     present = {w for phrase in words for w in phrase.split()}
-    named = {w for w in _POSITION if re.search(rf"\b{w}\b", text)}
+    named = {w for w in _POSITION if re.search(rf"\b{w}\b", text)} if layout else set()
     layout = {"left", "right", "middle", "top", "bottom"}
     for w in sorted(named & layout):
         if w not in present:
@@ -184,10 +187,30 @@ def check_caption(fig, caption: str) -> None:
             raise ValueError("caption says logarithmic but no axis is logarithmic")
 
 
-class Captioned:
-    """A figure with its caption, label and alt text (shown as a HiDPI PNG; see the module's notes)."""
+#: The longest caption the book prints, in words; what a figure shows beyond it goes to its remark.
+CAPTION_WORDS = 60
 
-    def __init__(self, fig, caption: str, name: str, alt: str) -> None:
+
+def caption_words(text: str) -> int:
+    """Words of a caption as the reader counts them: a formula or a cross-reference is one word.
+
+    >>> caption_words("Response to $F_0 x$ at ω = 4.47 rad/s; {numref}`fig-x` shows more.")
+    10
+    """
+    text = re.sub(r"\$[^$]*\$", " formula ", text)
+    text = re.sub(r"\{\w+\}`[^`]*`", " reference ", text)
+    text = re.sub(r"<[^>]+>", "", text)
+    return sum(1 for w in text.split() if re.search(r"\w", w))
+
+
+class Captioned:
+    """A figure with its caption, label and alt text (shown as a HiDPI PNG; see the module's notes).
+
+    The caption says what is drawn, in at most :data:`CAPTION_WORDS` words; ``remark``, when given, is
+    what the figure shows (its computed findings), set as a paragraph of text under the figure.
+    """
+
+    def __init__(self, fig, caption: str, name: str, alt: str, *, remark: str = "") -> None:
         import matplotlib.pyplot as plt
 
         if not caption.strip() or not alt.strip():
@@ -195,7 +218,9 @@ class Captioned:
         if re.search(r"\.(png|svg|jpe?g|pdf)\b", alt) or re.fullmatch(r"[\w./\\-]+", alt.strip()):
             raise ValueError(f"figure {name!r}: alt text must describe the figure, not name a file: {alt!r}")
         check_caption(fig, caption)
-        self.fig, self.caption, self.name, self.alt = fig, caption, name, alt
+        if remark:
+            check_caption(fig, remark, layout=False)
+        self.fig, self.caption, self.name, self.alt, self.remark = fig, caption, name, alt, remark
         plt.close(fig)
 
     def png(self) -> bytes:
@@ -216,8 +241,17 @@ class Captioned:
         }
         return data, meta
 
+    def _ipython_display_(self) -> None:
+        """The figure, then its remark as a paragraph of Markdown (two outputs of one cell)."""
+        from IPython.display import Markdown, display
+
+        data, meta = self._repr_mimebundle_()
+        display(data, raw=True, metadata=meta)
+        if self.remark:
+            display(Markdown(self.remark))
+
     def __repr__(self) -> str:
-        return f"Figure {self.name}: {self.caption}"
+        return f"Figure {self.name}: {self.caption}" + (f"\n{self.remark}" if self.remark else "")
 
 
 def web_only(text: str, print_text: str = "") -> str:

@@ -49,6 +49,8 @@ from .numbers import bound as _bound
 TABLES_ENV = "VIBRATION_TABLES_DIR"
 DASH = "—"
 _MARKS = "abcdefghijklmnopqrstuvwxyz"
+#: The widest table the reader sees; a wider one with few enough rows is shown turned (:meth:`Table.transposed`).
+MAX_COLUMNS = 7
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -98,6 +100,7 @@ class Column:
     header: str  # e.g. "ω (rad/s)"; a "_" starts a subscript up to the next space or "("
     digits: int = 4  # significant figures of floats
     zeros: bool = True  # keep trailing zeros, so a column shows one number of significant figures (0.100, 15.0)
+    shown: bool = True  # False: a derived column kept for the CSV file and the plain text, not shown to the reader
 
 
 def fmt(value, digits: int = 4, zeros: bool = False) -> str:
@@ -290,16 +293,50 @@ class Table:
         lines += self.footnotes()
         return "\n".join(lines)
 
+    def transposed(self) -> bool:
+        """Whether the reader sees the table turned: one row per quantity, one column per case.
+
+        A table wider than :data:`MAX_COLUMNS` whose cases fit across the page is shown turned, so no table
+        in the book is wider than seven columns; the plain text (what nbval compares) and the CSV file keep
+        the table as it is built, one row per case.
+        """
+        return len(self._shown()) > MAX_COLUMNS and len(self.rows) + 1 <= MAX_COLUMNS
+
+    def _shown(self) -> list[int]:
+        """Indices of the columns the reader sees."""
+        return [j for j, c in enumerate(self.columns) if c.shown]
+
+    def _grid(self, escape, header, sup) -> tuple[list[str], list[list[str]]]:
+        """Header cells and body rows for the reader (cells escaped by ``escape``, marks by ``sup``).
+
+        The header is made of the column headers, or, turned (:meth:`transposed`), of the first column's
+        header and cells; the body rows then start with the other headers.
+        """
+        cells = self.cells()
+
+        def cell(i: int, j: int) -> str:
+            mark = self._mark(i, j)
+            return self._reader(i, j, escape(cells[i][j])) + (sup(mark) if mark else "")
+
+        shown = self._shown()
+        first, *rest = shown
+        if not self.transposed():
+            return [header(self.columns[j].header) for j in shown], [
+                [cell(i, j) for j in shown] for i in range(len(self.rows))
+            ]
+        head = [header(self.columns[first].header)] + [cell(i, first) for i in range(len(self.rows))]
+        body = [[header(self.columns[j].header)] + [cell(i, j) for i in range(len(self.rows))] for j in rest]
+        return head, body
+
     def _repr_html_(self) -> str:
-        head = "".join(f"<th>{_sub_html(c.header)}</th>" for c in self.columns)
+        head_cells, rows = self._grid(html.escape, _sub_html, "<sup>{}</sup>".format)
+        head = "".join(f"<th>{h}</th>" for h in head_cells)
+        first = "th scope='row'" if self.transposed() else "td"
         body = "".join(
             "<tr>"
-            + "".join(
-                f"<td>{self._reader(i, j, html.escape(v))}{f'<sup>{m}</sup>' if (m := self._mark(i, j)) else ''}</td>"
-                for j, v in enumerate(r)
-            )
+            + "".join(f"<{first}>{v}</{first.split()[0]}>" if j == 0 else f"<td>{v}</td>" for j, v in enumerate(r))
             + "</tr>"
-            for i, r in enumerate(self.cells())
+            for r in rows
         )
         notes = "".join(f"<p class='vib-table-note'>{n}</p>" for n in self._notes_html())
         return (
@@ -314,17 +351,13 @@ class Table:
         # {sub} roles have them: such captions open a tilde fence, which may.
         fence = "~~~" if "`" in caption else "```"
         lines = [f"{fence}{{list-table}} {caption}", ":header-rows: 1", f":name: {self.name}"]
+        if self.transposed():
+            lines.append(":stub-columns: 1")
         lines.append(":class: vib-table")
         lines.append("")
-        lines.append("* - " + "\n  - ".join(_sub_myst(c.header) for c in self.columns))
-        for i, r in enumerate(self.cells()):
-            lines.append(
-                "* - "
-                + "\n  - ".join(
-                    self._reader(i, j, _escape_md(v)) + (f"{{sup}}`{m}`" if (m := self._mark(i, j)) else "")
-                    for j, v in enumerate(r)
-                )
-            )
+        head, rows = self._grid(_escape_md, _sub_myst, "{{sup}}`{}`".format)
+        for r in [head, *rows]:
+            lines.append("* - " + "\n  - ".join(r))
         lines.append(fence)
         notes = self._notes_html()
         if notes:

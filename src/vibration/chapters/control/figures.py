@@ -141,14 +141,16 @@ def active_figure(study: ControlStudy) -> Captioned:
         f"({look(lines['PID'])}, limited to ±{num(a.u_max)} N) and, drawn over it, the PD ({look(lines['PD'])}, "
         f"wider) and LQR ({look(lines['LQR'])}) loops. "
         + _panels(fig, ["displacement x.", "control force u of the three loops (the passive plant has none)."])
-        + f" The largest steady controlled displacement is {num(ratio)} times smaller than the passive one; "
+    )
+    remark = (
+        f"The largest steady controlled displacement is {num(ratio)} times smaller than the passive one; "
         "{numref}`fig-control-active-zoom` shows the last forcing periods, where the loops can be told apart." + same
     )
     alt = (
         "Displacement and control force against time for the passive plant and the PD, LQR and PID loops: the "
         f"controlled displacements stay {num(ratio, 2)} times smaller than the passive one."
     )
-    return Captioned(fig, caption, "fig-control-active", alt)
+    return Captioned(fig, caption, "fig-control-active", alt, remark=remark)
 
 
 def active_zoom_figure(study: ControlStudy) -> Captioned:

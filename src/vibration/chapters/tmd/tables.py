@@ -65,7 +65,7 @@ def tuning_table(st: TMDStudy) -> Table:
             Column(key="rule", header="rule"),
             Column(key="f", header="f = ω_a/ω_p", digits=5),
             Column(key="za", header="ζ_a on ω_a", digits=4),
-            Column(key="zap", header="ζ'_a = f ζ_a on ω_p", digits=4),
+            Column(key="zap", header="ζ'_a = f ζ_a on ω_p", digits=4, shown=False),  # in the CSV file
             Column(key="peak0", header="peak, ζ_p = 0", digits=5),
             Column(key="peak", header=f"peak, ζ_p = {sig(st.zeta_p, 3)}", digits=5),
             Column(key="excess", header="excess over the best (%)", digits=2),
