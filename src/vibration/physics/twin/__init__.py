@@ -1,7 +1,7 @@
 """A digital twin: measurements, identification, tracking and change detection (Part II).
 
 Modules, by concept: :mod:`.measurements` (the record, its file format and input checks),
-:mod:`.sampled` (exact discretisation, sampled response, synthetic records),
+:mod:`.sampled` (exact discretisation, sampled response), :mod:`.synthetic` (synthetic records),
 :mod:`.identification` (least squares with intervals, frequency-domain estimates),
 :mod:`.tracking` (Kalman tracking of k, CUSUM change detection), :mod:`.validation` (residual
 tests, records that break the assumptions, first-order coverage), :mod:`.experiments` (Monte Carlo
@@ -110,16 +110,18 @@ from .measurements import (  # noqa: F401 - constants and helpers kept reachable
     save_measurements,
 )
 from .sampled import (  # noqa: F401 - constants and helpers kept reachable as twin.NAME
-    MAX_MULTISINE_TERMS,
     MAX_RHS_EVALUATIONS,
     Discretization,
     SampledResponse,
     discretisation_checks,
     discretize,
-    example_measurements,
     expm_batch,
-    random_force,
     sampled_response,
+)
+from .synthetic import (  # noqa: F401 - constants and helpers kept reachable as twin.NAME
+    MAX_MULTISINE_TERMS,
+    example_measurements,
+    random_force,
     simulated_test,
     stiffness_profile,
     synthetic_measurements,

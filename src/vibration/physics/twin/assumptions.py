@@ -9,7 +9,7 @@ import numpy as np
 from ..model import Oscillator, ParameterError, check_int, check_real
 from .experiments import MAX_EXPERIMENT_SAMPLES, CoverageExperiment, _monte_carlo
 from .measurements import _check_osc, _check_seed, _grid_size, _work
-from .sampled import random_force, synthetic_measurements
+from .synthetic import random_force, synthetic_measurements
 from .validation import WHITENESS_LAGS, cubic_response, predicted_coverage
 
 __all__ = ["ASSUMPTION_CASES", "AssumptionStudy", "assumption_study"]

@@ -11,7 +11,7 @@ from ..checks import check_array
 from ..model import RATE_MAX, RATE_MIN, Oscillator, ParameterError, check_int, check_real
 from .experiments import MAX_EXPERIMENT_SAMPLES
 from .measurements import MAX_ABS, MIN_SAMPLES, _check_osc, _check_seed, _check_sensor, _grid_size, _signal, _work
-from .sampled import random_force, stiffness_profile, synthetic_measurements
+from .synthetic import random_force, stiffness_profile, synthetic_measurements
 from .tracking import CALIBRATION, CUSUM_DRIFT, DRIFT_MAX, detect_change
 
 __all__ = [

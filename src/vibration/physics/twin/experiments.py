@@ -14,7 +14,7 @@ import numpy as np
 from ..model import Oscillator, ParameterError, check_int, check_real
 from .identification import identify
 from .measurements import MIN_SAMPLES, _check_osc, _check_seed, _check_sensor, _grid_size, _signal, _work
-from .sampled import random_force, synthetic_measurements
+from .synthetic import random_force, synthetic_measurements
 from .validation import WHITENESS_LAGS, _ar1, binomial_halfwidth, input_correlation, ljung_box
 
 __all__ = [
