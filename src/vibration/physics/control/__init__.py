@@ -36,8 +36,9 @@ Metrics: :func:`response_metrics` (peak and RMS displacement in the window and i
 state, peak and RMS force, energy exchanged by the actuator).
 
 Modules by concept: :mod:`.active` (PD, LQR, controlled simulation, metrics), :mod:`.pid` (PID with
-an actuator limit), :mod:`.semi_active` (skyhook, MR damper, RK4 runs and sweeps; compiled kernels
-in :mod:`._kernels`), :mod:`.shaping` (ZV, ZVD, shaped moves). This package re-exports their
+an actuator limit), :mod:`.skyhook` (the ideal skyhook in closed form), :mod:`.mr_damper` (the MR
+damper's model), :mod:`.semi_active` (on-off, clipped and MR runs and sweeps; compiled kernels in
+:mod:`._kernels`), :mod:`.shaping` (ZV, ZVD, shaped moves). This package re-exports their
 public names.
 """
 
@@ -65,23 +66,18 @@ from .loops import (
     loop_costs,
     pid_poles,
 )
+from .mr_damper import SPENCER_1997, SPENCER_1997_STROKE, MRDamper
 from .pid import ANTI_WINDUP, PIDResponse, pid_linear_response, pid_response, pid_work_check
 from .semi_active import (
     SEMI_ACTIVE_LAWS,
-    SPENCER_1997,
-    SPENCER_1997_STROKE,
-    MRDamper,
     SemiActiveResponse,
     SemiActiveSweep,
-    SkyhookPower,
-    passive_transmissibility,
     semi_active_controller,
     semi_active_response,
     semi_active_sweep,
-    skyhook_power,
-    skyhook_transmissibility,
 )
 from .shaping import Shaper, insensitivity_band, residual_amplitude, shaped_move, shaper_residual, zv_shaper, zvd_shaper
+from .skyhook import SkyhookPower, passive_transmissibility, skyhook_power, skyhook_transmissibility
 
 __all__ = [
     "LoopCosts",

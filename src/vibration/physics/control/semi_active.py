@@ -1,199 +1,38 @@
-"""Semi-active control under base excitation: passive and ideal-skyhook transmissibility, the MR damper
-(modified Bouc-Wen), on-off and clipped skyhook runs and sweeps (compiled RK4), and the laws as callables."""
+"""Semi-active control under base excitation: on-off and clipped skyhook and the MR damper, run and swept
+with a compiled RK4, and the memoryless laws as callables.
+
+The closed-form ideal skyhook is in :mod:`.skyhook`, the MR damper's model in :mod:`.mr_damper`.
+"""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
 from ..checks import check_choice
 from ..model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real
-from ..stability import _check_osc, transmissibility
-from ._common import _finite, _omegas
+from ..stability import _check_osc
+from ._common import _omegas
 from ._kernels import RK4_STEPS_MAX, SWEEP_STEPS_MAX, _sa_kernel
+from .mr_damper import SPENCER_1997, MRDamper
+
+__all__ = [
+    "SEMI_ACTIVE_LAWS",
+    "SemiActiveResponse",
+    "SemiActiveSweep",
+    "semi_active_controller",
+    "semi_active_response",
+    "semi_active_sweep",
+]
 
 SEMI_ACTIVE_LAWS = ("passive", "skyhook", "on-off", "clipped", "mr")
 
 
-# ----------------------------------------------------------------------------- semi-active
-
-
-def passive_transmissibility(osc: Oscillator, omegas) -> np.ndarray:
-    """Base-excitation transmissibility ``|X/Y| = |k + i c w| / |k - m w^2 + i c w|``, 1.
-
-    The absolute displacement of the mass over the base amplitude, in steady state:
-    :func:`vibration.physics.stability.transmissibility`, for a scalar or 1-D ``omegas``,
-    always as an array.
-
-    Examples
-    --------
-    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
-    >>> float(passive_transmissibility(osc, np.sqrt(40.0)).round(12))   # at sqrt(2) omega_n: 1
-    1.0
-    """
-    _check_osc(osc)
-    return np.asarray(transmissibility(osc, _omegas(omegas)))
-
-
-def skyhook_transmissibility(osc: Oscillator, c_sky: float, omegas) -> np.ndarray:
-    """Ideal-skyhook transmissibility ``|X/Y| = |k + i c w| / |k - m w^2 + i (c + c_sky) w|``, 1.
-
-    The passive spring k and damper c connect the mass to the base ``Y sin(w t)``; the
-    skyhook damper ``c_sky`` connects it to the inertial frame (force ``-c_sky v``).
-
-    Parameters
-    ----------
-    osc : Oscillator
-        m (kg), c (N s/m, passive damper to the base), k (N/m).
-    c_sky : float
-        Skyhook damping, N s/m (>= 0).
-    omegas : array_like
-        Base frequencies, rad/s (>= 0).
-
-    Returns
-    -------
-    numpy.ndarray
-        Transmissibility, 1, same shape as ``omegas``.
-
-    Examples
-    --------
-    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
-    >>> w = osc.natural_frequency
-    >>> round(float(skyhook_transmissibility(osc, 8.0, w)), 4)          # at resonance
-    0.5294
-    >>> round(float(skyhook_transmissibility(osc, 0.0, w)), 4)          # passive: sqrt(1 + (k/(c w))^2)
-    9.0
-    """
-    _check_osc(osc)
-    c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
-    w = _omegas(omegas)
-    # divided through by w^2 above 1 rad/s, so that no product overflows
-    s = 1.0 / np.maximum(w, 1.0)
-    m, c, k, cc = osc.m, osc.c, osc.k, osc.c + c_sky
-    with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
-        num = np.hypot(k * s * s, c * w * s * s)
-        den = np.hypot(k * s * s - m * (w * s) * (w * s), cc * w * s * s)
-        out = num / den
-    if not np.all(np.isfinite(out)):
-        bad = float(np.asarray(w)[~np.isfinite(out)].ravel()[0])
-        raise ParameterError(
-            f"omegas contains {bad!r} rad/s: the transmissibility is not finite there (undamped resonance or "
-            "overflow); allowed frequencies with a finite steady state"
-        )
-    return out
-
-
-@dataclass(frozen=True, kw_only=True)
-class MRDamper:
-    """Modified Bouc-Wen model of an MR damper (Spencer, Dyke, Sain and Carlson 1997), SI units.
-
-    ``F = c1 y' + k1 x``, ``y' = (alpha z + c0 x' + k0 (x - y)) / (c0 + c1)``,
-    ``z' = -gamma |x' - y'| z |z|^(n-1) - beta (x' - y') |z|^n + A (x' - y')``, with
-    ``alpha = alpha_a + alpha_b u``, ``c0 = c0a + c0b u``, ``c1 = c1a + c1b u`` and the
-    coil filter ``u' = -eta (u - V)`` on the commanded voltage ``V`` in ``[0, v_max]``.
-    ``x`` is the piston displacement (relative to the base), ``F`` the force it resists with.
-    The accumulator preload ``k1 x0`` of the original is left out: a constant force only
-    shifts the static equilibrium.
-    """
-
-    c0a: float  # viscous damping at large velocity, 0 V, N s/m
-    c0b: float  # its voltage slope, N s/(m V)
-    k0: float  # stiffness at large velocity, N/m
-    c1a: float  # viscous damping at low velocity (roll-off), 0 V, N s/m
-    c1b: float  # its voltage slope, N s/(m V)
-    k1: float  # accumulator stiffness, N/m
-    alpha_a: float  # evolutionary coefficient, 0 V, N/m
-    alpha_b: float  # its voltage slope, N/(m V)
-    gamma: float  # Bouc-Wen shape, 1/m^2 (for n = 2)
-    beta: float  # Bouc-Wen shape, 1/m^2 (for n = 2)
-    A: float  # Bouc-Wen scale, 1
-    n: float  # Bouc-Wen exponent, 1
-    eta: float  # coil (first-order filter) rate, 1/s
-    v_max: float  # largest command voltage, V
-
-    def __post_init__(self) -> None:
-        for name in ("c0a", "c0b", "k0", "c1a", "c1b", "k1", "alpha_a", "alpha_b", "gamma", "beta", "A"):
-            object.__setattr__(self, name, check_real(name, getattr(self, name), low=0.0))
-        object.__setattr__(self, "c1a", check_real("c1a", self.c1a, low=0.0, low_open=True, unit="N s/m"))
-        object.__setattr__(self, "n", check_real("n", self.n, low=1.0, high=4.0))
-        object.__setattr__(self, "eta", check_real("eta", self.eta, low=0.0, low_open=True, unit="1/s"))
-        object.__setattr__(self, "v_max", check_real("v_max", self.v_max, low=0.0, unit="V"))
-
-    @property
-    def z_max(self) -> float:
-        """Largest evolutionary displacement ``(A / (gamma + beta))^(1/n)``, m."""
-        return (self.A / (self.gamma + self.beta)) ** (1.0 / self.n)
-
-    @property
-    def yield_force(self) -> float:
-        """Hysteretic force ``alpha z_max`` at full voltage, N."""
-        return (self.alpha_a + self.alpha_b * self.v_max) * self.z_max
-
-    def scaled(self, length: float, force: float) -> MRDamper:
-        """Similitude copy: displacements times ``length``, forces times ``force``, time unchanged.
-
-        Stiffnesses and damping coefficients scale by ``force / length``, ``gamma`` and
-        ``beta`` (for n = 2) by ``1 / length^n``, ``A``, ``n``, ``eta`` and the voltage are unchanged, so
-        the scaled device run at ``length`` times the stroke gives exactly ``force`` times
-        the force history.
-
-        Examples
-        --------
-        >>> d = SPENCER_1997.scaled(length=2.0, force=0.5)
-        >>> round(d.yield_force / SPENCER_1997.yield_force, 12), round(d.z_max / SPENCER_1997.z_max, 12)
-        (0.5, 2.0)
-        """
-        length = check_real("length", length, low=0.0, low_open=True)
-        force = check_real("force", force, low=0.0, low_open=True)
-        s, g = force / length, length ** (-self.n)
-        return replace(
-            self,
-            c0a=self.c0a * s,
-            c0b=self.c0b * s,
-            k0=self.k0 * s,
-            c1a=self.c1a * s,
-            c1b=self.c1b * s,
-            k1=self.k1 * s,
-            alpha_a=self.alpha_a * s,
-            alpha_b=self.alpha_b * s,
-            gamma=self.gamma * g,
-            beta=self.beta * g,
-        )
-
-
-#: Spencer, Dyke, Sain and Carlson (1997), "Phenomenological model for magnetorheological
-#: dampers", J. Eng. Mech. 123(3):230-238, parameters of the modified Bouc-Wen model
-#: identified for their prototype damper (about 3000 N capacity, tested at 1.5 cm and
-#: 2.5 Hz, 0-2.25 V): c0a 21.0 N s/cm, c0b 3.50 N s/(cm V), k0 46.9 N/cm, c1a 283 N s/cm,
-#: c1b 2.95 N s/(cm V), k1 5.00 N/cm, x0 14.3 cm (preload, not used), alpha_a 140 N/cm,
-#: alpha_b 695 N/(cm V), gamma = beta = 363 cm^-2, A 301, n 2, eta 190 1/s; here in SI.
-SPENCER_1997 = MRDamper(
-    c0a=21.0e2,
-    c0b=3.50e2,
-    k0=46.9e2,
-    c1a=283.0e2,
-    c1b=2.95e2,
-    k1=5.00e2,
-    alpha_a=140.0e2,
-    alpha_b=695.0e2,
-    gamma=363.0e4,
-    beta=363.0e4,
-    A=301.0,
-    n=2.0,
-    eta=190.0,
-    v_max=2.25,
-)
-
-#: Displacement amplitude of the tests the parameters were identified on, m (1.5 cm).
-SPENCER_1997_STROKE = 0.015
-
-
-def _sa_params(osc, law, c_sky, c_min, c_max, damper):
-    if law not in SEMI_ACTIVE_LAWS:
-        raise ParameterError(f"law = {law!r} is not supported: allowed one of {', '.join(SEMI_ACTIVE_LAWS)}")
+def _check_dampings(c_sky, c_min, c_max) -> tuple[float, float, float]:
+    """The skyhook gain and the device's damping bounds, N s/m, checked (0 <= c_min <= c_max)."""
     c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
     c_min = check_real("c_min", c_min, low=0.0, unit="N s/m")
     c_max = check_real("c_max", c_max, low=0.0, unit="N s/m")
@@ -202,6 +41,13 @@ def _sa_params(osc, law, c_sky, c_min, c_max, damper):
             f"c_max = {c_max!r} N s/m is below c_min = {c_min!r} N s/m: allowed c_max >= {c_min:g} N s/m "
             "(0 <= c_min <= c_max, finite)"
         )
+    return c_sky, c_min, c_max
+
+
+def _sa_params(osc, law, c_sky, c_min, c_max, damper):
+    if law not in SEMI_ACTIVE_LAWS:
+        raise ParameterError(f"law = {law!r} is not supported: allowed one of {', '.join(SEMI_ACTIVE_LAWS)}")
+    c_sky, c_min, c_max = _check_dampings(c_sky, c_min, c_max)
     d = damper if damper is not None else SPENCER_1997
     if not isinstance(d, MRDamper):
         raise ParameterError(f"damper = {damper!r} is not an MRDamper: allowed None or MRDamper(...)")
@@ -414,6 +260,7 @@ def semi_active_sweep(
 
     Examples
     --------
+    >>> from vibration.physics.control.skyhook import skyhook_transmissibility
     >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> s = semi_active_sweep(osc, "skyhook", [4.4721], 0.25, c_sky=8.0, periods=2)
     >>> bool(abs(s.fundamental[0] - skyhook_transmissibility(osc, 8.0, 4.4721)) < 1e-6)
@@ -528,14 +375,7 @@ def semi_active_controller(
     0.05875
     """
     law = check_choice("law", law, SEMI_ACTIVE_LAWS[:4])
-    c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
-    c_min = check_real("c_min", c_min, low=0.0, unit="N s/m")
-    c_max = check_real("c_max", c_max, low=0.0, unit="N s/m")
-    if c_max < c_min:
-        raise ParameterError(
-            f"c_max = {c_max!r} N s/m is below c_min = {c_min!r} N s/m: allowed c_max >= {c_min:g} N s/m "
-            "(0 <= c_min <= c_max, finite)"
-        )
+    c_sky, c_min, c_max = _check_dampings(c_sky, c_min, c_max)
     Y = check_real("Y", Y, low=0.0, unit="m")
     w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")  # the base moves: omega > 0
     if not math.isfinite(max(c_max, c_sky, 1.0) * Y * max(w, 1.0)):
@@ -557,60 +397,3 @@ def semi_active_controller(
         return -c_min * vr
 
     return controller
-
-
-@dataclass(frozen=True, kw_only=True)
-class SkyhookPower:
-    """Steady mean powers of the ideal skyhook force ``f = -c_sky v`` under base motion ``Y sin(omega t)``, W."""
-
-    removed: float  # mean c_sky v^2: what the skyhook force takes out of the mass (its work on the mass, negated)
-    net: float  # mean f (v - v_b): net power an actuator between body and base delivers (negative: it absorbs)
-    supplied: float  # mean of the positive part of f (v - v_b): what the actuator must supply, W
-    gross: float  # mean |f (v - v_b)|: the power it exchanges in both directions, W
-
-
-def skyhook_power(osc: Oscillator, c_sky: float, Y: float, omega: float) -> SkyhookPower:
-    """Mean steady powers (W) of the ideal skyhook realised by an actuator between the mass and the base.
-
-    With ``x = Im(H Y e^{i omega t})``, ``H = (k + i c omega) / (k - m omega^2 + i (c + c_sky) omega)``,
-    the actuator's power ``p = f (v - v_b) = a + b cos(2 omega t + phi)`` has the mean
-    ``a = -c_sky (<v^2> - <v v_b>)`` and the swing ``b``; the mean of its positive part is
-    ``(a theta + b sin theta) / pi`` with ``cos theta = -a / b`` (``a`` if ``|a| >= b`` and ``a > 0``,
-    0 if ``a <= -b``), and the gross exchange ``mean |p| = 2 mean(p+) - a``. The skyhook itself,
-    a damper to the inertial frame, removes ``c_sky <v^2>``.
-
-    Examples
-    --------
-    >>> p = skyhook_power(Oscillator(m=1.0, c=0.5, k=20.0), 8.0, 0.25, 20.0**0.5)
-    >>> round(p.removed, 4), round(p.net, 4), round(p.supplied, 4), round(p.gross, 4)
-    (1.4014, -1.1073, 0.4242, 1.9556)
-    """
-    _check_osc(osc)
-    c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
-    Y = check_real("Y", Y, low=0.0, unit="m")
-    w = check_real("omega", omega, low=0.0, unit="rad/s")
-    m, c, k = osc.m, osc.c, osc.k
-    den = complex(k - m * w * w, (c + c_sky) * w)
-    if den == 0:
-        raise ParameterError(f"omega = {w!r} rad/s: undamped resonance, no steady state; allowed c + c_sky > 0")
-    H = complex(k, c * w) / den
-    V = 1j * w * H * Y  # complex velocity amplitude of the mass, m/s
-    Vb = 1j * w * Y  # of the base
-    F = -c_sky * V  # of the force
-    P_rel = F * np.conj(V - Vb)  # p = Re(F e^{iwt}) Re(Vr e^{iwt}) = Re(F conj(Vr))/2 + Re(F Vr e^{2iwt})/2
-    a = float(0.5 * P_rel.real)
-    b = float(0.5 * abs(F * (V - Vb)))
-    if not (math.isfinite(a) and math.isfinite(b)):
-        raise ParameterError(
-            f"c_sky = {c_sky!r} N s/m, Y = {Y!r} m, omega = {w!r} rad/s overflow the skyhook power: allowed c_sky, Y "
-            "and omega whose power c_sky (omega Y)^2 is a finite float"
-        )
-    if b <= abs(a):
-        pos = max(a, 0.0)
-    else:
-        theta = math.acos(-a / b)
-        pos = (a * theta + b * math.sin(theta)) / math.pi
-    removed = float(0.5 * c_sky * abs(V) * abs(V))
-    out = SkyhookPower(removed=removed, net=a, supplied=pos, gross=2.0 * pos - a)
-    _finite("Y, omega", [out.removed, out.net, out.gross], "the skyhook power")
-    return out
