@@ -297,14 +297,9 @@ def lyapunov_qr(
 
     Parameters
     ----------
-    duffing : Duffing
-        The oscillator.
-    F0 : float
-        Force amplitude, N.
-    omega : float
-        Forcing frequency, rad/s.
-    x0, v0 : float
-        Initial state, m and m/s.
+    duffing, F0, omega, x0, v0
+        As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
+        (rad/s) and initial state (m, m/s).
     n_periods : int
         Periods averaged over (after the transient).
     n_transient : int
@@ -348,14 +343,9 @@ def lyapunov_benettin(
 
     Parameters
     ----------
-    duffing : Duffing
-        The oscillator.
-    F0 : float
-        Force amplitude, N.
-    omega : float
-        Forcing frequency, rad/s.
-    x0, v0 : float
-        Initial state, m and m/s.
+    duffing, F0, omega, x0, v0
+        As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
+        (rad/s) and initial state (m, m/s).
     n_periods, n_transient, steps_per_period : int
         As in :func:`lyapunov_qr`.
     d0 : float
@@ -444,14 +434,9 @@ def lyapunov_estimate(
 
     Parameters
     ----------
-    duffing : Duffing
-        The oscillator.
-    F0 : float
-        Force amplitude, N.
-    omega : float
-        Forcing frequency, rad/s.
-    x0, v0 : float
-        Initial state, m and m/s.
+    duffing, F0, omega, x0, v0
+        As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
+        (rad/s) and initial state (m, m/s).
     n_periods : int
         Periods averaged over after the transient (at least 10 per block).
     n_blocks : int
