@@ -31,6 +31,14 @@ def _check_S0(S0) -> float:
     return check_real("S0", S0, low=0.0, unit="N^2 s/rad")
 
 
+def _check_stationary(osc: Oscillator, S0, what: str = "a stationary random response") -> float:
+    """Check the oscillator and the force density ``S0`` (N^2 s/rad) and that ``what`` exists (c > 0)."""
+    _check_osc(osc)
+    S0 = _check_S0(S0)
+    _check_stable(osc, what)
+    return S0
+
+
 def white_noise_variance(osc: Oscillator, S0: float) -> float:
     """Stationary displacement variance under a white-noise force, m^2.
 
@@ -56,9 +64,7 @@ def white_noise_variance(osc: Oscillator, S0: float) -> float:
     >>> round(white_noise_variance(Oscillator(m=1.0, c=0.5, k=20.0), 1.0), 6)      # m^2
     0.314159
     """
-    _check_osc(osc)
-    S0 = _check_S0(S0)
-    _check_stable(osc, "a stationary random response")
+    S0 = _check_stationary(osc, S0)
     return _finite_variance(math.pi * S0 / osc.k / osc.c, S0, "displacement")
 
 
@@ -72,9 +78,7 @@ def white_noise_velocity_variance(osc: Oscillator, S0: float) -> float:
     >>> round(white_noise_velocity_variance(Oscillator(m=1.0, c=0.5, k=20.0), 1.0), 6)     # m^2/s^2
     6.283185
     """
-    _check_osc(osc)
-    S0 = _check_S0(S0)
-    _check_stable(osc, "a stationary random response")
+    S0 = _check_stationary(osc, S0)
     return _finite_variance(math.pi * S0 / osc.m / osc.c, S0, "velocity")
 
 
@@ -178,9 +182,7 @@ def simulate_white_noise(
     >>> x.shape, float(x[0, 0]), float(v[1, 0])
     ((2, 1001), 0.0, 0.0)
     """
-    _check_osc(osc)
-    S0 = _check_S0(S0)
-    _check_stable(osc, "a stationary random response")
+    S0 = _check_stationary(osc, S0)
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     dt = _default_dt(osc) if dt is None else check_real("dt", dt, low=0.0, low_open=True, unit="s")
     n_paths = check_int("n_paths", n_paths, low=1, high=100_000)
@@ -341,9 +343,7 @@ def white_noise_force_variance(osc: Oscillator, S0: float) -> float:
     >>> round(white_noise_force_variance(Oscillator(m=1.0, c=0.5, k=20.0), 0.1), 4)     # N^2
     12.7235
     """
-    _check_osc(osc)
-    S0 = _check_S0(S0)
-    _check_stable(osc, "a stationary force variance")
+    S0 = _check_stationary(osc, S0, "a stationary force variance")
     return math.pi * S0 * (osc.k / osc.c + osc.c / osc.m)
 
 
