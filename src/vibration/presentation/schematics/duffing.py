@@ -1,0 +1,74 @@
+"""Chapter 9's Duffing oscillator: a mass on a cubic spring and the restoring force of its three springs."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..captions import Captioned, panel_words
+from ..style import case_style, figure, place_legend
+from .kit import NEWTON, TEXT, blank, coordinate, dashpot, force, ground, load, mass, rollers, spring, wall
+
+
+def duffing_spring() -> Captioned:
+    """A mass on a cubic spring k x + k3 x^3: schematic, free-body diagram and the restoring force of the hardening,
+    linear and softening springs."""
+    fig, (left, middle, right) = figure(1, 3, height=2.5, gridspec_kw={"width_ratios": [1.45, 1.45, 1.0]})
+    w, h = 1.1, 1.6
+    blank(left, "schematic", "schematic", (-0.1, 4.6), (-0.35, 2.6))
+    wall(left, 0.2, 0.0, 2.1)
+    ground(left, 0.2, 4.5, 0.0)
+    x0 = 2.2
+    rollers(left, x0, w, 0.0)
+    mass(left, x0, 0.22, w, h, "$m$")
+    spring(left, (0.2, 1.42), (x0, 1.42), coils=4)
+    left.text(1.2, 1.72, "$k$, $k_3$", ha="center", va="bottom", fontsize=TEXT)
+    dashpot(left, (0.2, 0.74), (x0, 0.74))
+    left.text(1.2, 0.5, "$c$", ha="center", va="top", fontsize=TEXT)
+    load(left, (x0 + w, 0.6), (x0 + w + 0.9, 0.6), r"$F_0\cos\omega t$", (x0 + w + 0.05, 0.72), "left", "bottom")
+    coordinate(left, (x0, 2.15), 0.7, "$x$")
+
+    blank(middle, "free-body diagram", "free-body diagram", (-0.1, 4.6), (-1.0, 2.6))
+    x0, y0 = 1.75, 0.2
+    mass(middle, x0, y0, w, h, "$m$")
+    force(middle, (x0, 1.3), (x0 - 1.0, 1.3), "$kx + k_3x^3$", (x0 - 0.05, 1.42), "right", "bottom")
+    force(middle, (x0, 0.55), (x0 - 1.0, 0.55), r"$c\dot x$", (x0 - 0.5, 0.43), va="top")
+    force(middle, (x0 + w, 0.75), (x0 + w + 0.9, 0.75), r"$F_0\cos\omega t$", (x0 + w + 0.05, 0.87), "left",
+           "bottom")  # fmt: skip
+    force(middle, (x0 + 0.3, y0), (x0 + 0.3, y0 - 0.85), "$mg$", (x0 + 0.22, y0 - 0.55), "right")
+    force(middle, (x0 + w - 0.3, y0 - 0.85), (x0 + w - 0.3, y0), "$N$", (x0 + w - 0.22, y0 - 0.55), "left")
+    coordinate(middle, (x0, 2.15), 0.7, "$x$")
+
+    right.set_label("restoring force")
+    xi = np.linspace(-1.0, 1.0, 201)
+    curves = (("hardening", 1.0, "$k_3 > 0$"), ("linear", 0.0, "$k_3 = 0$"), ("softening", -1.0, "$k_3 < 0$"))
+    for case, sign, text in curves:
+        right.plot(xi, xi + sign * xi**3, label=text, **case_style(case))
+    right.set_xlim(-1.0, 1.0)
+    right.set_ylim(-2.0, 2.0)
+    right.set_xlabel("$x/x_0$")
+    right.set_ylabel("$F/(kx_0)$")
+    right.set_title("restoring force", fontsize=10)
+    place_legend(right, fontsize=8.5, handlelength=1.5, borderaxespad=0.3)
+
+    words = panel_words(fig)
+    colours = {"hardening": "vermillion", "linear": "blue", "softening": "sky blue"}
+    caption = (
+        r"The Duffing oscillator of chapter 9, $m\ddot x + c\dot x + kx + k_3x^3 = F_0\cos\omega t$. "
+        f"{words[0].capitalize()}: a mass $m$ (kg) on a nonlinear spring with linear stiffness $k$ (N/m) and cubic "
+        "stiffness $k_3$ (N/m³), a dashpot $c$ (N s/m) and the drive $F_0\\cos\\omega t$ (N; $\\omega$ in rad/s, $t$ "
+        "in s); $x$ (m, blue) is measured from the relaxed spring. "
+        f"{words[1].capitalize()}: its free-body diagram, with the spring force $kx + k_3x^3$, the damper force "
+        r"$c\dot x$, the drive $F_0\cos\omega t$, and the weight $mg$ and the normal force $N$ (N), which balance. "
+        f"{words[2].capitalize()}: the spring's restoring force $F = kx + k_3x^3$ (N) against the displacement, "
+        "drawn as $F/(kx_0)$ against $x/x_0$ with $x_0 = \\sqrt{k/|k_3|}$ (m), where the cubic term equals the "
+        "linear one: the hardening spring "
+        f"($k_3 > 0$, {colours['hardening']}) stiffens, the softening spring ($k_3 < 0$, {colours['softening']}) "
+        f"weakens, loses all stiffness at $x_0/\\sqrt{{3}}$ and no longer restores beyond $x_0$; the linear spring "
+        f"($k_3 = 0$, {colours['linear']}) between them. Forces are vermillion. " + NEWTON
+    )
+    alt = (
+        "A mass on rollers tied to a wall by a spring and a dashpot and driven by a sinusoidal force, its free-body "
+        "diagram, and the restoring force against displacement: a straight line for the linear spring, a curve "
+        "bending up for the hardening spring and one bending back to zero for the softening spring."
+    )
+    return Captioned(fig, caption, "fig-schematic-duffing", alt)

@@ -1,0 +1,100 @@
+"""One mass on a spring and a dashpot: the paper's model (chapters 1-6) and base excitation (chapter 6's
+isolation, chapter 7's suspension)."""
+
+from __future__ import annotations
+
+from ..captions import Captioned
+from ..style import figure
+from .kit import TEXT, blank, coordinate, dashpot, force, ground, load, mass, newton_caption, rollers, spring, wall
+
+
+def single_mass() -> Captioned:
+    """The paper's model: wall, spring k, dashpot c, mass m, force F0 sin(omega t), coordinate x."""
+    fig, (left, right) = figure(1, 2, height=2.5)
+    blank(left, "schematic", "schematic", (-0.35, 6.0), (-0.35, 2.6))
+    wall(left, 0.3, 0.0, 2.1)
+    ground(left, 0.3, 5.7, 0.0)
+    x0, y0, w, h = 2.8, 0.22, 1.2, 1.6
+    rollers(left, x0, w, 0.0)
+    mass(left, x0, y0, w, h, "$m$")
+    spring(left, (0.3, 1.42), (x0, 1.42))
+    left.text(1.55, 1.72, "$k$", ha="center", va="bottom", fontsize=TEXT)
+    dashpot(left, (0.3, 0.62), (x0, 0.62))
+    left.text(1.55, 0.3, "$c$", ha="center", va="top", fontsize=TEXT)
+    load(left, (x0 + w, 1.02), (x0 + w + 1.0, 1.02), r"$F_0\sin\omega t$", (x0 + w + 0.08, 1.14), "left", "bottom")
+    coordinate(left, (x0, 2.1), 0.8, "$x$")
+
+    blank(right, "free-body diagram", "free-body diagram of the mass", (-0.45, 5.9), (-1.1, 2.6))
+    x0, y0 = 2.0, 0.2
+    mass(right, x0, y0, w, h, "$m$")
+    force(right, (x0, 1.3), (x0 - 1.1, 1.3), "$kx$", (x0 - 0.55, 1.42), va="bottom")
+    force(right, (x0, 0.55), (x0 - 1.1, 0.55), r"$c\dot x$", (x0 - 0.55, 0.43), va="top")
+    force(right, (x0 + w, 1.0), (x0 + w + 1.0, 1.0), r"$F_0\sin\omega t$", (x0 + w + 0.08, 1.12), "left", "bottom")
+    force(right, (x0 + 0.35, y0), (x0 + 0.35, y0 - 0.9), "$mg$", (x0 + 0.27, y0 - 0.6), "right")
+    force(right, (x0 + w - 0.35, y0 - 0.9), (x0 + w - 0.35, y0), "$N$", (x0 + w - 0.27, y0 - 0.6), "left")
+    coordinate(right, (x0, 2.1), 0.8, "$x$")
+
+    caption = newton_caption(
+        fig,
+        r"The paper's model, $m\ddot x + c\dot x + kx = F_0\sin\omega t$. ",
+        [
+            "a block of mass $m$ (kg) on frictionless rollers, tied to a fixed wall (hatched) by a spring of "
+            "stiffness $k$ (N/m) and a viscous dashpot of damping coefficient $c$ (N s/m), and driven by the force "
+            r"$F_0\sin\omega t$ (amplitude $F_0$ in N, angular frequency $\omega$ in rad/s, time $t$ in s); its "
+            "displacement $x$ (m, blue) is measured from the position where the spring is relaxed.",
+            r"the free-body diagram of the block: the spring force $kx$ and the damper force $c\dot x$ (N) against "
+            r"the motion, the drive $F_0\sin\omega t$, and the weight $mg$ and the rollers' normal force $N$ "
+            "(N, $g$ the acceleration of gravity in m/s²), which balance each other.",
+        ],
+    )
+    alt = (
+        "A block on rollers tied to a wall by a spring and a dashpot and pushed by a sinusoidal force, and beside it "
+        "the block alone with the spring and damper forces pointing back towards the wall and the drive pointing away."
+    )
+    return Captioned(fig, caption, "fig-schematic-single-mass", alt)
+
+
+# ------------------------------------------------------------------------------------------ base excitation
+
+
+def base_excitation() -> Captioned:
+    """A mass on a spring and a dashpot whose base moves as y(t): chapter 6's isolation, chapter 7's suspension."""
+    fig, (left, right) = figure(1, 2, height=3.0)
+    blank(left, "schematic", "schematic", (-2.4, 2.4), (-0.2, 3.3))
+    bw, bh = 2.6, 0.35  # base plate
+    mass(left, -0.5 * bw, 0.0, bw, bh)
+    left.text(-0.5 * bw - 0.1, 0.5 * bh, "base", ha="right", va="center", fontsize=TEXT)
+    coordinate(left, (0.5 * bw + 0.3, 0.5 * bh), 0.6, "$y(t)$", vertical=True)
+    mw, mh, my = 1.7, 0.9, 1.85
+    spring(left, (-0.45, bh), (-0.45, my))
+    left.text(-0.75, 0.5 * (bh + my), "$k$", ha="right", va="center", fontsize=TEXT)
+    dashpot(left, (0.45, bh), (0.45, my))
+    left.text(0.75, 0.5 * (bh + my), "$c$", ha="left", va="center", fontsize=TEXT)
+    mass(left, -0.5 * mw, my, mw, mh, "$m$")
+    coordinate(left, (0.5 * mw + 0.3, my + 0.5 * mh), 0.6, "$x$", vertical=True)
+
+    blank(right, "free-body diagram", "free-body diagram of the mass", (-2.4, 2.4), (-0.2, 3.3))
+    my = 1.55
+    mass(right, -0.5 * mw, my, mw, mh, "$m$")
+    force(right, (-0.45, my), (-0.45, my - 1.0), "$k(x - y)$", (-0.55, my - 0.5), "right")
+    force(right, (0.45, my), (0.45, my - 1.0), r"$c(\dot x - \dot y)$", (0.55, my - 0.5), "left")
+    coordinate(right, (0.5 * mw + 0.3, my + 0.5 * mh), 0.6, "$x$", vertical=True)
+
+    caption = newton_caption(
+        fig,
+        r"Base excitation: $m\ddot x + c\dot x + kx = c\dot y + ky$, or, in the relative displacement $z = x - y$, "
+        r"$m\ddot z + c\dot z + kz = -m\ddot y$. ",
+        [
+            "a mass $m$ (kg) on a spring of stiffness $k$ (N/m) and a dashpot of damping coefficient $c$ "
+            "(N s/m) whose base moves as $y(t)$ (m, in chapter 6 $Y\\sin\\omega t$); the displacement $x$ (m) of "
+            "the mass and $y$ are absolute, measured from the static equilibrium (blue).",
+            "the free-body diagram of the mass: the spring force $k(x - y)$ and the damper force "
+            r"$c(\dot x - \dot y)$ (N), which depend on the motion relative to the base only; the weight and the "
+            "static spring force balance at the equilibrium and are left out.",
+        ],
+    )
+    alt = (
+        "A mass on a spring and a dashpot standing on a base that moves up and down, and beside it the mass alone "
+        "with the spring and damper forces, both set by the stretch relative to the base, pointing down."
+    )
+    return Captioned(fig, caption, "fig-schematic-base-excitation", alt)

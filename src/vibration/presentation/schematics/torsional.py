@@ -1,0 +1,168 @@
+"""Chapter 12's torsional wheel, drawn as far as its data document it."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from matplotlib.patches import Circle, Polygon, Rectangle
+
+from ..captions import Captioned
+from ..style import OKABE_ITO, figure
+from .kit import BODY, COORDINATE, FORCE, INK, LW, NEWTON_TORQUES, TEXT, arc_arrow, blank, ground, sentence_panels
+
+
+def _spiral(ax, r0: float, r1: float, turns: float, end_deg: float) -> tuple[float, float]:
+    """An Archimedean spiral about the origin from radius ``r0`` to ``r1`` ending at ``end_deg``; returns its end."""
+    phi = np.linspace(0.0, 2 * np.pi * turns, 400)
+    r = r0 + (r1 - r0) * phi / phi[-1]
+    a = np.radians(end_deg) - 2 * np.pi * turns + phi
+    ax.plot(r * np.cos(a), r * np.sin(a), color=INK, lw=1.0, zorder=3)
+    return r1 * math.cos(a[-1]), r1 * math.sin(a[-1])
+
+
+def _block(ax, centre, radial_deg: float, length: float, width: float, **kw) -> None:
+    """A rectangle centred at ``centre`` with its long side along the direction ``radial_deg``."""
+    u = np.array([math.cos(math.radians(radial_deg)), math.sin(math.radians(radial_deg))])
+    n = np.array([-u[1], u[0]])
+    c = np.asarray(centre, float)
+    pts = [c + sa * 0.5 * length * u + sb * 0.5 * width * n for sa, sb in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    ax.add_patch(Polygon(pts, closed=True, **kw))
+
+
+def _rig_sentence(description: str | None, max_angle_rad: float | None, encoder_step_rad: float | None) -> str:
+    """What the data folder says about the rig, and what it does not document (leading space)."""
+    known = []
+    if description and description.strip():
+        known.append(description.strip().rstrip("."))
+    if encoder_step_rad:
+        known.append(
+            f"the wheel's angle is read in steps of {encoder_step_rad:.3g} rad ({math.degrees(encoder_step_rad):.4g}°)"
+        )
+    if max_angle_rad:
+        known.append(f"the wheel can turn at most {max_angle_rad:.3g} rad ({math.degrees(max_angle_rad):.4g}°)")
+    missing = [
+        "the values of $I$, $\\kappa$, $b$ and $\\tau_c$ (the chapter measures only $\\omega_n$, $\\zeta$ and "
+        "$\\Delta$)",
+        "the linkage from drive to spring (drawn as the usual push rod and lever)",
+        "where the dry friction acts (drawn at the bearing)",
+    ]
+    if not max_angle_rad:
+        missing.append("the largest angle the wheel can turn")
+    out = (
+        " Known of this rig from its data: " + "; ".join(known) + "." if known else " The data do not describe the rig."
+    )
+    return out + " Not documented: " + ", ".join(missing[:-1]) + " and " + missing[-1] + "."
+
+
+def torsional_oscillator(
+    *, description: str | None = None, max_angle_rad: float | None = None, encoder_step_rad: float | None = None
+) -> Captioned:
+    """Chapter 12's torsional wheel: a spiral spring, a motor-driven crank winding the spring's outer end, an
+    eddy-current brake and dry friction at the bearing; beside it the wheel's free-body diagram with its torques.
+
+    Parameters
+    ----------
+    description : str, optional
+        What the data folder says the rig is (its ``rig.csv`` description); quoted in the caption.
+    max_angle_rad, encoder_step_rad : float, optional
+        The largest angle the wheel can turn and the angle sensor's step (rad), when the folder documents them.
+        The caption says which of these, and what else the drawing assumes, the data do not document.
+    """
+    fig, (left, right) = figure(1, 2, height=3.7)
+    R = 1.3
+    blank(left, "schematic", "schematic", (-2.2, 2.9), (-2.35, 2.75))
+    ground(left, -1.4, 1.4, -1.95)
+    left.add_patch(Rectangle((-0.09, -1.95), 0.18, 1.95, facecolor=BODY, edgecolor=INK, lw=LW, zorder=1))
+    left.add_patch(Circle((0, 0), R, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
+    left.text(-0.85, 0.3, "$I$", ha="center", va="center", fontsize=10, zorder=5)
+    # the pointer and its rest position; the angle theta
+    theta = 32.0
+    t = math.radians(theta)
+    left.plot([0.62 * R, 1.12 * R], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
+    left.plot([0.62 * R * math.cos(t), R * math.cos(t)], [0.62 * R * math.sin(t), R * math.sin(t)], color=INK,
+              lw=2.2, zorder=3)  # fmt: skip
+    arc_arrow(left, (0, 0), 0.8 * R, 2.0, theta - 2.0, COORDINATE, "coordinate:$\\theta$", lw=1.1, scale=9.0)
+    left.text(0.8 * R + 0.06, 0.26, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
+    # spiral spring from the axle to the lever, the lever, the push rod, the crank and the motor
+    xe, ye = _spiral(left, 0.2, 0.62, 2.25, 90.0)
+    left.text(-0.45, 0.62, "$\\kappa$", ha="center", va="center", fontsize=TEXT, zorder=5)
+    top = (0.0, R + 0.7)
+    left.plot([xe, top[0]], [ye, top[1]], color=INK, lw=2.4, solid_capstyle="round", zorder=4)
+    crank_c, crank_r = (2.2, R + 0.7), 0.32
+    pin = (crank_c[0] + crank_r * math.cos(math.radians(150)), crank_c[1] + crank_r * math.sin(math.radians(150)))
+    left.add_patch(Rectangle((1.75, R - 0.3), 0.9, 1.0, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
+    left.text(2.2, R - 0.02, "motor", ha="center", va="center", fontsize=TEXT, zorder=5)
+    left.add_patch(Circle(crank_c, crank_r, facecolor="white", edgecolor=INK, lw=LW, zorder=3))
+    left.plot([top[0], pin[0]], [top[1], pin[1]], color=INK, lw=1.6, zorder=4)
+    for p, r in ((top, 0.06), (pin, 0.05), (crank_c, 0.04)):
+        left.add_patch(Circle(p, r, facecolor="white", edgecolor=INK, lw=1.0, zorder=5))
+    arc_arrow(left, crank_c, crank_r + 0.14, 20.0, 120.0, COORDINATE, "coordinate:$\\omega t$", lw=1.1, scale=9.0)
+    left.text(crank_c[0] + 0.45, crank_c[1] + 0.3, "$\\omega t$", color=COORDINATE, ha="left", va="bottom",
+              fontsize=TEXT)  # fmt: skip
+    # the eddy-current brake astride the rim, and the bearing
+    at = math.radians(225.0)
+    _block(left, (0.93 * R * math.cos(at), 0.93 * R * math.sin(at)), 225.0, 0.55, 0.42, facecolor=OKABE_ITO["grey"],
+           edgecolor=INK, lw=LW, zorder=4)  # fmt: skip
+    left.text(-1.48, -1.0, "$b$", ha="right", va="center", fontsize=TEXT)
+    left.add_patch(Circle((0, 0), 0.12, facecolor="white", edgecolor=INK, lw=1.2, zorder=5))
+    left.add_patch(Circle((0, 0), 0.06, facecolor=BODY, edgecolor=INK, lw=1.0, zorder=5))
+    left.plot([0.09, 0.5], [-0.09, -0.58], color=INK, lw=0.7, zorder=5)
+    left.text(0.52, -0.58, "$\\tau_c$", ha="left", va="top", fontsize=TEXT, zorder=5)
+
+    blank(right, "free-body diagram", "free-body diagram of the wheel", (-2.55, 2.55), (-2.35, 2.75))
+    Rf = 1.05
+    right.add_patch(Circle((0, 0), Rf, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
+    right.add_patch(Circle((0, 0), 0.08, facecolor="white", edgecolor=INK, lw=1.2, zorder=3))
+    right.text(-0.45, 0.5, "$I$", ha="center", va="center", fontsize=10, zorder=5)
+    right.plot([0.1, 0.95 * Rf], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
+    right.plot([0.1 * math.cos(t), Rf * math.cos(t)], [0.1 * math.sin(t), Rf * math.sin(t)], color=INK, lw=2.2,
+               zorder=3)  # fmt: skip
+    arc_arrow(right, (0, 0), 0.7 * Rf, 2.0, theta - 2.0, COORDINATE, "coordinate:$\\theta$", lw=1.1, scale=9.0)
+    right.text(0.7 * Rf + 0.06, 0.2, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
+    ra = Rf + 0.28
+    torques = (
+        (r"$\tau_0\sin\omega t$", 60.0, 120.0, (0.0, ra + 0.2), "center", "bottom"),
+        (r"$\kappa\theta$", 25.0, -25.0, (ra + 0.2, 0.0), "left", "center"),
+        (r"$b\dot\theta$", 290.0, 250.0, (0.0, -ra - 0.2), "center", "top"),
+        (r"$\tau_c\,\mathrm{sgn}\,\dot\theta$", 205.0, 155.0, (-ra - 0.2, 0.0), "right", "center"),
+    )
+    for label, a0, a1, at_xy, ha, va in torques:
+        arc_arrow(right, (0, 0), ra, a0, a1, FORCE, "force:" + label)
+        right.text(*at_xy, label, color=FORCE, ha=ha, va=va, fontsize=TEXT, zorder=5)
+
+    caption = (
+        r"The real oscillator of chapter 12, a torsional wheel: $I\ddot\theta + b\dot\theta + "
+        r"\tau_c\,\mathrm{sgn}\,\dot\theta + \kappa\theta = \tau_0\sin\omega t$. "
+        + sentence_panels(
+            fig,
+            [
+                "a wheel of moment of inertia $I$ (kg m²) turns on a bearing about its axle; the spiral spring of "
+                "torsional stiffness $\\kappa$ (N m/rad) joins the axle to a lever; a motor turns an eccentric (a "
+                "crank) through the angle $\\omega t$ ($\\omega$ in rad/s, $t$ in s) and, through a push rod, rocks "
+                "the lever, which winds the spring's outer end; an eddy-current (magnetic) brake (grey) astride the "
+                "rim damps the wheel viscously with coefficient $b$ (N m s/rad), and the bearing adds dry friction "
+                "of torque $\\tau_c$ (N m). The wheel's angle $\\theta$ (rad, blue) is the pointer's turn from its "
+                "rest position "
+                "(dashed).",
+                "the torques on the wheel about its axle (N m): the drive $\\tau_0\\sin\\omega t$ that the rocked "
+                "spring passes on, the spring's $\\kappa\\theta$, the brake's $b\\dot\\theta$ and the bearing's "
+                "Coulomb friction $\\tau_c\\,\\mathrm{sgn}\\,\\dot\\theta$, the last three against positive "
+                "$\\theta$ and $\\dot\\theta$; the weight and the bearing's reaction act through the axle and have "
+                "no moment about it.",
+            ],
+        )
+        + " Torques are vermillion. Divided by $I$, this is the chapter's model with $\\omega_n^2 = \\kappa/I$, "
+        "$2\\zeta\\omega_n = b/I$ and the friction angle $\\Delta = \\tau_c/\\kappa$ (the spring's resting angle "
+        "$c$ taken as zero); the drive there is the measured drive signal $u(t)$ times the gain $g$, the torque "
+        "$\\kappa g u(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily."
+        + _rig_sentence(description, max_angle_rad, encoder_step_rad)
+        + " "
+        + NEWTON_TORQUES
+    )
+    alt = (
+        "A wheel on a spiral spring whose outer end is rocked by a motor through a crank and a push rod, with a "
+        "magnetic brake at its rim, and beside it the wheel alone with the drive torque turning it one way and the "
+        "spring, brake and friction torques turning it back."
+    )
+    return Captioned(fig, caption, "fig-schematic-torsional", alt)
