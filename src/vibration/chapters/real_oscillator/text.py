@@ -1,9 +1,10 @@
-"""Sentences and tables of the real-oscillator chapter, each a function of the study's record.
+"""Sentences of the real-oscillator chapter, each a function of the study's record, and the key-results box.
 
 Every number comes from :class:`~vibration.chapters.real_oscillator.study.RealOscillatorStudy`; every
 sentence is chosen by the data it describes (a second brake setting, driven runs at two settings, a
 rig's documented largest angle), so a run on another laboratory's folder never leaves a statement its
-tables contradict.
+tables contradict. The tables are in :mod:`.tables` and how numbers are written in :mod:`.notation`; both
+are importable from here as well.
 """
 
 from __future__ import annotations
@@ -13,59 +14,29 @@ import re
 
 import numpy as np
 
+from vibration.chapters.real_oscillator.damping import PAPER_LAW, brake_resolved
 from vibration.chapters.real_oscillator.figures import LAW_WORDS
-from vibration.chapters.real_oscillator.study import PAPER_LAW, RealOscillatorStudy
+from vibration.chapters.real_oscillator.notation import NONE, angle, ascii_detail, deg, pm
+from vibration.chapters.real_oscillator.study import RealOscillatorStudy, best_prediction, omega_n, steady_counts
+from vibration.chapters.real_oscillator.tables import (
+    LOOSE_BIC,
+    LOOSE_FACTOR,
+    LOOSE_UNRESOLVED,
+    LOOSE_VALUE,
+    brake_table,
+    claims_csv,
+    damping_csv,
+    law_table,
+    pooled_table,
+    prediction_table,
+    resonance_csv,
+    resonance_table,
+    session_table,
+    steadiness_table,
+    write_csv_tables,
+)
+from vibration.chapters.real_oscillator.verdicts import claims
 from vibration.presentation.narrative import g
-from vibration.presentation.tables import Approx, Column, Composite, Missing, Table
-
-NONE = Missing(reason="not available with these data")
-
-
-def deg(x: float) -> float:
-    """Radians to degrees."""
-    return math.degrees(x)
-
-
-def angle(x: float, digits: int = 3) -> str:
-    """An angle in rad and degrees for a sentence."""
-    if not math.isfinite(x):
-        return "unbounded"
-    d = deg(x)
-    return f"{g(x, digits)} rad ({d:.0f}°)" if abs(d) >= 10 else f"{g(x, digits)} rad ({g(d, 2)}°)"
-
-
-def pm(x: float, s: float, digits: int = 3) -> str:
-    """x ± s for a sentence (the error with two figures)."""
-    if not math.isfinite(s):
-        return g(x, digits)
-    return f"{g(x, digits)} ± {g(s, 2)}"
-
-
-def _wins(s) -> str:
-    return ", ".join(f"{LAW_WORDS[k]} {v}" for k, v in s.wins.items() if v)
-
-
-def best_prediction(st: RealOscillatorStudy):
-    """The prediction of smallest pooled error (None without predictions)."""
-    ps = [p for p in st.predictions.values() if math.isfinite(p.pooled_error)]
-    return min(ps, key=lambda p: p.pooled_error) if ps else None
-
-
-def steady_counts(st: RealOscillatorStudy) -> tuple[int, int, int, int]:
-    """Steady runs, runs, steady runs within 5 % of ω_n, runs within 5 % of ω_n."""
-    wn = _omega_n(st)
-    near = [d for d in st.driven if abs(d.omega / wn - 1.0) <= 0.05]
-    return (
-        sum(d.steady.steady for d in st.driven),
-        len(st.driven),
-        sum(d.steady.steady for d in near),
-        len(near),
-    )
-
-
-def _omega_n(st: RealOscillatorStudy) -> float:
-    s = st.settings[-1]
-    return s.fits["coulomb+viscous"].mean["omega_n"] if "coulomb+viscous" in s.fits else s.fits[s.law].mean["omega_n"]
 
 
 def provenance_text(st: RealOscillatorStudy) -> str:
@@ -104,39 +75,6 @@ def provenance_text(st: RealOscillatorStudy) -> str:
 # ----------------------------------------------------------------------------- damping against amplitude
 
 
-def law_table(st: RealOscillatorStudy) -> Table:
-    """The law each brake setting's free decays choose, and its equivalent damping in the common band."""
-    rows = []
-    for s in st.settings:
-        rows.append(
-            {
-                "brake": s.brake,
-                "current": s.current if s.current is not None else NONE,
-                "law": LAW_WORDS[s.law],
-                "wins": _wins(s),
-                "range": f"{g(s.amplitude_range[0], 2)}–{g(s.amplitude_range[1], 2)}",
-                "zeta": pm(s.zeta_eq, s.zeta_eq_stderr, 3) if math.isfinite(s.zeta_eq) else NONE,
-            }
-        )
-    band = f" ({g(st.band[0], 3)} to {g(st.band[1], 3)} rad)" if st.band else ""
-    t = Table(
-        rows,
-        [
-            Column(key="brake", header="brake"),
-            Column(key="current", header="I (A)", digits=3),
-            Column(key="law", header="law (summed BIC)"),
-            Column(key="wins", header="runs choosing each law"),
-            Column(key="range", header="X (rad)"),
-            Column(key="zeta", header="ζ_eq in the band"),
-        ],
-        f"The damping law each brake setting's free decays choose, and the mean equivalent damping ratio "
-        f"with its run-to-run error over the common amplitude band{band}.",
-        "tab-real-laws",
-    )
-    t.csv = False
-    return t
-
-
 def law_sentence(st: RealOscillatorStudy) -> str:
     """Which law the data choose, per setting and over which amplitudes."""
     parts = []
@@ -155,46 +93,6 @@ def law_sentence(st: RealOscillatorStudy) -> str:
         else " No setting's decays need an amplitude-dependent loss beyond dry friction and a viscous term."
     )
     return "By the information criterion summed over runs, the data choose: " + "; ".join(parts) + "." + tail
-
-
-def brake_table(st: RealOscillatorStudy) -> Table | None:
-    """The brake at matched amplitude: bootstrap difference and the joint fit, per compared pair."""
-    if not st.comparisons:
-        return None
-    rows = []
-    for a, b, d, j in st.comparisons:
-        rows.append(
-            {
-                "pair": f"{b} − {a}",
-                "band": f"{g(d.band[0], 3)}–{g(d.band[1], 3)}",
-                "dz": pm(d.delta_zeta, d.stderr, 2),
-                "ci": f"{g(d.ci_low, 2)} to {g(d.ci_high, 2)}",
-                "joint": pm(j.delta_zeta, j.stderr, 2),
-                "resolved": brake_resolved(d, j),
-            }
-        )
-    t = Table(
-        rows,
-        [
-            Column(key="pair", header="settings"),
-            Column(key="band", header="X band (rad)"),
-            Column(key="dz", header="ζ_eq difference (bootstrap)"),
-            Column(key="ci", header="95 % interval"),
-            Column(key="joint", header="brake-only ζ (joint fit)"),
-            Column(key="resolved", header="resolved"),
-        ],
-        "The brake at matched amplitude: the difference of mean equivalent damping inside the band, by bootstrap "
-        "over runs, and the brake-only viscous term of a joint fit with one shared amplitude law.",
-        "tab-real-brake",
-    )
-    t.csv = False
-    return t
-
-
-def brake_resolved(d, j) -> bool:
-    """Resolved when both estimates exclude 0 (two standard errors) with the same sign."""
-    joint_out = abs(j.delta_zeta) > 2.0 * j.stderr
-    return bool(d.resolved and joint_out and np.sign(d.delta_zeta) == np.sign(j.delta_zeta))
 
 
 def brake_sentence(st: RealOscillatorStudy) -> str:
@@ -220,50 +118,10 @@ def brake_sentence(st: RealOscillatorStudy) -> str:
 # ----------------------------------------------------------------------------- driven runs
 
 
-def _label(d) -> str:
-    if d.steady.steady:
-        return "steady"
-    return "growing" if d.steady.drift > 0 else "decaying or beating"
-
-
-def resonance_table(st: RealOscillatorStudy) -> Table:
-    """Driven-run groups: steady amplitude per brake setting, session and drive frequency."""
-    rows = []
-    for gr in st.groups:
-        rows.append(
-            {
-                "brake": gr.brake,
-                "session": gr.session,
-                "omega": gr.omega,
-                "amp": pm(gr.amplitude, gr.amplitude_stderr, 3) if gr.n_steady else NONE,
-                "deg": deg(gr.amplitude) if gr.n_steady else NONE,
-                "steady": f"{gr.n_steady} of {len(gr.runs)}",
-                "t90": float(np.median([d.steady.t90 for d in gr.runs])),
-            }
-        )
-    t = Table(
-        rows,
-        [
-            Column(key="brake", header="brake"),
-            Column(key="session", header="session"),
-            Column(key="omega", header="ω (rad/s)", digits=4),
-            Column(key="amp", header="amplitude (rad)"),
-            Column(key="deg", header="amplitude (°)", digits=3),
-            Column(key="steady", header="steady runs"),
-            Column(key="t90", header="t_90 (s)", digits=2),
-        ],
-        "Driven runs grouped by measured drive frequency: the mean late amplitude of the steady runs with its "
-        "run-to-run error, and the median time to 90 % of the final amplitude.",
-        "tab-real-groups",
-    )
-    t.csv = False
-    return t
-
-
 def steadiness_sentence(st: RealOscillatorStudy) -> str:
     """How many runs are steady, near resonance and elsewhere, and what the others do."""
     n_st, n, n_near_st, n_near = steady_counts(st)
-    near = [d for d in st.driven if abs(d.omega / _omega_n(st) - 1.0) <= 0.05]
+    near = [d for d in st.driven if abs(d.omega / omega_n(st) - 1.0) <= 0.05]
     t90 = float(np.median([d.steady.t90 for d in near])) if near else math.nan
     drift = [d.steady.drift for d in near if d.steady.steady]
     grow = sum(1 for d in st.driven if not d.steady.steady and d.steady.drift > 0)
@@ -289,47 +147,29 @@ def steadiness_sentence(st: RealOscillatorStudy) -> str:
     return s
 
 
-# ----------------------------------------------------------------------------- prediction
-
-
-def prediction_table(st: RealOscillatorStudy) -> Table | None:
-    """Each law's calibrated gain, pooled prediction error (overall and per session) and steady resonance."""
-    if not st.predictions:
-        return None
-    rows = []
-    for (b, law), p in st.predictions.items():
-        res = max((a for _, a in p.resonance.values()), default=math.nan)
-        rows.append(
-            {
-                "law": LAW_WORDS[law],
-                "brake": b,
-                "gain": p.gain,
-                "err": 100 * p.pooled_error if math.isfinite(p.pooled_error) else Missing(reason="unbounded"),
-                "sim": 100 * p.sim_pooled_error
-                if math.isfinite(p.sim_pooled_error)
-                else Missing(reason="not simulated"),
-                "res": res if math.isfinite(res) else Missing(reason="unbounded"),
-                "resdeg": deg(res) if math.isfinite(res) else Missing(reason="unbounded"),
-            }
+def session_sentence(st: RealOscillatorStudy) -> str:
+    """How far apart the sessions are at matched drive frequency (the systematic error across sessions)."""
+    if len(st.sessions) < 2:
+        return "All driven runs come from one session, so no comparison crosses sessions."
+    sp = st.spread
+    if not sp.pairs:
+        return (
+            f"The driven runs come from {len(st.sessions)} sessions with no drive frequency in common, so the "
+            "session-to-session spread is unknown and no comparison across sessions is made with a stated error."
         )
-    t = Table(
-        rows,
-        [
-            Column(key="law", header="law"),
-            Column(key="brake", header="brake"),
-            Column(key="gain", header="g", digits=3),
-            Column(key="err", header="error, harmonic balance (%)", digits=3),
-            Column(key="sim", header="error, simulated (%)", digits=3),
-            Column(key="res", header="resonance (rad)", digits=3),
-            Column(key="resdeg", header="resonance (°)", digits=3),
-        ],
-        "Each law, its gain calibrated off resonance, predicting the other steady runs: pooled rms relative error "
-        "by harmonic balance and by simulating each run from its measured start with its measured drive, and the "
-        "law's largest steady amplitude at the mean drive.",
-        "tab-real-prediction",
+    first, second = st.sessions[0].session, st.sessions[1].session
+    return (
+        f"At matched drive frequency ({sp.pairs} pairs of groups within "
+        f"{g(100 * st.params.frequency_tolerance, 2)} %), "
+        f"the steady amplitude per unit drive differs between sessions by {g(100 * sp.spread, 2)} % rms "
+        f"(session {first} over session {second}: {g(100 * sp.mean_log_ratio, 2)} % on average, both as logarithmic "
+        "ratios). "
+        "Settings are compared within a session; a comparison across sessions carries this spread as a systematic "
+        "error, and the single gain used here for all sessions leaves part of it in the prediction errors."
     )
-    t.csv = False
-    return t
+
+
+# ----------------------------------------------------------------------------- prediction
 
 
 def prediction_sentence(st: RealOscillatorStudy) -> str:
@@ -417,256 +257,11 @@ def simulation_sentence(st: RealOscillatorStudy) -> str:
     return s
 
 
-# ----------------------------------------------------------------------------- details
-
-
-def steadiness_table(st: RealOscillatorStudy) -> Table:
-    """Every driven run: frequency, late drift, t90, label, drive-frequency and centre drift."""
-    rows = [
-        {
-            "run": f"{d.run.session}/{d.run.run}",
-            "brake": d.run.brake,
-            "omega": d.omega,
-            "drift": f"{g(100 * d.steady.drift, 2)} ± {g(100 * d.steady.drift_stderr, 1)}",
-            "t90": d.steady.t90,
-            "label": _label(d),
-            "fdrift": 100 * d.frequency_drift,
-            "centre": d.centre_drift,
-        }
-        for d in st.driven
-    ]
-    t = Table(
-        rows,
-        [
-            Column(key="run", header="session/run"),
-            Column(key="brake", header="brake"),
-            Column(key="omega", header="ω (rad/s)", digits=4),
-            Column(key="drift", header="late drift (%)"),
-            Column(key="t90", header="t_90 (s)", digits=2),
-            Column(key="label", header="state"),
-            Column(key="fdrift", header="drive drift (%)", digits=2),
-            Column(key="centre", header="centre drift (rad)", digits=2),
-        ],
-        "Every driven run: late drift with its standard error, time to 90 % of the final amplitude, and the "
-        "change of drive frequency and of the wheel's centre over the record.",
-        "tab-real-runs",
-    )
-    t.csv = False
-    return t
-
-
-def session_table(st: RealOscillatorStudy) -> Table | None:
-    """Per session: runs, steady runs, drive-frequency and centre drift, and the best law's errors."""
-    if not st.sessions:
-        return None
-    best = best_prediction(st)
-    rows = []
-    for ss in st.sessions:
-        fm, fl, fh = (100 * x for x in ss.frequency_drift)
-        cm, cl, ch = ss.centre_drift
-        hb = best.session_errors.get(ss.session, math.nan) if best else math.nan
-        sim = best.sim_session_errors.get(ss.session, math.nan) if best else math.nan
-        rows.append(
-            {
-                "session": ss.session,
-                "runs": f"{ss.steady} of {ss.runs}",
-                "fdrift": f"{g(fm, 2)} ({g(fl, 2)} to {g(fh, 2)})",
-                "centre": f"{g(cm, 2)} ({g(cl, 2)} to {g(ch, 2)})",
-                "hb": 100 * hb if math.isfinite(hb) else Missing(reason="no predicted run"),
-                "sim": 100 * sim if math.isfinite(sim) else Missing(reason="no predicted run"),
-            }
-        )
-    law = f" ({LAW_WORDS[best.law]})" if best else ""
-    t = Table(
-        rows,
-        [
-            Column(key="session", header="session"),
-            Column(key="runs", header="steady runs"),
-            Column(key="fdrift", header="drive drift (%), median (range)"),
-            Column(key="centre", header="centre drift (rad), median (range)"),
-            Column(key="hb", header="error, harmonic balance (%)", digits=3),
-            Column(key="sim", header="error, simulated (%)", digits=3),
-        ],
-        "Each session's driven runs: how many are steady, the change of drive frequency from the first to the second "
-        f"half of each record and of the wheel's centre from the first to the last period, and the prediction "
-        f"error of the best law{law}.",
-        "tab-real-sessions",
-    )
-    t.csv = False
-    return t
-
-
-def session_sentence(st: RealOscillatorStudy) -> str:
-    """How far apart the sessions are at matched drive frequency (the systematic error across sessions)."""
-    if len(st.sessions) < 2:
-        return "All driven runs come from one session, so no comparison crosses sessions."
-    sp = st.spread
-    if not sp.pairs:
-        return (
-            f"The driven runs come from {len(st.sessions)} sessions with no drive frequency in common, so the "
-            "session-to-session spread is unknown and no comparison across sessions is made with a stated error."
-        )
-    first, second = st.sessions[0].session, st.sessions[1].session
-    return (
-        f"At matched drive frequency ({sp.pairs} pairs of groups within "
-        f"{g(100 * st.params.frequency_tolerance, 2)} %), "
-        f"the steady amplitude per unit drive differs between sessions by {g(100 * sp.spread, 2)} % rms "
-        f"(session {first} over session {second}: {g(100 * sp.mean_log_ratio, 2)} % on average, both as logarithmic "
-        "ratios). "
-        "Settings are compared within a session; a comparison across sessions carries this spread as a systematic "
-        "error, and the single gain used here for all sessions leaves part of it in the prediction errors."
-    )
-
-
-def pooled_table(st: RealOscillatorStudy) -> Table:
-    """Every law's pooled coefficients per brake setting, with run-to-run errors, BIC and residual over step."""
-    rows = []
-    for s in st.settings:
-        for law, p in s.fits.items():
-            loose = "power" in law  # a weakly determined exponent: its digits depend on the machine's rounding
-
-            def num(value, digits, *, loose=loose, **tolerance):
-                return (Approx(value=value, **tolerance), digits) if loose else g(value, digits)
-
-            parts = []
-            for k, v in p.coefficients.items():
-                factor = LOOSE_UNRESOLVED if k == "power" else LOOSE_FACTOR
-                parts += ["; " if parts else "", f"{_SYMBOL[k]} = ", num(v, 3, factor=factor), " ± "]
-                parts += [num(p.stderr[_KEY[k]], 2, factor=LOOSE_FACTOR)]
-            omega = (
-                "",
-                num(p.mean["omega_n"], 4, rtol=LOOSE_VALUE),
-                " ± ",
-                num(p.stderr["omega_n"], 2, factor=LOOSE_FACTOR),
-            )
-            rows.append(
-                {
-                    "brake": s.brake,
-                    "law": LAW_WORDS[law],
-                    "omega_n": Composite(parts=omega) if loose else "".join(omega),
-                    "coef": Composite(parts=tuple(parts)) if loose else "".join(parts),
-                    "bic": Approx(value=p.bic, rtol=LOOSE_BIC) if loose else p.bic,
-                    "rms": Approx(value=p.rms_over_step, rtol=LOOSE_VALUE) if loose else p.rms_over_step,
-                }
-            )
-    t = Table(
-        rows,
-        [
-            Column(key="brake", header="brake"),
-            Column(key="law", header="law"),
-            Column(key="omega_n", header="ω_n (rad/s)"),
-            Column(key="coef", header="coefficients (run-to-run error)"),
-            Column(key="bic", header="BIC (sum)", digits=6),
-            Column(key="rms", header="rms / (step/√12)", digits=3),
-        ],
-        "Every law fitted to every free decay, pooled per brake setting: coefficients (ζ; Δ in rad; b in 1/rad; a; "
-        "p) with run-to-run standard errors, summed BIC, and the residual rms over the encoder's rounding noise.",
-        "tab-real-fits",
-        notes=(
-            "The power law's exponent is weakly determined by the decays: the last digits of its rows depend on the "
-            "computer's floating-point rounding.",
-        ),
-    )
-    t.csv = False
-    return t
-
-
-#: Tolerances of the power law's machine-dependent digits (declared for the regression comparison): ω_n and the
-#: rms within 50 %, its coefficients and their run-to-run errors within a factor of 10 (a coefficient moved from
-#: 5.4×10⁻⁶ to 2.1×10⁻⁵ between two numerical environments), its summed BIC within 1 %.
-LOOSE_VALUE, LOOSE_FACTOR, LOOSE_BIC = 0.5, 10.0, 0.01
-#: The power term's coefficient a itself is not resolved by the decays (its run-to-run error exceeds it by
-#: orders of magnitude): any value within a factor of 1000 reads the same.
-LOOSE_UNRESOLVED = 1000.0
-_SYMBOL = {"viscous": "ζ", "coulomb": "Δ", "quadratic": "b", "power": "a", "power_exponent": "p"}
-_KEY = {
-    "viscous": "zeta",
-    "coulomb": "friction",
-    "quadratic": "quadratic",
-    "power": "power",
-    "power_exponent": "power_exponent",
-}
-
-
-# ----------------------------------------------------------------------------- CSV tables
-
-
-def damping_csv(st: RealOscillatorStudy) -> Table:
-    """tab-real-damping.csv: the equivalent damping per brake setting in the band."""
-    lo, hi = st.band if st.band else (math.nan, math.nan)
-    rows = [
-        {
-            "brake": s.brake,
-            "brake_current_A": s.current if s.current is not None else Missing(reason="unknown"),
-            "zeta_eq": s.zeta_eq if math.isfinite(s.zeta_eq) else Missing(reason="no band"),
-            "zeta_eq_stderr": s.zeta_eq_stderr if math.isfinite(s.zeta_eq_stderr) else Missing(reason="one run"),
-            "band_low_rad": lo if math.isfinite(lo) else Missing(reason="no band"),
-            "band_high_rad": hi if math.isfinite(hi) else Missing(reason="no band"),
-            "law": s.law,
-            "n_runs": s.n_band,
-        }
-        for s in st.settings
-    ]
-    cols = ["brake", "brake_current_A", "zeta_eq", "zeta_eq_stderr", "band_low_rad", "band_high_rad", "law", "n_runs"]
-    return Table(
-        rows,
-        [Column(key=c, header=c, digits=6) for c in cols],
-        "Equivalent damping per brake setting.",
-        "tab-real-damping",
-    )
-
-
-def resonance_csv(st: RealOscillatorStudy) -> Table:
-    """tab-real-resonance.csv: the driven-run groups."""
-    rows = [
-        {
-            "brake": gr.brake,
-            "session": gr.session,
-            "omega_rad_s": gr.omega,
-            "amplitude_rad": gr.amplitude if gr.n_steady else Missing(reason="no steady run"),
-            "amplitude_stderr_rad": gr.amplitude_stderr
-            if math.isfinite(gr.amplitude_stderr)
-            else Missing(reason="none"),
-            "steady_runs": gr.n_steady,
-            "runs": len(gr.runs),
-        }
-        for gr in st.groups
-    ]
-    cols = ["brake", "session", "omega_rad_s", "amplitude_rad", "amplitude_stderr_rad", "steady_runs", "runs"]
-    if not rows:
-        rows = [dict.fromkeys(cols, Missing(reason="no driven runs"))]
-    return Table(rows, [Column(key=c, header=c, digits=6) for c in cols], "Driven-run groups.", "tab-real-resonance")
-
-
-def claims_csv(st: RealOscillatorStudy) -> Table:
-    """tab-real-claims.csv: claim_id, claim, verdict, detail."""
-    from vibration.chapters.real_oscillator.verdicts import claims
-
-    rows = [
-        {"claim_id": c.claim_id, "claim": c.claim, "verdict": c.verdict, "detail": ascii_detail(c.detail)}
-        for c in claims(st)
-    ]
-    cols = ["claim_id", "claim", "verdict", "detail"]
-    return Table(
-        rows, [Column(key=c, header=c) for c in cols], "The paper's claims on the hardware.", "tab-real-claims"
-    )
-
-
-def ascii_detail(text: str) -> str:
-    """A detail for a CSV cell: ASCII minus, no ± (written out), degrees dropped (the radians stay)."""
-    text = re.sub(r" \(-?[0-9.]+°\)", "", text.replace("−", "-"))
-    return text.replace(" ± ", " with standard error ").replace("ωₙ", "omega_n")
-
-
-def write_csv_tables(st: RealOscillatorStudy, folder=None) -> list:
-    """Write the three machine-readable tables (when the runner sets the tables folder, or to ``folder``)."""
-    return [t.write_csv(folder) for t in (damping_csv(st), resonance_csv(st), claims_csv(st))]
+# ----------------------------------------------------------------------------- the chapter
 
 
 def key_results(st: RealOscillatorStudy) -> str:
     """The key-results box: computed headline numbers as a Markdown block quote."""
-    from vibration.chapters.real_oscillator.verdicts import claims
-
     n_st, n, n_near_st, n_near = steady_counts(st)
     lines = [
         "Damping law chosen by the free decays: "
@@ -693,3 +288,39 @@ def key_results(st: RealOscillatorStudy) -> str:
 def summary_text(st: RealOscillatorStudy) -> str:
     """The chapter's closing paragraph."""
     return " ".join([law_sentence(st), brake_sentence(st), steadiness_sentence(st), prediction_sentence(st)])
+
+
+__all__ = [
+    "LOOSE_BIC",
+    "LOOSE_FACTOR",
+    "LOOSE_UNRESOLVED",
+    "LOOSE_VALUE",
+    "NONE",
+    "angle",
+    "ascii_detail",
+    "best_prediction",
+    "brake_resolved",
+    "brake_sentence",
+    "brake_table",
+    "claims_csv",
+    "damping_csv",
+    "deg",
+    "key_results",
+    "law_sentence",
+    "law_table",
+    "pm",
+    "pooled_table",
+    "prediction_sentence",
+    "prediction_table",
+    "provenance_text",
+    "resonance_csv",
+    "resonance_table",
+    "session_sentence",
+    "session_table",
+    "simulation_sentence",
+    "steadiness_sentence",
+    "steadiness_table",
+    "steady_counts",
+    "summary_text",
+    "write_csv_tables",
+]

@@ -11,8 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from vibration.chapters.real_oscillator.study import RealOscillatorStudy
-from vibration.chapters.real_oscillator.text import _omega_n, angle, pm
+from vibration.chapters.real_oscillator.notation import angle, pm
+from vibration.chapters.real_oscillator.study import RealOscillatorStudy, omega_n
 from vibration.physics.paper import load_claims
 from vibration.presentation.narrative import g
 from vibration.presentation.tables import Column, Table
@@ -24,6 +24,13 @@ PAPER_AMPLIFICATION, ABOUT_FACTOR = 10.0, 1.5
 SUPPRESSED = 0.1
 #: Runs within this relative distance of ωₙ are "at resonance"; beyond LOW_RATIO ωₙ "far below".
 NEAR, LOW_RATIO = 0.05, 0.7
+#: Each claim in a few words (the key-results box).
+SHORT = {
+    "C09": "about 10-fold at resonance",
+    "C18": "damping suppresses resonance",
+    "C19": "grows uncontrollably",
+    "C-damping": "damping matters most near resonance",
+}
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -35,6 +42,11 @@ class Claim:
     short: str
     verdict: str
     detail: str
+
+
+def _claim(claim_id: str, claim: str, *, verdict: str, detail: str) -> Claim:
+    """The claim ``claim_id`` (the paper's words ``claim``) with its verdict and evidence."""
+    return Claim(claim_id=claim_id, claim=claim, short=SHORT[claim_id], verdict=verdict, detail=detail)
 
 
 def _ratio_groups(st, brake):
@@ -51,7 +63,7 @@ def _ratio_groups(st, brake):
 
 
 def _amplification(st):
-    wn = _omega_n(st)
+    wn = omega_n(st)
     res = {}
     for brake in dict.fromkeys(d.run.brake for d in st.driven):
         rg = _ratio_groups(st, brake)
@@ -77,10 +89,9 @@ def _amplification(st):
 def _c09(st, quote) -> Claim:
     amp = _amplification(st)
     if not amp:
-        return Claim(
-            claim_id="C09",
-            claim=quote,
-            short="about 10-fold at resonance",
+        return _claim(
+            "C09",
+            quote,
             verdict=VERDICTS[3],
             detail="needs steady runs at resonance and far below it (ω ≤ 0.7 ωₙ) at one brake setting",
         )
@@ -102,10 +113,9 @@ def _c09(st, quote) -> Claim:
         )
 
     detail = "; ".join(one(b, s, *v) for (b, s), v in amp.items())
-    return Claim(
-        claim_id="C09",
-        claim=quote,
-        short="about 10-fold at resonance",
+    return _claim(
+        "C09",
+        quote,
         verdict=verdict,
         detail=f"steady resonant amplitude over the static one: {detail}",
     )
@@ -124,7 +134,7 @@ def _settings_order(st):
 
 
 def _peak(st, brake, session):
-    wn = _omega_n(st)
+    wn = omega_n(st)
     rg = [x for x in _ratio_groups(st, brake) if x[0].session == session and abs(x[0].omega / wn - 1.0) <= NEAR]
     return max(rg, key=lambda x: x[1]) if rg else None
 
@@ -142,10 +152,9 @@ def _c18(st, quote) -> Claim:
                 pairs.append((sess, r, se, a[0], b[0]))
     if not pairs:
         brakes = ", ".join(order) or "none"
-        return Claim(
-            claim_id="C18",
-            claim=quote,
-            short="damping suppresses resonance",
+        return _claim(
+            "C18",
+            quote,
             verdict=VERDICTS[3],
             detail=f"steady driven runs near resonance exist at brake settings: {brakes}; driven runs near resonance "
             "at a second brake setting (for example without the brake) in the same session would test it",
@@ -162,36 +171,33 @@ def _c18(st, quote) -> Claim:
         f"{order[0]} ({angle(b.amplitude)} against {angle(a.amplitude)})"
         for s, r, se, a, b in pairs
     )
-    return Claim(claim_id="C18", claim=quote, short="damping suppresses resonance", verdict=verdict, detail=detail)
+    return _claim("C18", quote, verdict=verdict, detail=detail)
 
 
 def _c19(st, quote) -> Claim:
-    wn = _omega_n(st)
+    wn = omega_n(st)
     near = [d for d in st.driven if abs(d.omega / wn - 1.0) <= NEAR]
     steady = [d for d in near if d.steady.steady]
     if not near:
-        return Claim(
-            claim_id="C19",
-            claim=quote,
-            short="grows uncontrollably",
+        return _claim(
+            "C19",
+            quote,
             verdict=VERDICTS[3],
             detail="no driven run near resonance; runs within 5 % of ωₙ would test it",
         )
     if not steady:
-        return Claim(
-            claim_id="C19",
-            claim=quote,
-            short="grows uncontrollably",
+        return _claim(
+            "C19",
+            quote,
             verdict=VERDICTS[3],
             detail=f"none of the {len(near)} runs near resonance is steady by the end of its record; longer records "
             "would test it",
         )
     t90 = float(np.median([d.steady.t90 for d in steady]))
     top = max(d.steady.amplitude for d in steady)
-    return Claim(
-        claim_id="C19",
-        claim=quote,
-        short="grows uncontrollably",
+    return _claim(
+        "C19",
+        quote,
         verdict=VERDICTS[2],
         detail=f"{len(steady)} of {len(near)} runs near resonance are steady: the amplitude saturates, 90 % reached "
         f"in a median {g(t90, 2)} s, largest {angle(top)}",
@@ -201,12 +207,11 @@ def _c19(st, quote) -> Claim:
 def _c_critical(st) -> Claim:
     order = _settings_order(st)
     text = "damping matters most near resonance (the paper's conclusion, paraphrased)"
-    wn = _omega_n(st)
+    wn = omega_n(st)
     if len(order) < 2:
-        return Claim(
-            claim_id="C-damping",
-            claim=text,
-            short="damping matters most near resonance",
+        return _claim(
+            "C-damping",
+            text,
             verdict=VERDICTS[3],
             detail="driven runs at one brake setting only; runs at a second setting, on and off resonance, would "
             "test it",
@@ -225,10 +230,9 @@ def _c_critical(st) -> Claim:
         r = x[1] / m[1]
         (near if abs(x[0].omega / wn - 1.0) <= NEAR else off if abs(x[0].omega / wn - 1.0) >= 0.1 else []).append(r)
     if not near or not off:
-        return Claim(
-            claim_id="C-damping",
-            claim=text,
-            short="damping matters most near resonance",
+        return _claim(
+            "C-damping",
+            text,
             verdict=VERDICTS[3],
             detail="needs steady runs at both brake settings at matched frequencies, near and away from resonance",
         )
@@ -239,10 +243,9 @@ def _c_critical(st) -> Claim:
         verdict = VERDICTS[1]
     else:
         verdict = VERDICTS[2]
-    return Claim(
-        claim_id="C-damping",
-        claim=text,
-        short="damping matters most near resonance",
+    return _claim(
+        "C-damping",
+        text,
         verdict=verdict,
         detail=f"amplitude at brake {hi} over that at brake {lo}: {g(rn, 3)} near resonance, {g(ro, 3)} away from it",
     )
@@ -257,7 +260,7 @@ def claims(st: RealOscillatorStudy) -> list[Claim]:
 def claims_table(st: RealOscillatorStudy) -> Table:
     """The claims with verdicts and evidence."""
     rows = [{"claim": f"“{c.claim}”", "verdict": c.verdict, "detail": c.detail} for c in claims(st)]
-    t = Table(
+    return Table(
         rows,
         [
             Column(key="claim", header="the paper"),
@@ -266,6 +269,5 @@ def claims_table(st: RealOscillatorStudy) -> Table:
         ],
         "The paper's claims on the real oscillator, each with the verdict the measurements support and its evidence.",
         "tab-real-claim-verdicts",
+        csv=False,
     )
-    t.csv = False
-    return t
