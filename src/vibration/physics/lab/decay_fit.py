@@ -148,6 +148,37 @@ def _starts(guesses, terms, g_quad: float, span: float, peaks, k0: int) -> list[
     return starts
 
 
+def _best_of_starts(resid, starts, free, lb: np.ndarray, ub: np.ndarray):
+    """The best local least-squares solution from the starts (the surface of an oscillation has local minima)."""
+    sol = None
+    for start in starts:
+        x0 = np.array([start[k] for k in free])
+        x0 = np.clip(x0, lb + 1e-9 * (ub - lb), ub - 1e-9 * (ub - lb))
+        trial = optimize.least_squares(resid, x0, bounds=(lb, ub), x_scale="jac", max_nfev=MAX_NFEV, method="trf")
+        if sol is None or trial.cost < sol.cost:
+            sol = trial
+    return sol
+
+
+def _standard_errors(misfit, phys: dict, free, base: dict, r: np.ndarray, lags: int) -> tuple[dict, dict, dict]:
+    """Standard errors keyed by every parameter (0 when fixed): reported, naive and Newey-West (``lags`` lags).
+
+    The Jacobian is taken by central differences at the solution ``phys``, in the physical parameters.
+    """
+    xp0 = np.array([phys[k] for k in free])
+
+    def resid_phys(v):
+        return misfit({**base, **dict(zip(free, v, strict=True))})
+
+    J = central_jacobian(resid_phys, xp0, r.size, [k in base for k in free])
+    naive, hac = standard_errors(J, r, lags)
+    se_n = {k: 0.0 for k in _ALL}
+    se_h = {k: 0.0 for k in _ALL}
+    se_n.update(zip(free, naive, strict=True))
+    se_h.update(zip(free, hac, strict=True))
+    return {k: max(se_n[k], se_h[k]) for k in _ALL}, se_n, se_h
+
+
 def _coefficients(terms, p: dict) -> dict:
     """The fitted terms' coefficients keyed by term ("viscous", "coulomb", ...), and "power_exponent"."""
     coefficients = {}
@@ -260,33 +291,14 @@ def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
 
     lb = np.array([lo[k] for k in free])
     ub = np.array([hi[k] for k in free])
-    sol = None
-    for start in _starts(guesses, terms, g_quad, span, peaks, k0):  # the least-squares surface has local minima
-        x0 = np.array([start[k] for k in free])
-        x0 = np.clip(x0, lb + 1e-9 * (ub - lb), ub - 1e-9 * (ub - lb))
-        trial = optimize.least_squares(resid, x0, bounds=(lb, ub), x_scale="jac", max_nfev=MAX_NFEV, method="trf")
-        if sol is None or trial.cost < sol.cost:
-            sol = trial
+    sol = _best_of_starts(resid, _starts(guesses, terms, g_quad, span, peaks, k0), free, lb, ub)
     x = sol.x
     r = resid(x)
-    # central-difference Jacobian at the solution, in the physical parameters
     phys = params(x)
-    xp0 = np.array([phys[k] for k in free])
-
-    def resid_phys(v):
-        return misfit({**base, **dict(zip(free, v, strict=True))})
-
-    J = central_jacobian(resid_phys, xp0, r.size, [k in base for k in free])
     n, p_free = r.size, x.size
     rss = float(r @ r)
-    dt_med = float(np.median(np.diff(tw)))
-    lags = int(min(max(1, round(half / dt_med)), n // 4))
-    naive, hac = standard_errors(J, r, lags)
-    se_n = {k: 0.0 for k in _ALL}
-    se_h = {k: 0.0 for k in _ALL}
-    se_n.update(zip(free, naive, strict=True))
-    se_h.update(zip(free, hac, strict=True))
-    se = {k: max(se_n[k], se_h[k]) for k in _ALL}
+    lags = int(min(max(1, round(half / float(np.median(np.diff(tw))))), n // 4))
+    se, se_n, se_h = _standard_errors(misfit, phys, free, base, r, lags)
     kpar = p_free + 1
     m2ll = n * math.log(2.0 * math.pi * max(rss, 1e-300) / n) + n
     dw, lb_p = whiteness(r)
