@@ -229,6 +229,74 @@ class SemiActiveSweep:
     law: str  # the control law
 
 
+def _sweep_plan(osc, law_i, p, ws, Y, *, c_sky, c_min, settle, periods, spp, dt_max):
+    """Each frequency's RK4 step (s), steps in all and while settling, and its starting state (checked budgets).
+
+    The start is the steady state of the linear loop: the ideal skyhook, or the passive damper ``c + c_min``
+    for ``law="passive"``; it settles for ``settle`` time constants of the slowest decay any law allows.
+    """
+    sigma = (osc.c + c_min) / (2.0 * osc.m)
+    if sigma <= 0.0:
+        raise ParameterError(
+            f"c + c_min = {osc.c + c_min!r} N s/m: allowed > 0 (a steady state needs some damping in every state)"
+        )
+    c_start = osc.c + (c_min if law_i == 0 else 0.0)
+    sky = c_sky if law_i != 0 else 0.0
+    dts, n_steps, n_settle = np.empty(ws.size), np.empty(ws.size, np.int64), np.empty(ws.size, np.int64)
+    s0s = np.zeros((ws.size, 5))
+    for j, w in enumerate(ws.tolist()):  # Python floats: an overflow gives inf (checked below), not a warning
+        if not math.isfinite(2.0 * math.pi / w):
+            raise ParameterError(f"omegas contains {w!r} rad/s: its period overflows; allowed a finite period")
+        dts[j], n_per = _sa_step(law_i, w, spp, dt_max)
+        _sa_rate_check(p, dts[j], w, spp)
+        settle_periods = settle / sigma / (2.0 * math.pi / w)
+        if not (settle_periods + periods) * n_per <= RK4_STEPS_MAX:
+            raise ParameterError(
+                f"omegas contains {w!r} rad/s: settling {settle!r} time constants of {1.0 / sigma:.3g} s "
+                f"(c + c_min = {osc.c + c_min!r} N s/m) takes {settle_periods:.3g} periods of {n_per} RK4 steps: "
+                f"allowed at most {RK4_STEPS_MAX} steps"
+            )
+        n_settle[j] = math.ceil(settle_periods) * n_per
+        n_steps[j] = n_settle[j] + periods * n_per
+        if n_steps[j] > RK4_STEPS_MAX:
+            raise ParameterError(
+                f"omegas contains {w!r} rad/s: it needs {n_steps[j]} RK4 steps (settle = {settle!r} time constants "
+                f"of {1.0 / sigma:.3g} s plus {periods} periods), allowed at most {RK4_STEPS_MAX}"
+            )
+        # start in the steady state of the linear loop (c_start to the base, sky to the frame)
+        h = (osc.k + 1j * osc.c * w) / (osc.k - osc.m * w * w + 1j * (c_start + sky) * w) * Y
+        s0s[j, :2] = h.imag, w * h.real
+    if n_steps.sum() > SWEEP_STEPS_MAX:
+        raise ParameterError(
+            f"omegas has {ws.size} frequencies needing {int(n_steps.sum())} RK4 steps in all: "
+            f"allowed at most {SWEEP_STEPS_MAX} (fewer frequencies, periods or steps_per_period)"
+        )
+    return dts, n_steps, n_settle, s0s
+
+
+def _sweep_runs(law_i, p, Y, ws, s0s, dts, n_steps, n_settle) -> np.ndarray:
+    """The compiled sweep's per-frequency sums; a frequency whose run overflowed runs again with a shorter step.
+
+    ``dts``, ``n_steps`` and ``n_settle`` are updated in place for the frequencies run again.
+    """
+    st = _sa_kernel()[1](law_i, p, Y, ws, s0s, dts, n_steps, n_settle)
+    # The MR damper's internal (Bouc-Wen) state stiffens with the stroke velocity, so a fast or stiff plant
+    # can need a shorter step than dt_max: the frequencies whose run overflowed are run again with a quarter
+    # of the step, at most REFINE times, inside the same budget of RK4 steps.
+    spent = int(n_steps.sum())
+    for _ in range(REFINE):
+        bad = ~np.all(np.isfinite(st), axis=1)
+        if not bad.any():
+            break
+        more = 4 * int(n_steps[bad].sum())
+        if spent + more > SWEEP_STEPS_MAX:
+            break
+        spent += more
+        dts[bad], n_steps[bad], n_settle[bad] = dts[bad] / 4.0, 4 * n_steps[bad], 4 * n_settle[bad]
+        st[bad] = _sa_kernel()[1](law_i, p, Y, ws[bad], s0s[bad], dts[bad], n_steps[bad], n_settle[bad])
+    return st
+
+
 def semi_active_sweep(
     osc: Oscillator,
     law: str,
@@ -276,58 +344,11 @@ def semi_active_sweep(
     periods = check_int("periods", periods, low=1, high=1000)
     spp = check_int("steps_per_period", steps_per_period, low=100, high=100_000)
     dt_max = check_real("dt_max", dt_max, low=0.0, low_open=True, unit="s")
-    sigma = (osc.c + c_min) / (2.0 * osc.m)
-    if sigma <= 0.0:
-        raise ParameterError(
-            f"c + c_min = {osc.c + c_min!r} N s/m: allowed > 0 (a steady state needs some damping in every state)"
-        )
     ws = w_arr.ravel()
-    c_start = osc.c + (c_min if law_i == 0 else 0.0)
-    sky = c_sky if law_i != 0 else 0.0
-    dts, n_steps, n_settle = np.empty(ws.size), np.empty(ws.size, np.int64), np.empty(ws.size, np.int64)
-    s0s = np.zeros((ws.size, 5))
-    for j, w in enumerate(ws.tolist()):  # Python floats: an overflow gives inf (checked below), not a warning
-        if not math.isfinite(2.0 * math.pi / w):
-            raise ParameterError(f"omegas contains {w!r} rad/s: its period overflows; allowed a finite period")
-        dts[j], n_per = _sa_step(law_i, w, spp, dt_max)
-        _sa_rate_check(p, dts[j], w, spp)
-        settle_periods = settle / sigma / (2.0 * math.pi / w)
-        if not (settle_periods + periods) * n_per <= RK4_STEPS_MAX:
-            raise ParameterError(
-                f"omegas contains {w!r} rad/s: settling {settle!r} time constants of {1.0 / sigma:.3g} s "
-                f"(c + c_min = {osc.c + c_min!r} N s/m) takes {settle_periods:.3g} periods of {n_per} RK4 steps: "
-                f"allowed at most {RK4_STEPS_MAX} steps"
-            )
-        n_settle[j] = math.ceil(settle_periods) * n_per
-        n_steps[j] = n_settle[j] + periods * n_per
-        if n_steps[j] > RK4_STEPS_MAX:
-            raise ParameterError(
-                f"omegas contains {w!r} rad/s: it needs {n_steps[j]} RK4 steps (settle = {settle!r} time constants "
-                f"of {1.0 / sigma:.3g} s plus {periods} periods), allowed at most {RK4_STEPS_MAX}"
-            )
-        # start in the steady state of the linear loop (c_start to the base, sky to the frame)
-        h = (osc.k + 1j * osc.c * w) / (osc.k - osc.m * w * w + 1j * (c_start + sky) * w) * Y
-        s0s[j, :2] = h.imag, w * h.real
-    if n_steps.sum() > SWEEP_STEPS_MAX:
-        raise ParameterError(
-            f"omegas has {ws.size} frequencies needing {int(n_steps.sum())} RK4 steps in all: "
-            f"allowed at most {SWEEP_STEPS_MAX} (fewer frequencies, periods or steps_per_period)"
-        )
-    st = _sa_kernel()[1](law_i, p, Y, ws, s0s, dts, n_steps, n_settle)
-    # The MR damper's internal (Bouc-Wen) state stiffens with the stroke velocity, so a fast or stiff plant
-    # can need a shorter step than dt_max: the frequencies whose run overflowed are run again with a quarter
-    # of the step, at most REFINE times, inside the same budget of RK4 steps.
-    spent = int(n_steps.sum())
-    for _ in range(REFINE):
-        bad = ~np.all(np.isfinite(st), axis=1)
-        if not bad.any():
-            break
-        more = 4 * int(n_steps[bad].sum())
-        if spent + more > SWEEP_STEPS_MAX:
-            break
-        spent += more
-        dts[bad], n_steps[bad], n_settle[bad] = dts[bad] / 4.0, 4 * n_steps[bad], 4 * n_settle[bad]
-        st[bad] = _sa_kernel()[1](law_i, p, Y, ws[bad], s0s[bad], dts[bad], n_steps[bad], n_settle[bad])
+    dts, n_steps, n_settle, s0s = _sweep_plan(
+        osc, law_i, p, ws, Y, c_sky=c_sky, c_min=c_min, settle=settle, periods=periods, spp=spp, dt_max=dt_max
+    )
+    st = _sweep_runs(law_i, p, Y, ws, s0s, dts, n_steps, n_settle)
     if not np.all(np.isfinite(st)):
         bad = ws[~np.all(np.isfinite(st), axis=1)][0]
         raise ParameterError(
