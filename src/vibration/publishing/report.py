@@ -97,7 +97,6 @@ def run(
     """
     import logging
 
-    import grimp
     import nbformat
 
     out = out.resolve()  # kernels run in notebooks/: every path they get must be absolute
@@ -111,18 +110,7 @@ def run(
             (work / sub).mkdir()
         total = len(chapters)
         t0 = time.perf_counter()
-        graph = grimp.build_graph("vibration", cache_dir=None)
-        results, manifests, todo = {}, {}, []
-        for ch in chapters:
-            params = {k: v for k, v in values.items() if k in ch.params}
-            manifests[ch.name] = _manifest(ch, params, graph)
-            found = store.lookup(ch.name, manifests[ch.name]) if cache else None
-            if found is not None and found.hit:
-                results[ch.name] = {"executed": store.notebook(ch.name), "elapsed_s": found.elapsed_s}
-                log(f"[cached] {ch.name}: nothing it depends on changed")
-            else:
-                why = _why(found.reasons) if found is not None else "the cache is off"
-                todo.append((ch, params, why, store.last_elapsed(ch.name)))
+        results, manifests, todo = _plan(chapters, values, store, cache, log)
         book_key = _book_digest(chapters, manifests, values, pdf)
         if not todo and cache and store.book_matches(book_key) and _tree_complete(out, pdf):
             log(
@@ -156,22 +144,8 @@ def run(
         state = out / "book-state" if cache else None  # Sphinx's folder, kept: only changed pages are rebuilt
         info = build_book(pages, work / "report", work / "book", pdf=pdf, state=state, title=contents.title)
         shutil.rmtree(work / "book", ignore_errors=True)
-        pdf_text = f", PDF {_plural(info['pdf_pages'], 'page')}" if "pdf_pages" in info else ""
-        if "pdf_pages" in info and "pdf_s" not in info:
-            pdf_text += " (no page changed: not reprinted)"
-        pages_text = ""
-        if "changed" in info:
-            names = [n for n in info["changed"] if not n.startswith("_static/")]  # pages, not their downloads
-            shown = f" ({', '.join(names)})" if 0 < len(names) <= 4 else ""
-            pages_text = f", {_plural(len(names), 'page')} changed{shown}"
-            if len(info["changed"]) > len(names):
-                pages_text += f" (and {_plural(len(info['changed']) - len(names), 'static file')})"
-        log(f"book: built in {time.perf_counter() - t1:.1f} s{pages_text}{pdf_text}")
-        for sub in ("notebooks", "report", "tables"):
-            target = out / sub
-            if target.exists():
-                target.rename(work / f"old-{sub}")
-            (work / sub).rename(target)
+        log(f"book: built in {time.perf_counter() - t1:.1f} s{_build_summary(info)}")
+        _move_into_place(work, out)
         store.remember_book(book_key)
         ran = len(todo)
         log(
@@ -181,6 +155,55 @@ def run(
         return [{"name": p.name, "title": p.title, "elapsed_s": p.elapsed_s} for p in pages]
     finally:
         shutil.rmtree(work, ignore_errors=True)
+
+
+def _plan(chapters: list[Chapter], values: dict, store: ChapterCache, cache: bool, log):
+    """Which chapters the cache holds and which run again: ``(results, manifests, todo)``, the cached chapters'
+    executed notebooks and times, every chapter's manifest, and ``(chapter, parameters, why, last seconds)`` of
+    each chapter to run."""
+    import grimp
+
+    graph = grimp.build_graph("vibration", cache_dir=None)
+    results, manifests, todo = {}, {}, []
+    for ch in chapters:
+        params = {k: v for k, v in values.items() if k in ch.params}
+        manifests[ch.name] = _manifest(ch, params, graph)
+        found = store.lookup(ch.name, manifests[ch.name]) if cache else None
+        if found is not None and found.hit:
+            results[ch.name] = {"executed": store.notebook(ch.name), "elapsed_s": found.elapsed_s}
+            log(f"[cached] {ch.name}: nothing it depends on changed")
+        else:
+            why = _why(found.reasons) if found is not None else "the cache is off"
+            todo.append((ch, params, why, store.last_elapsed(ch.name)))
+    return results, manifests, todo
+
+
+def _build_summary(info: dict) -> str:
+    """What the book's build did, for the runner's log (leading comma): the pages changed, the PDF's pages.
+
+    >>> _build_summary({"changed": ["04_x.ipynb", "_static/a.css"], "pdf_pages": 3})
+    ', 1 page changed (04_x.ipynb) (and 1 static file), PDF 3 pages (no page changed: not reprinted)'
+    """
+    pdf_text = f", PDF {_plural(info['pdf_pages'], 'page')}" if "pdf_pages" in info else ""
+    if "pdf_pages" in info and "pdf_s" not in info:
+        pdf_text += " (no page changed: not reprinted)"
+    pages_text = ""
+    if "changed" in info:
+        names = [n for n in info["changed"] if not n.startswith("_static/")]  # pages, not their downloads
+        shown = f" ({', '.join(names)})" if 0 < len(names) <= 4 else ""
+        pages_text = f", {_plural(len(names), 'page')} changed{shown}"
+        if len(info["changed"]) > len(names):
+            pages_text += f" (and {_plural(len(info['changed']) - len(names), 'static file')})"
+    return pages_text + pdf_text
+
+
+def _move_into_place(work: Path, out: Path) -> None:
+    """The finished notebooks, book and tables of ``work`` replace those of ``out`` (the old ones stay in ``work``)."""
+    for sub in ("notebooks", "report", "tables"):
+        target = out / sub
+        if target.exists():
+            target.rename(work / f"old-{sub}")
+        (work / sub).rename(target)
 
 
 def _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, cell_timeout, log) -> None:
