@@ -394,13 +394,13 @@ def test_a_chaotic_run_started_one_ulp_away_stays_within_the_declared_tolerances
     from conftest import nbval_sanitize as _sanitize
     from nbval_numeric import mismatches
 
-    from vibration.chapters.duffing import study as study_module
+    from vibration.chapters.duffing import chaos as chaos_module
 
     runs = tuple(
         ((math.nextafter(x0, math.inf) if x0 else x0, math.nextafter(v0, math.inf) if v0 else v0), spp)
-        for (x0, v0), spp in study_module.LYAPUNOV_RUNS
+        for (x0, v0), spp in chaos_module.LYAPUNOV_RUNS
     )
-    monkeypatch.setattr(study_module, "LYAPUNOV_RUNS", runs)
+    monkeypatch.setattr(chaos_module, "LYAPUNOV_RUNS", runs)
     moved = duffing_study(Params())
     assert moved.main_run.exponent != default.main_run.exponent  # the trajectory did move
     makes = (text.lyapunov_sentence, text.published_sentence, text.key_results, text.summary,
