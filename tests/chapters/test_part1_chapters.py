@@ -32,7 +32,7 @@ from vibration.chapters.reproduction import figures as rep_figures
 from vibration.chapters.reproduction import reproduction_study
 from vibration.chapters.reproduction import text as rep_text
 from vibration.physics.audit import verdict
-from vibration.presentation.captions import Captioned, check_caption
+from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 from vibration.presentation.narrative import g, sig
 from vibration.presentation.style import case_style
 
@@ -185,6 +185,7 @@ def test_no_paragraph_appears_twice_in_a_chapter(chapters, notebook, keys, figur
     paragraphs = [p for k, t in chapters["texts"].items() if k.startswith(keys) for p in _paragraphs(t)]
     paragraphs += [p for md in _notebook_markdown(notebook) for p in _paragraphs(md)]
     paragraphs += [chapters["figures"][i].caption for i in figures]
+    paragraphs += [chapters["figures"][i].remark for i in figures if chapters["figures"][i].remark]
     paragraphs += [chapters["tables"][i].caption for i in tables if i < len(chapters["tables"])]
     seen: dict[str, str] = {}
     for p in paragraphs:
@@ -251,9 +252,20 @@ def test_captions_pass_their_figure_check_and_the_cases_keep_their_colours(chapt
     # "coincide" only when RK45's worst error, recomputed from the runs, is below the stated share
     for fig, ids in ((resonance, ("reference", "resonance")), (damping, rep_figures.DAMPING_IDS)):
         worst = max(np.max(np.abs(rep.paper[s].x - rep.exact[s].x)) / rep.cases[s].peak_x for s in ids)
-        assert ("coincide" in fig.caption) == (worst < rep_figures.COINCIDE), (fig.name, worst)
-        assert f"{g(100 * worst, 2)} %" in fig.caption
-    assert f"{g(100 * rep.worst.rel_err, 2)} %" in error.caption
+        said = fig.caption + " " + fig.remark
+        assert ("coincide" in said) == (worst < rep_figures.COINCIDE), (fig.name, worst)
+        assert f"{g(100 * worst, 2)} %" in said
+    assert f"{g(100 * rep.worst.rel_err, 2)} %" in error.caption + " " + error.remark
+
+
+def test_chapter_one_captions_stay_within_the_books_limit(chapters):
+    """Every figure and table caption of chapter 1 is at most 60 words, at the paper's and the other parameters."""
+    resonance, damping, error, _front = chapters["figures"]
+    findings, methods = chapters["tables"][:2]
+    for item in (resonance, damping, error, findings, methods):
+        assert caption_words(item.caption) <= CAPTION_WORDS, (chapters["key"], item.name, item.caption)
+    for fig in (resonance, damping, error):
+        assert fig.remark, fig.name  # what left the caption is said under the figure
 
 
 def test_reproduction_sentences_state_what_the_numbers_say(chapters):

@@ -3,8 +3,8 @@
 Colours and line styles come from the book's visual language (:func:`vibration.presentation.style.case_style`):
 the reference run orange, the nominal damping (the paper's resonance run) blue, the low damping
 vermillion, the high damping green; the exact solution black and dashed. Captions are built from
-the drawn figure (its panel layout) and the study's numbers, and say when the paper's method and
-the exact solution coincide.
+the drawn figure (its panel layout) and the study's numbers; each figure's remark says whether the
+paper's method and the exact solution coincide, and by how much they differ.
 """
 
 from __future__ import annotations
@@ -50,15 +50,18 @@ def _draw_run(ax_x, ax_v, st: ReproductionStudy, sid: str) -> None:
     ax_v.plot(exact.t, exact.v, lw=0.8, **exact_style)
 
 
-def coincidence(st: ReproductionStudy, ids) -> str:
-    """What a caption says about RK45 and the exact curves of the runs ``ids``, from the worst relative error."""
+def coincidence(st: ReproductionStudy, ids, where: str) -> str:
+    """The remark on RK45 and the exact curves of the runs ``ids`` (``where``: "In both runs"), from the worst error."""
     worst = max(st.cases[s].rel_err for s in ids)
     if worst < COINCIDE:
         return (
-            f"the two coincide at this scale (RK45's largest displacement error is {g(100 * worst, 2)} % of the "
-            "run's peak)"
+            f"{where} RK45 and the exact solution coincide at this scale: RK45's largest displacement error is "
+            f"{g(100 * worst, 2)} % of the run's peak."
         )
-    return f"they differ visibly: RK45's largest displacement error reaches {g(100 * worst, 2)} % of the run's peak"
+    return (
+        f"{where} RK45 and the exact solution differ visibly: RK45's largest displacement error reaches "
+        f"{g(100 * worst, 2)} % of the run's peak."
+    )
 
 
 def resonance_figure(st: ReproductionStudy) -> Captioned:
@@ -81,15 +84,15 @@ def resonance_figure(st: ReproductionStudy) -> Captioned:
     caption = (
         f"The resonance run (ω = {g(res.force.omega)} rad/s, {COLOUR_WORD[CASE_OF['resonance']]}) and the reference "
         f"run (ω = {g(ref.force.omega)} rad/s, {COLOUR_WORD[CASE_OF['reference']]}), both at c = {g(c)} N s/m and "
-        f"from rest, by the paper's method (RK45, solid) with the exact solution drawn over them (black, dashed): "
-        f"{coincidence(st, ids)}. {top.capitalize()}: displacement x(t); {bottom}: velocity v(t)."
+        f"from rest, by the paper's method (RK45, solid) with the exact solution drawn over them (black, dashed). "
+        f"{top.capitalize()}: displacement x(t); {bottom}: velocity v(t)."
     )
     alt = (
         f"Displacement and velocity against time over {g(st.t_end)} s: the resonance run builds up to an amplitude of "
         f"about {g(st.cases['resonance'].peak_x, 3)} m, the reference run stays near "
         f"{g(st.cases['reference'].peak_x, 3)} m."
     )
-    return Captioned(fig, caption, "fig-reproduction-resonance", alt)
+    return Captioned(fig, caption, "fig-reproduction-resonance", alt, remark=coincidence(st, ids, "In both runs"))
 
 
 def damping_figure(st: ReproductionStudy) -> Captioned:
@@ -112,22 +115,21 @@ def damping_figure(st: ReproductionStudy) -> Captioned:
     parts = []
     for col, sid in zip(cols, DAMPING_IDS, strict=True):
         c = st.scenarios[sid].oscillator.c
-        text = f"{col}, {case_name(sid)} c = {g(c)} N s/m ({COLOUR_WORD[CASE_OF[sid]]})"
-        if sid == "damping_nominal" and "resonance" in st.run_of(sid):
-            text += ", the resonance run of the figure above"
-        parts.append(text)
+        extra = ", the resonance run above" if sid == "damping_nominal" and "resonance" in st.run_of(sid) else ""
+        parts.append(f"{col}, {case_name(sid)} c = {g(c)} N s/m ({COLOUR_WORD[CASE_OF[sid]]}{extra})")
     caption = (
-        f"The three dampings forced at ω = {g(w)} rad/s from rest, one column each: {'; '.join(parts)}. "
-        f"{rows[0].capitalize()} row: displacement x(t); {rows[1]} row: velocity v(t); each row's panels have their "
-        f"own vertical scale. The paper's method (RK45, solid) lies under the exact solution (black, dashed): "
-        f"{coincidence(st, DAMPING_IDS)}."
+        f"RK45 (solid) under the exact solution (black, dashed), forced at ω = {g(w)} rad/s from rest: "
+        f"{'; '.join(parts)}. {rows[0].capitalize()} row: displacement; {rows[1]} row: velocity; each panel on its "
+        "own vertical scale."
     )
     peaks = ", ".join(f"{g(st.cases[s].peak_x, 3)} m" for s in DAMPING_IDS)
     alt = (
         f"Six panels of displacement and velocity against time for the low, nominal and high damping at resonance; "
         f"their largest displacements are {peaks}."
     )
-    return Captioned(fig, caption, "fig-reproduction-damping", alt)
+    return Captioned(
+        fig, caption, "fig-reproduction-damping", alt, remark=coincidence(st, DAMPING_IDS, "At the three dampings")
+    )
 
 
 def error_figure(st: ReproductionStudy) -> Captioned:
@@ -152,11 +154,14 @@ def error_figure(st: ReproductionStudy) -> Captioned:
     caption = (
         f"How far the paper's method strays from the exact solution: RK45's largest displacement error up to time "
         f"t, divided by the run's largest exact displacement, on a logarithmic axis, for each distinct run: "
-        f"{', '.join(labels)}. At the end of the window the largest is {g(100 * worst.rel_err, 2)} % "
-        f"({case_name(worst.scenario_id)})."
+        f"{', '.join(labels)}."
+    )
+    remark = (
+        f"At the end of the window the largest of these errors is {g(100 * worst.rel_err, 2)} %, in the "
+        f"{case_name(worst.scenario_id)} run."
     )
     alt = (
         f"Rising curves of RK45's relative error against time on a logarithmic scale for {len(st.runs)} runs; all "
         f"end at or below {g(100 * worst.rel_err, 2)} % of their peak displacement."
     )
-    return Captioned(fig, caption, "fig-reproduction-error", alt)
+    return Captioned(fig, caption, "fig-reproduction-error", alt, remark=remark)
