@@ -17,7 +17,7 @@ from vibration import Oscillator, SineForce, steady_state
 from vibration.chapters.solver_accuracy import Params, SolverStudy, figures, solver_accuracy_study, text
 from vibration.chapters.solver_accuracy.study import MACHINE_DEPENDENT, atol_for
 from vibration.physics.model import ParameterError
-from vibration.presentation.captions import check_caption
+from vibration.presentation.captions import CAPTION_WORDS, caption_words, check_caption
 from vibration.presentation.style import WIDTH_IN, legend_overlap
 
 PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "chapters" / "solver_accuracy"
@@ -99,7 +99,7 @@ def test_prose_is_for_readers(study):
 
 def test_no_paragraph_appears_twice(study):
     texts = _all_text(study) + table_texts([f(study) for f in TABLES])
-    texts += [c.caption for c in (f(study) for f in FIGURES)]
+    texts += [text for c in (f(study) for f in FIGURES) for text in (c.caption, c.remark) if text]
     assert repeated(texts) == []
 
 
@@ -108,6 +108,7 @@ def test_captions_match_their_figures_and_legends_cover_no_data(study):
         c = f(study)
         check_caption(c.fig, c.caption)  # Captioned checked it too; a contradiction raises
         assert prose_problems(c.caption) == [], (c.name, c.caption)
+        assert prose_problems(c.remark) == [], (c.name, c.remark)
         assert c.fig.get_figwidth() <= WIDTH_IN + 1e-9
         for ax in c.fig.axes:
             if ax.get_legend() is not None:
@@ -153,9 +154,19 @@ def test_work_precision_caption_gives_the_tightening_direction_from_the_data(stu
     for method in rising:
         nfev = [r.nfev for r in study.ladder(method)]
         assert nfev == sorted(nfev)
-    assert "tightens from left to right" in c.caption
-    assert "right to left" not in c.caption
+    said = c.caption + " " + c.remark
+    assert "tightens from left to right" in said
+    assert "right to left" not in said
     assert "(left)" in c.caption and "(right)" in c.caption
+
+
+def test_captions_stay_within_the_books_limit():
+    """Every figure and table caption is at most 60 words, at the paper's parameters and at a far set."""
+    far = {"m": 3.0, "k": 80.0, "F0": 12.0, "c_nominal": 1.2, "omega_res": 5.16, "t_end": 30.0, "n_points": 2001}
+    for values in ({}, far):
+        st = solver_accuracy_study(Params.from_values(values))
+        for item in [f(st) for f in FIGURES] + [f(st) for f in TABLES]:
+            assert caption_words(item.caption) <= CAPTION_WORDS, (values, item.name, item.caption)
 
 
 def test_caption_check_refuses_a_wrong_direction_word():

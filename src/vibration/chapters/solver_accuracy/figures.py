@@ -70,14 +70,14 @@ def work_precision_figure(study: SolverStudy) -> Captioned:
     caption = (
         f"Worst displacement error of each run against its right-hand-side evaluations ({left}) and its wall time on "
         f"the machine that built this page ({right}), logarithmic axes, one line per method "
-        f"({listing(list(study.methods))}), {len(study.runs)} runs in all. {direction}."
+        f"({listing(list(study.methods))}), {len(study.runs)} runs in all."
     )
     alt = (
         "Two log-log plots of the worst displacement error against the number of function evaluations and against "
         f"the run time for {len(study.methods)} integrators; the error falls as the work rises, fastest for "
         f"{study.reach.cheapest}."
     )
-    return Captioned(fig, caption, "fig-solvers-work-precision", alt)
+    return Captioned(fig, caption, "fig-solvers-work-precision", alt, remark=f"{direction}.")
 
 
 def own_steps_figure(study: SolverStudy) -> Captioned:
@@ -107,12 +107,15 @@ def own_steps_figure(study: SolverStudy) -> Captioned:
     caption = (
         f"The last {num(n_periods, 2)} forcing periods of the resonance case (t from {num(t0, 3)} to {num(t1, 3)} s): "
         f"the exact displacement on the output grid (black, dashed) and straight lines through the {n_steps} steps "
-        f"RK45 takes there at SciPy's defaults (blue dots). The peaks of that line fall short of the exact ones, by "
-        f"{num(100 * s.shortfall, 2)} % on average over the last {num(100 * LATE, 2)} % of the window."
+        f"RK45 takes there at SciPy's defaults (blue dots)."
+    )
+    remark = (
+        f"The peaks of the line through RK45's steps fall short of the exact ones, by {num(100 * s.shortfall, 2)} % "
+        f"on average over the last {num(100 * LATE, 2)} % of the window."
     )
     alt = (
         "Displacement against time over the last forcing periods: a dashed black exact sine wave and a blue line "
         f"through about {num(s.per_period, 2)} solver steps per period whose corners reach "
         f"{num(100 * (1 - s.shortfall), 3)} % of the exact peaks on average."
     )
-    return Captioned(fig, caption, "fig-solvers-steps", alt)
+    return Captioned(fig, caption, "fig-solvers-steps", alt, remark=remark)
