@@ -59,3 +59,17 @@ def test_the_book_page_folds_what_the_notebook_tags():
     ]
     sources = [c.source for c in prepare(ChapterPage("09_t", nb, part="P")).cells]
     assert sources.count("</details>") == 1 and sources[1].startswith('<details class="vib-details">')
+
+
+def test_each_section_at_the_folds_level_gets_its_own_fold():
+    cells = [
+        _cell("md", "### Runs\nA", ["details"]),
+        _cell("md", "#### Inside\nB", ["details"]),
+        _cell("md", "### Trade-off\nC", ["details"]),
+    ]
+    out = [c.source for c in fold_details(cells)]
+    assert [s for s in out if s.startswith("<details")] == [
+        '<details class="vib-details"><summary>Details: Runs</summary>',
+        '<details class="vib-details"><summary>Details: Trade-off</summary>',
+    ]
+    assert "**Inside**\nB" in out and out.count("</details>") == 2

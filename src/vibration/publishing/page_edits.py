@@ -142,15 +142,16 @@ _HEADING = re.compile(r"^(#{1,6})\s+(.+?)\s*$", re.M)
 
 def fold_details(cells: list) -> list:
     """Each run of consecutive cells tagged :data:`DETAILS` folded into one ``<details>`` section: its
-    summary is the heading the run opens with ("Details" when it opens with none); headings inside it
+    summary is the heading the run opens with ("Details" when it opens with none); a tagged cell that
+    opens with a heading of that level or higher starts a fold of its own, and the other headings inside
     become bold lines, so no section of the page starts inside a fold. The print edition unfolds them.
 
     >>> md = nbformat.v4.new_markdown_cell
     >>> a, b, c = md("### Convergence\\n\\nText."), md("## More\\nx"), md("after")
     >>> a.metadata["tags"] = b.metadata["tags"] = ["details"]
     >>> [x.source for x in fold_details([a, b, c])]  # doctest: +NORMALIZE_WHITESPACE
-    ['<details class="vib-details"><summary>Details: Convergence</summary>', '\\nText.', '**More**\\nx',
-     '</details>', 'after']
+    ['<details class="vib-details"><summary>Details: Convergence</summary>', '\\nText.', '</details>',
+     '<details class="vib-details"><summary>Details: More</summary>', '\\nx', '</details>', 'after']
     """
     out, run = [], []
 
@@ -186,12 +187,20 @@ def fold_details(cells: list) -> list:
 
     for cell in cells:
         if DETAILS in _tags(cell):
+            if run and _level(run[0]) and _level(cell) and _level(cell) <= _level(run[0]):
+                flush()  # the next section at the fold's own level opens a fold of its own
             run.append(cell)
         else:
             flush()
             out.append(cell)
     flush()
     return out
+
+
+def _level(cell) -> int:
+    """The level of the heading a markdown cell opens with (0: none)."""
+    head = _HEADING.match(cell.source.lstrip()) if cell.cell_type == "markdown" else None
+    return len(head[1]) if head else 0
 
 
 def _caption_from_output(cell) -> None:
