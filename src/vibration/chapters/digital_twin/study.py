@@ -286,17 +286,12 @@ def _delay_theory(asset, p, fit, t, force, sd, threshold, drift) -> dict:
 
 
 def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStudy:
-    """Run the whole chapter's computation.
+    """Chapter 10 on one parameter record: identification, its coverage, the monitored asset and its alarms.
 
-    Parameters
-    ----------
-    params : Params, optional
-        The validated parameters; or give them as keyword arguments (checked by the schema).
-
-    Returns
-    -------
-    DigitalTwinStudy
-        Frozen record of every result the chapter shows.
+    ``params`` is the chapter's validated record (the force band and its rms, the sampling step, the record
+    lengths, the noise, the faults, the seed), or the values are given as keyword arguments and checked by
+    the schema. Every record the study reads is synthetic, drawn from that seed. Returns the frozen
+    :class:`DigitalTwinStudy`.
     """
     p = params if params is not None else Params.from_values(values)
     asset = Oscillator(m=p.m, c=p.c_nominal, k=p.k)

@@ -216,17 +216,12 @@ def _surface(task: OscillatorTask, ref: LQRReference, learners) -> CostSurface:
 
 
 def learning_study(params: Params | None = None, **values) -> LearningStudy:
-    """Run the whole chapter's computation.
+    """The learning chapter on one parameter record: the optimum, the learners and the harder tasks.
 
-    Parameters
-    ----------
-    params : Params, optional
-        The validated parameters; or give them as keyword arguments (checked by the schema).
-
-    Returns
-    -------
-    LearningStudy
-        Frozen record of every result the chapter shows.
+    ``params`` is the chapter's validated record (the task's step, horizon, force weight and limit, the
+    damper's range, the seeds and the evaluation episodes), or the values are given as keyword arguments
+    and checked by the schema; the plant must be passive (``c_nominal >= 0``). Returns the frozen
+    :class:`LearningStudy`.
     """
     p = params if params is not None else Params.from_values(values)
     check_real("c_nominal", p.c_nominal, low=0.0, unit="N s/m")  # a learner needs a passive plant
