@@ -59,29 +59,25 @@ def _eval_regime(q: str, run: _Run, runs: dict[str, _Run]):
     return "", osc.regime, f"ζ = c/(2√(km)) = {_g(osc.c)}/{osc.critical_damping:.4f} = {zeta:.4f}."
 
 
+def _steady_amplitude(run: _Run, sym: str, exact: float, why: str):
+    """The late peak of ``x`` or ``v`` by RK45, and the steady amplitude with why (none without a steady state)."""
+    late = run.late(getattr(run.paper, sym))
+    return (late, exact, why) if run.has_steady else (late, None, _no_steady_text(run.sc.oscillator))
+
+
 def _eval_steady_amplitude_x(q: str, run: _Run, runs: dict[str, _Run]):
     osc, force, t_end, wn, zeta, ss, no_steady = _context(run)
-    if not run.has_steady:
-        return run.late(run.paper.x), None, no_steady
-    return (
-        run.late(run.paper.x),
-        ss.amplitude,
-        (
-            f"x_ss = F0/√((k − mω²)² + (cω)²) = {_g(ss.amplitude)} m, {_g(ss.magnification, 3)} times the "
-            f"static deflection F0/k = {_g(ss.static_deflection)} m."
-        ),
+    why = (
+        f"x_ss = F0/√((k − mω²)² + (cω)²) = {_g(ss.amplitude)} m, {_g(ss.magnification, 3)} times the "
+        f"static deflection F0/k = {_g(ss.static_deflection)} m."
     )
+    return _steady_amplitude(run, "x", ss.amplitude, why)
 
 
 def _eval_steady_amplitude_v(q: str, run: _Run, runs: dict[str, _Run]):
     osc, force, t_end, wn, zeta, ss, no_steady = _context(run)
-    if not run.has_steady:
-        return run.late(run.paper.v), None, no_steady
-    return (
-        run.late(run.paper.v),
-        ss.velocity_amplitude,
-        f"v_ss = ω x_ss = {_g(force.omega)} × {_g(ss.amplitude)} m = {_g(ss.velocity_amplitude)} m/s.",
-    )
+    why = f"v_ss = ω x_ss = {_g(force.omega)} × {_g(ss.amplitude)} m = {_g(ss.velocity_amplitude)} m/s."
+    return _steady_amplitude(run, "v", ss.velocity_amplitude, why)
 
 
 def _window_peaks(run: _Run, sym: str, unit: str, tail: str):
