@@ -261,10 +261,9 @@ def white_noise_monte_carlo(
 
     Parameters
     ----------
-    osc : Oscillator
-        m (kg), c (N s/m, > 0), k (N/m).
-    S0 : float
-        Two-sided force spectral density, N^2 s/rad (>= 0).
+    osc, S0
+        As in :func:`white_noise_variance`: m (kg), c (N s/m, > 0), k (N/m); two-sided force spectral
+        density, N^2 s/rad (>= 0).
     n_paths : int
         Independent paths (2 to 100000).
     duration : float, optional
