@@ -22,7 +22,7 @@ from vibration.chapters.frequency_response import (
     text,
 )
 from vibration.physics.model import ParameterError
-from vibration.presentation.captions import check_caption
+from vibration.presentation.captions import CAPTION_WORDS, caption_words, check_caption
 from vibration.presentation.style import WIDTH_IN, case_style, legend_overlap
 
 PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "chapters" / "frequency_response"
@@ -141,7 +141,7 @@ def test_prose_is_for_readers(study):
 
 def test_no_paragraph_appears_twice(study):
     texts = [f(study) for f in SENTENCES] + table_texts([f(study) for f in TABLES])
-    texts += [c.caption for c in (f(study) for f in FIGURES)]
+    texts += [text for c in (f(study) for f in FIGURES) for text in (c.caption, c.remark) if text]
     assert repeated(texts) == []
 
 
@@ -150,6 +150,7 @@ def test_captions_match_their_figures(study):
         c = f(study)
         check_caption(c.fig, c.caption)
         assert prose_problems(c.caption) == [], (c.name, c.caption)
+        assert prose_problems(c.remark) == [], (c.name, c.remark)
         assert c.fig.get_figwidth() <= WIDTH_IN + 1e-9
         for ax in c.fig.axes:
             if ax.get_legend() is not None:
@@ -191,12 +192,10 @@ def test_dampings_keep_the_books_colours(study):
 
 def test_coinciding_curves_are_said_to_coincide():
     st = frequency_response_study(c_low=0.5, n_points=1001, n_omega=20, n_damping=10)
-    cap = figures.response_figure(st).caption
-    assert "The low damping and nominal damping curves coincide to within 1 %." in cap
-    assert (
-        "coincide"
-        not in figures.response_figure(frequency_response_study(n_points=1001, n_omega=20, n_damping=10)).caption
-    )
+    fig = figures.response_figure(st)
+    assert "The low damping and nominal damping curves coincide to within 1 %." in fig.caption + " " + fig.remark
+    apart = figures.response_figure(frequency_response_study(n_points=1001, n_omega=20, n_damping=10))
+    assert "coincide" not in apart.caption + " " + apart.remark
 
 
 def test_negative_damping_is_left_out_of_the_figure_and_said_so():
@@ -223,5 +222,20 @@ def test_usage_example_runs_on_its_own():
 
 
 def test_no_nan_or_inf_in_the_words(study):
-    for f in (*SENTENCES, *(lambda s, f=f: f(s).caption for f in FIGURES)):
+    for f in (*SENTENCES, *(lambda s, f=f: f(s).caption + " " + f(s).remark for f in FIGURES)):
         assert not re.search(r"\b(nan|inf)\b", f(study))
+
+
+#: Far from the paper: heavier and stiffer, lightly damped at its nominal, heavily damped (ζ ≈ 1.9) at its high.
+FAR = {"m": 3.0, "k": 80.0, "F0": 12.0, "omega_ref": 3.4, "omega_res": 5.16, "c_low": 0.2, "c_nominal": 1.2,
+       "c_high": 60.0, "n_omega": 60, "n_damping": 40}  # fmt: skip
+
+
+@pytest.mark.parametrize("values", [{}, FAR], ids=["defaults", "far"])
+def test_captions_stay_within_the_books_limit(values):
+    """Every figure and table caption of the chapter is at most 60 words; what a figure shows is in its remark."""
+    st = frequency_response_study(Params.from_values(values))
+    for item in [f(st) for f in FIGURES] + [f(st) for f in TABLES]:
+        assert caption_words(item.caption) <= CAPTION_WORDS, (item.name, item.caption)
+    for f in (figures.decomposition_figure, figures.energy_figure, figures.design_figure):
+        assert f(st).remark, f.__name__

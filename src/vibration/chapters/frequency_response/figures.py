@@ -2,7 +2,8 @@
 
 The paper's three dampings keep the book's colours (:func:`vibration.presentation.style.case_style`):
 low damping vermillion, nominal blue, high bluish green. Captions name the panels from the figure's
-layout (:func:`panel_words`), the colours and line styles actually drawn, and say when curves coincide.
+layout (:func:`panel_words`) and the colours and line styles actually drawn; each figure's remark says what
+it shows (curves that coincide, the largest value, how well a balance closes).
 """
 
 from __future__ import annotations
@@ -99,13 +100,11 @@ def response_figure(study: FrequencyStudy) -> Captioned:
     place_legend(ax_p)
     top, bottom = panel_words(fig)
     caption = (
-        f"Magnification ({top}, logarithmic axes, forcing frequency in rad/s below and Hz above) and phase lag "
-        f"({bottom}) for the {_dampings_words(study, drawn)}; the natural frequency "
-        f"$\\omega_n$ = {num(study.omega_n)} rad/s dotted, the paper's {len(marks)} operating points circled."
+        f"Magnification ({top}, logarithmic axes; forcing frequency in rad/s below, Hz above) and phase lag "
+        f"({bottom}) of the {_dampings_words(study, drawn)}; the natural frequency "
+        f"$\\omega_n$ = {num(study.omega_n)} rad/s dotted; the paper's {len(marks)} operating points circled."
     )
-    same = coinciding(study)
-    if same:
-        caption += " " + " ".join(f"The {a} and {b} curves coincide to within 1 %." for a, b in same)
+    remark = " ".join(f"The {a} and {b} curves coincide to within 1 %." for a, b in coinciding(study))
     missing = [c for c in study.cases if not c.steady]
     if missing:
         caption += (
@@ -122,7 +121,7 @@ def response_figure(study: FrequencyStudy) -> Captioned:
         )
         + ", and the phase lag rising from 0 to 180 degrees through 90 degrees at the natural frequency."
     )
-    return Captioned(fig, caption, "fig-frequency-response", alt)
+    return Captioned(fig, caption, "fig-frequency-response", alt, remark=remark)
 
 
 def decomposition_figure(study: FrequencyStudy) -> Captioned:
@@ -147,23 +146,25 @@ def decomposition_figure(study: FrequencyStudy) -> Captioned:
     place_legend(ax, ncols=2)
     top, bottom = panel_words(fig)
     colour = COLOUR_WORD[case_style(case.case)["color"]]
-    together = (
-        f"they coincide to within 2 % of the steady amplitude from the settling time t = {num(d.t_s, 3)} s on "
-        "(dotted line)"
+    remark = (
+        "The total displacement and its steady state coincide to within 2 % of the steady amplitude from the "
+        f"settling time t = {num(d.t_s, 3)} s on."
         if settled
-        else f"they still differ by more than 2 % of the steady amplitude at the end of the {num(t_end)} s window"
+        else "The total displacement and its steady state still differ by more than 2 % of the steady amplitude at "
+        f"the end of the {num(t_end)} s window."
     )
     caption = (
         f"The resonance case (c = {num(res.oscillator.c)} N s/m, ω = {num(res.force.omega)} rad/s) from rest, "
-        f"exactly. {top.capitalize()}: the total displacement ({colour}) and its steady state (black, dashed); "
-        f"{together}. {bottom.capitalize()}: the transient (grey), computed separately as the free motion from "
-        "what the steady state leaves over at t = 0."
+        f"exactly. {top.capitalize()}: the total displacement ({colour}) and its steady state (black, dashed)"
+        + (f", the settling time t = {num(d.t_s, 3)} s dotted" if settled else "")
+        + f". {bottom.capitalize()}: the transient (grey), computed separately as the free motion from what the "
+        "steady state leaves over at t = 0."
     )
     alt = (
         f"Displacement against time for {num(t_end)} s: an oscillation growing from rest onto a steady sine of "
         f"amplitude {num(d.X, 3)} m; below, the transient starting at {num(d.x_h0, 3)} m and decaying."
     )
-    return Captioned(fig, caption, "fig-frequency-decomposition", alt)
+    return Captioned(fig, caption, "fig-frequency-decomposition", alt, remark=remark)
 
 
 def energy_figure(study: FrequencyStudy) -> Captioned:
@@ -183,26 +184,28 @@ def energy_figure(study: FrequencyStudy) -> Captioned:
     w_max = float(np.max(np.abs(eb.work)))
     gap = float(np.max(np.abs(eb.work - eb.dissipated))) / w_max if w_max > 0 else 0.0
     together = (
-        "W and D coincide to within 1 % of the largest work"
+        "The work W and the dissipation D coincide to within 1 % of the largest work"
         if gap < COINCIDE
-        else f"W and D part by up to {num(100 * gap, 2)} % of the largest work, the energy stored in the motion"
+        else f"The work W and the dissipation D part by up to {num(100 * gap, 2)} % of the largest work, the energy "
+        "stored in the motion"
     )
     rel = study.energy_residual(0)
     residual = (
-        f"below {num(TOL_CLOSED)} of the largest work, quadrature error only"
+        f"stays below {num(TOL_CLOSED)} of the largest work, quadrature error only"
         if rel < TOL_CLOSED
-        else f"up to {num(rel, 2)} of the largest work"
+        else f"reaches {num(rel, 2)} of the largest work"
     )
     caption = (
         f"Energy of the exact resonance case (c = {num(study.resonance.oscillator.c)} N s/m). {top.capitalize()}: "
         "work of the force W (black), energy dissipated by the damper D (black, dashed) and change of stored energy "
-        f"ΔE (grey); {together}. {bottom.capitalize()}: the residual W − D − ΔE, " + residual + "."
+        f"ΔE (grey). {bottom.capitalize()}: the residual W − D − ΔE."
     )
+    remark = f"{together}; the residual {residual}."
     alt = (
         f"Energy against time: the work and the dissipation grow almost linearly to about {num(w_max, 3)} J while "
         "the stored energy levels off; below, a residual many orders of magnitude smaller."
     )
-    return Captioned(fig, caption, "fig-frequency-energy", alt)
+    return Captioned(fig, caption, "fig-frequency-energy", alt, remark=remark)
 
 
 def design_figure(study: FrequencyStudy) -> Captioned:
@@ -231,10 +234,11 @@ def design_figure(study: FrequencyStudy) -> Captioned:
         f"{dm.omegas.size} grid of forcing frequency and damping (logarithmic damping axis and colour scale)"
         + (f"; the natural frequency $\\omega_n$ = {num(study.omega_n)} rad/s dotted" if shown else "")
         + (f"; the paper's {len(marks)} operating points inside the grid circled" if marks else "")
-        + f". The largest, {num(peak)} m, is at ω = {num(w)} rad/s and c = {num(c, 3)} N s/m."
+        + "."
     )
+    remark = f"The largest displacement on the grid, {num(peak)} m, is at ω = {num(w)} rad/s and c = {num(c, 3)} N s/m."
     alt = (
         "Colour map of peak displacement over forcing frequency and damping: a bright narrow ridge at the natural "
         "frequency for light damping that widens and fades as the damping grows."
     )
-    return Captioned(fig, caption, "fig-frequency-design", alt)
+    return Captioned(fig, caption, "fig-frequency-design", alt, remark=remark)
