@@ -2,11 +2,14 @@
 
 Each chapter package may hold a module ``exercises`` with
 
-- ``OBJECTIVES``: three to five learning objectives, each starting with a verb a student can be
-  examined on ("Compute ...", "Explain ...");
-- ``PREREQUISITES``: what the reader should know first (short phrases);
+- ``SHEET``: a :class:`Sheet`, what the chapter declares once: its notebook, its question in one
+  sentence and its level, three to five learning objectives (each starting with a verb a student
+  can be examined on: "Compute ...", "Explain ...") and its prerequisites (short phrases). The
+  module names the book reads, ``CHAPTER``, ``QUESTION``, ``LEVEL``, ``OBJECTIVES`` and
+  ``PREREQUISITES``, are unpacked from it with :meth:`Sheet.module_constants`;
 - ``exercises(params) -> tuple[Exercise, ...]``: the chapter's exercises for one parameter record,
-  every numerical answer computed by the package from those parameters.
+  every numerical answer computed by the package from those parameters, each built by the sheet
+  (:meth:`Sheet.numerical`, :meth:`Sheet.conceptual`, :meth:`Sheet.explore`), which fills in the chapter.
 
 Answers are numbers with a unit and a tolerance (checked by :meth:`Answer.accepts`), or the key of
 the correct option of a multiple-choice question. ``worked`` holds the steps with the run's own
@@ -17,6 +20,15 @@ Examples
 >>> a = Answer(quantity="omega_d", value=4.4651, unit="rad/s", rtol=1e-3)
 >>> a.accepts(4.466), a.accepts(0.7107)
 (True, False)
+>>> sheet = Sheet(chapter="01_x", question="How fast?", level="core", prerequisites=("algebra",),
+...               objectives=("Compute ω_d.", "Compute ζ.", "Explain the decay."))
+>>> ex = sheet.numerical("01.1", text="ω_d (rad/s)?", worked="ω_n √(1 − ζ²) = 4.4651 rad/s.",
+...                      answers=Answer(quantity="omega_d", value=4.4651, unit="rad/s", rtol=1e-3))
+>>> ex.chapter, ex.kind, len(ex.answers)
+('01_x', 'numerical', 1)
+>>> sheet.conceptual("01.2", text="Is it damped?", worked="ζ > 0.", options={"a": "yes", "b": "no"},
+...                  correct="a").choices[1]
+Choice(key='b', text='no')
 >>> Answer(quantity="X", value=1.0, unit="m", rtol=-1.0)
 Traceback (most recent call last):
 ...
@@ -26,6 +38,7 @@ vibration.physics.model.ParameterError: rtol = -1.0 must be >= 0 (the relative t
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Literal
 
@@ -33,10 +46,12 @@ from ..physics.model import ParameterError
 
 __all__ = [
     "KINDS",
+    "LEVELS",
     "Answer",
     "Checked",
     "Choice",
     "Exercise",
+    "Sheet",
     "answer_markdown",
     "check_answer",
     "exercise_markdown",
@@ -115,6 +130,52 @@ class Exercise:
                 raise ParameterError(f"exercise {self.id}: correct = {self.correct!r} is not one of {keys}")
         elif not self.answers:
             raise ParameterError(f"exercise {self.id}: a {self.kind} exercise needs at least one answer")
+
+
+#: The levels of a chapter: "core" (Part I, second year) or "advanced" (graduate).
+LEVELS = ("core", "advanced")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Sheet:
+    """What a chapter's exercise module declares once; its builders fill in the chapter of every exercise."""
+
+    chapter: str  # the notebook's stem, e.g. "04_frequency_response" (the chapter's SCHEMA.notebook)
+    question: str  # the chapter's question, in one sentence
+    level: Literal["core", "advanced"]
+    objectives: tuple[str, ...]  # three to five, each starting with a verb a student can be examined on
+    prerequisites: tuple[str, ...]  # what the reader should know first, short phrases
+
+    def __post_init__(self) -> None:
+        if self.level not in LEVELS:
+            raise ParameterError(f"level = {self.level!r} is not allowed: allowed one of {', '.join(LEVELS)}")
+        if not 3 <= len(self.objectives) <= 5:
+            raise ParameterError(f"sheet {self.chapter}: {len(self.objectives)} objectives, allowed 3 to 5")
+        if not self.prerequisites:
+            raise ParameterError(f"sheet {self.chapter}: no prerequisites, allowed one or more")
+
+    def module_constants(self) -> tuple[str, str, str, tuple[str, ...], tuple[str, ...]]:
+        """``CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES``: the module names the book and the sheets read."""
+        return self.chapter, self.question, self.level, self.objectives, self.prerequisites
+
+    def numerical(self, id: str, *, text: str, worked: str, answers: Answer | tuple[Answer, ...]) -> Exercise:
+        """Exercise ``id``: a number (or several) to compute from the run's parameters."""
+        return self._answered(id, "numerical", text, worked, answers)
+
+    def explore(self, id: str, *, text: str, worked: str, answers: Answer | tuple[Answer, ...]) -> Exercise:
+        """Exercise ``id``: numbers to compute, then to read with the sliders or a ``-p`` run."""
+        return self._answered(id, "explore", text, worked, answers)
+
+    def conceptual(self, id: str, *, text: str, worked: str, options: Mapping[str, str], correct: str) -> Exercise:
+        """Exercise ``id``: a multiple-choice question, ``options`` mapping each key ("a", "b", ...) to its text."""
+        choices = tuple(Choice(key=key, text=option) for key, option in options.items())
+        return Exercise(
+            id=id, chapter=self.chapter, kind="conceptual", text=text, worked=worked, choices=choices, correct=correct
+        )
+
+    def _answered(self, id: str, kind: str, text: str, worked: str, answers: Answer | tuple[Answer, ...]) -> Exercise:
+        answers = (answers,) if isinstance(answers, Answer) else tuple(answers)
+        return Exercise(id=id, chapter=self.chapter, kind=kind, text=text, worked=worked, answers=answers)
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -1,9 +1,13 @@
-"""Parameters several chapters share, declared once, and the rules that tie parameters together.
+"""Parameters several chapters share, declared once, the shapes most parameters take, and the rules that tie them.
 
 The paper's model (m, k, F0, the window and its forcing frequencies and dampings) appears in
-most chapters. Each chapter's schema takes these declarations with :func:`shared`, changing only
-what differs in that chapter (usually the meaning), so a range is written in one place. The
-rules are the checks on several values at once that more than one chapter needs.
+most chapters. Each chapter's schema takes these declarations with :func:`shared_params` (or
+:func:`shared` for one), changing only what differs in that chapter (usually the meaning), so a
+range is written in one place. A chapter's own parameters are declared through the builders of
+the shapes they share (:func:`positive`, :func:`frequency`, :func:`damping`, :func:`ratio`,
+:func:`count`, :func:`seed`, and :func:`quantity` for any other range): each returns a
+:class:`~vibration.presentation.schema.Param`. The rules are the checks on several values at once
+that more than one chapter needs.
 
 Examples
 --------
@@ -11,6 +15,10 @@ Examples
 (1.0, 'kg')
 >>> shared("c_nominal", meaning="passive damping of the plant").meaning
 'passive damping of the plant'
+>>> [p.unit for p in shared_params("m", "k", "c_nominal")]
+['kg', 'N/m', 'N s/m']
+>>> frequency("omega_max", "ω_max", 10.0, high=1e3, meaning="upper forcing frequency").low_open
+True
 >>> ordered("c_min", "c_max", "N s/m")({"c_min": 2.0, "c_max": 1.0})
 Traceback (most recent call last):
 ...
@@ -21,88 +29,90 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import operator
 from collections.abc import Callable
 
 from ..physics.model import N_POINTS_MAX, ParameterError
 from .schema import Param
 
+# ---------------------------------------------------------------------------------------------------------
+# The shapes a parameter takes (name, symbol and default first; the rest by keyword)
+
+
+def quantity(
+    name: str, symbol: str, default: float, *, unit: str, low: float, high: float, meaning: str, low_open: bool = False
+) -> Param:
+    """A real parameter in ``unit`` between ``low`` (exclusive when ``low_open``) and ``high``."""
+    return Param(
+        name=name, symbol=symbol, default=default, unit=unit, low=low, high=high, meaning=meaning, low_open=low_open
+    )
+
+
+def positive(name: str, symbol: str, default: float, *, unit: str, high: float, meaning: str) -> Param:
+    """A real parameter above zero, at most ``high`` (in ``unit``)."""
+    return quantity(name, symbol, default, unit=unit, low=0.0, high=high, meaning=meaning, low_open=True)
+
+
+def frequency(name: str, symbol: str, default: float, *, high: float, meaning: str) -> Param:
+    """An angular frequency above zero, at most ``high`` rad/s."""
+    return positive(name, symbol, default, unit="rad/s", high=high, meaning=meaning)
+
+
+def damping(name: str, symbol: str, default: float, *, low: float, high: float, meaning: str) -> Param:
+    """A viscous damping coefficient from ``low`` to ``high`` N s/m (negative: energy fed in)."""
+    return quantity(name, symbol, default, unit="N s/m", low=low, high=high, meaning=meaning)
+
+
+def ratio(name: str, symbol: str, default: float, *, low: float, high: float, meaning: str) -> Param:
+    """A dimensionless real parameter from ``low`` to ``high``."""
+    return quantity(name, symbol, default, unit="", low=low, high=high, meaning=meaning)
+
+
+def count(name: str, symbol: str, default: int, *, low: int, high: int, meaning: str) -> Param:
+    """A whole number from ``low`` to ``high``: samples, runs, paths, steps."""
+    return Param(name=name, symbol=symbol, default=default, unit="", low=low, high=high, meaning=meaning)
+
+
+#: Largest seed a random generator of the package takes (a 32-bit signed integer).
+SEED_MAX = 2**31 - 1
+
+
+def seed(default: int, *, meaning: str) -> Param:
+    """The chapter's random seed ``seed`` (symbol s), from 0 to :data:`SEED_MAX`."""
+    return count("seed", "s", default, low=0, high=SEED_MAX, meaning=meaning)
+
+
+# ---------------------------------------------------------------------------------------------------------
+# The shared declarations
+
 #: The paper's parameters and the Part I ones several chapters reuse: name -> declaration.
 SHARED: dict[str, Param] = {
     p.name: p
     for p in (
-        Param(name="m", symbol="m", default=1.0, unit="kg", low=1e-3, high=1e3, meaning="mass"),
-        Param(name="k", symbol="k", default=20.0, unit="N/m", low=1e-3, high=1e6, meaning="spring stiffness"),
-        Param(
-            name="F0", symbol="F_0", default=5.0, unit="N", low=0.0, high=1e4, meaning="force amplitude", low_open=True
+        quantity("m", "m", 1.0, unit="kg", low=1e-3, high=1e3, meaning="mass"),
+        quantity("k", "k", 20.0, unit="N/m", low=1e-3, high=1e6, meaning="spring stiffness"),
+        positive("F0", "F_0", 5.0, unit="N", high=1e4, meaning="force amplitude"),
+        positive(
+            "t_end", "t_end", 50.0, unit="s", high=1e3, meaning="end of the simulated window, from rest at time zero"
         ),
-        Param(
-            name="t_end",
-            symbol="t_end",
-            default=50.0,
-            unit="s",
-            low=0.0,
-            high=1e3,
-            meaning="end of the simulated window, from rest at time zero",
-            low_open=True,
-        ),  # fmt: skip
-        Param(
-            name="omega_ref",
-            symbol="ω_ref",
-            default=3.0,
-            unit="rad/s",
-            low=0.0,
-            high=1e3,
-            meaning="reference forcing frequency",
-            low_open=True,
-        ),
-        Param(
-            name="omega_res",
-            symbol="ω_res",
-            default=4.47,
-            unit="rad/s",
-            low=0.0,
-            high=1e3,
-            meaning="the paper's “resonant” forcing frequency",
-            low_open=True,
-        ),  # fmt: skip
-        Param(
-            name="c_low",
-            symbol="c_low",
-            default=0.1,
-            unit="N s/m",
+        frequency("omega_ref", "ω_ref", 3.0, high=1e3, meaning="reference forcing frequency"),
+        frequency("omega_res", "ω_res", 4.47, high=1e3, meaning='the paper\'s "resonant" forcing frequency'),
+        damping(
+            "c_low",
+            "c_low",
+            0.1,
             low=-1e4,
             high=1e4,
             meaning="low damping coefficient (0: undamped, < 0: self-excited)",
         ),
-        Param(
-            name="c_nominal",
-            symbol="c_nom",
-            default=0.5,
-            unit="N s/m",
-            low=-1e4,
-            high=1e4,
-            meaning="nominal damping coefficient",
-        ),
-        Param(
-            name="c_high",
-            symbol="c_high",
-            default=15.0,
-            unit="N s/m",
-            low=-1e4,
-            high=1e4,
-            meaning="high damping coefficient",
-        ),
-        Param(
-            name="n_points",
-            symbol="N",
-            default=5001,
-            unit="",
-            low=2,
-            high=min(200_001, N_POINTS_MAX),
-            meaning="output samples over the window",
-        ),
+        damping("c_nominal", "c_nom", 0.5, low=-1e4, high=1e4, meaning="nominal damping coefficient"),
+        damping("c_high", "c_high", 15.0, low=-1e4, high=1e4, meaning="high damping coefficient"),
+        count("n_points", "N", 5001, low=2, high=min(200_001, N_POINTS_MAX), meaning="output samples over the window"),
     )
 }
+
+#: The paper's model and window in the paper's order: the parameters of chapters 1, 2 and 4.
+PAPER_MODEL = ("m", "k", "F0", "t_end", "omega_ref", "omega_res", "c_low", "c_nominal", "c_high", "n_points")
 
 #: Most forcing or natural periods the paper's window may hold (the paper's holds 36).
 MAX_PERIODS = 1000
@@ -121,6 +131,11 @@ def shared(name: str, **changes) -> Param:
     except KeyError:
         raise KeyError(f"{name!r} is not a shared parameter: allowed {', '.join(SHARED)}") from None
     return dataclasses.replace(param, **changes)
+
+
+def shared_params(*names: str) -> tuple[Param, ...]:
+    """The shared declarations of ``names``, unchanged, in that order (:func:`shared` changes one)."""
+    return tuple(shared(name) for name in names)
 
 
 def ordered(low: str, high: str, unit: str) -> Callable[[dict], None]:
@@ -177,6 +192,25 @@ def paper_window(p: dict) -> None:
         )
 
 
+#: How a chapter's bound on one parameter compares: relation -> (test, the rule's name).
+_RELATIONS = {">": (operator.gt, "above"), "<": (operator.lt, "below"), ">=": (operator.ge, "at_least")}
+
+
+def _bound(name: str, relation: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
+    """A rule: parameter ``name`` stands in ``relation`` to ``bound`` in this chapter (its shared range allows more)."""
+    holds, word = _RELATIONS[relation]
+
+    def rule(p: dict) -> None:
+        if not holds(p[name], bound):
+            raise ParameterError(
+                f"{name} = {p[name]!r} {unit} is out of range for this chapter: "
+                f"allowed {name} {relation} {bound:g} {unit} ({why})"
+            )
+
+    rule.__name__ = f"{name}_{word}_{bound:g}"
+    return rule
+
+
 def above(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
     """A rule: parameter ``name`` must exceed ``bound`` in this chapter (its shared range allows more).
 
@@ -185,44 +219,17 @@ def above(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None
     ...
     vibration.physics.model.ParameterError: c = 0.0 N s/m is out of range for this chapter: allowed c > 0 N s/m (damped)
     """
-
-    def rule(p: dict) -> None:
-        if not p[name] > bound:
-            raise ParameterError(
-                f"{name} = {p[name]!r} {unit} is out of range for this chapter: "
-                f"allowed {name} > {bound:g} {unit} ({why})"
-            )
-
-    rule.__name__ = f"{name}_above_{bound:g}"
-    return rule
+    return _bound(name, ">", bound, unit, why)
 
 
 def below(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
     """A rule: parameter ``name`` must stay below ``bound`` in this chapter."""
-
-    def rule(p: dict) -> None:
-        if not p[name] < bound:
-            raise ParameterError(
-                f"{name} = {p[name]!r} {unit} is out of range for this chapter: "
-                f"allowed {name} < {bound:g} {unit} ({why})"
-            )
-
-    rule.__name__ = f"{name}_below_{bound:g}"
-    return rule
+    return _bound(name, "<", bound, unit, why)
 
 
 def at_least(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
     """A rule: parameter ``name`` must be at least ``bound`` in this chapter."""
-
-    def rule(p: dict) -> None:
-        if not p[name] >= bound:
-            raise ParameterError(
-                f"{name} = {p[name]!r} {unit} is out of range for this chapter: "
-                f"allowed {name} >= {bound:g} {unit} ({why})"
-            )
-
-    rule.__name__ = f"{name}_at_least_{bound:g}"
-    return rule
+    return _bound(name, ">=", bound, unit, why)
 
 
 def damping_ratio_at_most(limit: float, name: str = "c_nominal") -> Callable[[dict], None]:

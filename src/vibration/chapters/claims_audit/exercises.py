@@ -10,28 +10,30 @@ from scipy.optimize import brentq
 from vibration.physics.exact import exact_response, steady_state
 from vibration.physics.frequency import settling_time
 from vibration.physics.model import Oscillator, SineForce
-from vibration.presentation.exercises import Answer, Choice, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "02_claims_audit"
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="Which of the paper's quantitative claims hold, and which reading of its numbers explains the rest?",
+    level="core",
+    objectives=(
+        "Compute the static deflection F<sub>0</sub>/k and the magnification M of a forced response.",
+        "Decide whether a claimed amplitude is a steady amplitude, a peak-to-peak swing or a window peak.",
+        "Explain why a bounded response that is still growing at the end of a window is not an instability.",
+        "Compute the 2 % settling time and compare it with a simulated window.",
+    ),
+    prerequisites=(
+        "chapter 1: ω<sub>n</sub>, ζ, the steady amplitude X and the phase φ",
+        "the roots of m s² + c s + k",
+    ),
+)
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 #: The paper's resonance amplitude, m ("a level of ±5.0 meters in the resonance case").
 PAPER_RESONANCE_AMPLITUDE = 5.0
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "Which of the paper's quantitative claims hold, and which reading of its numbers explains the rest?"
-LEVEL = "core"
-
-OBJECTIVES = (
-    "Compute the static deflection F<sub>0</sub>/k and the magnification M of a forced response.",
-    "Decide whether a claimed amplitude is a steady amplitude, a peak-to-peak swing or a window peak.",
-    "Explain why a bounded response that is still growing at the end of a window is not an instability.",
-    "Compute the 2 % settling time and compare it with a simulated window.",
-)
-
-PREREQUISITES = ("chapter 1: ω<sub>n</sub>, ζ, the steady amplitude X and the phase φ", "the roots of m s² + c s + k")
 
 
 def _settle(p: Params, c: float) -> float:
@@ -45,10 +47,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     res = SineForce(F0=p.F0, omega=p.omega_res)
     ss = steady_state(nom, res)
     out = [
-        Exercise(
-            id="02.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "02.1",
             text=(
                 f"Compute the static deflection F<sub>0</sub>/k (m) and the magnification M = X/(F<sub>0</sub>/k) "
                 f"of the nominal damping c = {g(p.c_nominal)} N s/m at the paper's resonant forcing ω = "
@@ -76,10 +76,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     }
     key = min(readings, key=lambda k: abs(math.log(readings[k][1] / PAPER_RESONANCE_AMPLITUDE)))
     out.append(
-        Exercise(
-            id="02.2",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "02.2",
             text=(
                 "The paper reports a resonance amplitude of “±5.0 meters” for the nominal damping at the resonant "
                 "forcing. Which reading of that number comes closest for this run's parameters?"
@@ -89,7 +87,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 + "; ".join(f"({k}) {d}: {g(v)}" for k, (d, v) in readings.items())
                 + f". The closest to 5.0 (by ratio) is ({key}), {g(readings[key][1])}."
             ),
-            choices=tuple(Choice(key=k, text=d) for k, (d, _) in readings.items()),
+            options={k: d for k, (d, _) in readings.items()},
             correct=key,
         )
     )
@@ -103,10 +101,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     key = "a" if p.c_low > 0 else "b" if p.c_low == 0 else "c"
     disc = p.c_low**2 - 4 * p.m * p.k
     out.append(
-        Exercise(
-            id="02.3",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "02.3",
             text=(
                 f"The paper calls the low damping c = {g(p.c_low)} N s/m “unstable”. Where are the roots of "
                 "m s² + c s + k?"
@@ -121,17 +117,15 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                     else "."
                 )
             ),
-            choices=tuple(Choice(key=k, text=v) for k, v in roots.items()),
+            options=roots,
             correct=key,
         )
     )
     if p.c_low > 0:
         ts = _settle(p, p.c_low)
         out.append(
-            Exercise(
-                id="02.4",
-                chapter=CHAPTER,
-                kind="numerical",
+            SHEET.numerical(
+                "02.4",
                 text=(
                     f"Compute the 2 % settling time (s) of the low damping c = {g(p.c_low)} N s/m forced at "
                     f"ω = {g(p.omega_res)} rad/s from rest. Does it fall inside the {g(p.t_end)} s window?"
@@ -143,17 +137,15 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                     + ("inside" if ts <= p.t_end else "beyond")
                     + f" the {g(p.t_end)} s window."
                 ),
-                answers=(Answer(quantity="t_s", symbol="t<sub>s</sub>", value=ts, unit="s", rtol=1e-2),),
+                answers=Answer(quantity="t_s", symbol="t<sub>s</sub>", value=ts, unit="s", rtol=1e-2),
             )
         )
     if p.c_low > 0 and _settle(p, p.c_high if p.c_high > p.c_low else 10 * p.c_low) < p.t_end < _settle(p, p.c_low):
         hi = p.c_high if p.c_high > p.c_low else 10 * p.c_low
         c_star = brentq(lambda c: _settle(p, c) - p.t_end, p.c_low, hi, xtol=1e-10)
         out.append(
-            Exercise(
-                id="02.5",
-                chapter=CHAPTER,
-                kind="explore",
+            SHEET.explore(
+                "02.5",
                 text=(
                     "Rerun the chapter with larger values of the low damping (`-p c_low VALUE`). Which smallest "
                     f"c<sub>low</sub> (N s/m) lets that run settle (2 %) inside the {g(p.t_end)} s window, so that "
@@ -164,7 +156,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                     f"Solving t<sub>s</sub>(c) = {g(p.t_end)} s for c (the settling time of exercise 02.4, root "
                     f"by bisection) gives c = {g(c_star)} N s/m."
                 ),
-                answers=(Answer(quantity="c_low", symbol="c<sub>low</sub>", value=c_star, unit="N s/m", rtol=1e-2),),
+                answers=Answer(quantity="c_low", symbol="c<sub>low</sub>", value=c_star, unit="N s/m", rtol=1e-2),
             )
         )
     return tuple(out)

@@ -5,25 +5,24 @@ from __future__ import annotations
 import math
 
 from vibration.physics.model import Oscillator
-from vibration.presentation.exercises import Answer, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "10_digital_twin"
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "Can a twin identify the oscillator from noisy records and detect a loss of stiffness in time?"
-LEVEL = "advanced"
-
-OBJECTIVES = (
-    "Compute what a sampled record can resolve: its Nyquist frequency and its frequency resolution.",
-    "Compute how a loss of stiffness moves the natural frequency a twin tracks.",
-    "Identify m, c and k from a record by least squares and state their intervals.",
-    "Explain how a CUSUM test trades detection delay against false alarms.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="Can a twin identify the oscillator from noisy records and detect a loss of stiffness in time?",
+    level="advanced",
+    objectives=(
+        "Compute what a sampled record can resolve: its Nyquist frequency and its frequency resolution.",
+        "Compute how a loss of stiffness moves the natural frequency a twin tracks.",
+        "Identify m, c and k from a record by least squares and state their intervals.",
+        "Explain how a CUSUM test trades detection delay against false alarms.",
+    ),
+    prerequisites=("chapter 4: ω<sub>n</sub> and ζ from the parameters", "least squares and confidence intervals"),
 )
-
-PREREQUISITES = ("chapter 4: ω<sub>n</sub> and ζ from the parameters", "least squares and confidence intervals")
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -35,10 +34,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     damaged = Oscillator(m=p.m, c=p.c_nominal, k=p.k * (1 - p.drop))
     f0, f1 = healthy.natural_frequency / (2 * math.pi), damaged.natural_frequency / (2 * math.pi)
     return (
-        Exercise(
-            id="10.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "10.1",
             text=(
                 f"The sensors sample every Δt = {g(p.dt)} s for T<sub>rec</sub> = {g(p.t_record)} s. Compute the "
                 "Nyquist frequency "
@@ -56,10 +53,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 Answer(quantity="df", symbol="1/T<sub>rec</sub>", value=df, unit="Hz", rtol=2e-3),
             ),
         ),
-        Exercise(
-            id="10.2",
-            chapter=CHAPTER,
-            kind="explore",
+        SHEET.explore(
+            "10.2",
             text=(
                 f"A sudden loss of {g(100 * p.drop)} % of the stiffness (`-p drop {g(p.drop)}`) moves the natural "
                 "frequency. Compute it after the loss (Hz); rerun the chapter with another drop and watch the "
@@ -69,6 +64,6 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 f"f<sub>n</sub> = √(k/m)/(2π) = {g(f0)} Hz healthy; after the loss √((1 − {g(p.drop)}) k/m)/(2π) = "
                 f"{g(f1)} Hz, a shift of {g(100 * (1 - f1 / f0), 3)} % (half the stiffness loss, for small losses)."
             ),
-            answers=(Answer(quantity="f_n", symbol="f<sub>n</sub>", value=f1, unit="Hz", rtol=2e-3),),
+            answers=Answer(quantity="f_n", symbol="f<sub>n</sub>", value=f1, unit="Hz", rtol=2e-3),
         ),
     )

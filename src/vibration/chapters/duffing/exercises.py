@@ -5,25 +5,24 @@ from __future__ import annotations
 import math
 
 from vibration.physics.duffing import Duffing, backbone, linear_trust_amplitude
-from vibration.presentation.exercises import Answer, Choice, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "09_duffing"
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "What changes when the spring is not linear: jumps, folds and chaos?"
-LEVEL = "advanced"
-
-OBJECTIVES = (
-    "Compute the backbone frequency of a cubic spring at a given amplitude.",
-    "Compute the amplitude up to which the linear model's resonance can be trusted.",
-    "Explain the jumps of a frequency sweep from the folds of the response curve.",
-    "Tell periodic from chaotic motion by a Poincaré section and a Lyapunov exponent.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="What changes when the spring is not linear: jumps, folds and chaos?",
+    level="advanced",
+    objectives=(
+        "Compute the backbone frequency of a cubic spring at a given amplitude.",
+        "Compute the amplitude up to which the linear model's resonance can be trusted.",
+        "Explain the jumps of a frequency sweep from the folds of the response curve.",
+        "Tell periodic from chaotic motion by a Poincaré section and a Lyapunov exponent.",
+    ),
+    prerequisites=("chapter 4: the resonance curve", "harmonic balance (one-term Fourier approximation)"),
 )
-
-PREREQUISITES = ("chapter 4: the resonance curve", "harmonic balance (one-term Fourier approximation)")
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -34,10 +33,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     amp = 1.0  # m
     wb = backbone(d, amp)
     out = [
-        Exercise(
-            id="09.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "09.1",
             text=(
                 f"The hardening spring adds k<sub>3</sub> x³ with k<sub>3</sub> = {g(p.k3_hard)} N/m³ to "
                 f"k = {g(p.k)} N/m (m = {g(p.m)} kg). At which frequency (rad/s) does it oscillate freely with an "
@@ -48,22 +45,20 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 f"ω² = k/m + (3/4)(k<sub>3</sub>/m) A² = {g(p.k / p.m)} + {g(0.75 * p.k3_hard / p.m * amp**2)} and "
                 f"ω = {g(wb)} rad/s, against ω<sub>n</sub> = {g(wn)} rad/s."
             ),
-            answers=(Answer(quantity="omega_b", symbol="ω<sub>b</sub>", value=wb, unit="rad/s", rtol=2e-3),),
+            answers=Answer(quantity="omega_b", symbol="ω<sub>b</sub>", value=wb, unit="rad/s", rtol=2e-3),
         ),
-        Exercise(
-            id="09.2",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "09.2",
             text="A slow upward frequency sweep of the hardening oscillator suddenly drops in amplitude. Why?",
             worked=(
                 "Past the upper fold of the response curve the large-amplitude branch ends; the only steady "
                 "motion left at that frequency is on the small-amplitude branch, and the sweep jumps down to it."
             ),
-            choices=(
-                Choice(key="a", text="the large-amplitude branch ends at a fold and the motion jumps to the lower one"),
-                Choice(key="b", text="the damping grows with the amplitude"),
-                Choice(key="c", text="the motion becomes chaotic"),
-            ),
+            options={
+                "a": "the large-amplitude branch ends at a fold and the motion jumps to the lower one",
+                "b": "the damping grows with the amplitude",
+                "c": "the motion becomes chaotic",
+            },
             correct="a",
         ),
     ]
@@ -72,10 +67,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
         d2 = Duffing(m=p.m, c=p.c_nominal, k=p.k, k3=min(2 * p.k3_hard, 1000.0))
         a2 = linear_trust_amplitude(d2)
         out.append(
-            Exercise(
-                id="09.3",
-                chapter=CHAPTER,
-                kind="explore",
+            SHEET.explore(
+                "09.3",
                 text=(
                     "Up to which amplitude (m) does the backbone stay within one half-power bandwidth c/m of "
                     f"ω<sub>n</sub>? Rerun the chapter with a doubled cubic stiffness (`-p k3_hard "

@@ -6,28 +6,27 @@ import math
 
 from vibration.physics.exact import steady_state
 from vibration.physics.model import Oscillator, SineForce
-from vibration.presentation.exercises import Answer, Choice, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "05_explore"
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="What happens to the response as the forcing frequency and the damping move?",
+    level="core",
+    objectives=(
+        "Predict how the steady amplitude moves when the forcing frequency or the damping changes.",
+        "Compute the damping needed to hold the resonant magnification below a limit.",
+        "Read the phase lag at resonance and explain why it is 90° whatever the damping.",
+        "Check a reading of the sliders against the closed-form steady amplitude.",
+    ),
+    prerequisites=("chapters 1 and 4: the steady amplitude, the magnification and the phase lag",),
+)
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 #: The magnification a designer allows at resonance in exercise 05.2.
 M_ALLOWED = 5.0
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "What happens to the response as the forcing frequency and the damping move?"
-LEVEL = "core"
-
-OBJECTIVES = (
-    "Predict how the steady amplitude moves when the forcing frequency or the damping changes.",
-    "Compute the damping needed to hold the resonant magnification below a limit.",
-    "Read the phase lag at resonance and explain why it is 90° whatever the damping.",
-    "Check a reading of the sliders against the closed-form steady amplitude.",
-)
-
-PREREQUISITES = ("chapters 1 and 4: the steady amplitude, the magnification and the phase lag",)
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -38,10 +37,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     ss = steady_state(nom, SineForce(F0=p.F0, omega=p.omega_res))
     c_need = cc / (2 * M_ALLOWED)
     out = [
-        Exercise(
-            id="05.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "05.1",
             text=(
                 f"With the sliders at their start (ω = {g(p.omega_res)} rad/s, c = {g(p.c_nominal)} N s/m), compute "
                 "the magnification M and the steady amplitude X (m)."
@@ -55,10 +52,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 Answer(quantity="X", symbol="X", value=ss.amplitude, unit="m", rtol=5e-3),
             ),
         ),
-        Exercise(
-            id="05.2",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "05.2",
             text=(
                 f"Forced exactly at ω<sub>n</sub>, which damping c (N s/m) holds the magnification at "
                 f"M = {g(M_ALLOWED)}?"
@@ -67,22 +62,20 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 f"At r = 1, M = 1/(2ζ), so ζ = 1/(2 × {g(M_ALLOWED)}) = {g(1 / (2 * M_ALLOWED))} and "
                 f"c = ζ c<sub>c</sub> = ζ × 2√(km) = {g(1 / (2 * M_ALLOWED))} × {g(cc)} = {g(c_need)} N s/m."
             ),
-            answers=(Answer(quantity="c", symbol="c", value=c_need, unit="N s/m", rtol=5e-3),),
+            answers=Answer(quantity="c", symbol="c", value=c_need, unit="N s/m", rtol=5e-3),
         ),
-        Exercise(
-            id="05.3",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "05.3",
             text="Move the damping slider while the forcing sits at ω = ω<sub>n</sub>. What does the phase lag do?",
             worked=(
                 "φ = atan2(2ζr, 1 − r²); at r = 1 the denominator is zero, so φ = 90° (π/2 rad) for every ζ > 0: the "
                 "displacement lags the force by a quarter period and the velocity is in phase with it."
             ),
-            choices=(
-                Choice(key="a", text="it stays at 90°"),
-                Choice(key="b", text="it grows with the damping towards 180°"),
-                Choice(key="c", text="it falls with the damping towards 0°"),
-            ),
+            options={
+                "a": "it stays at 90°",
+                "b": "it grows with the damping towards 180°",
+                "c": "it falls with the damping towards 0°",
+            },
             correct="a",
         ),
     ]
@@ -90,10 +83,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     c_set = float(f"{max(0.2 * cc, 1e-3):.2g}")
     sl = steady_state(Oscillator(m=p.m, c=c_set, k=p.k), SineForce(F0=p.F0, omega=w_set))
     out.append(
-        Exercise(
-            id="05.4",
-            chapter=CHAPTER,
-            kind="explore",
+        SHEET.explore(
+            "05.4",
             text=(
                 f"Set the sliders to ω = {g(w_set)} rad/s and c = {g(c_set)} N s/m. What steady amplitude X (m) does "
                 "the readout show? Compute it first, then read it."
@@ -103,7 +94,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 f"X = (F<sub>0</sub>/k)/√((1 − r²)² + (2ζr)²) = {g(p.F0 / p.k)} × {g(sl.magnification)} = "
                 f"{g(sl.amplitude)} m, with φ = {g(math.degrees(sl.phase), 3)}°."
             ),
-            answers=(Answer(quantity="X", symbol="X", value=sl.amplitude, unit="m", rtol=1e-2),),
+            answers=Answer(quantity="X", symbol="X", value=sl.amplitude, unit="m", rtol=1e-2),
         )
     )
     return tuple(out)

@@ -7,25 +7,24 @@ import math
 from vibration.physics.exact import steady_state
 from vibration.physics.model import Oscillator, SineForce
 from vibration.physics.stability import peak_magnification
-from vibration.presentation.exercises import Answer, Choice, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "04_frequency_response"
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "How does the steady amplitude depend on the forcing frequency and the damping?"
-LEVEL = "core"
-
-OBJECTIVES = (
-    "Compute the steady amplitude X and the phase lag φ at any forcing frequency.",
-    "Compute the half-power bandwidth and the quality factor Q from the damping.",
-    "Locate the peak of the magnification curve and compute its height.",
-    "Explain which term (spring, damper or mass) limits the amplitude below, at and above ω<sub>n</sub>.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="How does the steady amplitude depend on the forcing frequency and the damping?",
+    level="core",
+    objectives=(
+        "Compute the steady amplitude X and the phase lag φ at any forcing frequency.",
+        "Compute the half-power bandwidth and the quality factor Q from the damping.",
+        "Locate the peak of the magnification curve and compute its height.",
+        "Explain which term (spring, damper or mass) limits the amplitude below, at and above ω<sub>n</sub>.",
+    ),
+    prerequisites=("chapter 1: ω<sub>n</sub>, ζ and the steady amplitude", "logarithms and decibels"),
 )
-
-PREREQUISITES = ("chapter 1: ω<sub>n</sub>, ζ and the steady amplitude", "logarithms and decibels")
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -36,10 +35,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     ss = steady_state(nom, SineForce(F0=p.F0, omega=p.omega_ref))
     r = p.omega_ref / wn
     out = [
-        Exercise(
-            id="04.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "04.1",
             text=(
                 f"Compute the magnification M, the steady amplitude X (m) and the phase lag φ (rad) of the nominal "
                 f"damping c = {g(p.c_nominal)} N s/m at ω = {g(p.omega_ref)} rad/s."
@@ -60,10 +57,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     if p.c_nominal > 0:
         bw, q = nom.half_power_bandwidth, nom.quality_factor
         out.append(
-            Exercise(
-                id="04.2",
-                chapter=CHAPTER,
-                kind="numerical",
+            SHEET.numerical(
+                "04.2",
                 text=(
                     f"Compute the half-power bandwidth Δω (rad/s) and the quality factor Q of the nominal damping "
                     f"c = {g(p.c_nominal)} N s/m."
@@ -82,10 +77,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     if 0 < zeta < 1 / math.sqrt(2):
         wp, mp = peak_magnification(nom)
         out.append(
-            Exercise(
-                id="04.3",
-                chapter=CHAPTER,
-                kind="numerical",
+            SHEET.numerical(
+                "04.3",
                 text=(
                     "At which forcing frequency ω<sub>p</sub> (rad/s) does the magnification of the nominal damping "
                     "peak, and how high is the peak M<sub>max</sub>?"
@@ -102,21 +95,15 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             )
         )
     out.append(
-        Exercise(
-            id="04.4",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "04.4",
             text="Far above ω<sub>n</sub> (ω ≫ ω<sub>n</sub>), which term of m ẍ + c ẋ + k x sets the amplitude?",
             worked=(
                 "The terms of the steady response scale as k X, c ω X and m ω² X. For ω ≫ ω<sub>n</sub> the inertia "
                 "term m ω² X dominates, so X ≈ F<sub>0</sub>/(m ω²): the mass carries the force and the amplitude "
                 "falls as 1/ω²."
             ),
-            choices=(
-                Choice(key="a", text="the spring, k X"),
-                Choice(key="b", text="the damper, c ω X"),
-                Choice(key="c", text="the mass, m ω² X"),
-            ),
+            options={"a": "the spring, k X", "b": "the damper, c ω X", "c": "the mass, m ω² X"},
             correct="c",
         )
     )
@@ -124,10 +111,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
         _, m1 = peak_magnification(nom)
         _, m2 = peak_magnification(Oscillator(m=p.m, c=2 * p.c_nominal, k=p.k))
         out.append(
-            Exercise(
-                id="04.5",
-                chapter=CHAPTER,
-                kind="explore",
+            SHEET.explore(
+                "04.5",
                 text=(
                     f"Rerun the chapter with twice the nominal damping (`-p c_nominal {g(2 * p.c_nominal)}`). By what "
                     "factor does the half-power bandwidth grow, and by what factor does the peak magnification fall "

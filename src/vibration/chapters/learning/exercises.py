@@ -6,25 +6,24 @@ import math
 
 from vibration.physics.control import lqr
 from vibration.physics.model import Oscillator
-from vibration.presentation.exercises import Answer, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "11_learning"
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "Does a controller learned by trial and error come close to the optimal linear one?"
-LEVEL = "advanced"
-
-OBJECTIVES = (
-    "Compute an episode's length in time and in samples per natural period.",
-    "Compute the continuous-time LQR gains that a learning controller is scored against.",
-    "Compare a learned policy with LQR and with the best passive damper by expected cost.",
-    "Explain why a seed-to-seed spread must be reported with a learned result.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="Does a controller learned by trial and error come close to the optimal linear one?",
+    level="advanced",
+    objectives=(
+        "Compute an episode's length in time and in samples per natural period.",
+        "Compute the continuous-time LQR gains that a learning controller is scored against.",
+        "Compare a learned policy with LQR and with the best passive damper by expected cost.",
+        "Explain why a seed-to-seed spread must be reported with a learned result.",
+    ),
+    prerequisites=("chapter 7: LQR and the closed loop", "expectation and variance of a random cost"),
 )
-
-PREREQUISITES = ("chapter 7: LQR and the closed loop", "expectation and variance of a random cost")
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -37,10 +36,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     res = lqr(plant, 1.0, 1.0, p.r_weight)
     k1, k2 = float(res.K[0]), float(res.K[1])
     return (
-        Exercise(
-            id="11.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "11.1",
             text=(
                 f"An episode has {p.n_steps} steps of Δt = {g(p.dt)} s. How long is it (s), and how many steps fall "
                 "in one natural period 2π/ω<sub>n</sub>?"
@@ -55,10 +52,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 Answer(quantity="steps", symbol="steps per period", value=per, unit="", rtol=2e-3),
             ),
         ),
-        Exercise(
-            id="11.2",
-            chapter=CHAPTER,
-            kind="explore",
+        SHEET.explore(
+            "11.2",
             text=(
                 "The stage cost is x² + v² + q<sub>u</sub> u² with q<sub>u</sub> = "
                 f"{g(p.r_weight)} 1/N². Compute the continuous-time LQR gains k<sub>x</sub> (N/m) and k<sub>v</sub> "

@@ -1,8 +1,4 @@
-"""Chapter 11, a learning controller: its parameters, declared once.
-
-The runner range-checks ``-p`` values with :data:`SCHEMA`, a test checks the notebook's parameters
-cell against it, and the chapter's computation takes a :class:`Params` record built from it.
-"""
+"""Chapter 11, a learning controller: its parameters, declared once (the sampling step checked against the plant)."""
 
 from __future__ import annotations
 
@@ -12,8 +8,18 @@ import math
 from vibration.physics.learning.studies import identify_then_design
 from vibration.physics.model import ParameterError
 from vibration.physics.twin.measurements import MIN_SAMPLES
-from vibration.presentation.parameters import at_least, ordered, sampling, shared
-from vibration.presentation.schema import Param, Schema
+from vibration.presentation.parameters import (
+    at_least,
+    count,
+    damping,
+    ordered,
+    positive,
+    sampling,
+    seed,
+    shared,
+    shared_params,
+)
+from vibration.presentation.schema import Schema
 
 #: Length of the identification record of the identify-then-design study, s.
 ID_DURATION = inspect.signature(identify_then_design).parameters["duration"].default
@@ -37,88 +43,21 @@ def sampling_step(p: dict) -> None:
 SCHEMA = Schema(
     notebook="11_learning",
     params=(
-        shared("m"),
-        shared("k"),
+        *shared_params("m", "k"),
         shared("c_nominal", meaning="passive damping of the plant"),
         shared("F0", meaning="amplitude of the resonance disturbance"),
         shared("omega_res", meaning="angular frequency of the resonance disturbance"),
-        Param(
-            name="dt",
-            symbol="Δt",
-            default=0.01,
-            unit="s",
-            low=0.0,
-            high=1.0,
-            meaning="sampling period of the zero-order hold",
-            low_open=True,
+        positive("dt", "Δt", 0.01, unit="s", high=1.0, meaning="sampling period of the zero-order hold"),
+        count("n_steps", "N_steps", 1000, low=1, high=3000, meaning="steps per episode"),
+        positive("r_weight", "r", 0.01, unit="1/N²", high=1e6, meaning="weight of the force in the cost"),
+        positive("u_max", "u_max", 50.0, unit="N", high=1e4, meaning="force bound of the actuator"),
+        damping("c_semi_min", "c_min", 0.1, low=0.0, high=1e4, meaning="smallest damping of the semi-active damper"),
+        positive(
+            "c_semi_max", "c_max", 15.0, unit="N s/m", high=1e4, meaning="largest damping of the semi-active damper"
         ),
-        Param(name="n_steps", symbol="N_steps", default=1000, unit="", low=1, high=3000, meaning="steps per episode"),
-        Param(
-            name="r_weight",
-            symbol="r",
-            default=0.01,
-            unit="1/N²",
-            low=0.0,
-            high=1000000.0,
-            meaning="weight of the force in the cost",
-            low_open=True,
-        ),
-        Param(
-            name="u_max",
-            symbol="u_max",
-            default=50.0,
-            unit="N",
-            low=0.0,
-            high=10000.0,
-            meaning="force bound of the actuator",
-            low_open=True,
-        ),
-        Param(
-            name="c_semi_min",
-            symbol="c_min",
-            default=0.1,
-            unit="N s/m",
-            low=0.0,
-            high=10000.0,
-            meaning="smallest damping of the semi-active damper",
-        ),
-        Param(
-            name="c_semi_max",
-            symbol="c_max",
-            default=15.0,
-            unit="N s/m",
-            low=0.0,
-            high=10000.0,
-            meaning="largest damping of the semi-active damper",
-            low_open=True,
-        ),
-        Param(
-            name="seed",
-            symbol="s",
-            default=0,
-            unit="",
-            low=0,
-            high=2147483647,
-            meaning="seed of training and of the evaluation episodes",
-        ),
-        Param(
-            name="n_eval",
-            symbol="N_eval",
-            default=1000,
-            unit="",
-            low=2,
-            high=20000,
-            meaning="evaluation episodes per controller",
-        ),
-        Param(
-            name="n_seeds",
-            symbol="N_seeds",
-            default=10,
-            unit="",
-            low=10,
-            high=30,
-            meaning="training seeds per learner in the seed study",
-        ),
+        seed(0, meaning="seed of training and of the evaluation episodes"),
+        count("n_eval", "N_eval", 1000, low=2, high=20000, meaning="evaluation episodes per controller"),
+        count("n_seeds", "N_seeds", 10, low=10, high=30, meaning="training seeds per learner in the seed study"),
     ),
     together=(
         ordered("c_semi_min", "c_semi_max", "N s/m"),

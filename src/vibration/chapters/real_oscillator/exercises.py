@@ -14,27 +14,27 @@ from vibration.chapters.real_oscillator.params import Params
 from vibration.chapters.real_oscillator.study import driven_run, lab_folder
 from vibration.physics.lab import damping_vs_amplitude, load_lab_data
 from vibration.physics.model import ParameterError
-from vibration.presentation.exercises import Answer, Choice, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.narrative import g
 
-CHAPTER = "12_real_oscillator"
-
-QUESTION = "Which of the paper's claims survive on a real, driven and damped torsional oscillator?"
-LEVEL = "advanced"
-
-OBJECTIVES = (
-    "Compute the half-period amplitude, the loss per half period and the equivalent damping ratio from the "
-    "extrema of a measured free decay.",
-    "Estimate a Coulomb friction angle from the energy balance of a free decay (2Δ lost per half period).",
-    "Explain why two damping settings must be compared at matched amplitude when the damping depends on it.",
-    "Judge whether a driven run is steady from its late drift, with a tolerance fixed beforehand.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="Which of the paper's claims survive on a real, driven and damped torsional oscillator?",
+    level="advanced",
+    objectives=(
+        "Compute the half-period amplitude, the loss per half period and the equivalent damping ratio from the "
+        "extrema of a measured free decay.",
+        "Estimate a Coulomb friction angle from the energy balance of a free decay (2Δ lost per half period).",
+        "Explain why two damping settings must be compared at matched amplitude when the damping depends on it.",
+        "Judge whether a driven run is steady from its late drift, with a tolerance fixed beforehand.",
+    ),
+    prerequisites=(
+        "the free and forced responses of the linear oscillator (chapters 1 and 4)",
+        "the logarithmic decrement",
+        "least squares and standard errors",
+    ),
 )
-
-PREREQUISITES = (
-    "the free and forced responses of the linear oscillator (chapters 1 and 4)",
-    "the logarithmic decrement",
-    "least squares and standard errors",
-)
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 #: The tolerance of the explore exercise's ``-p`` run (a looser steadiness test than the default).
 EXPLORE_TOLERANCE = 0.05
@@ -55,10 +55,8 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
     x1 = x0 - loss0
     delta = math.log(x0 / x1)
     out = [
-        Exercise(
-            id="12.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "12.1",
             text=(
                 f"In the first free decay of the folder (file `{run.file}`, run {run.run}, brake {run.brake}) "
                 "the first "
@@ -81,10 +79,8 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
     )
     med = float(np.median(losses))
     out.append(
-        Exercise(
-            id="12.2",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "12.2",
             text=(
                 f"The free decays with the brake {run.brake} lose a median {g(med, 4)} rad of half-period amplitude "
                 "per half period. If dry friction alone caused the loss, what would its friction angle Δ be?"
@@ -93,7 +89,7 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
                 "Over a half period dry friction dissipates the energy of a constant loss of 2Δ in amplitude, whatever "
                 f"the amplitude, so Δ = {g(med, 4)}/2 = {g(med / 2.0, 4)} rad."
             ),
-            answers=(Answer(quantity="friction", symbol="Δ", value=med / 2.0, unit="rad", rtol=1e-3),),
+            answers=Answer(quantity="friction", symbol="Δ", value=med / 2.0, unit="rad", rtol=1e-3),
         )
     )
     driven = data.select(kind="driven")
@@ -103,10 +99,8 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
         wide = [d for d in (driven_run(r, loose) for r in driven) if d is not None]
         n0, n1 = sum(d.steady.steady for d in base), sum(d.steady.steady for d in wide)
         out.append(
-            Exercise(
-                id="12.3",
-                chapter=CHAPTER,
-                kind="explore",
+            SHEET.explore(
+                "12.3",
                 text=(
                     f"With the tolerance {g(100 * params.tolerance, 2)} %, {n0} of the {len(base)} driven runs are "
                     f"steady. Run the chapter with `-p tolerance {EXPLORE_TOLERANCE}`: how many driven runs count as "
@@ -130,10 +124,8 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
             )
         )
     out.append(
-        Exercise(
-            id="12.4",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "12.4",
             text=(
                 "Braked decays that start at large amplitudes are compared with unbraked ones that start at small "
                 "amplitudes, and the braked ones show more damping. Why is that not yet evidence for the brake?"
@@ -144,14 +136,11 @@ def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
                 "amplitudes mixes the brake with the amplitude. Only a comparison over an amplitude band both cover "
                 "isolates the brake."
             ),
-            choices=(
-                Choice(
-                    key="a",
-                    text="Because the damping depends on the amplitude, so runs must be compared at matched amplitude.",
-                ),
-                Choice(key="b", text="Because braked runs always have a lower natural frequency."),
-                Choice(key="c", text="Because the encoder's step is too coarse to measure damping."),
-            ),
+            options={
+                "a": "Because the damping depends on the amplitude, so runs must be compared at matched amplitude.",
+                "b": "Because braked runs always have a lower natural frequency.",
+                "c": "Because the encoder's step is too coarse to measure damping.",
+            },
             correct="a",
         )
     )

@@ -12,6 +12,7 @@ Examples
 
 from __future__ import annotations
 
+from vibration.presentation.parameters import count, ratio
 from vibration.presentation.schema import Param, Schema
 
 #: The default folder (the package's copy of data/lab_oscillator).
@@ -28,38 +29,20 @@ SCHEMA = Schema(
             meaning="folder of logger files with a manifest runs.csv (and optionally rig.csv)",
             path=True,
         ),
-        Param(
-            name="periods",
-            symbol="n_late",
-            default=3,
-            unit="",
-            low=2,
-            high=10,
-            meaning="final drive periods over which a steady run may drift",
-        ),
-        Param(
-            name="tolerance",
-            symbol="tol",
-            default=0.02,
-            unit="",
-            low=0.005,
-            high=0.2,
-            meaning="largest relative late drift of a steady run",
-        ),
-        Param(
-            name="frequency_tolerance",
-            symbol="tol_ω",
-            default=0.01,
-            unit="",
+        count("periods", "n_late", 3, low=2, high=10, meaning="final drive periods over which a steady run may drift"),
+        ratio("tolerance", "tol", 0.02, low=0.005, high=0.2, meaning="largest relative late drift of a steady run"),
+        ratio(
+            "frequency_tolerance",
+            "tol_ω",
+            0.01,
             low=0.001,
             high=0.05,
             meaning="relative spread of measured drive frequency within one group of driven runs",
         ),
-        Param(
-            name="calibration_detuning",
-            symbol="r_cal",
-            default=0.1,
-            unit="",
+        ratio(
+            "calibration_detuning",
+            "r_cal",
+            0.1,
             low=0.02,
             high=0.5,
             meaning="smallest |ω/ω_n − 1| of the runs that calibrate the drive gain (off resonance)",

@@ -6,30 +6,29 @@ import math
 
 from vibration.physics.exact import steady_state
 from vibration.physics.model import Oscillator, SineForce
-from vibration.presentation.exercises import Answer, Choice, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "01_reproduction"
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "Does the paper's RK45 solution of the forced oscillator match the exact one, figure by figure?"
-LEVEL = "core"
-
-OBJECTIVES = (
-    "Compute the natural frequency ω<sub>n</sub>, the damping ratio ζ and the damped frequency ω<sub>d</sub> "
-    "from m, c and k.",
-    "Classify a damping as underdamped, critically damped or overdamped.",
-    "Compute the steady amplitude X and the phase lag φ of the forced response at a given ω.",
-    "Explain why a numerical solution is checked against the exact one, and how far apart they may be.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="Does the paper's RK45 solution of the forced oscillator match the exact one, figure by figure?",
+    level="core",
+    objectives=(
+        "Compute the natural frequency ω<sub>n</sub>, the damping ratio ζ and the damped frequency ω<sub>d</sub> "
+        "from m, c and k.",
+        "Classify a damping as underdamped, critically damped or overdamped.",
+        "Compute the steady amplitude X and the phase lag φ of the forced response at a given ω.",
+        "Explain why a numerical solution is checked against the exact one, and how far apart they may be.",
+    ),
+    prerequisites=(
+        "Newton's second law for a mass on a spring",
+        "linear second-order ODEs with constant coefficients",
+        "complex numbers and sinusoids",
+    ),
 )
-
-PREREQUISITES = (
-    "Newton's second law for a mass on a spring",
-    "linear second-order ODEs with constant coefficients",
-    "complex numbers and sinusoids",
-)
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -39,10 +38,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     wn, zeta, cc = nom.natural_frequency, nom.damping_ratio, nom.critical_damping
     sigma, wd = nom.decay_rate, nom.damped_natural_frequency
     out = [
-        Exercise(
-            id="01.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "01.1",
             text=(
                 f"For m = {g(p.m)} kg, k = {g(p.k)} N/m and the nominal damping c = {g(p.c_nominal)} N s/m, compute "
                 "the natural frequency ω<sub>n</sub> (rad/s) and the damping ratio ζ."
@@ -57,10 +54,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 Answer(quantity="zeta", symbol="ζ", value=zeta, unit="", rtol=2e-3, atol=1e-6),
             ),
         ),
-        Exercise(
-            id="01.2",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "01.2",
             text=(
                 "Compute the decay rate σ = c/(2m) (1/s) and the damped natural frequency ω<sub>d</sub> (rad/s) of "
                 "the nominal damping (ω<sub>d</sub> = 0 when the free motion does not oscillate)."
@@ -83,10 +78,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     ss = steady_state(nom, SineForce(F0=p.F0, omega=p.omega_ref))
     den = math.hypot(p.k - p.m * p.omega_ref**2, p.c_nominal * p.omega_ref)
     out.append(
-        Exercise(
-            id="01.3",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "01.3",
             text=(
                 f"The force F<sub>0</sub> sin ωt with F<sub>0</sub> = {g(p.F0)} N acts at the reference frequency "
                 f"ω = {g(p.omega_ref)} rad/s on the nominal oscillator. Compute the steady amplitude X (m) and the "
@@ -108,10 +101,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     regimes = {"a": "underdamped", "b": "critically damped", "c": "overdamped", "d": "undamped or unstable"}
     key = next((k for k, v in regimes.items() if v == high.regime), "d")
     out.append(
-        Exercise(
-            id="01.4",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "01.4",
             text=f"Which regime is the high damping c = {g(p.c_high)} N s/m in?",
             worked=(
                 f"ζ = c/(2√(km)) = {g(p.c_high)}/{g(cc)} = {g(high.damping_ratio)}: "
@@ -125,7 +116,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                     else "c ≤ 0: no positive damping."
                 )
             ),
-            choices=tuple(Choice(key=k, text=v) for k, v in regimes.items()),
+            options=regimes,
             correct=key,
         )
     )
@@ -133,10 +124,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     if p.c_nominal > 0:
         x1, x2 = res(p.c_nominal), res(2 * p.c_nominal)
         out.append(
-            Exercise(
-                id="01.5",
-                chapter=CHAPTER,
-                kind="explore",
+            SHEET.explore(
+                "01.5",
                 text=(
                     f"Run this chapter again with twice the nominal damping (`-p c_nominal {g(2 * p.c_nominal)}`). "
                     f"By what factor does the steady amplitude at ω = {g(p.omega_res)} rad/s fall (old over new)?"
@@ -147,7 +136,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                     f"The ratio is {g(x1)}/{g(x2)} = {g(x1 / x2)}: close to 2 when ω is near ω<sub>n</sub>, where "
                     "the damper alone limits the amplitude."
                 ),
-                answers=(Answer(quantity="ratio", symbol="X(c)/X(2c)", value=x1 / x2, unit="", rtol=5e-3),),
+                answers=Answer(quantity="ratio", symbol="X(c)/X(2c)", value=x1 / x2, unit="", rtol=5e-3),
             )
         )
     return tuple(out)

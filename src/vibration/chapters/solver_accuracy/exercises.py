@@ -6,25 +6,24 @@ import math
 
 from vibration.physics.frequency import settling_time
 from vibration.physics.model import Oscillator, SineForce
-from vibration.presentation.exercises import Answer, Choice, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "03_solver_accuracy"
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "How accurate is the paper's solver, and what does its accuracy cost?"
-LEVEL = "core"
-
-OBJECTIVES = (
-    "Compute how many forcing periods and samples per period a simulated window holds.",
-    "Explain what sets the error of an adaptive Runge-Kutta solver, and what does not.",
-    "Measure a solver's error against the exact solution and read a work-precision diagram.",
-    "Compute the 2 % settling time of the forced response from rest.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="How accurate is the paper's solver, and what does its accuracy cost?",
+    level="core",
+    objectives=(
+        "Compute how many forcing periods and samples per period a simulated window holds.",
+        "Explain what sets the error of an adaptive Runge-Kutta solver, and what does not.",
+        "Measure a solver's error against the exact solution and read a work-precision diagram.",
+        "Compute the 2 % settling time of the forced response from rest.",
+    ),
+    prerequisites=("chapter 1: the exact solution", "Taylor series and the order of a method"),
 )
-
-PREREQUISITES = ("chapter 1: the exact solution", "Taylor series and the order of a method")
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -35,10 +34,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     per_period = 2 * math.pi / (p.omega_res * dt)
     nom = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     out = [
-        Exercise(
-            id="03.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "03.1",
             text=(
                 f"The window [0, {g(p.t_end)}] s is sampled at {p.n_points} points and forced at ω = "
                 f"{g(p.omega_res)} rad/s. How many forcing periods does it hold, and how many samples fall in one "
@@ -55,10 +52,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 Answer(quantity="samples", symbol="T<sub>f</sub>/Δt", value=per_period, unit="", rtol=2e-3),
             ),
         ),
-        Exercise(
-            id="03.2",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "03.2",
             text=(
                 "The chapter asks SciPy's RK45 for its solution at more output times. What does that change in "
                 "the error of the solution at a given time?"
@@ -68,21 +63,19 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 "filled by the method's interpolant between the steps. More output samples neither shorten the steps "
                 "nor lower the error: only tighter tolerances do."
             ),
-            choices=(
-                Choice(key="a", text="nothing: the tolerances set the steps, the output times are interpolated"),
-                Choice(key="b", text="it falls in proportion to the number of samples"),
-                Choice(key="c", text="it grows, because more steps add more rounding"),
-            ),
+            options={
+                "a": "nothing: the tolerances set the steps, the output times are interpolated",
+                "b": "it falls in proportion to the number of samples",
+                "c": "it grows, because more steps add more rounding",
+            },
             correct="a",
         ),
     ]
     if p.c_nominal > 0:
         ts = settling_time(nom, SineForce(F0=p.F0, omega=p.omega_res))
         out.append(
-            Exercise(
-                id="03.3",
-                chapter=CHAPTER,
-                kind="numerical",
+            SHEET.numerical(
+                "03.3",
                 text=(
                     f"Compute the 2 % settling time (s) of the nominal damping c = {g(p.c_nominal)} N s/m forced at "
                     f"ω = {g(p.omega_res)} rad/s from rest, and the time constant 2m/c it is a multiple of."
@@ -101,10 +94,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
             )
         )
     out.append(
-        Exercise(
-            id="03.4",
-            chapter=CHAPTER,
-            kind="explore",
+        SHEET.explore(
+            "03.4",
             text=(
                 f"Rerun the chapter with a window twice as long (`-p t_end {g(2 * p.t_end)}`) and the same number of "
                 "samples. How many samples fall in one forcing period now?"
@@ -114,7 +105,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 f"T<sub>f</sub> = {g(2 * math.pi / p.omega_res)} s "
                 f"holds {g(per_period / 2)} samples, half as many; the solver's own steps do not change."
             ),
-            answers=(Answer(quantity="samples", symbol="T<sub>f</sub>/Δt", value=per_period / 2, unit="", rtol=2e-3),),
+            answers=Answer(quantity="samples", symbol="T<sub>f</sub>/Δt", value=per_period / 2, unit="", rtol=2e-3),
         )
     )
     return tuple(out)

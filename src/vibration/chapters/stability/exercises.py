@@ -6,25 +6,24 @@ import math
 
 from vibration.physics.model import Oscillator
 from vibration.physics.stability import step_metrics, transmissibility
-from vibration.presentation.exercises import Answer, Choice, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "06_stability"
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "Is light damping a risk to stability, and what does a designer trade by adding damping?"
-LEVEL = "advanced"
-
-OBJECTIVES = (
-    "Decide stability from the poles of m s² + c s + k, and tell bounded resonance from instability.",
-    "Compute the overshoot and the settling time of the step response from ζ.",
-    "Compute the transmissibility of a base-excited mount and the frequency above which it isolates.",
-    "Explain the trade-off damping brings in isolation, shock and random loads.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="Is light damping a risk to stability, and what does a designer trade by adding damping?",
+    level="advanced",
+    objectives=(
+        "Decide stability from the poles of m s² + c s + k, and tell bounded resonance from instability.",
+        "Compute the overshoot and the settling time of the step response from ζ.",
+        "Compute the transmissibility of a base-excited mount and the frequency above which it isolates.",
+        "Explain the trade-off damping brings in isolation, shock and random loads.",
+    ),
+    prerequisites=("Part I (chapters 1-5)", "the roots of a quadratic in the complex plane"),
 )
-
-PREREQUISITES = ("Part I (chapters 1-5)", "the roots of a quadratic in the complex plane")
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -37,10 +36,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
         sm = step_metrics(nom)
         os_closed = math.exp(-math.pi * zeta / math.sqrt(1 - zeta**2))
         out.append(
-            Exercise(
-                id="06.1",
-                chapter=CHAPTER,
-                kind="numerical",
+            SHEET.numerical(
+                "06.1",
                 text=(
                     f"A constant force is switched on at rest on the nominal oscillator (c = {g(p.c_nominal)} N s/m). "
                     "Compute the overshoot (a fraction of the final deflection) and the time of the first peak (s)."
@@ -59,10 +56,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     sigma = -p.c_unstable / (2 * p.m)
     key = "a" if p.c_unstable < 0 else "b" if p.c_unstable == 0 else "c"
     out.append(
-        Exercise(
-            id="06.2",
-            chapter=CHAPTER,
-            kind="conceptual",
+        SHEET.conceptual(
+            "06.2",
             text=(
                 f"A damping c = {g(p.c_unstable)} N s/m is applied with no force at all, from a small displacement. "
                 "What does the motion do?"
@@ -78,11 +73,7 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                     else "It is negative: the motion decays."
                 )
             ),
-            choices=(
-                Choice(key="a", text="it grows exponentially: unstable"),
-                Choice(key="b", text="it keeps a constant amplitude"),
-                Choice(key="c", text="it decays"),
-            ),
+            options={"a": "it grows exponentially: unstable", "b": "it keeps a constant amplitude", "c": "it decays"},
             correct=key,
         )
     )
@@ -90,10 +81,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
         w = p.isolation_ratio * wn
         tr = float(transmissibility(nom, w))
         out.append(
-            Exercise(
-                id="06.3",
-                chapter=CHAPTER,
-                kind="explore",
+            SHEET.explore(
+                "06.3",
                 text=(
                     f"In the sliders, set the damping ratio to ζ = {g(zeta)} (the nominal damping) and the base "
                     f"frequency to {g(p.isolation_ratio)} ω<sub>n</sub>. Compute the "

@@ -1,14 +1,21 @@
-"""Chapter 6, stability and damping as a design choice: its parameters, declared once.
-
-The runner range-checks ``-p`` values with :data:`SCHEMA`, a test checks the notebook's parameters
-cell against it, and the chapter's computation takes a :class:`Params` record built from it.
-"""
+"""Chapter 6, stability and damping as a design choice: its parameters (a growth window a float holds)."""
 
 from __future__ import annotations
 
+import math
+
 from vibration.physics.model import ParameterError
-from vibration.presentation.parameters import MAX_GROWTH, shared
-from vibration.presentation.schema import Param, Schema
+from vibration.presentation.parameters import (
+    MAX_GROWTH,
+    count,
+    damping,
+    positive,
+    quantity,
+    seed,
+    shared,
+    shared_params,
+)
+from vibration.presentation.schema import Schema
 
 
 def growth_window(p: dict) -> None:
@@ -26,70 +33,27 @@ def growth_window(p: dict) -> None:
 SCHEMA = Schema(
     notebook="06_stability",
     params=(
-        shared("m"),
-        shared("k"),
-        shared("F0"),
+        *shared_params("m", "k", "F0"),
         shared("omega_res", meaning='"resonant" forcing frequency of the paper'),
         shared("c_low", meaning="low damping coefficient"),
-        shared("c_nominal"),
-        shared("c_high"),
-        Param(
-            name="c_unstable",
-            symbol="c_u",
-            default=-0.1,
-            unit="N s/m",
-            low=-10000.0,
-            high=0.0,
-            meaning="damping of the flutter model (negative, or 0)",
-        ),
-        Param(
-            name="t_growth",
-            symbol="t_g",
-            default=200.0,
-            unit="s",
-            low=0.0,
-            high=2000.0,
-            meaning="window of the growth comparison",
-            low_open=True,
-        ),
-        Param(
-            name="isolation_ratio",
-            symbol="r_iso",
-            default=3.0,
+        *shared_params("c_nominal", "c_high"),
+        damping("c_unstable", "c_u", -0.1, low=-1e4, high=0.0, meaning="damping of the flutter model (negative, or 0)"),
+        positive("t_growth", "t_g", 200.0, unit="s", high=2000.0, meaning="window of the growth comparison"),
+        quantity(
+            "isolation_ratio",
+            "r_iso",
+            3.0,
             unit="",
-            low=1.4142135623730951,
+            low=math.sqrt(2.0),
             high=100.0,
             meaning="frequency ratio at which isolation is judged",
             low_open=True,
         ),
-        Param(
-            name="S0",
-            symbol="S_0",
-            default=0.1,
-            unit="N² s/rad",
-            low=0.0,
-            high=1000000.0,
-            meaning="two-sided spectral density of the white-noise force",
-            low_open=True,
+        positive(
+            "S0", "S_0", 0.1, unit="N² s/rad", high=1e6, meaning="two-sided spectral density of the white-noise force"
         ),
-        Param(
-            name="n_paths",
-            symbol="N_paths",
-            default=200,
-            unit="",
-            low=2,
-            high=5000,
-            meaning="Monte Carlo paths per damping",
-        ),
-        Param(
-            name="seed",
-            symbol="s",
-            default=1,
-            unit="",
-            low=0,
-            high=2147483647,
-            meaning="seed of the Monte Carlo generator",
-        ),
+        count("n_paths", "N_paths", 200, low=2, high=5000, meaning="Monte Carlo paths per damping"),
+        seed(1, meaning="seed of the Monte Carlo generator"),
     ),
     together=(growth_window,),
 )

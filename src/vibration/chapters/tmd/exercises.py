@@ -5,25 +5,24 @@ from __future__ import annotations
 import math
 
 from vibration.physics.tmd import den_hartog
-from vibration.presentation.exercises import Answer, Exercise
+from vibration.presentation.exercises import Answer, Exercise, Sheet
 from vibration.presentation.exercises import fmt as g
 
 from .params import Params
 
-CHAPTER = "08_tmd"
-
-#: The chapter's question, in one sentence, and its level ("core": Part I, second year; "advanced": graduate).
-QUESTION = "How should a tuned mass damper be chosen, and how does it protect a building?"
-LEVEL = "advanced"
-
-OBJECTIVES = (
-    "Compute Den Hartog's tuning ratio and absorber damping for a given mass ratio.",
-    "Size an absorber's mass, stiffness and damper for a given primary.",
-    "Compare Den Hartog, H∞ and H2 tunings by their peak and their sensitivity to mistuning.",
-    "Explain why a tuned mass damper works on one mode of a multi-storey building.",
+SHEET = Sheet(
+    chapter=Params.SCHEMA.notebook,
+    question="How should a tuned mass damper be chosen, and how does it protect a building?",
+    level="advanced",
+    objectives=(
+        "Compute Den Hartog's tuning ratio and absorber damping for a given mass ratio.",
+        "Size an absorber's mass, stiffness and damper for a given primary.",
+        "Compare Den Hartog, H∞ and H2 tunings by their peak and their sensitivity to mistuning.",
+        "Explain why a tuned mass damper works on one mode of a multi-storey building.",
+    ),
+    prerequisites=("chapter 4: the magnification curve", "two-degree-of-freedom systems and their modes"),
 )
-
-PREREQUISITES = ("chapter 4: the magnification curve", "two-degree-of-freedom systems and their modes")
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def exercises(params: Params) -> tuple[Exercise, ...]:
@@ -34,10 +33,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
     wn = math.sqrt(p.k / p.m)
     dh2 = den_hartog(min(2 * p.mu, 1.0))
     return (
-        Exercise(
-            id="08.1",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "08.1",
             text=(
                 f"For a mass ratio μ = {g(p.mu)}, compute Den Hartog's tuning ratio ν = ω<sub>a</sub>/ω<sub>p</sub> "
                 "and the absorber's damping ratio ζ<sub>a</sub> (on its own frequency)."
@@ -51,10 +48,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 Answer(quantity="zeta_a", symbol="ζ<sub>a</sub>", value=dh.zeta_a, unit="", rtol=2e-3),
             ),
         ),
-        Exercise(
-            id="08.2",
-            chapter=CHAPTER,
-            kind="numerical",
+        SHEET.numerical(
+            "08.2",
             text=(
                 f"Size that absorber for the primary m = {g(p.m)} kg, k = {g(p.k)} N/m: its mass (kg), stiffness (N/m) "
                 "and damping coefficient (N s/m)."
@@ -70,10 +65,8 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 Answer(quantity="c_a", symbol="c<sub>a</sub>", value=c_a, unit="N s/m", rtol=2e-3),
             ),
         ),
-        Exercise(
-            id="08.3",
-            chapter=CHAPTER,
-            kind="explore",
+        SHEET.explore(
+            "08.3",
             text=(
                 f"Rerun the chapter with a heavier absorber (`-p mu {g(min(2 * p.mu, 1.0))}`). What is Den Hartog's "
                 "peak magnification of the primary now (undamped primary)?"
@@ -83,6 +76,6 @@ def exercises(params: Params) -> tuple[Exercise, ...]:
                 f"√(1 + 2/{g(dh2.mu)}) = {g(math.sqrt(1 + 2 / dh2.mu))}; the computed peak of the tuned pair is "
                 f"{g(dh2.peak)} (against {g(dh.peak)} at μ = {g(p.mu)})."
             ),
-            answers=(Answer(quantity="peak", symbol="M<sub>max</sub>", value=dh2.peak, unit="", rtol=1e-2),),
+            answers=Answer(quantity="peak", symbol="M<sub>max</sub>", value=dh2.peak, unit="", rtol=1e-2),
         ),
     )
