@@ -30,6 +30,7 @@ from vibration.physics.stability import (
     white_noise_force_optimum,
     white_noise_monte_carlo,
 )
+from vibration.presentation.records import with_params
 
 #: The paper's names for its three dampings (Discussion 4.2), in the order low, nominal, high.
 LABELS = {"low": "comfort", "nominal": "optimised compromise", "high": "absolute stability"}
@@ -69,9 +70,14 @@ class GrowthCase:
         return float(np.max(np.abs(self.x)))
 
 
+@with_params("m", "k", "F0", "omega_res", "t_growth", "isolation_ratio", "S0", "n_paths", "seed")
 @dataclass(frozen=True, eq=False, kw_only=True)
 class StabilityStudy:
-    """Every number of the chapter, computed once by :func:`stability_study` (SI units)."""
+    """Every number of the chapter, computed once by :func:`stability_study` (SI units).
+
+    The run's parameters are readable by name (``st.m`` for ``st.params.m``): see
+    :func:`~vibration.presentation.records.with_params`.
+    """
 
     params: Params
     dampings: dict  # "low"/"nominal"/"high" -> c, N s/m (any sign, any order)
@@ -85,46 +91,10 @@ class StabilityStudy:
     bounded_name: str | None  # damping of the run the bounded case uses (None: the paper's ratio)
     support_optimum: tuple[float, float]  # c = sqrt(km) (N s/m) and the least support-force variance (N²)
 
-    # the parameters, by name (SI units)
-    @property
-    def m(self) -> float:
-        return self.params.m
-
-    @property
-    def k(self) -> float:
-        return self.params.k
-
-    @property
-    def F0(self) -> float:
-        return self.params.F0
-
-    @property
-    def omega_res(self) -> float:
-        return self.params.omega_res
-
+    # the parameters, by name (SI units; the others by @with_params)
     @property
     def c_unstable(self) -> float:
         return self.params.c_unstable + 0.0  # -0.0 is 0
-
-    @property
-    def t_growth(self) -> float:
-        return self.params.t_growth
-
-    @property
-    def isolation_ratio(self) -> float:
-        return self.params.isolation_ratio
-
-    @property
-    def S0(self) -> float:
-        return self.params.S0
-
-    @property
-    def n_paths(self) -> int:
-        return self.params.n_paths
-
-    @property
-    def seed(self) -> int:
-        return self.params.seed
 
     @property
     def omega_n(self) -> float:

@@ -43,6 +43,7 @@ from vibration.physics.tmd import (
     tmd_system,
     worst_peak,
 )
+from vibration.presentation.records import with_params
 
 #: Mass ratios of the tunings table (the run's μ is added when it is not among them), 1.
 TABLE_MUS = (0.01, 0.02, 0.05, 0.1)
@@ -104,9 +105,14 @@ class Check:
         return self.value < self.tolerance
 
 
+@with_params("m", "k", "F0", "omega_res", "t_end", "mu", "mistuning", "mu_building", c="c_nominal")
 @dataclass(frozen=True, eq=False, kw_only=True)
 class TMDStudy:
-    """Every result of the chapter (SI units; ratios dimensionless)."""
+    """Every result of the chapter (SI units; ratios dimensionless).
+
+    The run's parameters are readable by their physical names (``st.c`` for ``st.params.c_nominal``): see
+    :func:`~vibration.presentation.records.with_params`.
+    """
 
     params: Params
     zeta_p: float  # primary damping ratio c/(2 sqrt(k m)), 1
@@ -128,43 +134,6 @@ class TMDStudy:
     absorber: ModeAbsorber = field(repr=False)
     load_cases: tuple = field(repr=False)  # LoadCase: roof force, ground acceleration
     checks: tuple = field(repr=False)  # Check records
-
-    # -- the run's parameters, by their physical names ---------------------------------------------
-    @property
-    def m(self) -> float:
-        return self.params.m
-
-    @property
-    def k(self) -> float:
-        return self.params.k
-
-    @property
-    def c(self) -> float:
-        return self.params.c_nominal
-
-    @property
-    def F0(self) -> float:
-        return self.params.F0
-
-    @property
-    def omega_res(self) -> float:
-        return self.params.omega_res
-
-    @property
-    def t_end(self) -> float:
-        return self.params.t_end
-
-    @property
-    def mu(self) -> float:
-        return self.params.mu
-
-    @property
-    def mistuning(self) -> float:
-        return self.params.mistuning
-
-    @property
-    def mu_building(self) -> float:
-        return self.params.mu_building
 
     # -- derived -----------------------------------------------------------------------------------
     @property
