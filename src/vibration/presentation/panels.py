@@ -4,7 +4,10 @@ book's line styles in the form the helper draws.
 A chapter's panel is an HTML fragment with its own CSS and JavaScript (``panel/<name>.css`` and
 ``panel/<name>.js`` in the chapter's package). :func:`panel_assets` returns the ``<style>`` and
 ``<script>`` elements that inline them, preceded by ``assets/plot.js`` (``window.VibPlot``: axes, ticks, the
-book's number format, legends, resizing), so a panel script keeps only its physics and its controls.
+book's number format, legends, resizing), so a panel script keeps only its physics and its controls. A panel
+built on the kit's parts (``<prefix>-panel``, ``-title``, ``-sub``, ``-controls``) names its prefix and gets
+the kit's stylesheet (``assets/panel.css``: the frame, heading, controls and plots) before its own, so its
+stylesheet keeps only what is its own.
 :func:`line_style` and :func:`case_styles` turn the book's visual language (:data:`~.style.CASES`) into
 ``{"color", "dash"}`` records for ``VibPlot.draw``, so a case keeps its colour and dash in the panels too.
 
@@ -13,12 +16,16 @@ Examples
 >>> block = panel_assets("vibration.chapters.control", "control.js", "control.css")
 >>> block.index("window.VibPlot") < block.index("window.vibrationControl"), block.count("<script>")
 (True, 2)
+>>> kit = panel_assets("vibration.chapters.stability", "stability.js", "stability.css", kit="vst")
+>>> kit.index(".vst-panel {") < kit.index(".vst-panel .vst-body"), ".kit-" in kit
+(True, False)
 >>> case_styles("passive", "LQR")
 {'passive': {'color': '#0072B2', 'dash': ''}, 'LQR': {'color': '#E69F00', 'dash': '6 4'}}
 """
 
 from __future__ import annotations
 
+import re
 from importlib.resources import files
 
 from matplotlib.colors import to_hex
@@ -39,7 +46,19 @@ def plot_js() -> str:
     return _text("vibration.presentation", "assets", "plot.js")
 
 
-def panel_assets(package: str, js: str, css: str) -> str:
+def kit_css(prefix: str) -> str:
+    """The kit's stylesheet (``assets/panel.css``, without its opening comment) for the panel ``.<prefix>-panel``.
+
+    >>> kit_css("vst").splitlines()[0]
+    '.vst-panel {'
+    """
+    if not re.fullmatch(r"[a-z][a-z0-9]*", prefix):
+        raise ValueError(f"kit prefix {prefix!r} is not a class prefix: allowed lower-case letters and digits")
+    text = re.sub(r"\A/\*.*?\*/\n", "", _text("vibration.presentation", "assets", "panel.css"), flags=re.S)
+    return re.sub(r"(\.|--)kit-", rf"\g<1>{prefix}-", text)
+
+
+def panel_assets(package: str, js: str, css: str, *, kit: str | None = None) -> str:
     """``<style>`` and ``<script>`` elements of a panel: its CSS, the plotting helper, then its script.
 
     Parameters
@@ -48,9 +67,12 @@ def panel_assets(package: str, js: str, css: str) -> str:
         The chapter's package, e.g. ``"vibration.chapters.control"``; the files live in its ``panel/``.
     js, css : str
         File names of the panel's script and style sheet in that folder.
+    kit : str, optional
+        The class prefix of a panel built on the kit's parts: its style then starts with :func:`kit_css`.
     """
+    shared = kit_css(kit) if kit is not None else ""
     return (
-        f"<style>\n{_text(package, 'panel', css)}</style>\n"
+        f"<style>\n{shared}{_text(package, 'panel', css)}</style>\n"
         f"<script>\n{plot_js()}</script>\n"
         f"<script>\n{_text(package, 'panel', js)}</script>\n"
     )

@@ -54,7 +54,7 @@ def decay_panel_html(st: RealOscillatorStudy, brake: str = "on") -> str:
     title = "with" if brake == "on" else "without"
     return f"""<div class="vro-panel" id="{pid}" data-decay="{e(json.dumps(data))}" \
 data-styles="{e(json.dumps(STYLES))}">
-{panel_assets("vibration.chapters.real_oscillator", "real_oscillator.js", "real_oscillator.css")}\
+{panel_assets("vibration.chapters.real_oscillator", "real_oscillator.js", "real_oscillator.css", kit="vro")}\
 <h3 class="vro-title">Free decay {title} the brake, run {d.run}: move ω<sub>n</sub>, ζ and Δ</h3>
 <p class="vro-sub">Dots: the measured angle (20 Hz, one-degree encoder). Line: the exact free decay with viscous and \
 Coulomb friction from the fitted first extremum, computed in your browser. The sliders start at the whole-trace fit.</p>

@@ -79,7 +79,7 @@ def stability_panel_html(
     step = w_max / 1000.0
     return f"""<div class="vst-panel" id="{e(panel_id)}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
-{panel_assets("vibration.chapters.stability", "stability.js", "stability.css")}\
+{panel_assets("vibration.chapters.stability", "stability.js", "stability.css", kit="vst")}\
 <h3 class="vst-title">Damping as a design choice: m = {m:g} kg, k = {k:g} N/m, ω<sub>n</sub> = {wn:.4g} rad/s</h3>
 <p class="vst-sub">Move the damping ratio (logarithmic) and the base frequency; computed in your browser from the
 closed forms.</p>

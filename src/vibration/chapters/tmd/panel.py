@@ -125,7 +125,7 @@ def tmd_panel_html(mu=0.05, f=None, zeta_a=None, zeta_p=0.0, *, panel_id: str | 
     )
     return f"""<div class="vtm-panel" id="{pid}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
-{panel_assets("vibration.chapters.tmd", "tmd.js", "tmd.css")}\
+{panel_assets("vibration.chapters.tmd", "tmd.js", "tmd.css", kit="vtm")}\
 <h3 class="vtm-title">Tuned mass damper: the primary's magnification against the frequency ratio</h3>
 <p class="vtm-sub">Move the mass ratio μ and the absorber damping ζ<sub>a</sub> (logarithmic), the tuning
 f = ω<sub>a</sub>/ω<sub>p</sub> and the primary damping ζ<sub>p</sub>; computed in your browser from the
