@@ -91,12 +91,24 @@ class _NoResponse(Exception):
 class Explorer(widgets.VBox):
     """Sliders, a readout table and one live figure of the forced oscillator.
 
-    Build it with :func:`explorer`. The child widgets are attributes, so code
-    (and tests) can drive it as a user would: setting
-    ``omega_slider.value`` or ``m_text.value`` runs :meth:`update`.
+    Build it with :func:`explorer` (the same class under the chapter's factory name) or
+    :func:`live_explorer`. The child widgets are attributes, so code (and tests) can drive it
+    as a user would: setting ``omega_slider.value`` or ``m_text.value`` runs :meth:`update`.
 
-    The constructor takes the arguments of :func:`explorer` (documented there,
-    with units).
+    Parameters
+    ----------
+    m, k, F0 : float
+        The oscillator: mass (kg, > 0), stiffness (N/m, > 0) and force amplitude (N, >= 0).
+    c : float
+        Initial damping, N s/m (> 0); the log slider spans 0.01 to 20 N s/m.
+    omega : float
+        Initial forcing frequency, rad/s (> 0).
+    t_end : float
+        Time window, s (> 0).
+    n_points : int
+        Samples in ``[0, t_end]``.
+    show_rk45 : bool
+        Start with the paper's RK45 solution overlaid.
 
     Attributes
     ----------
@@ -125,6 +137,24 @@ class Explorer(widgets.VBox):
     n_full_draws, n_blits : int
         How many updates redrew the whole figure and how many only blitted
         the moving artists.
+
+    Raises
+    ------
+    ParameterError
+        When a starting value is out of range (later, bad typed values are
+        shown in the readout instead).
+
+    Examples
+    --------
+    >>> ex = explorer()
+    >>> ex.values["regime"], round(ex.values["amplitude"], 4)      # m
+    ('underdamped', 2.2371)
+    >>> ex.c_slider.value = 15.0
+    >>> ex.values["regime"]
+    'overdamped'
+    >>> ex.m_text.value = 0.0
+    >>> ex.error
+    'm = 0.0 kg is out of range: allowed m > 0 kg, finite'
     """
 
     def __init__(
@@ -536,61 +566,9 @@ class Explorer(widgets.VBox):
         return data
 
 
-def explorer(
-    m: float = 1.0,
-    k: float = 20.0,
-    F0: float = 5.0,
-    c: float = 0.5,
-    omega: float = 4.47,
-    t_end: float = 50.0,
-    n_points: int = N_POINTS,
-    show_rk45: bool = False,
-) -> Explorer:
-    """Interactive explorer of the forced oscillator from rest.
-
-    Parameters
-    ----------
-    m : float
-        Mass, kg (> 0).
-    k : float
-        Stiffness, N/m (> 0).
-    F0 : float
-        Force amplitude, N (>= 0).
-    c : float
-        Initial damping, N s/m (> 0); the log slider spans 0.01 to 20 N s/m.
-    omega : float
-        Initial forcing frequency, rad/s (> 0).
-    t_end : float
-        Time window, s (> 0).
-    n_points : int
-        Samples in ``[0, t_end]``.
-    show_rk45 : bool
-        Start with the paper's RK45 solution overlaid.
-
-    Returns
-    -------
-    Explorer
-        An ``ipywidgets.VBox``; display it (last expression of a cell).
-
-    Raises
-    ------
-    ParameterError
-        When a starting value is out of range (later, bad typed values are
-        shown in the readout instead).
-
-    Examples
-    --------
-    >>> ex = explorer()
-    >>> ex.values["regime"], round(ex.values["amplitude"], 4)      # m
-    ('underdamped', 2.2371)
-    >>> ex.c_slider.value = 15.0
-    >>> ex.values["regime"]
-    'overdamped'
-    >>> ex.m_text.value = 0.0
-    >>> ex.error
-    'm = 0.0 kg is out of range: allowed m > 0 kg, finite'
-    """
-    return Explorer(m=m, k=k, F0=F0, c=c, omega=omega, t_end=t_end, n_points=n_points, show_rk45=show_rk45)
+#: The explorer's factory name: ``explorer(omega=3.0)`` builds an :class:`Explorer` (an ``ipywidgets.VBox``;
+#: display it as the last expression of a cell).
+explorer = Explorer
 
 
 def live_explorer(study: ExploreStudy) -> Explorer:
