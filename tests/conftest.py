@@ -16,6 +16,7 @@ import contextlib
 import numbers
 import os
 import re
+import shutil
 from pathlib import Path
 
 import pytest
@@ -103,8 +104,35 @@ CHROMIUM_ARGS = [
     "--disable-sync",
     "--no-first-run",
 ]
+ROOT = Path(__file__).resolve().parents[1]
 SCREENSHOTS = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "screenshots")
 SCREENSHOT_DIR = Path(SCREENSHOTS)  # the same folder, as a path
+
+
+@pytest.fixture(scope="session")
+def committed_book(tmp_path_factory) -> Path:
+    """The HTML book from the committed notebooks (stored outputs, no kernel), built once for the whole run.
+
+    pytest-xdist's workers share the parent of their temporary folders: the first worker to ask builds the
+    book there under a file lock, the others wait and read it. Tests only read it.
+    """
+    import fcntl
+
+    from vibration.publishing import report
+
+    shared = tmp_path_factory.getbasetemp().parent
+    out = shared / "committed-book" / "report"
+    with open(shared / "committed-book.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            if not out.is_dir():  # built aside and renamed, so a failed build leaves no book behind
+                partial = out.with_name("partial") / "report"
+                shutil.rmtree(partial.parent, ignore_errors=True)
+                report.book_from_sources(report.discover(ROOT), partial, pdf=False)
+                partial.rename(out)
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
+    return out
 
 
 @pytest.fixture(scope="session")

@@ -11,17 +11,13 @@ from pathlib import Path
 import pytest
 from conftest import open_offline
 
-from vibration.publishing import report
-
 ROOT = Path(__file__).resolve().parents[2]
 SAMPLE = ("index.html", "05_explore.html", "07_control.html")
 
 
 @pytest.fixture(scope="module")
-def site(tmp_path_factory) -> Path:
-    out = tmp_path_factory.mktemp("axe") / "report"
-    report.book_from_sources(report.discover(ROOT), out, pdf=False)
-    return out
+def site(committed_book) -> Path:
+    return committed_book
 
 
 def violations(browser, path: Path, mode: str) -> list[str]:

@@ -29,11 +29,9 @@ CONTENTS = read_contents(ROOT)
 
 
 @pytest.fixture(scope="module")
-def site(tmp_path_factory) -> Path:
+def site(committed_book) -> Path:
     """The HTML book from the committed notebooks (the print edition has its own, slow, fixture)."""
-    out = tmp_path_factory.mktemp("book") / "report"
-    report.book_from_sources(report.discover(ROOT), out, pdf=False)
-    return out
+    return committed_book
 
 
 @pytest.fixture(scope="module")
@@ -449,14 +447,22 @@ def test_front_page_marks_the_core_course_and_the_advanced_parts(site):
 
 def test_each_folded_run_of_a_notebook_is_one_closed_fold_of_its_page_with_no_section_inside(site):
     """The cells a chapter tags "details" (checks, convergence, secondary comparisons) leave its main text:
-    one closed <details> per run of tagged cells, every tagged table and figure inside one, no heading."""
+    one closed <details> per run of tagged cells (a tagged heading at the run's opening level or above
+    opens the next), every tagged table and figure inside one, no heading."""
     import nbformat
     from bs4 import BeautifulSoup
 
     folded = 0
     for path in NOTEBOOKS:
-        tags = [("details" in c.metadata.get("tags", [])) for c in nbformat.read(path, as_version=4).cells]
-        runs = sum(1 for i, t in enumerate(tags) if t and (i == 0 or not tags[i - 1]))
+        runs, opening = 0, None  # opening: the heading level the current fold opens with (0: none)
+        for cell in nbformat.read(path, as_version=4).cells:
+            if "details" not in cell.metadata.get("tags", []):
+                opening = None
+                continue
+            head = re.match(r"(#{1,6}) ", cell.source.lstrip()) if cell.cell_type == "markdown" else None
+            level = len(head[1]) if head else 0
+            if opening is None or (opening and level and level <= opening):
+                runs, opening = runs + 1, level  # a new run, or a section at the fold's own level
         page = site / ("index.html" if path.stem.startswith("00_") else f"{path.stem}.html")
         folds = BeautifulSoup(page.read_text(encoding="utf-8"), "html.parser").select("details.vib-details")
         assert len(folds) == runs, (path.stem, len(folds), runs)
