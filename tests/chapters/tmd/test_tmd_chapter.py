@@ -22,7 +22,7 @@ from vibration.chapters.tmd.digits import Sig
 from vibration.chapters.tmd.params import SCHEMA
 from vibration.chapters.tmd.study import DESIGNS, RULES, TUNINGS, tmd_study
 from vibration.physics.model import ParameterError
-from vibration.presentation.captions import Captioned, check_caption
+from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 
 PARAMETER_SETS = {
     "defaults": {},
@@ -85,6 +85,7 @@ def test_no_paragraph_appears_twice(chapter):
     paragraphs |= {f"caption of {t.name}": t.caption for t in tabs}
     paragraphs |= {f"note {i} of {t.name}": n for t in tabs for i, n in enumerate(t.notes)}
     paragraphs |= {f"caption of {f.name}": f.caption for f in figs}
+    paragraphs |= {f"remark under {f.name}": f.remark for f in figs if f.remark}
     paragraphs |= {f"alt text of {f.name}": f.alt for f in figs}
     seen: dict[str, str] = {}
     for name, paragraph in paragraphs.items():
@@ -118,9 +119,10 @@ def test_the_readers_notation(chapter):
             for cell in cells:
                 assert "_" not in cell and not E_NOTATION.search(cell), (t.name, cell)
     for f in figs:
-        plain = _outside_maths(f.caption)
-        assert not CODE_NAMES.search(plain) and not E_NOTATION.search(f.caption), (f.name, f.caption)
-        assert "_" not in _outside_maths(f.caption), (f.name, f.caption)
+        for words in (f.caption, f.remark):
+            plain = _outside_maths(words)
+            assert not CODE_NAMES.search(plain) and not E_NOTATION.search(words), (f.name, words)
+            assert "_" not in plain, (f.name, words)
         assert "$" not in f.alt and "_" not in f.alt, (f.name, f.alt)
 
 
@@ -154,16 +156,24 @@ def test_every_caption_passes_its_check_and_says_true_coincidences(chapter):
     curves = {n: figures.tmd_magnification(st.mu, s.tuning.f, s.tuning.zeta_a, r, st.zeta_p)
               for n, s in st.scores.items()}  # fmt: skip
     for fig_name, data in (("fig-tmd-magnification", curves), ("fig-tmd-robustness", st.robust)):
-        caption = by_name[fig_name].caption
+        shown = f"{by_name[fig_name].caption} {by_name[fig_name].remark}".lower()  # the findings are in the remark
         for group in (figures.CLOSED, figures.OPTIMA):
             for i, a in enumerate(group):
                 for b in group[i + 1 :]:
                     d = float(np.max(np.abs(np.asarray(data[a]) / np.asarray(data[b]) - 1.0)))
-                    said = f"the curves of {figures.NAME[a]} and {figures.NAME[b]} coincide" in caption
+                    said = f"the curves of {figures.NAME[a]} and {figures.NAME[b]} coincide".lower() in shown
                     assert said == (d < figures.COINCIDE), (fig_name, a, b, d)
     # the modes figure draws one panel per mode shown
     modes = by_name["fig-tmd-modes"].fig
     assert len(modes.axes) == min(st.building.n, figures.MAX_MODES)
+
+
+def test_every_caption_is_at_most_sixty_words(chapter):
+    """Figure and table captions say what is drawn or listed in at most 60 words, at every parameter set."""
+    _, _, tabs, figs = chapter
+    assert CAPTION_WORDS == 60
+    for item in (*figs, *tabs):
+        assert caption_words(item.caption) <= 60, (item.name, caption_words(item.caption), item.caption)
 
 
 def test_sentences_state_what_the_numbers_say(chapter):

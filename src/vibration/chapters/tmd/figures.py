@@ -69,7 +69,6 @@ NAME = {
 }
 #: The two groups drawn side by side: tunings derived for an undamped primary, optima for the actual damping.
 CLOSED, OPTIMA = TUNINGS[:3], TUNINGS[3:]
-GROUP_WORDS = ("the tunings derived for an undamped primary", "the optima for the actual damping")
 #: Curves closer than this (largest relative difference) are said to coincide, 1.
 COINCIDE = 0.01
 GREY = OKABE_ITO["grey"]
@@ -98,21 +97,37 @@ def coinciding(curves: dict[str, np.ndarray], rtol: float = COINCIDE) -> list[tu
     return out
 
 
-def _coincide_words(pairs: list[tuple[str, str, float]]) -> str:
-    """ "; Den Hartog's rule and the closed-form H∞ optimum coincide to within 0.02 %" for each pair."""
-    return "".join(
-        f"; the curves of {NAME[a]} and {NAME[b]} coincide to within {sig(max(100 * d, 1e-3), 1)} %"
-        for a, b, d in pairs
-    )
-
-
 def _cap(word: str) -> str:
     return word[:1].upper() + word[1:]
 
 
-def _listing(names, looks) -> str:
-    parts = [f"{NAME[n]} ({looks[n]})" for n in names]
-    return ", ".join(parts[:-1]) + " and " + parts[-1] if len(parts) > 1 else parts[0]
+#: What a caption calls each tuning's curve within its group (the panels' titles name the group).
+SHORT = {
+    TUNINGS[0]: "Den Hartog's rule",
+    TUNINGS[1]: "closed-form H∞",
+    TUNINGS[2]: "Warburton's H2",
+    TUNINGS[3]: "H∞",
+    TUNINGS[4]: "H2",
+    TUNINGS[5]: "robust min-max",
+}
+
+
+def _groups(fig) -> str:
+    """'Left, for an undamped primary: Den Hartog's rule (orange), ... Right, optima for the actual damping: ...'."""
+    w = panel_words(fig)
+    heads = ("for an undamped primary", "optima for the actual damping")
+    return " ".join(
+        f"{_cap(w[i])}, {heads[i]}: " + ", ".join(f"{SHORT[n]} ({LOOK[n]})" for n in g) + "."
+        for i, g in enumerate((CLOSED, OPTIMA))
+    )
+
+
+def _coincidences(curves: dict[str, np.ndarray]) -> str:
+    """'The curves of Den Hartog's rule and the closed-form H∞ optimum coincide to within 0.02 %. ' per coinciding
+    pair of a group (the two panels), or ''."""
+    pairs = [p for g in (CLOSED, OPTIMA) for p in coinciding({n: curves[n] for n in g})]
+    within = "The curves of {} and {} coincide to within {} %. "
+    return "".join(within.format(NAME[a], NAME[b], sig(max(100 * d, 1e-3), 1)) for a, b, d in pairs)
 
 
 # ----------------------------------------------------------------------------- the absorber
@@ -154,22 +169,26 @@ def fixed_points_figure(st: TMDStudy) -> Captioned:
     equal = math.isclose(float(hp[0]), float(hp[1]), rel_tol=1e-9)
     caption = (
         f"Undamped primary ($\\zeta_p = 0$) with an absorber of μ = {mu:g} at Den Hartog's tuning $f = 1/(1+\\mu)$ = "
-        f"{sig(t.f)}. {_cap(w[0])}: the two limits of the absorber damping, $\\zeta_a = 0$ (grey dashed) and "
-        f"$\\zeta_a \\to \\infty$ (black dotted), cross at the fixed points P and Q (black dots). {_cap(w[1])}: "
+        f"{sig(t.f)}. {_cap(w[0])}: the limits of the absorber damping, $\\zeta_a = 0$ (grey dashed) and "
+        f"$\\zeta_a \\to \\infty$ (black dotted), and the fixed points P and Q (black dots). {_cap(w[1])}: "
         f"$\\zeta_a$ = {sig(dampings['low'])} (grey dash-dot), Den Hartog's {sig(t.zeta_a)} (orange) and "
-        f"{sig(dampings['high'])} (grey dashed) "
-        + ("all pass through P and Q" if through else "do not all pass through P and Q")
+        f"{sig(dampings['high'])} (grey dashed)."
+    )
+    remark = (
+        "The two limits cross at P and Q; the three finite dampings "
+        + ("all pass" if through else "do not all pass")
+        + " through them. "
         + (
-            f", which Den Hartog's tuning makes equally high ({sig(float(hp[0]))})."
+            f"Den Hartog's tuning makes P and Q equally high, {sig(float(hp[0]))}."
             if equal
-            else f", of heights {sig(float(hp[0]))} and {sig(float(hp[1]))}."
+            else f"P and Q have the heights {sig(float(hp[0]))} and {sig(float(hp[1]))}."
         )
     )
     alt = (
         "Magnification of an undamped primary against the frequency ratio for several absorber dampings: "
         "every curve crosses the same two fixed points."
     )
-    return Captioned(fig, caption, "fig-tmd-fixed", alt)
+    return Captioned(fig, caption, "fig-tmd-fixed", alt, remark=remark)
 
 
 def _actual_tunings(st: TMDStudy) -> dict:
@@ -199,19 +218,24 @@ def magnification_figure(st: TMDStudy) -> Captioned:
     axes[0].set_ylabel(MAG_LABEL)
     axes[0].set_title("tunings for an undamped primary")
     axes[1].set_title(r"optima for the actual $\zeta_p$")
-    w = panel_words(fig)
-    parts = [
-        f"{_cap(w[i])}: {GROUP_WORDS[i]}, {_listing(g, LOOK)}{_coincide_words(coinciding({n: curves[n] for n in g}))}."
-        for i, g in enumerate(groups)
-    ]
     caption = (
-        f"Magnification of the primary ($\\zeta_p$ = {sig(st.zeta_p, 3)}) against the frequency ratio, "
-        f"without absorber (blue) and with an absorber of μ = {st.mu:g}. "
-        + " ".join(parts)
-        + f" The grey dotted line marks the paper's forcing frequency, $r$ = {sig(st.r_force)}."
+        f"Magnification of the primary ($\\zeta_p$ = {sig(st.zeta_p, 3)}) against $r = \\omega/\\omega_p$, without "
+        f"absorber (blue) and with absorbers of μ = {st.mu:g}; grey dotted: the paper's forcing frequency. "
+        + _groups(fig)
     )
     peaks = [st.scores[n].nominal_peak for n in TUNINGS]
     lowered = all(p < st.bare_peak for p in peaks)
+    remark = (
+        f"The paper's forcing frequency lies at $r$ = {sig(st.r_force)}. "
+        + _coincidences(curves)
+        + (
+            f"Every absorber lowers the resonance peak, from {sig(st.bare_peak)} to between {sig(min(peaks))} and "
+            f"{sig(max(peaks))}."
+            if lowered
+            else f"Not every absorber lowers the resonance peak of {sig(st.bare_peak)}: the peaks with an absorber run "
+            f"from {sig(min(peaks))} to {sig(max(peaks))}."
+        )
+    )
     alt = (
         "Magnification of the primary against the frequency ratio without and with six absorber tunings in two "
         "plots: "
@@ -222,7 +246,7 @@ def magnification_figure(st: TMDStudy) -> Captioned:
             else "not every absorber lowers the resonance peak."
         )
     )
-    return Captioned(fig, caption, "fig-tmd-magnification", alt)
+    return Captioned(fig, caption, "fig-tmd-magnification", alt, remark=remark)
 
 
 def time_response_figure(st: TMDStudy) -> Captioned:
@@ -266,19 +290,17 @@ def robustness_figure(st: TMDStudy) -> Captioned:
     axes[0].set_ylabel(r"peak " + MAG_LABEL)
     axes[0].set_title("tunings for an undamped primary")
     axes[1].set_title(r"optima for the actual $\zeta_p$")
-    w = panel_words(fig)
     best = min(TUNINGS, key=lambda n: st.scores[n].worst_peak)
-    band = f"±{100 * st.mistuning:g} %"
-    parts = [
-        f"{_cap(w[i])}: {GROUP_WORDS[i]}, {_listing(g, LOOK)}"
-        f"{_coincide_words(coinciding({n: st.robust[n] for n in g}))}."
-        for i, g in enumerate(groups)
-    ]
+    w = panel_words(fig)
     caption = (
-        f"Largest magnification against the error of the primary's stiffness over {band}, with the absorber "
-        f"unchanged (μ = {st.mu:g}, $\\zeta_p$ = {sig(st.zeta_p, 3)}). "
-        + " ".join(parts)
-        + f" Of all six, {NAME[best]} has the lowest worst peak, {sig(st.scores[best].worst_peak)}."
+        f"Largest magnification against the error of the primary's stiffness over ±{100 * st.mistuning:g} %, with "
+        f"the absorber unchanged (μ = {st.mu:g}, $\\zeta_p$ = {sig(st.zeta_p, 3)}). {_cap(w[0])}: the tunings for an "
+        f"undamped primary; {w[1]}: the optima for the actual damping. Each tuning keeps its line of "
+        "{numref}`fig-tmd-magnification`."
+    )
+    remark = (
+        _coincidences(st.robust)
+        + f"Of all six, {NAME[best]} has the lowest worst peak, {sig(st.scores[best].worst_peak)}."
     )
     spread = {n: float(np.ptp(st.robust[n])) for n in TUNINGS}
     flattest = min(spread, key=spread.get)
@@ -286,7 +308,7 @@ def robustness_figure(st: TMDStudy) -> Captioned:
         "Peak magnification against the error of the primary's stiffness for six absorber tunings in two plots; "
         f"{NAME[flattest]} has the flattest curve."
     )
-    return Captioned(fig, caption, "fig-tmd-robustness", alt)
+    return Captioned(fig, caption, "fig-tmd-robustness", alt, remark=remark)
 
 
 # ----------------------------------------------------------------------------- the building
