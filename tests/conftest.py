@@ -113,14 +113,16 @@ SCREENSHOT_DIR = Path(SCREENSHOTS)  # the same folder, as a path
 def committed_book(tmp_path_factory) -> Path:
     """The HTML book from the committed notebooks (stored outputs, no kernel), built once for the whole run.
 
-    pytest-xdist's workers share the parent of their temporary folders: the first worker to ask builds the
+    pytest-xdist's workers share the parent of their temporary folders (without workers, the run's own
+    folder is used, never the one every run shares): the first worker to ask builds the
     book there under a file lock, the others wait and read it. Tests only read it.
     """
     import fcntl
 
     from vibration.publishing import report
 
-    shared = tmp_path_factory.getbasetemp().parent
+    basetemp = tmp_path_factory.getbasetemp()
+    shared = basetemp.parent if os.environ.get("PYTEST_XDIST_WORKER") else basetemp  # this run's folder only
     out = shared / "committed-book" / "report"
     with open(shared / "committed-book.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
