@@ -109,32 +109,60 @@ SCREENSHOTS = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__fil
 SCREENSHOT_DIR = Path(SCREENSHOTS)  # the same folder, as a path
 
 
-@pytest.fixture(scope="session")
-def committed_book(tmp_path_factory) -> Path:
-    """The HTML book from the committed notebooks (stored outputs, no kernel), built once for the whole run.
+def _run_folder(tmp_path_factory) -> Path:
+    """The temporary folder this run's workers share: pytest-xdist's workers share the parent of their own
+    folders; without workers, the run's own folder (never the one every run shares)."""
+    basetemp = tmp_path_factory.getbasetemp()
+    return basetemp.parent if os.environ.get("PYTEST_XDIST_WORKER") else basetemp
 
-    pytest-xdist's workers share the parent of their temporary folders (without workers, the run's own
-    folder is used, never the one every run shares): the first worker to ask builds the
-    book there under a file lock, the others wait and read it. Tests only read it.
-    """
+
+@contextlib.contextmanager
+def _first_of_the_run(tmp_path_factory, name: str):
+    """Hold the run's lock for ``name``: the first worker to ask makes the shared thing, the others wait."""
     import fcntl
 
-    from vibration.publishing import report
-
-    basetemp = tmp_path_factory.getbasetemp()
-    shared = basetemp.parent if os.environ.get("PYTEST_XDIST_WORKER") else basetemp  # this run's folder only
-    out = shared / "committed-book" / "report"
-    with open(shared / "committed-book.lock", "w") as lock:
+    shared = _run_folder(tmp_path_factory)
+    with open(shared / f"{name}.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         try:
-            if not out.is_dir():  # built aside and renamed, so a failed build leaves no book behind
-                partial = out.with_name("partial") / "report"
-                shutil.rmtree(partial.parent, ignore_errors=True)
-                report.book_from_sources(report.discover(ROOT), partial, pdf=False)
-                partial.rename(out)
+            yield shared
         finally:
             fcntl.flock(lock, fcntl.LOCK_UN)
+
+
+@pytest.fixture(scope="session")
+def committed_book(tmp_path_factory) -> Path:
+    """The HTML book from the committed notebooks (stored outputs, no kernel), built once for the whole run
+    (by the first worker that asks; tests only read it)."""
+    from vibration.publishing import report
+
+    with _first_of_the_run(tmp_path_factory, "committed-book") as shared:
+        out = shared / "committed-book" / "report"
+        if not out.is_dir():  # built aside and renamed, so a failed build leaves no book behind
+            partial = out.with_name("partial") / "report"
+            shutil.rmtree(partial.parent, ignore_errors=True)
+            report.book_from_sources(report.discover(ROOT), partial, pdf=False)
+            partial.rename(out)
     return out
+
+
+@pytest.fixture(scope="session")
+def real_oscillator_default(tmp_path_factory):
+    """Chapter 12's study of the bundled measurements at the default parameters (about 25 s), computed once
+    for the whole run and handed to the other workers as a pickle; tests must not change it (it is frozen)."""
+    import pickle
+
+    from vibration.chapters.real_oscillator.study import real_oscillator_study
+
+    with _first_of_the_run(tmp_path_factory, "real-oscillator-study") as shared:
+        path = shared / "real-oscillator-study.pickle"
+        if path.is_file():
+            return pickle.loads(path.read_bytes())
+        st = real_oscillator_study()
+        partial = path.with_suffix(".partial")
+        partial.write_bytes(pickle.dumps(st))
+        partial.rename(path)
+        return st
 
 
 @pytest.fixture(scope="session")

@@ -198,13 +198,12 @@ def test_helper_loads_twice_and_redraws_at_the_new_width(browser, tmp_path):
 # ----------------------------------------------------------------------------- the panels
 
 
-def _fragments() -> dict:
+def _fragments(real_oscillator) -> dict:
     from vibration.chapters.control.panel import control_panel_html
     from vibration.chapters.digital_twin.panel import twin_panel_html
     from vibration.chapters.duffing.panel import hb_panel_html
     from vibration.chapters.explore.panel import slider_panel_html
     from vibration.chapters.real_oscillator.panel import decay_panel_html
-    from vibration.chapters.real_oscillator.study import real_oscillator_study
     from vibration.chapters.stability.panel import stability_panel_html
     from vibration.chapters.tmd.panel import tmd_panel_html
     from vibration.physics import twin
@@ -215,15 +214,15 @@ def _fragments() -> dict:
         "stability": ("div.vst-panel", stability_panel_html()),
         "tmd": ("div.vtm-panel", tmd_panel_html(0.05)),
         "digital_twin": ("div.twin-panel", twin_panel_html(grid)),
-        "real_oscillator": ("div.vro-panel", decay_panel_html(real_oscillator_study())),
+        "real_oscillator": ("div.vro-panel", decay_panel_html(real_oscillator)),
         "duffing": ("div.vib-duffing", hb_panel_html()),
         "explore": ("div.vib-panel", slider_panel_html()),
     }
 
 
 @pytest.fixture(scope="module")
-def fragments():
-    return _fragments()
+def fragments(real_oscillator_default):
+    return _fragments(real_oscillator_default)
 
 
 #: Every element of a panel inside the panel (left and right), every SVG element inside its SVG (lines clipped

@@ -91,12 +91,13 @@ class Schema:
         """The parameters' names, in declaration order."""
         return tuple(p.name for p in self.params)
 
-    def record_type(self, name: str = "Params") -> type:
+    def record_type(self, name: str = "Params", *, module: str | None = None) -> type:
         """A frozen dataclass with one field per parameter (defaults from here), checked on construction.
 
-        The chapter's ``Params = SCHEMA.record_type()`` writes each parameter once: ``Params(**values)``
+        The chapter's ``Params = SCHEMA.record_type(module=__name__)`` writes each parameter once: ``Params(**values)``
         checks every value and the rules that tie them together; ``Params.from_values(mapping)`` takes
-        a mapping (missing names keep their defaults).
+        a mapping (missing names keep their defaults). With ``module``, the module that binds the class
+        under ``name``, its records pickle.
 
         >>> n = Param(name="n", symbol="n", default=3, unit="", low=1, high=9, meaning="count")
         >>> c = Param(name="c", symbol="c", default=0.5, unit="N s/m", low=0.0, high=9.0, meaning="d")
@@ -123,7 +124,7 @@ class Schema:
             return {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
 
         types = {str: str, int: int, float: float, bool: bool}
-        return dataclasses.make_dataclass(
+        cls = dataclasses.make_dataclass(
             name,
             [(p.name, types[type(p.default)], field(default=p.default)) for p in self.params],
             namespace={
@@ -136,6 +137,9 @@ class Schema:
             frozen=True,
             kw_only=True,
         )
+        if module is not None:  # found where it is bound, so a record pickles (worker processes, caches)
+            cls.__module__ = module
+        return cls
 
     def check(self, values: Mapping) -> dict:
         """``values`` (some or all parameters) checked one by one and together with the defaults of the rest."""

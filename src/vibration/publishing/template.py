@@ -58,7 +58,7 @@ SCHEMA = Schema(
 )
 
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)
 '''
 
 _STUDY = '''"""The chapter's computation: pure functions returning one frozen record."""

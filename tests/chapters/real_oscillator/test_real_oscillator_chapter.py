@@ -48,8 +48,8 @@ HEADERS = {
 
 
 @pytest.fixture(scope="module")
-def study():
-    return real_oscillator_study()
+def study(real_oscillator_default):
+    return real_oscillator_default
 
 
 def _check_outputs(st, tmp_path):

@@ -9,7 +9,6 @@ import pytest
 from conftest import open_offline
 
 from vibration.chapters.real_oscillator.panel import decay_panel, decay_panel_html
-from vibration.chapters.real_oscillator.study import real_oscillator_study
 from vibration.physics.lab import free_decay_response
 from vibration.publishing.mathml import external_urls
 
@@ -18,8 +17,8 @@ RTOL = 1e-9
 
 
 @pytest.fixture(scope="module")
-def study():
-    return real_oscillator_study()
+def study(real_oscillator_default):
+    return real_oscillator_default
 
 
 def test_fragment_is_self_contained(study):

@@ -7,4 +7,4 @@ from vibration.presentation.schema import Schema
 
 SCHEMA = Schema(notebook="02_claims_audit", params=shared_params(*PAPER_MODEL), together=(paper_window,))
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)

@@ -64,4 +64,4 @@ SCHEMA = Schema(
     together=(paper_window, ordered("c_sa_min", "c_sa_max", "N s/m"), _pid_affordable),
 )
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)

@@ -77,4 +77,4 @@ SCHEMA = Schema(
     together=(sampling, monitoring_window),
 )
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)

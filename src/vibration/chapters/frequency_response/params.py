@@ -26,4 +26,4 @@ SCHEMA = Schema(
     together=(paper_window, ordered("c_min", "c_max", "N s/m")),
 )
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)

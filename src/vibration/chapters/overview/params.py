@@ -18,4 +18,4 @@ SCHEMA = Schema(
     together=(paper_window,),
 )
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)

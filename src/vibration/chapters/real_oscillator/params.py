@@ -51,4 +51,4 @@ SCHEMA = Schema(
 )
 
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)

@@ -58,4 +58,4 @@ SCHEMA = Schema(
     together=(growth_window,),
 )
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)

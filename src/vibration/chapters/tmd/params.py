@@ -50,4 +50,4 @@ SCHEMA = Schema(
     together=(paper_window, damping_ratio_at_most(0.5)),
 )
 
-Params = SCHEMA.record_type()
+Params = SCHEMA.record_type(module=__name__)
