@@ -25,7 +25,7 @@ from vibration.chapters.duffing.notation import apm, within
 from vibration.chapters.duffing.params import SCHEMA, Params
 from vibration.chapters.duffing.study import duffing_study
 from vibration.physics.duffing import periodic_orbit
-from vibration.presentation.captions import Captioned, check_caption
+from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 from vibration.presentation.numbers import sig
 from vibration.presentation.style import case_style, legend_overlap
 
@@ -103,6 +103,8 @@ def _everything(study) -> list[tuple[str, str]]:
         out.append((make.__name__, repr(make(study))))
     for make, c in _figures(study).items():
         out.append((make.__name__, c.caption))
+        if c.remark:
+            out.append((make.__name__ + " remark", c.remark))
         out.append((make.__name__ + " alt", c.alt))
     return out
 
@@ -143,7 +145,8 @@ def test_sweep_points_are_periodic_orbits_of_the_full_equation(default):
         assert orb.stable
     # the drawn branch (points joined by straight lines) passes through the sweep points to within a few 0.1 %
     gap = max(c.sweep_orbit_gap() for c in default.cases)
-    assert gap < 1e-2 and f"lie on it to within {within(gap)}" in _figures(default)[figures.sweep_figure].caption
+    sweeps = _figures(default)[figures.sweep_figure]
+    assert gap < 1e-2 and f"lie on it to within {within(gap)}" in f"{sweeps.caption} {sweeps.remark}"
     assert case.jump_up and case.jump_down
 
 
@@ -247,22 +250,32 @@ def _check_verdicts(study) -> None:
     for make, c in figs.items():
         assert isinstance(c, Captioned) and c.name.startswith("fig-duffing-")
         check_caption(c.fig, c.caption)
+        check_caption(c.fig, c.remark, layout=False)
         for ax in c.fig.axes:
             if ax.get_legend() is not None and make is not figures.paper_figure:
                 assert legend_overlap(ax) == 0.0, make.__name__
-    chaos = figs[figures.chaos_figure].caption
+    shown = {make: f"{c.caption} {c.remark}" for make, c in figs.items()}  # the findings are in the remarks
+    chaos = shown[figures.chaos_figure]
     coincide = all(study.method_gap(w) < figures.COINCIDE for w in ("chaotic", "periodic"))
     assert ("for each forcing the two methods' curves coincide" in chaos) == coincide
-    sweeps = figs[figures.sweep_figure].caption
-    for case in study.cases:
-        n = sum(j is not None for j in (case.jump_up, case.jump_down))
-        part = sweeps.split(f"the {case.label} spring")[1].split(";")[0]
+    sweeps = figs[figures.sweep_figure].remark.lower()
+    jumps = [sum(j is not None for j in (case.jump_up, case.jump_down)) for case in study.cases]
+    both = "for both springs" in sweeps
+    assert not both or len(set(jumps)) == 1, sweeps
+    for case, n in zip(study.cases, jumps, strict=True):
+        part = sweeps.split("for both springs" if both else f"the {case.label} spring")[1].split(";")[0]
         assert ("both sweeps jump" in part) == (n == 2) and ("one sweep jumps" in part) == (n == 1)
-    hb = figs[figures.frequency_response_figure].caption
-    assert hb.count("dashed") == sum(c.folds.bistable for c in study.cases)
-    paper = figs[figures.paper_figure].caption
+    hb, hb_remark = figs[figures.frequency_response_figure].caption, figs[figures.frequency_response_figure].remark
+    bistable = sum(c.folds.bistable for c in study.cases)
+    assert ("unstable dashed" in hb) == (bistable > 0) and hb.count("dashed") == min(bistable, 1)
+    assert ("Both springs give two stable branches" in hb_remark) == (bistable == 2)
+    assert ("Both springs give a single-valued, stable curve" in hb_remark) == (bistable == 0)
+    for case in study.cases:  # each bistable spring's folds are in the remark, to four figures
+        folds_at = f"{case.folds.omega_low:.4g} and {case.folds.omega_high:.4g} rad/s"
+        assert (folds_at in hb_remark) == case.folds.bistable, (case.label, hb_remark)
+    paper = shown[figures.paper_figure].lower()
     x_lin = np.abs(study.paper_x_linear).max()
-    assert ("the linear response (largest |x| " + sig(x_lin, 3) + " m) crosses them" in paper) == (
+    assert ("the linear response (largest |x| " + sig(x_lin, 3) + " m) crosses the lines" in paper) == (
         x_lin > study.trust_amplitude
     )
     # sentences
@@ -322,6 +335,17 @@ def test_verdicts_follow_the_numbers_at_the_defaults(default):
 
 def test_verdicts_follow_the_numbers_at_other_parameters(other):
     _check_verdicts(other)
+
+
+def test_every_caption_is_at_most_sixty_words(default):
+    """Every figure's and every table's caption says what is drawn or listed in at most 60 words, at the defaults
+    and at a far parameter set (a heavier, stiffer, more strongly damped oscillator forced harder)."""
+    assert CAPTION_WORDS == 60
+    for study in (default, _other("heavy")):
+        captions = [(f.name, f.caption) for f in _figures(study).values()]
+        captions += [(t.name, t.caption) for t in (make(study) for make in TABLES)]
+        for name, caption in captions:
+            assert caption_words(caption) <= 60, (name, caption_words(caption), caption)
 
 
 def test_other_parameters_reach_both_branches_of_the_verdicts():

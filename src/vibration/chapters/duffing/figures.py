@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from vibration.chapters.duffing.notation import forcing_term, k3_text, within
+from vibration.chapters.duffing.notation import k3_text, within
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 from vibration.physics.duffing import backbone
 from vibration.presentation.captions import Captioned, panel_words
@@ -90,27 +90,36 @@ def frequency_response_figure(study: DuffingStudy) -> Captioned:
     for ax in axes:
         place_legend(ax)
     words = panel_words(fig)
-    parts = []
-    for word, case in zip(words, study.cases, strict=True):
-        shape = (
-            f"two stable branches (solid) joined by an unstable one (dashed) between the folds at "
-            f"{sig(case.folds.omega_low, 4)} and {sig(case.folds.omega_high, 4)} rad/s (open circles)"
-            if case.folds.bistable and drew_unstable[case.label]
-            else "a single-valued, stable curve (solid)"
-        )
-        parts.append(f"{word}, the {case.label} spring with {_k3(case)} ({COLOUR_WORD[case.label]}): {shape}")
+    panels = "; ".join(
+        f"{word}, the {case.label} spring, {_k3(case)} ({COLOUR_WORD[case.label]})"
+        for word, case in zip(words, study.cases, strict=True)
+    )
+    dashed = any(c.folds.bistable and drew_unstable[c.label] for c in study.cases)
+    branches = "Stable branches solid, unstable dashed, folds open circles" if dashed else "Stable curves solid"
     caption = (
         f"One-harmonic frequency response of the paper's oscillator (m = {p.m:g} kg, k = {p.k:g} N/m, "
-        f"c = {p.c_nominal:g} N s/m, F₀ = {p.F0:g} N) with a cubic spring. {_join(parts)}. In both "
-        f"panels the dotted black line is the backbone and the {COLOUR_WORD['linear']} line the linear spring "
-        "(k₃ = 0)."
+        f"c = {p.c_nominal:g} N s/m, F₀ = {p.F0:g} N) with a cubic spring: {panels}. {branches}; "
+        f"backbones dotted black, the linear spring (k₃ = 0) {COLOUR_WORD['linear']}."
     )
+    folded = [c for c in study.cases if c.folds.bistable and drew_unstable[c.label]]
+    band = " and ".join(
+        f"{sig(c.folds.omega_low, 4)} and {sig(c.folds.omega_high, 4)} rad/s ({c.label})" for c in folded
+    )
+    two = "two stable branches joined by an unstable one between the folds at"
+    single = "a single-valued, stable curve"
+    if len(folded) == len(study.cases):
+        remark = f"Both springs give {two} {band}."
+    elif not folded:
+        remark = f"Both springs give {single}."
+    else:
+        remark = _join([f"the {c.label} spring gives " + (f"{two} {band.rsplit(' (', 1)[0]}" if c in folded else single)
+                        for c in study.cases]) + "."  # fmt: skip
     lean = [
         f"the {c.label} spring's leans to {'higher' if c.folds.peak_omega > c.linear_peak_omega else 'lower'}"
         for c in study.cases
     ]
     alt = AXES + f"next to the linear resonance curve, {lean[0]} frequencies and {lean[1]} ones."
-    return Captioned(fig, caption, "fig-duffing-hb", alt)
+    return Captioned(fig, caption, "fig-duffing-hb", alt, remark=remark)
 
 
 # ------------------------------------------------------------------------------------------ sweeps
@@ -149,23 +158,23 @@ def sweep_figure(study: DuffingStudy) -> Captioned:
     for ax in axes:
         place_legend(ax)
     words = panel_words(fig)
+    panels = "; ".join(
+        f"{word}, the {case.label} spring ({COLOUR_WORD[case.label]})"
+        for word, case in zip(words, study.cases, strict=True)
+    )
     parts = []
-    for word, case in zip(words, study.cases, strict=True):
+    for case in study.cases:
         jumps = sum(j is not None for j in (case.jump_up, case.jump_down))
         jump_text = {0: "neither sweep jumps off its branch in this range", 1: "one sweep jumps (arrow)",
                      2: "both sweeps jump (arrows)"}  # fmt: skip
         if not case.folds.bistable:
-            jump_text[0] = "a single-valued response, so the sweeps have no branch to leave"
-        parts.append(f"{word}, the {case.label} spring ({COLOUR_WORD[case.label]} triangles): {jump_text[jumps]}")
+            jump_text[0] = "the response is single-valued, so the sweeps have no branch to leave"
+        parts.append(jump_text[jumps])
     gaps = [c.sweep_orbit_gap() for c in study.cases]
     gaps = [g for g in gaps if math.isfinite(g)]
+    unstable = ", unstable branch dashed" if any_dashed else ""
     over = (
-        (
-            " and the periodic orbit of the full equation continued through the band (thin black line, its folds "
-            "open squares)"
-        )
-        if any_branch
-        else ""
+        " and the periodic orbit of the full equation (thin black line, its folds open squares)" if any_branch else ""
     )
     agree = (
         f" Where the continued orbit is drawn, the sweep amplitudes lie on it to within {within(max(gaps))}."
@@ -173,10 +182,15 @@ def sweep_figure(study: DuffingStudy) -> Captioned:
         else ""
     )
     caption = (
-        "Stepped frequency sweeps by time integration: filled triangles sweeping up, open black triangles sweeping "
-        f"down, over the one-harmonic curve (grey{', its unstable branch dashed' if any_dashed else ''}){over}. "
-        f"{_join(parts)}.{agree}"
+        "Stepped frequency sweeps by time integration: filled triangles in the spring's colour sweeping up, open "
+        f"black triangles sweeping down, over the one-harmonic curve (grey{unstable}){over}. {_join([panels])}."
     )
+    each = (
+        f"for both springs, {parts[0]}"
+        if len(set(parts)) == 1
+        else "; ".join(f"for the {c.label} spring, {t}" for c, t in zip(study.cases, parts, strict=True))
+    )
+    remark = f"{_join([each])}.{agree}"
     alt = (
         AXES + "the amplitudes of stepped sweeps "
         "up and down follow different branches of the response curve and jump between them at different "
@@ -184,7 +198,7 @@ def sweep_figure(study: DuffingStudy) -> Captioned:
         if any(c.jump_up or c.jump_down for c in study.cases)
         else AXES + "the sweeps up and down follow the response curve without jumping."
     )
-    return Captioned(fig, caption, "fig-duffing-sweeps", alt)
+    return Captioned(fig, caption, "fig-duffing-sweeps", alt, remark=remark)
 
 
 # ------------------------------------------------------------------------------- the paper's scenario
@@ -213,7 +227,7 @@ def paper_figure(study: DuffingStudy) -> Captioned:
     x_lin, x_duf = np.abs(study.paper_x_linear).max(), np.abs(study.paper_x_duffing).max()
 
     def past(x: float) -> str:
-        return "crosses them" if x > trust else "stays inside them"
+        return "crosses the lines" if x > trust else "stays inside the lines"
 
     verdict = (
         f"the linear response (largest |x| {sig(x_lin, 3)} m) {past(x_lin)}, the cubic one (largest |x| "
@@ -221,7 +235,7 @@ def paper_figure(study: DuffingStudy) -> Captioned:
     )
     lines = (
         f" The dotted grey lines at ±{sig(trust, 3)} m mark the amplitude beyond which the linear answer is not "
-        f"trustworthy: {verdict}."
+        "trustworthy."
         if drawn
         else ""
     )
@@ -231,11 +245,12 @@ def paper_figure(study: DuffingStudy) -> Captioned:
         f"displacement with the linear spring ({COLOUR_WORD['linear']}, the paper's model) and with the hardening "
         f"spring {_k3(hard)} ({COLOUR_WORD['hardening']}).{lines}"
     )
+    remark = f"{verdict[:1].upper()}{verdict[1:]}." if drawn else ""
     alt = (
         "Displacement in metres against time in seconds from rest: the response with the hardening spring "
         f"{'stays smaller than' if x_duf < x_lin else 'grows larger than'} the linear one."
     )
-    return Captioned(fig, caption, "fig-duffing-paper", alt)
+    return Captioned(fig, caption, "fig-duffing-paper", alt, remark=remark)
 
 
 # ------------------------------------------------------------------------------------------- chaos
@@ -298,15 +313,20 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
             for w, f in (("chaotic", p.F0_ueda), ("periodic", p.F0_ueda_periodic))
         )
     )
+    forcing = r"F\cos t" if p.omega_ueda == 1.0 else rf"F\cos({p.omega_ueda:g}t)"
     caption = (
-        f"Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = {forcing_term(p)}. {left}: its state once per forcing period "
-        f"(stroboscopic Poincaré section) at F = {p.F0_ueda:g} N (black dots, "
-        f"{section(n_chaos, len(study.section_chaos))}) and at F = {p.F0_ueda_periodic:g} N ({dot}, "
-        f"{section(n_per, len(study.section_periodic))}). {middle}: the running estimate of the largest "
-        "Lyapunov exponent against the averaging time (logarithmic axis), by the variational equations with QR "
-        f"(solid) and by two trajectories (dashed), in the colours of the forcings; {coincide}. {right}: the exponent "
-        f"over a {cmap.omegas.size} × {cmap.forces.size} grid of forcing frequency and amplitude, {cmap.n_periods} "
-        "periods per run (red: positive, chaotic; blue: negative); circles mark the two forcings."
+        rf"Ueda's oscillator $\ddot x + {p.c_ueda:g}\,\dot x + x^3 = {forcing}$. {left}: Poincaré sections (state "
+        f"once per period) at F = {p.F0_ueda:g} N (black dots) and {p.F0_ueda_periodic:g} N "
+        f"({COLOUR_WORD['hardening']}). {middle}: the largest Lyapunov exponent's running estimate (logarithmic time "
+        f"axis), by variational equations with QR (solid) and by two trajectories (dashed). {right}: the exponent over "
+        "forcing frequency and amplitude (red positive, blue negative); circles mark both forcings."
+    )
+    remark = (
+        f"The section at F = {p.F0_ueda:g} N holds {section(n_chaos, len(study.section_chaos))}; at "
+        f"F = {p.F0_ueda_periodic:g} N it holds {section(n_per, len(study.section_periodic))} ({dot}). The "
+        f"exponent's estimates take the colours of the forcings; {coincide}. The map computes the exponent over "
+        f"{cmap.n_periods} periods at each point of a {cmap.omegas.size} × {cmap.forces.size} grid of forcings; red "
+        "(a positive exponent) means chaotic motion."
     )
     final = {w: study.running(w, "qr")[1][-1] for w in ("chaotic", "periodic")}
     alt = (
@@ -317,4 +337,4 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
         + ("below zero" if final["periodic"] < 0 else "above zero")
         + " for the weaker one; right, a colour map of the exponent over forcing frequency and amplitude."
     )
-    return Captioned(fig, caption, "fig-duffing-chaos", alt)
+    return Captioned(fig, caption, "fig-duffing-chaos", alt, remark=remark)
