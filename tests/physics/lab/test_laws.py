@@ -163,3 +163,30 @@ def test_todays_folder_and_manifest_errors(tmp_path):
     (tmp_path / "runs.csv").write_text("file,kind,brake\nsrc.csv,free,off\n")
     with pytest.raises(ParameterError, match="header"):
         load_lab_data(tmp_path)
+
+
+@pytest.mark.parametrize(
+    "friction, zeta, quad, power, p",
+    [
+        (0.0, 0.01, 0.02, 0.0, 2.0),  # quadratic
+        (0.004, 0.005, 0.0, 0.01, 3.0),  # power with friction: stops within the window
+        (0.0, 0.0, 0.0, 0.03, 0.7),  # a power below one
+        (0.02, 0.0, 0.05, 0.02, 1.5),  # every term
+    ],
+)
+def test_compiled_half_cycles_equal_the_python_recurrence_to_the_bit(friction, zeta, quad, power, p):
+    from vibration.physics.lab.damping_laws import _half_cycles, _half_cycles_reference
+
+    args = (0.8, 0.01, 3.7, zeta, friction, quad, power, p, 120.0)
+    got, want = _half_cycles(*args), _half_cycles_reference(*args)
+    for g, w in zip(got[:4], want[:4], strict=True):
+        assert g.shape == w.shape and np.array_equal(g, w)
+    assert got[4] == want[4]
+    assert friction > 0 or got[0].size > 65  # without friction the kernel's arrays grew past their first size
+
+
+def test_too_many_half_cycles_is_an_error_naming_the_window():
+    from vibration.physics.lab.damping_laws import _half_cycles
+
+    with pytest.raises(ParameterError, match="half periods which is out of range"):
+        _half_cycles(1.0, 0.0, 1e4, 1e-9, 0.0, 1e-9, 0.0, 2.0, 1e3)
