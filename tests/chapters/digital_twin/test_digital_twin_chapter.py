@@ -14,7 +14,7 @@ import pytest
 
 from vibration.chapters.digital_twin import figures, tables, text
 from vibration.chapters.digital_twin.study import digital_twin_study
-from vibration.presentation.captions import check_caption
+from vibration.presentation.captions import CAPTION_WORDS, caption_words, check_caption
 
 matplotlib.use("Agg")
 
@@ -46,12 +46,13 @@ def _everything(st) -> list[str]:
     out = list(text.paragraphs(st))
     out += [repr(make(st)) for make in TABLES]
     out += [make(st).caption for make in FIGURES]
+    out += [make(st).remark for make in FIGURES]
     return out
 
 
 def _check_words(st) -> None:
     """No nan or inf, no code names, no e-notation in prose; each stated comparison agrees with the numbers."""
-    prose = list(text.paragraphs(st)) + [make(st).caption for make in FIGURES]
+    prose = list(text.paragraphs(st)) + [f"{c.caption} {c.remark}" for c in (make(st) for make in FIGURES)]
     for block in prose + [repr(make(st)) for make in TABLES]:
         assert not re.search(r"\b(nan|inf)\b", block), block
     for block in prose:
@@ -98,6 +99,8 @@ def test_default_words_and_captions(default):
     for make in FIGURES:
         cap = make(default)
         check_caption(cap.fig, cap.caption)
+        check_caption(cap.fig, cap.remark, layout=False)
+    _check_caption_words(default)
     # the coverage target of the chapter: every share within 3 % (95 % half-width)
     assert tables.flag_halfwidth(default) <= 0.03
 
@@ -111,8 +114,27 @@ def test_other_parameter_sets(name):
     for make in FIGURES:
         cap = make(st)
         check_caption(cap.fig, cap.caption)
+        check_caption(cap.fig, cap.remark, layout=False)
     for make in TABLES:
         make(st)
+    _check_caption_words(st)
+
+
+def _check_caption_words(st) -> None:
+    """Every figure's and every table's caption says what is drawn or listed in at most 60 words."""
+    assert CAPTION_WORDS == 60
+    for item in [make(st) for make in FIGURES] + [make(st) for make in TABLES]:
+        assert caption_words(item.caption) <= 60, (item.name, caption_words(item.caption), item.caption)
+
+
+#: Far from the defaults: three times the mass, four times the stiffness, more damping, six times the force.
+FAR = dict(m=3.0, k=80.0, c_nominal=1.2, F_rms=12.0)
+
+
+@pytest.mark.parametrize("values", [{}, FAR], ids=["defaults", "far"])
+def test_every_caption_is_at_most_sixty_words(values):
+    """At the default parameters and far from them (short runs: the captions name no run count)."""
+    _check_caption_words(digital_twin_study(**SMALL, **values))
 
 
 def _fingerprint(st) -> dict:

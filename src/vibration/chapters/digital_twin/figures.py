@@ -86,18 +86,19 @@ def identification_figure(st: DigitalTwinStudy) -> Captioned:
     place_legend(ax2)
     left, right = panel_words(fig)
     gap = receptance_gap(st)
-    same = "coincide" if gap < 0.01 else "differ"
+    same = "coincide to within" if gap < 0.01 else "differ by up to"
     caption = (
         f"{_cap(left)}: the first {WINDOW:g} s of the measured displacement (black dots, {1 / st.params.dt:.3g} Hz) "
         f"and the identified model's response to the same force (blue). {_cap(right)}: the measured receptance "
         "(Welch estimate, black dots) on a logarithmic axis, the identified model's (blue) and the true one "
-        f"(black dashed); the identified and true curves {same} to within {100 * gap:.2g} % over the force band."
+        "(black dashed)."
     )
+    remark = f"Over the force band the identified and true receptances {same} {100 * gap:.2g} %."
     alt = (
         f"Measured displacement and identified model over {WINDOW:g} s, and receptance magnitude against "
         "frequency: the model follows the measurements and the resonance peak."
     )
-    return Captioned(fig, caption, "fig-twin-fit", alt)
+    return Captioned(fig, caption, "fig-twin-fit", alt, remark=remark)
 
 
 def scaling_figure(st: DigitalTwinStudy) -> Captioned:
@@ -128,12 +129,14 @@ def scaling_figure(st: DigitalTwinStudy) -> Captioned:
     words = panel_words(fig)
     runs = st.by_noise[0].runs
     caption = (
-        "Relative rms error of the estimates over the Monte Carlo runs (black dots) and the rms of the standard "
-        "errors the fits report (blue lines), on logarithmic axes; columns m, c and k from left through middle to "
-        f"right. Top row: against the noise level at T = {st.by_noise[0].duration:g} s. Bottom row: against the "
-        f"record length at noise {st.by_length[0].noise:g} of the rms response. Each point has {runs} runs of its "
-        f"own noise; the dots lie within {100 * spread:.2g} % of the lines (one point's rms error has a sampling "
-        f"error of about {100 / math.sqrt(2 * runs):.2g} %)."
+        "Relative rms error of the estimates over Monte Carlo runs (black dots) and the rms of the reported "
+        "standard errors (blue lines), on logarithmic axes; columns m, c and k from left through middle to "
+        f"right. Top row: against noise level at T = {st.by_noise[0].duration:g} s. Bottom row: against the "
+        f"record length at noise {st.by_length[0].noise:g} of the rms response."
+    )
+    remark = (
+        f"Each point has {runs} runs of its own noise; the dots lie within {100 * spread:.2g} % of the lines (one "
+        f"point's rms error has a sampling error of about {100 / math.sqrt(2 * runs):.2g} %)."
     )
     assert {"top left", "bottom right"} <= set(words)  # the caption's words above describe this layout
     alt = (
@@ -141,7 +144,7 @@ def scaling_figure(st: DigitalTwinStudy) -> Captioned:
         "the error grows with the noise and falls with the record length, and the reported standard errors "
         "track it."
     )
-    return Captioned(fig, caption, "fig-twin-scaling", alt)
+    return Captioned(fig, caption, "fig-twin-scaling", alt, remark=remark)
 
 
 def tracking_figure(st: DigitalTwinStudy) -> Captioned:
@@ -173,22 +176,22 @@ def tracking_figure(st: DigitalTwinStudy) -> Captioned:
     place_legend(ax2, outside=True)
     top, bottom = panel_words(fig)
     sc = st.scenario
-    alarm = (
-        f"; the {colour_word(red)} line marks the alarm at t = {sig(det.alarm_time, 4)} s"
-        if det.alarm_time is not None
-        else "; no alarm is raised"
-    )
+    alarm = f"; a {colour_word(red)} line marks the alarm" if det.alarm_time is not None else ""
     caption = (
         f"{_cap(top)}: the Kalman filter's stiffness estimate (blue) with two standard deviations (shaded) and the "
-        f"true stiffness (black dashed): healthy to {sc.decline_start:g} s, then a slow decline and a drop at "
-        f"{sc.drop_time:g} s. {_cap(bottom)}: the CUSUM statistic (blue, logarithmic axis), the threshold h = "
-        f"{det.threshold:g} (grey dotted) and the calibration window (shaded){alarm}."
+        f"true stiffness (black dashed). {_cap(bottom)}: the CUSUM statistic (blue, logarithmic axis), the "
+        f"threshold h = {det.threshold:g} (grey dotted) and the calibration window (shaded){alarm}."
+    )
+    when = f"the alarm comes at t = {sig(det.alarm_time, 4)} s" if det.alarm_time is not None else "no alarm is raised"
+    remark = (
+        f"The asset is healthy to {sc.decline_start:g} s, then its stiffness declines slowly and drops at "
+        f"{sc.drop_time:g} s; {when}."
     )
     alt = (
         "Tracked stiffness against time following the true stiffness through its decline and drop, and the CUSUM "
         "statistic against time crossing its threshold after the fault starts."
     )
-    return Captioned(fig, caption, "fig-twin-tracking", alt)
+    return Captioned(fig, caption, "fig-twin-tracking", alt, remark=remark)
 
 
 def tradeoff_figure(st: DigitalTwinStudy) -> Captioned:
@@ -222,15 +225,18 @@ def tradeoff_figure(st: DigitalTwinStudy) -> Captioned:
     left, right = panel_words(fig)
     faults = " and ".join(f"the {label} ({FAULT_STYLE[label]['word']})" for label in st.detection)
     caption = (
-        f"Both panels against the CUSUM threshold h on a logarithmic axis; the grey dotted line is the chosen h = "
-        f"{st.params.threshold:g}. {_cap(left)}: the average run length to a false alarm, measured on the healthy "
-        f"records with the CUSUM restarted after each alarm (black dots, ± two standard errors, where at least "
-        f"{MIN_ALARMS} alarms occurred) and from the Markov-chain theory (black dashed, drawn as far as the chain "
-        f"computes it). {_cap(right)}: the mean detection delay of "
-        f"{faults}, each over its {next(iter(st.detection.values())).runs} faulty records."
+        f"Against the CUSUM threshold h (logarithmic axis; grey dotted: the chosen h = {st.params.threshold:g}). "
+        f"{_cap(left)}: the average run length to a false alarm on the healthy records, measured (black dots, ± two "
+        f"standard errors) and from Markov-chain theory (black dashed). {_cap(right)}: the mean detection delay of "
+        f"{faults}."
+    )
+    remark = (
+        f"The measured run lengths restart the CUSUM after each alarm and are drawn where at least {MIN_ALARMS} "
+        "alarms occurred; the theory is drawn as far as the chain computes it. Each mean delay is over its "
+        f"{next(iter(st.detection.values())).runs} faulty records."
     )
     alt = (
         "Run length to a false alarm growing roughly exponentially with the threshold, measured points on the "
         "theory curve, and mean detection delays growing with the threshold, longer for the slow decline."
     )
-    return Captioned(fig, caption, "fig-twin-tradeoff", alt)
+    return Captioned(fig, caption, "fig-twin-tradeoff", alt, remark=remark)
