@@ -91,11 +91,12 @@ def test_usage_example_runs_on_its_own(tmp_path):
     ],
 )
 def test_the_chapter_under_other_parameters(values):
-    from test_learning_presentation import check_consistency, check_outputs
+    from test_learning_presentation import check_caption_words, check_consistency, check_outputs
 
     st = learning_study(**values)
     assert isinstance(st, LearningStudy) and st.params == Params.from_values(values)
     assert st.active.names == ACTIVE and st.semi.names == SEMI
     assert st.task.k == values["k"] and st.res_task.F0 == values["F0"]
     check_outputs(st)
+    check_caption_words(st)
     check_consistency(st)

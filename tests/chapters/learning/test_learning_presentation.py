@@ -18,7 +18,7 @@ import pytest  # noqa: E402
 
 from vibration.chapters.learning import figures, summary, tables, text  # noqa: E402
 from vibration.chapters.learning.study import ACTIVE, SEMI, learning_study  # noqa: E402
-from vibration.presentation.captions import Captioned, check_caption  # noqa: E402
+from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption  # noqa: E402
 from vibration.presentation.style import legend_overlap  # noqa: E402
 
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "11_learning.ipynb"
@@ -155,7 +155,9 @@ def check_outputs(st) -> None:
         cap = f(st)
         assert isinstance(cap, Captioned) and cap.name.startswith("fig-learning-")
         check_caption(cap.fig, cap.caption)
+        check_caption(cap.fig, cap.remark, layout=False)
         check_prose(cap.caption, f.__name__)
+        check_prose(cap.remark, f.__name__)
         check_prose(cap.alt, f.__name__)
         for ax in cap.fig.axes:
             assert legend_overlap(ax) == 0.0, (f.__name__, ax.get_title())
@@ -203,7 +205,7 @@ def test_one_number_of_significant_figures_per_column(study):
 def _paragraphs(st) -> list[str]:
     out = []
     blocks = [f(st) for f in SENTENCES]
-    blocks += [cap.caption for cap in (f(st) for f in FIGURES)]
+    blocks += [part for cap in (f(st) for f in FIGURES) for part in (cap.caption, cap.remark) if part]
     for t in (f(st) for f in TABLES):
         out.append(t.caption)
         out.append("\n".join(" | ".join(str(v) for v in row.values()) for row in t.rows))
@@ -242,7 +244,10 @@ def test_captions_name_the_layout_and_the_coinciding_curves(study):
     assert curves.caption.startswith("Left:") and "Right:" in curves.caption and "5 % band" not in curves.caption
     for res in study.learners:  # a learning curve is said to meet the optimum line exactly when it ends within 1 %
         ends = res.curve_cost[-1] <= (1 + figures.COINCIDE) * study.ref.expected_cost
-        assert (f"the {tables.SHORT_NAMES[res.method]} curve coincides with it" in curves.caption) == ends
+        said = f"the {tables.SHORT_NAMES[res.method]} curve coincides with the optimum line" in curves.remark.replace(
+            "The ", "the ", 1
+        )
+        assert said == ends
     surface = figures.surface_figure(study)
     assert "Left: ARS" in surface.caption and "Right: CMA-ES" in surface.caption
     episodes = figures.episode_figure(study)
@@ -256,8 +261,23 @@ def test_captions_name_the_layout_and_the_coinciding_curves(study):
         for i, p in enumerate(names)
         for q in names[i + 1 :]
     )
-    middle = episodes.caption.split("Middle:")[1].split("Bottom:")[0]
+    middle = episodes.remark.split("With the semi-active damper,")[1].split(".")[0] if close else ""
     assert ("coincide" in middle) == close
+    assert ("With the semi-active damper," in episodes.remark) == close
+    assert "coincide" not in episodes.caption  # the findings are in the remark
+
+
+def check_caption_words(st) -> None:
+    """Every figure's and every table's caption says what is drawn or listed in at most 60 words."""
+    assert CAPTION_WORDS == 60
+    for item in [f(st) for f in FIGURES] + [f(st) for f in TABLES]:
+        assert caption_words(item.caption) <= 60, (item.name, caption_words(item.caption), item.caption)
+
+
+def test_every_caption_is_at_most_sixty_words(study):
+    """At the default parameters and at a far set: heavier, stiffer, more damped, forced harder at its resonance."""
+    check_caption_words(study)
+    check_caption_words(learning_study(m=3.0, k=80.0, F0=12.0, c_nominal=1.2, omega_res=5.16, n_eval=200))
 
 
 def test_coinciding_and_groups():

@@ -136,22 +136,24 @@ def learning_figure(st: LearningStudy) -> Captioned:
     place_legend(ax1)
     ars, cma = (LEARNER_STYLE[m] for m in METHODS)
     targets = " and ".join(pct(t, 2) for t in TARGETS)
-    floor = f"; values below {num(DRAW_FLOOR, 1)} would be drawn at {num(DRAW_FLOOR, 1)}"
     parts = [
         f"exact expected cost $J$ of each learner's current gains against the training episodes used, ARS "
-        f"({_look(ars)}) and CMA-ES ({_look(cma)}), with the LQR optimum $J^*$ (black, dotted); "
-        f"{_meets(st)}; logarithmic episode axis.",
-        f"the excess over the optimum, $J/J^* - 1$, with the {targets} targets (grey, dotted){floor}; both axes "
-        "logarithmic.",
+        f"({_look(ars)}) and CMA-ES ({_look(cma)}), with the LQR optimum $J^*$ (black, dotted); logarithmic "
+        "episode axis.",
+        f"the excess over the optimum, $J/J^* - 1$, with the {targets} targets (grey, dotted); both axes logarithmic.",
     ]
     caption = _panels(fig, parts)
+    meets = _meets(st)
+    remark = (
+        f"{meets[:1].upper()}{meets[1:]}. An excess below {num(DRAW_FLOOR, 1)} would be drawn at {num(DRAW_FLOOR, 1)}."
+    )
     final = ", ".join(f"{SHORT_NAMES[r.method]} at {_ratio_words(st, r)}" for r in st.learners)
     onto = "falling onto" if all(settled_within(st, r) == settled_within(st, r) for r in st.learners) else "approaching"
     alt = (
         f"Learning curves of ARS and CMA-ES, expected cost against training episodes, {onto} the LQR optimum "
         f"line; final cost over the optimum: {final}."
     )
-    return Captioned(fig, caption, "fig-learning-curves", alt)
+    return Captioned(fig, caption, "fig-learning-curves", alt, remark=remark)
 
 
 def settled_within(st: LearningStudy, res, tol: float = COINCIDE) -> float:
@@ -164,15 +166,19 @@ def settled_within(st: LearningStudy, res, tol: float = COINCIDE) -> float:
 
 
 def _meets(st: LearningStudy) -> str:
-    """Which curves coincide with the optimum line, measured: "the ARS curve meets it to within 1 % from 192 ..."."""
+    """Which curves coincide with the optimum line, measured: "the ARS curve coincides with the optimum line to
+    within 1 % from 192 episodes on"."""
     parts = []
     for res in st.learners:
         e = settled_within(st, res)
         name = SHORT_NAMES[res.method]
         if e == e:
-            parts.append(f"the {name} curve coincides with it to within {pct(COINCIDE, 2)} from {int(e)} episodes on")
+            parts.append(
+                f"the {name} curve coincides with the optimum line to within {pct(COINCIDE, 2)} from {int(e)} "
+                "episodes on"
+            )
         else:
-            parts.append(f"the {name} curve ends above it by more than {pct(COINCIDE, 2)}")
+            parts.append(f"the {name} curve ends above the optimum line by more than {pct(COINCIDE, 2)}")
     return "; ".join(parts)
 
 
@@ -205,23 +211,28 @@ def surface_figure(st: LearningStudy) -> Captioned:
         ax.set_title(SHORT_NAMES[res.method], loc="left")
         ax.grid(False)
         place_legend(ax)
-        parts.append(f"{SHORT_NAMES[res.method]} ({_look(style)}), {len(res.curve_gains) - 1} iterations.")
+        parts.append(f"{SHORT_NAMES[res.method]} ({_look(style)}).")
     axes[0].set_ylabel(r"$K_v$ (N s/m)")
     cb = fig.colorbar(cs, ax=list(axes))
     cb.set_label(r"$\log_{10}(J/J^* - 1)$")
     caption = (
-        "Each learner's gains after every iteration, from $K = [0, 0]$, over the exact expected cost of the linear "
+        "Each learner's gains, iteration by iteration from $K = [0, 0]$, over the exact expected cost of the linear "
         f"law, coloured by the excess over the optimum $J/J^* - 1$ in decades (from {num(SURFACE_RANGE[0], 1)} to "
-        f"{num(SURFACE_RANGE[1], 1)}). {_panels(fig, parts)} In both panels the star is the LQR gain and the grey "
-        f"dotted line the flattest direction of the cost at the optimum, {num(st.curvature.valley_angle)}° from the "
-        "$K_x$ axis."
+        f"{num(SURFACE_RANGE[1], 1)}). {_panels(fig, parts)} The star is the LQR gain, the grey dotted line the "
+        "cost's flattest direction at the optimum."
+    )
+    first, *rest = (f"{SHORT_NAMES[r.method]} {len(r.curve_gains) - 1}" for r in st.learners)
+    runs = f"{first} iterations" + "".join(f", {r}" for r in rest)
+    remark = (
+        f"{runs.replace(' ', ' ran ', 1)}. The flattest direction lies "
+        f"{num(st.curvature.valley_angle)}° from the $K_x$ axis."
     )
     alt = (
         "Two contour maps of the expected cost over the two gains, each with a long narrow valley through the LQR "
         "gain and one learner's path from the origin into the valley, ending "
         + ("at the star." if all(st.ratio(r) <= 1.0 + TARGETS[-1] for r in st.learners) else "short of the star.")
     )
-    return Captioned(fig, caption, "fig-learning-surface", alt)
+    return Captioned(fig, caption, "fig-learning-surface", alt, remark=remark)
 
 
 # ----------------------------------------------------------------------------- one episode of each task
@@ -269,19 +280,32 @@ def episode_figure(st: LearningStudy, episode: int = 0) -> Captioned:
     axes[1].set_title("semi-active damper, resonance force", loc="left")
     axes[2].set_title(f"semi-active damping commanded, first {T_ZOOM:g} s", loc="left")
 
-    def listed(key: str, cmp) -> str:
-        return "; ".join(f"{n}: {_look(case_style(CASE_OF[n]))}" for n in EPISODE_SHOW[key])
-
+    names = list(dict.fromkeys(n for key in EPISODE_SHOW for n in EPISODE_SHOW[key]))
+    looks: dict[tuple[str, str], list[str]] = {}
+    for n in names:
+        style = case_style(CASE_OF[n])
+        looks.setdefault((COLOUR_WORDS[style["color"]], STYLE_WORDS[style["linestyle"]]), []).append(n)
+    one_style = len({ls for _, ls in looks}) == 1
+    listed = "; ".join(
+        " and ".join(group) + f", {colour}" + ("" if one_style else f" {ls}") for (colour, ls), group in looks.items()
+    )
+    lines = f"{next(iter(looks))[1].capitalize()} lines: {listed}." if one_style else f"Lines: {listed}."
     parts = [
-        f"displacement $x(t)$ of the force actuator under the resonance force ({listed('active', st.active)})"
-        + _coincide_clause(drawn["active"])
-        + ".",
-        f"the same for the semi-active damper ({listed('semi', st.semi)})" + _coincide_clause(drawn["semi"]) + ".",
-        f"the damping $c(t)$ the clipped laws command over the first {T_ZOOM:g} s ({listed('damping', st.semi)})"
-        + _coincide_clause({k: np.nan_to_num(v) for k, v in drawn["damping"].items()})
-        + ".",
+        "displacement $x(t)$ with the force actuator.",
+        "with the semi-active damper.",
+        f"the damping $c(t)$ the clipped laws command, first {T_ZOOM:g} s.",
     ]
-    caption = f"The first evaluation episode (the same initial state for every controller). {_panels(fig, parts)}"
+    first = "The first evaluation episode under the resonance force (one initial state for all)."
+    caption = f"{first} {_panels(fig, parts)} {lines}"
+    said = [
+        (where + _coincide_clause(curves)[1:] + ".") if _coincide_clause(curves) else ""
+        for where, curves in (
+            ("With the force actuator,", drawn["active"]),
+            ("With the semi-active damper,", drawn["semi"]),
+            ("In the commanded damping,", {k: np.nan_to_num(v) for k, v in drawn["damping"].items()}),
+        )
+    ]
+    remark = " ".join(s for s in said if s)
     switching = st.bound_fraction(st.s("learned (ARS)")) > 0.5
     alt = (
         "Three stacked time plots: the displacement under the resonance force with a force actuator and with a "
@@ -292,4 +316,4 @@ def episode_figure(st: LearningStudy, episode: int = 0) -> Captioned:
             else "learned one mostly inside the damper's range."
         )
     )
-    return Captioned(fig, caption, "fig-learning-episodes", alt)
+    return Captioned(fig, caption, "fig-learning-episodes", alt, remark=remark)
