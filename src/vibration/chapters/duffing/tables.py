@@ -118,7 +118,7 @@ def stability_table(study: DuffingStudy) -> Table:
         ],
         caption="Stability of each one-harmonic amplitude at two frequencies inside the band: the slow flow's "
         "verdict against the Floquet multipliers μ of the periodic orbit of the full equation found from it by "
-        "Newton shooting (DOP853).",
+        "Newton shooting with an eighth-order Runge–Kutta integrator.",
         name="tab-duffing-stability",
     )
 
