@@ -23,7 +23,7 @@ import pytest
 from vibration.chapters.stability import figures, panel, tables, text, verdicts
 from vibration.chapters.stability.study import stability_study
 from vibration.physics.stability import stability_class
-from vibration.presentation.captions import Captioned, check_caption
+from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 from vibration.presentation.style import CASES
 
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "06_stability.ipynb"
@@ -134,6 +134,8 @@ def test_no_paragraph_sentence_table_or_caption_appears_twice(study):
             paragraphs += _paragraphs(item)
         elif isinstance(item, Captioned):
             paragraphs.append(item.caption)
+            if item.remark:
+                paragraphs.append(item.remark)
     seen: dict[str, str] = {}
     for p in paragraphs:
         key = _norm(p)
@@ -198,7 +200,7 @@ def _check_notation(shown: dict) -> None:
             assert not re.search(r"\d[eE][+-]?\d|\^|sqrt\(|m2\b", plain), (name, plain)
             assert not re.search(r"\b(nan|inf)\b", item), (name, item)
         elif isinstance(item, Captioned):
-            for words in (_prose(item.caption), item.alt):
+            for words in (_prose(item.caption), _prose(item.remark), item.alt):
                 assert "_" not in words and not CODE_NAMES.search(words), (name, words)
                 assert not re.search(r"\d[eE][+-]?\d|\^|sqrt\(|\bnan\b|\binf\b", words), (name, words)
         else:  # a table: headers use the helper's subscripts; cells are plain text
@@ -254,18 +256,39 @@ def test_the_papers_dampings_keep_their_book_colours(study):
     assert CASES["c_nominal"]["color"].lower() in colours and "#2ca02c" not in colours
 
 
+def _said(c: Captioned) -> str:
+    """What a figure says in words: its caption and the remark under it."""
+    return c.caption + " " + c.remark
+
+
 def test_coinciding_curves_are_said_to_coincide():
     same = stability_study(c_nominal=15.0, n_paths=20, t_growth=30.0)  # nominal = high
-    step = figures.step_figure(same).caption
+    step = _said(figures.step_figure(same))
     assert "The nominal and high curves coincide" in step
-    assert "coincide" in figures.cost_figure(same).caption
-    assert "The markers of the nominal damping and the high damping coincide" in figures.pole_figure(same).caption
+    assert "coincide" in _said(figures.cost_figure(same))
+    assert "The markers of the nominal damping and the high damping coincide" in _said(figures.pole_figure(same))
     apart = stability_study(n_paths=20, t_growth=30.0)
-    assert "coincide" not in figures.step_figure(apart).caption
-    cap = figures.transmissibility_figure(apart).caption  # low and nominal: 44.7 against 9 at resonance,
+    assert "coincide" not in _said(figures.step_figure(apart))
+    cap = _said(figures.transmissibility_figure(apart))  # low and nominal: 44.7 against 9 at resonance,
     assert "coincide" not in cap  # but within a few per cent of each other above sqrt(2) omega_n
     gap = re.search(r"the low and nominal curves lie within (\d+) %", cap)
     assert gap and 1 <= int(gap.group(1)) <= 10
+
+
+def test_captions_are_at_most_sixty_words_and_findings_go_under_the_figure(study):
+    """Every figure's and table's caption is at most 60 words at the defaults and under a far parameter set."""
+    far = stability_study(
+        m=3.0, k=80.0, F0=12.0, c_low=0.0, c_nominal=-0.05, c_high=40.0, c_unstable=0.0, omega_res=5.16,
+        t_growth=60.0, isolation_ratio=6.0, n_paths=20,
+    )  # fmt: skip
+    for st in (study, far):
+        shown = _chapter(st)
+        for name in [f.__name__ for f in FIGURES] + [t.__name__ for t in TABLES]:
+            cap = shown[name].caption
+            assert caption_words(cap) <= CAPTION_WORDS, (name, caption_words(cap), cap)
+    # what the figures show is said under them, not in the caption
+    trans = _chapter(study)["transmissibility_figure"]
+    assert "Every curve passes through $T$ = 1" in trans.remark and "passes through" not in trans.caption
 
 
 def test_captions_follow_the_layout(study):
@@ -398,8 +421,8 @@ def test_figures_follow_the_run(other):
     assert len(drawn) == sum(c >= 0 for c in st.dampings.values()) + 1  # the run's c >= 0 and the optimum
     for n, c in st.by_value():
         named = f"{n} ($c$ = {text.num(c, 4)} N s/m)"
-        assert named in step.caption
-        assert (f"{named} grows without bound and is not drawn" in step.caption) == (c < 0.0)
+        assert named in (step.caption if c >= 0.0 else step.remark)  # a drawn damping is named in the caption
+        assert (f"{named} grows without bound and is not drawn" in _said(step)) == (c < 0.0)
     growth = _chapter(st)["growth_figure"]
     ends = [float(np.max(ax.get_lines()[0].get_xdata())) for ax in growth.fig.axes]
     assert ends[0] == pytest.approx(st.t_growth)

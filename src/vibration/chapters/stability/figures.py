@@ -92,11 +92,6 @@ def _close_above(curves: list[tuple[str, np.ndarray]], mask: np.ndarray) -> str:
     return f" Between $\\sqrt{{2}}\\,\\omega_n$ and $4\\,\\omega_n$ {join(out)}." if out else ""
 
 
-def _dampings(items: list[str], kind: str = "") -> str:
-    """``the run's positive damping high (...)`` or ``the run's positive dampings low (...) and high (...)``."""
-    return f"the run's {kind}damping{'s' if len(items) > 1 else ''} {join(items)}"
-
-
 def _cap(text: str) -> str:
     return text[:1].upper() + text[1:]
 
@@ -164,20 +159,20 @@ def pole_figure(st: StabilityStudy) -> Captioned:
         groups.setdefault(c, []).append(f"the {_name(key)}")
     same = [g for g in groups.values() if len(g) > 1]
     caption = (
-        f"{_cap(left)}: the poles of $m s^2 + c s + k$ in the complex plane for the paper's three dampings "
+        f"{_cap(left)}: poles of $m s^2 + c s + k$ for the paper's three dampings "
         f"($c$ = {join([num(c, 4) for _k, c in st.by_value()])} N s/m), for $c$ = 0 and for the flutter model "
-        f"($c$ = {num(st.c_unstable, 4)} N s/m); the grey curve is the locus of the poles as $c$ runs from "
-        f"{num(cs[0], 3)} to {num(cs[-1], 3)} N s/m, and the shaded half-plane is the stable one. "
+        f"($c$ = {num(st.c_unstable, 4)} N s/m); the grey curve is their locus as $c$ runs from "
+        f"{num(cs[0], 3)} to {num(cs[-1], 3)} N s/m, the shaded half-plane the stable one. "
         f"{_cap(right)}: zoom near $s = i\\omega_n$."
-        + "".join(f" The markers of {join(g)} coincide (equal $c$)." for g in same)
     )
+    remark = " ".join(f"The markers of {join(g)} coincide (equal $c$)." for g in same)
     parts = []
     for group, where in ((stable, "in the left half-plane"), (on_axis, "on the imaginary axis"),
                          (growing, "in the right half-plane")):  # fmt: skip
         if group:
             parts.append(f"{'the poles' if not parts else 'those'} of the {join(group)} lie {where}")
     alt = "Poles in the complex plane: " + join(parts) + "."
-    return Captioned(fig, caption, "fig-stability-poles", alt)
+    return Captioned(fig, caption, "fig-stability-poles", alt, remark=remark)
 
 
 # ----------------------------------------------------------------------------- growth
@@ -223,34 +218,35 @@ def growth_figure(st: StabilityStudy) -> Captioned:
     words = panel_words(fig)
     b, lin, ex = (st.growth[c] for c in GROWTH_CASES)
     if st.bounded_name:
-        bounded = f"the {st.bounded_name} damping, the run's lightest positive one with oscillating poles"
+        bounded = f"the {st.bounded_name} damping"
+        why = f"The {words[0]} case is the run's lightest positive damping with oscillating poles."
     else:
-        bounded = "the paper's low damping ratio (none of the run's dampings is positive with oscillating poles)"
+        bounded = "the paper's low damping ratio"
+        why = (
+            f"None of the run's dampings is positive with oscillating poles, so the {words[0]} case takes the "
+            "paper's low damping ratio."
+        )
     if ex.osc.c < 0.0:
-        bottom = (
-            f"exponential growth with negative damping ($c$ = {num(ex.osc.c, 4)} N s/m) forced at "
-            f"{num(st.omega_res, 4)} rad/s"
-        )
+        bottom = f"negative damping ($c$ = {num(ex.osc.c, 4)} N s/m), growing exponentially"
         if ex.capped:
-            bottom += f", drawn until the growth factor reaches $e^{{{MAX_GROWTH:g}}}$ at {num(ex.t_end, 3)} s"
+            why += (
+                f" The {words[2]} response is drawn until its growth factor reaches $e^{{{MAX_GROWTH:g}}}$, at "
+                f"{num(ex.t_end, 3)} s."
+            )
     else:
-        bottom = (
-            f"the flutter model set to $c$ = 0 and forced at {num(st.omega_res, 4)} rad/s: bounded, no exponential "
-            "growth"
-        )
+        bottom = "the flutter model set to $c$ = 0: bounded, no exponential growth"
     caption = (
-        f"Three forced responses from rest under $F_0$ = {num(st.F0, 4)} N, drawn solid with their closed-form "
-        f"envelopes (black dashed). {_cap(words[0])}: {bounded} ($c$ = {num(b.osc.c, 4)} N s/m) forced at "
-        f"{num(st.omega_res, 4)} rad/s, a transient approaching a bounded steady state; {words[1]}: linear growth at "
-        f"exact undamped resonance ($c$ = 0, $\\omega = \\omega_n$ = {num(lin.force.omega, 4)} rad/s); {words[2]}: "
-        f"{bottom}."
+        f"Forced responses from rest (solid) with their closed-form envelopes (black dashed), under $F_0$ = "
+        f"{num(st.F0, 4)} N at {num(st.omega_res, 4)} rad/s except in the {words[1]}. {_cap(words[0])}: {bounded} "
+        f"($c$ = {num(b.osc.c, 4)} N s/m), approaching a bounded steady state; {words[1]}: $c$ = 0 at exact "
+        f"resonance, $\\omega_n$ = {num(lin.force.omega, 4)} rad/s, growing linearly; {words[2]}: {bottom}."
     )
     alt = (
         f"Displacement against time in three stacked panels: the damped response stays below {num(b.peak, 3)} m, "
         f"the undamped resonant one grows linearly to {num(lin.peak, 3)} m and the last one reaches "
         f"{num(ex.peak, 3)} m."
     )
-    return Captioned(fig, caption, "fig-stability-growth", alt)
+    return Captioned(fig, caption, "fig-stability-growth", alt, remark=why)
 
 
 # ----------------------------------------------------------------------------- transmissibility
@@ -305,19 +301,24 @@ def transmissibility_figure(st: StabilityStudy) -> Captioned:
     fam = transmissibility_family(st)
     run = [f"{n} ($c$ = {num(c, 4)} N s/m)" for n, _l, c in fam if n in CASE]
     r = st.isolation_ratio
+    stand_in = run and not st.distinct_positive()
     caption = (
-        "Transmissibility of base motion $|X/Y|$ on a logarithmic scale against the base frequency, "
-        + (f"for {_dampings(run, 'positive ')}, " if run else "for damping ratios 0.2 and 1 (grey), ")
-        + f"and for the settling-optimal {ZSTAR} = {st.zeta_star:.3f} (black dotted). Every curve passes through "
-        f"$T$ = 1 at $\\sqrt{{2}}\\,\\omega_n$ = {num(w_iso, 4)} rad/s (dashed line), and above it the more heavily "
-        "damped curves lie higher"
-        + (f"; the dash-dotted line marks {r:g} {WN}, where isolation is judged." if shown else ".")
-        + ("" if shown else f" The frequency {r:g} {WN} lies beyond the plotted range.")
+        "Transmissibility of base motion $|X/Y|$, logarithmic, against the base frequency "
+        + (f"for the positive damping{'s' if len(run) > 1 else ''} {join(run)}" if run else "")
+        + (", " if stand_in else "")
+        + ("for damping ratios 0.2 and 1 (grey)" if not run or stand_in else "")
+        + f" and the settling-optimal {ZSTAR} = {st.zeta_star:.3f} (black dotted). The dashed line marks "
+        f"$\\sqrt{{2}}\\,\\omega_n$ = {num(w_iso, 4)} rad/s; "
         + (
-            " Damping ratios 0.2 and 1 (grey) stand in for the missing run dampings."
-            if run and not st.distinct_positive()
-            else ""
-        )
+            f"the dash-dotted line {r:g} {WN}, where isolation is judged."
+            if shown
+            else f"{r:g} {WN}, where isolation is judged, lies beyond the plotted range."
+        )  # fmt: skip
+    )
+    remark = (
+        "Every curve passes through $T$ = 1 at $\\sqrt{2}\\,\\omega_n$, and above it the more heavily damped "
+        "curves lie higher."
+        + (" Damping ratios 0.2 and 1 stand in for the run's missing positive dampings." if stand_in else "")
         + _coincide_text(coinciding(curves))
         + _close_above(curves, w > w_iso)
     )
@@ -326,7 +327,7 @@ def transmissibility_figure(st: StabilityStudy) -> Captioned:
         f"{num(wn, 3)} radians per second, all curves cross 1 at {num(w_iso, 3)} radians per second, and beyond that "
         "the more heavily damped curves lie higher."
     )
-    return Captioned(fig, caption, "fig-stability-transmissibility", alt)
+    return Captioned(fig, caption, "fig-stability-transmissibility", alt, remark=remark)
 
 
 # ----------------------------------------------------------------------------- step response
@@ -369,19 +370,21 @@ def step_figure(st: StabilityStudy) -> Captioned:
     drawn = [f"{n} ($c$ = {num(c, 4)} N s/m)" for n, _l, c in cases if n in CASE]
     left_out = [f"{n} ($c$ = {num(c, 4)} N s/m)" for n, c in st.by_value() if c < 0.0]
     caption = (
-        f"{_cap(left)}: response to a step force, normalised by its final value $F/k$, for "
-        + (f"{_dampings(drawn)} and " if drawn else "")
-        + f"the settling-optimal {ZSTAR} = {st.zeta_star:.3f} (black dotted), with the shaded ±2 % band"
-        + (f"; {join(left_out)} grows without bound and is not drawn" if left_out else "")
-        + f". {_cap(right)}: the exact 2 % settling time (black) and the 10–90 % rise time (dashed) against the "
-        "damping ratio on logarithmic axes; markers: the run's positive dampings, star: the fastest settling."
-        + _coincide_text(coinciding(curves))
+        f"{_cap(left)}: normalised step response $k x/F$ for "
+        + (f"{join(drawn)} and " if drawn else "")
+        + f"the settling-optimal {ZSTAR} = {st.zeta_star:.3f} (black dotted), ±2 % band shaded. "
+        f"{_cap(right)}: 2 % settling time (black) and 10–90 % rise time (dashed) against the damping ratio, "
+        f"logarithmic axes; markers at the run's positive dampings and at {ZSTAR} (star)."
     )
+    remark = (
+        (f"Of the run's dampings, {join(left_out)} grows without bound and is not drawn." if left_out else "")
+        + _coincide_text(coinciding(curves))
+    ).strip()
     alt = (
         f"Step responses over {num(t_end, 3)} s and, beside them, settling and rise times against the damping "
         f"ratio: the settling time is least, {num(st.star_step.settling_time, 3)} s, at ζ* = {st.zeta_star:.3f}."
     )
-    return Captioned(fig, caption, "fig-stability-step", alt)
+    return Captioned(fig, caption, "fig-stability-step", alt, remark=remark)
 
 
 # ----------------------------------------------------------------------------- cost
@@ -412,14 +415,18 @@ def cost_figure(st: StabilityStudy) -> Captioned:
         fig.legend(*af.get_legend_handles_labels(), loc="outside upper center", ncols=3, frameon=False)
     left, right = panel_words(fig)
     run = [f"{n} ($c$ = {num(c, 4)} N s/m)" for n, c in st.positive()]
-    what = f"for {_dampings(run, 'positive ')}" if run else "(no positive damping in this run: no curves)"
+    what = (
+        f"for the positive damping{'s' if len(run) > 1 else ''} {join(run)}"
+        if run
+        else "(no positive damping in this run: no curves)"
+    )
     same = coinciding(forces)
     caption = (
-        f"Load on the damper under $F_0$ = {num(st.F0, 4)} N on the mass, in the steady state, against the forcing "
-        f"frequency {what}, on logarithmic vertical axes. {_cap(left)}: damper force amplitude, with $F_0$ as a "
-        f"dotted line; {right}: mean dissipated power. The dashed lines mark {WN} = {num(wn, 4)} rad/s."
-        + _coincide_text(same)
+        f"Steady load on the damper under $F_0$ = {num(st.F0, 4)} N on the mass against the forcing frequency "
+        f"{what}, logarithmic vertical axes. {_cap(left)}: damper force amplitude, $F_0$ dotted; {right}: mean "
+        f"dissipated power. Dashed: {WN} = {num(wn, 4)} rad/s."
     )
+    remark = _coincide_text(same).strip()
     alt = (
         f"Damper force and dissipated power against forcing frequency: every positive damping's force reaches "
         f"{num(st.F0, 3)} N at {num(wn, 3)} radians per second, and the lightest damping dissipates the most power "
@@ -427,7 +434,7 @@ def cost_figure(st: StabilityStudy) -> Captioned:
         if run
         else "Two empty panels of damper force and power: no damping of this run is positive."
     )
-    return Captioned(fig, caption, "fig-stability-cost", alt)
+    return Captioned(fig, caption, "fig-stability-cost", alt, remark=remark)
 
 
 # ----------------------------------------------------------------------------- the paper's labels
@@ -489,22 +496,17 @@ def labels_figure(st: StabilityStudy) -> Captioned:
     ax.set_xlabel(rf"isolation: transmissibility at {st.isolation_ratio:g} $\omega_n$ (1, lower is better)")
     ax.set_ylabel(r"resonant peak $\max |X|/(F_0/k)$ (1, lower is better)")
     ax.set_ylim(0.5, max(y.max(), 1.5) * 1.6)
-    marked = [f"{n} ($c$ = {num(c, 4)} N s/m)" for n, c in pos]
+    marked = f"{join([n for n, _c in pos])} ($c$ = {join([num(c, 4) for _n, c in pos])} N s/m)"
     caption = (
-        "The trade-off at a glance, on logarithmic axes: the resonant peak under a force on the mass against the "
-        f"transmissibility of base motion at {st.isolation_ratio:g} {WN}, for damping ratios from 0.004 to 6; each "
-        "dot is shaded by its 2 % step settling time (darker is slower). "
-        + (
-            f"{_cap(_dampings(marked, 'positive '))} {'are' if len(marked) > 1 else 'is'} marked with "
-            f"{'their' if len(marked) > 1 else 'its'} paper label{'s' if len(marked) > 1 else ''}, and "
-            if marked
-            else ""
-        )
-        + f"the settling-optimal {ZSTAR} = {st.zeta_star:.3f} by a black star."
-        + (f" Not on these axes: {join(off)}." if off else "")
+        "Resonant peak under a force on the mass against transmissibility of base motion at "
+        f"{st.isolation_ratio:g} {WN}, logarithmic axes, for damping ratios 0.004 to 6, shaded by 2 % step "
+        "settling time (darker: slower). "
+        + (f"Marked with the paper's label{'s' if len(pos) > 1 else ''}: {marked}; " if pos else "")
+        + f"black star: the settling-optimal {ZSTAR} = {st.zeta_star:.3f}."
     )
+    remark = f"Not on these axes, having no finite peak or settling time: {join(off)}." if off else ""
     alt = (
         "Resonant peak against isolation for a family of dampings: the points form a falling curve, so lowering "
         "one raises the other, and the settling time is least in the middle of the curve."
     )
-    return Captioned(fig, caption, "fig-stability-labels", alt)
+    return Captioned(fig, caption, "fig-stability-labels", alt, remark=remark)
