@@ -19,7 +19,7 @@ from matplotlib.patches import FancyArrowPatch
 from matplotlib.text import Text
 
 from vibration.presentation import schematics, style
-from vibration.presentation.captions import Captioned, check_caption, panel_words
+from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption, panel_words
 
 #: name: (panels, force arrows in the free-body diagram)
 EXPECTED = {
@@ -100,7 +100,8 @@ def test_a_captioned_figure_whose_caption_is_true_to_it(figures, name):
     assert len(words) == EXPECTED[name][0], words
     for word in words:
         assert word.lower() in cap.caption.lower(), f"the caption leaves out the {word} panel"
-    assert "Newton's form" in cap.caption, "the caption states the free-body diagram's convention"
+    told = cap.caption + " " + cap.remark
+    assert told.count("Newton's form") == 1, "the caption or its remark states the free-body diagram's convention once"
 
 
 def test_the_names_are_distinct(figures):
@@ -154,12 +155,55 @@ def test_text_at_least_8_pt_and_the_column_width(figures, name):
 
 
 @pytest.mark.parametrize("name", EXPECTED)
-def test_every_drawn_symbol_is_explained_in_the_caption(figures, name):
+def test_every_drawn_symbol_is_explained_in_the_caption_or_its_remark(figures, name):
     cap = figures[name]
     symbols = {m for t in _texts(cap.fig) for m in re.findall(r"\$[^$]+\$", t.get_text())}
     assert symbols, "the figure labels its symbols"
-    missing = sorted(s for s in symbols if s not in cap.caption)
-    assert not missing, f"drawn but not in the caption: {missing}"
+    missing = sorted(s for s in symbols if s not in cap.caption + " " + cap.remark)
+    assert not missing, f"drawn but not in the caption or its remark: {missing}"
+
+
+def _far_schematics():
+    """Every schematic under its defaults and under far arguments: the fewest and the most storeys, and a rig
+    whose data document everything the torsional caption can quote."""
+    yield from (getattr(schematics, name)() for name in EXPECTED)
+    yield from (schematics.shear_building(n) for n in (2, 3, 8))
+    long = "a brass wheel of 0.2 m diameter on a spiral spring, rocked by a 24 V motor through an eccentric and a rod"
+    yield schematics.torsional_oscillator(description=long, max_angle_rad=3.14159, encoder_step_rad=0.00153398)
+
+
+def test_every_caption_is_at_most_60_words_under_defaults_and_far_arguments():
+    """What is drawn fits the book's caption limit; the free-body detail lives in the remark."""
+    long = {}
+    for cap in _far_schematics():
+        plt.close(cap.fig)
+        assert cap.remark.strip(), f"{cap.name}: the free-body detail has a remark to go to"
+        if caption_words(cap.caption) > CAPTION_WORDS:
+            long[cap.name] = caption_words(cap.caption)
+    assert CAPTION_WORDS == 60
+    assert not long, long
+
+
+def test_no_sentence_closes_several_schematics():
+    """A shared closing sentence (the convention of the free-body diagrams, the colour of the forces) is said in each
+    figure's own words: no sentence, formulas and numbers masked, appears in more than two schematics."""
+    seen: dict[str, set[str]] = {}
+    for name in EXPECTED:
+        cap = getattr(schematics, name)()
+        plt.close(cap.fig)
+        text = re.sub(r"\$[^$]*\$", "§", cap.caption + " " + cap.remark)
+        text = re.sub(r"\d+(\.\d+)?", "#", text)
+        for sentence in re.split(r"(?<=[.;])\s+", text):
+            words = sentence.split()
+            if len(words) >= 5:
+                seen.setdefault(" ".join(words).lower(), set()).add(name)
+    repeated = {s: sorted(names) for s, names in seen.items() if len(names) > 2}
+    assert not repeated, repeated
+    for name in EXPECTED:
+        cap = getattr(schematics, name)()
+        plt.close(cap.fig)
+        sentences = [s for s in re.split(r"(?<=\.)\s+", cap.caption) if len(s.split()) >= 3]
+        assert len(sentences) == len(set(sentences)), f"{name}: a sentence repeats within the caption"
 
 
 @pytest.mark.parametrize("name", EXPECTED)
@@ -242,6 +286,9 @@ def test_the_building_has_n_storeys(n):
     assert len(floors) == n
     assert coords == {f"$x_{j}$" for j in range(1, n + 1)}
     assert f"{n}-storey" in cap.caption
+    assert caption_words(cap.caption) <= CAPTION_WORDS
+    assert f"$x_1$ to $x_{n}$" in cap.caption if n > 2 else "$x_1$, $x_2$ and $x_a$" in cap.caption
+    assert ", ".join(f"$x_{j}$" for j in range(1, n + 1)) + " (m)" in cap.remark, "the remark names every floor"
     plt.close(cap.fig)
 
 

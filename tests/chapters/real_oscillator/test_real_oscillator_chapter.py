@@ -214,13 +214,18 @@ def test_notebook_runs_on_another_lab(other_lab, tmp_path):
 def test_the_schematic_says_what_the_rig_is_and_what_is_not_documented(study):
     from vibration.presentation.schematics import torsional_oscillator
 
+    def told(fig):  # the caption says what is drawn; its remark, under the figure, what the data document
+        return fig.caption + " " + fig.remark
+
     rig = study.data.rig
-    cap = torsional_oscillator(
-        description=rig.description, max_angle_rad=rig.max_angle_rad, encoder_step_rad=rig.encoder_step_rad
-    ).caption
+    cap = told(
+        torsional_oscillator(
+            description=rig.description, max_angle_rad=rig.max_angle_rad, encoder_step_rad=rig.encoder_step_rad
+        )
+    )
     assert rig.description.rstrip(".") in cap
     assert rig.max_angle_rad is None and "the largest angle the wheel can turn." in cap
     assert "Not documented" in cap and "push rod" in cap
-    other = torsional_oscillator(description="a simulated wheel", max_angle_rad=30.0).caption
+    other = told(torsional_oscillator(description="a simulated wheel", max_angle_rad=30.0))
     assert "can turn at most 30 rad (1719°)" in other and "the largest angle the wheel can turn" not in other
-    assert "The data do not describe the rig." in torsional_oscillator().caption
+    assert "The data do not describe the rig." in told(torsional_oscillator())

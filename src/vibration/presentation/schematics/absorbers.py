@@ -19,8 +19,8 @@ from .kit import (
     ground,
     load,
     mass,
-    newton_caption,
     rollers,
+    sentence_panels,
     spring,
     wall,
 )
@@ -64,26 +64,30 @@ def two_mass_absorber() -> Captioned:
     coordinate(right, (0.5 * pw + 0.3, py), 0.5, "$x_p$", vertical=True)
     coordinate(right, (0.5 * aw + 0.3, ay + 0.5 * ah), 0.5, "$x_a$", vertical=True)
 
-    caption = newton_caption(
+    caption = "The tuned mass damper of chapter 8. " + sentence_panels(
         fig,
-        "The tuned mass damper of chapter 8. ",
         [
-            "the primary of mass $m_p$ (kg) on a spring $k_p$ (N/m) and a dashpot $c_p$ (N s/m) to the fixed "
-            "ground (hatched), driven by the force $F_0\\sin\\omega t$ (N; $\\omega$ in rad/s, $t$ in s), "
-            "carries the absorber of mass $m_a$ (kg; $m_a = \\mu m_p$) on its own spring $k_a$ (N/m) and dashpot "
-            "$c_a$ (N s/m); $x_p$ and $x_a$ (m, blue) are the displacements from the static equilibrium.",
-            "the free-body diagrams of the absorber (above) and the primary (below): the absorber's spring and "
-            "dashpot pull the two masses together with the equal and opposite forces $k_a(x_a - x_p)$ and "
-            r"$c_a(\dot x_a - \dot x_p)$ (N); on the primary also act $k_px_p$, $c_p\dot x_p$ and the drive "
-            r"$F_0\sin\omega t$. The weights and the static spring forces balance and are left out.",
+            r"the primary $m_p$ (spring $k_p$, dashpot $c_p$, drive $F_0\sin\omega t$) carries the absorber $m_a$ "
+            r"($\mu m_p$) on a spring $k_a$ and a dashpot $c_a$; displacements $x_p$ and $x_a$ in blue.",
+            r"both masses' free-body diagrams: $k_a(x_a - x_p)$ and $c_a(\dot x_a - \dot x_p)$ on each, $k_px_p$ "
+            r"and $c_p\dot x_p$ on the primary, forces in vermillion.",
         ],
+    )
+    remark = (
+        "Masses are in kg, stiffnesses in N/m, damping coefficients in N s/m, $\\omega$ in rad/s and $t$ in s; $x_p$ "
+        "and $x_a$ (m) are measured from the static equilibrium, where the weights and the static spring forces "
+        "balance, so these are left out. The primary stands on fixed ground (hatched). In the free-body diagrams the "
+        "absorber is drawn above the primary. The absorber's spring and dashpot pull the two masses together with "
+        "equal and opposite forces (N); on the primary also act $k_px_p$ and $c_p\\dot x_p$, towards the ground, and "
+        "the drive. Every arrow points the way its force acts when the displacements and velocities are positive "
+        "(Newton's form), and each mass times its acceleration is the sum of its arrows rather than one of them."
     )
     alt = (
         "A large mass on a spring and a dashpot carrying a small mass on its own spring and dashpot, and beside it "
         "the two masses apart with the equal and opposite spring and damper forces between them and the drive on "
         "the large mass."
     )
-    return Captioned(fig, caption, "fig-schematic-absorber", alt)
+    return Captioned(fig, caption, "fig-schematic-absorber", alt, remark=remark)
 
 
 # ------------------------------------------------------------------------------------------ shear building
@@ -144,27 +148,30 @@ def shear_building(n: int = 5) -> Captioned:
     coordinate(right, (-half, yc + 0.5 * th + 0.75), 0.6, "$x_j$", tick=0.1)
 
     xs = ", ".join(f"$x_{j}$" for j in range(1, n + 1))
-    caption = newton_caption(
+    span = xs if n == 2 else f"$x_1$ to $x_{n}$"
+    caption = f"The {n}-storey shear building of chapter 8 with its roof absorber. " + sentence_panels(
         fig,
-        f"The {n}-storey shear building of chapter 8 with its roof absorber. ",
         [
-            f"rigid floors of mass $m$ (kg) on storeys of lateral stiffness $k$ (N/m, all columns of a storey "
-            f"together), drawn swayed in the first mode's shape; the floors' displacements {xs} (m, blue) are "
-            "relative to the ground, which moves with the acceleration $\\ddot u_g$ (m/s², $a_g\\sin\\omega t$ in "
-            "chapter 8); the absorber of mass $m_a$ (kg) rolls on the roof on its spring $k_a$ (N/m) and dashpot "
-            "$c_a$ (N s/m), with displacement $x_a$ (m).",
-            "the free-body diagram of floor $j$, displacement $x_j$, cut through the columns above and below: "
-            "the storey shears "
-            "$k(x_{j+1} - x_j)$ from the storey above and $k(x_j - x_{j-1})$ from the storey below (N); "
-            "with the absolute acceleration, $m(\\ddot x_j + \\ddot u_g) = k(x_{j+1} - x_j) - k(x_j - x_{j-1})$. "
-            "On the roof the absorber's spring and dashpot forces take the place of the storey above; the "
-            "building's damping is modal (one ratio $\\zeta_b$ for every mode) and is not drawn, nor are the "
-            "vertical forces (weights and column forces), which balance.",
+            "floors $m$ on storeys of stiffness $k$ over ground accelerating at $\\ddot u_g$; the roof absorber "
+            f"$m_a$ on a spring $k_a$ and dashpot $c_a$; {span} and $x_a$ in blue.",
+            "floor $j$ cut free at $x_j$: the storey shears $k(x_{j+1} - x_j)$ and $k(x_j - x_{j-1})$ (vermillion).",
         ],
+    )
+    remark = (
+        f"The floors' displacements {xs} (m) are relative to the ground, whose acceleration (m/s²) is "
+        "$a_g\\sin\\omega t$ in chapter 8; $x_a$ (m) is the absorber's. The floors are rigid, the absorber rolls on "
+        "the roof, and the frame is drawn swayed in the first mode's shape. The floor mass $m$ and the absorber's "
+        "$m_a$ are in kg, the storey stiffness $k$ (all columns of a storey together) and $k_a$ in N/m, $c_a$ in N "
+        "s/m. Floor $j$ is cut free through the columns above and below it. Following Newton's form, the shears (N) "
+        "are drawn for positive displacements: the storey above pulls floor $j$ in the positive direction, the storey "
+        "below pulls it back, and with the absolute acceleration $m(\\ddot x_j + \\ddot u_g) = k(x_{j+1} - x_j) - "
+        "k(x_j - x_{j-1})$. On the roof the absorber's spring and dashpot forces take the place of the storey "
+        "above. The building's damping is modal (one ratio $\\zeta_b$ for every mode) and is not drawn, nor are the "
+        "vertical forces (weights and column forces), which balance."
     )
     alt = (
         f"A {n}-storey frame of rigid floors on flexible columns, swaying to one side over a moving ground, with a "
         "small mass on a spring and a dashpot on its roof, and beside it one floor cut free, pulled one way by the "
         "storey above and the other way by the storey below."
     )
-    return Captioned(fig, caption, "fig-schematic-building", alt)
+    return Captioned(fig, caption, "fig-schematic-building", alt, remark=remark)

@@ -6,7 +6,7 @@ import numpy as np
 
 from ..captions import Captioned, panel_words
 from ..style import case_style, figure, place_legend
-from .kit import NEWTON, TEXT, blank, coordinate, dashpot, force, ground, load, mass, rollers, spring, wall
+from .kit import TEXT, blank, coordinate, dashpot, force, ground, load, mass, rollers, spring, wall
 
 
 def duffing_spring() -> Captioned:
@@ -54,21 +54,27 @@ def duffing_spring() -> Captioned:
     colours = {"hardening": "vermillion", "linear": "blue", "softening": "sky blue"}
     caption = (
         r"The Duffing oscillator of chapter 9, $m\ddot x + c\dot x + kx + k_3x^3 = F_0\cos\omega t$. "
-        f"{words[0].capitalize()}: a mass $m$ (kg) on a nonlinear spring with linear stiffness $k$ (N/m) and cubic "
-        "stiffness $k_3$ (N/m³), a dashpot $c$ (N s/m) and the drive $F_0\\cos\\omega t$ (N; $\\omega$ in rad/s, $t$ "
-        "in s); $x$ (m, blue) is measured from the relaxed spring. "
-        f"{words[1].capitalize()}: its free-body diagram, with the spring force $kx + k_3x^3$, the damper force "
-        r"$c\dot x$, the drive $F_0\cos\omega t$, and the weight $mg$ and the normal force $N$ (N), which balance. "
-        f"{words[2].capitalize()}: the spring's restoring force $F = kx + k_3x^3$ (N) against the displacement, "
-        "drawn as $F/(kx_0)$ against $x/x_0$ with $x_0 = \\sqrt{k/|k_3|}$ (m), where the cubic term equals the "
-        "linear one: the hardening spring "
-        f"($k_3 > 0$, {colours['hardening']}) stiffens, the softening spring ($k_3 < 0$, {colours['softening']}) "
-        f"weakens, loses all stiffness at $x_0/\\sqrt{{3}}$ and no longer restores beyond $x_0$; the linear spring "
-        f"($k_3 = 0$, {colours['linear']}) between them. Forces are vermillion. " + NEWTON
+        f"{words[0].capitalize()}: a mass $m$ on a spring of stiffnesses $k$ and $k_3$ and a dashpot $c$, driven "
+        r"by $F_0\cos\omega t$; $x$ in blue. "
+        f"{words[1].capitalize()}: its free-body diagram: $kx + k_3x^3$, $c\\dot x$, $F_0\\cos\\omega t$, "
+        "$mg$ and $N$ in vermillion. "
+        f"{words[2].capitalize()}: the restoring force $F/(kx_0)$ against $x/x_0$, hardening ($k_3 > 0$, "
+        f"{colours['hardening']}), linear ($k_3 = 0$, {colours['linear']}) and softening ($k_3 < 0$, "
+        f"{colours['softening']})."
+    )
+    remark = (
+        "The oscillator's quantities are in SI units: $m$ in kg, the linear stiffness $k$ in N/m, the cubic stiffness "
+        "$k_3$ in N/m³, $c$ in N s/m, the drive in N with $\\omega$ in rad/s and $t$ in s; $x$ (m) is measured from "
+        "the relaxed spring. In the free-body diagram, whose arrows follow Newton's form (each force as it acts for "
+        "positive $x$ and $\\dot x$, the inertia term $m\\ddot x$ being their sum and so not drawn), the weight $mg$ "
+        "and the normal force $N$ balance. The restoring force $F = kx + k_3x^3$ (N) is scaled by "
+        "$x_0 = \\sqrt{k/|k_3|}$ (m), where the cubic term equals the linear one: the hardening spring stiffens, "
+        "the softening spring weakens, loses all stiffness at $x_0/\\sqrt{3}$ and no longer restores beyond $x_0$, "
+        "and the linear spring lies between them."
     )
     alt = (
         "A mass on rollers tied to a wall by a spring and a dashpot and driven by a sinusoidal force, its free-body "
         "diagram, and the restoring force against displacement: a straight line for the linear spring, a curve "
         "bending up for the hardening spring and one bending back to zero for the softening spring."
     )
-    return Captioned(fig, caption, "fig-schematic-duffing", alt)
+    return Captioned(fig, caption, "fig-schematic-duffing", alt, remark=remark)

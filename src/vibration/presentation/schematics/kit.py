@@ -1,6 +1,6 @@
 """The schematics' drawing kit: the colour language, the panels, and the parts every model is drawn from
 (springs as zigzags, dashpots as pistons in cylinders, hatched ground and walls, blocks on rollers) with the force,
-load and coordinate arrows, and the sentences every caption shares."""
+load and coordinate arrows, and the panel words a caption opens its sentences with."""
 
 from __future__ import annotations
 
@@ -18,8 +18,6 @@ __all__ = [
     "HATCH",
     "INK",
     "LW",
-    "NEWTON",
-    "NEWTON_TORQUES",
     "TEXT",
     "arc_arrow",
     "arrow",
@@ -30,7 +28,6 @@ __all__ = [
     "ground",
     "load",
     "mass",
-    "newton_caption",
     "rollers",
     "sentence_panels",
     "spring",
@@ -210,19 +207,3 @@ def sentence_panels(fig, parts: list[str]) -> str:
     """``"Left: ... Right: ..."`` with the position words taken from the figure's layout."""
     words = panel_words(fig)
     return " ".join(f"{w[0].upper()}{w[1:]}: {p}" for w, p in zip(words, parts, strict=True))
-
-
-NEWTON = (
-    "Free-body diagrams in Newton's form: the arrows are the forces on the body, drawn as they act when the "
-    "coordinates and their rates are positive; the mass times the acceleration is their sum and is not drawn."
-)
-NEWTON_TORQUES = (
-    "Free-body diagram in Newton's form: the arrows are the torques on the wheel, drawn as they act when the angle "
-    "and its rate are positive; the moment of inertia times the angular acceleration is their sum and is not drawn."
-)
-
-
-def newton_caption(fig, lead: str, parts: list[str]) -> str:
-    """A caption of forces: ``lead``, each panel's sentence (:func:`sentence_panels`), the colour of the forces and
-    Newton's form (:data:`NEWTON`)."""
-    return lead + sentence_panels(fig, parts) + " Forces are vermillion. " + NEWTON

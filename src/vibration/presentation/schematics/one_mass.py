@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from ..captions import Captioned
 from ..style import figure
-from .kit import TEXT, blank, coordinate, dashpot, force, ground, load, mass, newton_caption, rollers, spring, wall
+from .kit import TEXT, blank, coordinate, dashpot, force, ground, load, mass, rollers, sentence_panels, spring, wall
 
 
 def single_mass() -> Captioned:
@@ -34,24 +34,30 @@ def single_mass() -> Captioned:
     force(right, (x0 + w - 0.35, y0 - 0.9), (x0 + w - 0.35, y0), "$N$", (x0 + w - 0.27, y0 - 0.6), "left")
     coordinate(right, (x0, 2.1), 0.8, "$x$")
 
-    caption = newton_caption(
+    caption = r"The paper's model, $m\ddot x + c\dot x + kx = F_0\sin\omega t$. " + sentence_panels(
         fig,
-        r"The paper's model, $m\ddot x + c\dot x + kx = F_0\sin\omega t$. ",
         [
-            "a block of mass $m$ (kg) on frictionless rollers, tied to a fixed wall (hatched) by a spring of "
-            "stiffness $k$ (N/m) and a viscous dashpot of damping coefficient $c$ (N s/m), and driven by the force "
-            r"$F_0\sin\omega t$ (amplitude $F_0$ in N, angular frequency $\omega$ in rad/s, time $t$ in s); its "
-            "displacement $x$ (m, blue) is measured from the position where the spring is relaxed.",
-            r"the free-body diagram of the block: the spring force $kx$ and the damper force $c\dot x$ (N) against "
-            r"the motion, the drive $F_0\sin\omega t$, and the weight $mg$ and the rollers' normal force $N$ "
-            "(N, $g$ the acceleration of gravity in m/s²), which balance each other.",
+            "a block of mass $m$ on rollers, tied to a wall by a spring $k$ and a dashpot $c$ and driven by the "
+            r"force $F_0\sin\omega t$; its displacement $x$ in blue.",
+            r"the block's free-body diagram, with the forces $kx$, $c\dot x$, $F_0\sin\omega t$, $mg$ and $N$ in "
+            "vermillion.",
         ],
+    )
+    remark = (
+        "The mass $m$ is in kg, the stiffness $k$ in N/m and the damping coefficient $c$ in N s/m; the drive has the "
+        "amplitude $F_0$ (N) and the angular frequency $\\omega$ (rad/s), $t$ is the time (s), and $x$ (m) is "
+        "measured from where the spring is relaxed; the wall and the ground are fixed (hatched). The free-body "
+        "diagram is in Newton's form: each arrow is a force on the block (N), drawn the way it acts when $x$ and "
+        "$\\dot x$ are positive. The spring force $kx$ and the damper force $c\\dot x$ point back towards the wall, "
+        "the drive away from it; the weight $mg$ ($g$ the acceleration of gravity, m/s²) and the rollers' normal "
+        "force $N$ balance each other. The mass times the acceleration, $m\\ddot x$, is the sum of these forces, not "
+        "a force of its own, so it has no arrow."
     )
     alt = (
         "A block on rollers tied to a wall by a spring and a dashpot and pushed by a sinusoidal force, and beside it "
         "the block alone with the spring and damper forces pointing back towards the wall and the drive pointing away."
     )
-    return Captioned(fig, caption, "fig-schematic-single-mass", alt)
+    return Captioned(fig, caption, "fig-schematic-single-mass", alt, remark=remark)
 
 
 # ------------------------------------------------------------------------------------------ base excitation
@@ -80,21 +86,28 @@ def base_excitation() -> Captioned:
     force(right, (0.45, my), (0.45, my - 1.0), r"$c(\dot x - \dot y)$", (0.55, my - 0.5), "left")
     coordinate(right, (0.5 * mw + 0.3, my + 0.5 * mh), 0.6, "$x$", vertical=True)
 
-    caption = newton_caption(
-        fig,
-        r"Base excitation: $m\ddot x + c\dot x + kx = c\dot y + ky$, or, in the relative displacement $z = x - y$, "
-        r"$m\ddot z + c\dot z + kz = -m\ddot y$. ",
-        [
-            "a mass $m$ (kg) on a spring of stiffness $k$ (N/m) and a dashpot of damping coefficient $c$ "
-            "(N s/m) whose base moves as $y(t)$ (m, in chapter 6 $Y\\sin\\omega t$); the displacement $x$ (m) of "
-            "the mass and $y$ are absolute, measured from the static equilibrium (blue).",
-            "the free-body diagram of the mass: the spring force $k(x - y)$ and the damper force "
-            r"$c(\dot x - \dot y)$ (N), which depend on the motion relative to the base only; the weight and the "
-            "static spring force balance at the equilibrium and are left out.",
-        ],
+    caption = (
+        r"Base excitation, $m\ddot x + c\dot x + kx = c\dot y + ky$, or $m\ddot z + c\dot z + kz = -m\ddot y$ in "
+        "the relative displacement $z = x - y$. "
+        + sentence_panels(
+            fig,
+            [
+                "a mass $m$ on a spring $k$ and a dashpot $c$ whose base moves as $y(t)$; $x$ and $y$ in blue.",
+                r"the free-body diagram of the mass, with the spring force $k(x - y)$ and the damper force "
+                r"$c(\dot x - \dot y)$ in vermillion.",
+            ],
+        )
+    )
+    remark = (
+        "Here $m$ is in kg, $k$ in N/m, $c$ in N s/m, and the displacements $x$ and $y$ (m) are absolute, both "
+        "measured from the static equilibrium; in chapter 6 the base moves as $Y\\sin\\omega t$. The two forces (N) "
+        "depend only on the motion relative to the base. Drawn as they act for positive $x - y$ and "
+        "$\\dot x - \\dot y$, the convention of Newton's form, both pull the mass down; their sum is $m\\ddot x$, "
+        "which therefore is not an arrow. The weight and the static spring force cancel at the equilibrium and are "
+        "left out."
     )
     alt = (
         "A mass on a spring and a dashpot standing on a base that moves up and down, and beside it the mass alone "
         "with the spring and damper forces, both set by the stretch relative to the base, pointing down."
     )
-    return Captioned(fig, caption, "fig-schematic-base-excitation", alt)
+    return Captioned(fig, caption, "fig-schematic-base-excitation", alt, remark=remark)

@@ -6,7 +6,7 @@ import numpy as np
 
 from ..captions import Captioned, panel_words
 from ..style import OKABE_ITO, case_style, figure
-from .kit import NEWTON, TEXT, blank, coordinate, dashpot, force, ground, mass, spring
+from .kit import TEXT, blank, coordinate, dashpot, force, ground, mass, spring
 
 
 def _suspension(ax, device: str) -> None:
@@ -83,25 +83,27 @@ def skyhook() -> Captioned:
 
     words = dict(zip(("sky", "semi", "fbd", "map"), panel_words(fig), strict=True))
     caption = (
-        "Chapter 7's suspension, $m\\ddot x + c(\\dot x - \\dot y) + k(x - y) = f$, with two devices. "
-        f"{words['sky'].capitalize()}: the ideal skyhook, a damper $c_\\mathrm{{sky}}$ (N s/m, green) from the mass "
-        "$m$ (kg) to an inertial reference (the sky, hatched), beside the passive spring $k$ (N/m) and damper $c$ "
-        "(N s/m) to the base, which moves as $y(t)$ (m); $x$ (m) is the displacement of the mass, both measured from "
-        "the static equilibrium (blue). "
-        f"{words['semi'].capitalize()}: the realisable semi-active damper, whose coefficient $c_\\mathrm{{sa}}$ "
-        "(N s/m, purple, the arrow marking it adjustable) is set between $c_\\mathrm{min}$ and $c_\\mathrm{max}$ and "
-        "acts between the body and the base. "
-        f"{words['fbd'].capitalize()}: the free-body diagram of the mass: the spring force $k(x - y)$ and the damper "
-        "force $c(\\dot x - \\dot y)$ (N), and the device force $f$ (N), drawn positive: "
-        "$f = -c_\\mathrm{sky}\\dot x$ for the skyhook, $f = -c_\\mathrm{sa}(\\dot x - \\dot y)$ for the semi-active "
-        "damper; the weight and the static spring force balance and are left out. "
-        f"{words['map'].capitalize()}: the device force $f$ against the relative velocity "
-        "$v_\\mathrm{rel} = \\dot x - \\dot y$ (m/s; a sketch without scale): in the grey quadrants "
-        "$f\\,v_\\mathrm{rel} < 0$ and the device dissipates; a semi-active damper can only produce forces in the "
-        "purple sector between the dashed lines $f = -c_\\mathrm{min}v_\\mathrm{rel}$ (the shallower) and "
-        "$f = -c_\\mathrm{max}v_\\mathrm{rel}$ (the steeper); the skyhook force, which "
-        "follows $\\dot x$ and not $v_\\mathrm{rel}$, also falls in the quadrants that need power, where only an "
-        "actuator can produce it. Forces are vermillion. " + NEWTON
+        "Chapter 7's suspension, $m\\ddot x + c(\\dot x - \\dot y) + k(x - y) = f$. "
+        f"{words['sky'].capitalize()}: a skyhook damper $c_\\mathrm{{sky}}$ (green) ties the mass $m$, on spring $k$ "
+        "and damper $c$ over the base $y(t)$, to the sky; $x$ in blue. "
+        f"{words['semi'].capitalize()}: a semi-active damper $c_\\mathrm{{sa}}$ (purple) instead. "
+        f"{words['fbd'].capitalize()}: the mass's forces $k(x - y)$, $c(\\dot x - \\dot y)$ and $f$ (vermillion). "
+        f"{words['map'].capitalize()}: what a semi-active damper can produce, $f$ against $v_\\mathrm{{rel}}$."
+    )
+    remark = (
+        "The skyhook is ideal, its sky (hatched) an inertial reference. With $m$ in kg, $k$ in N/m and the damping "
+        "coefficients in N s/m, the base moves as $y(t)$ and the mass as $x$ (m), both from the static equilibrium; "
+        "forces are in N. The semi-active coefficient $c_\\mathrm{sa}$, adjustable (the arrow through it), is set "
+        "between $c_\\mathrm{min}$ and $c_\\mathrm{max}$ and acts between body and base in the skyhook's place. "
+        "The device force $f$ is drawn positive, as Newton's form draws every force for positive coordinates and "
+        "rates: $f = -c_\\mathrm{sky}\\dot x$ for the skyhook, $f = -c_\\mathrm{sa}(\\dot x - \\dot y)$ for the "
+        "semi-active damper; the weight and the static spring force balance and are left out. The force map, a sketch "
+        "without scale, plots $f$ against the relative velocity $v_\\mathrm{rel} = \\dot x - \\dot y$ (m/s). In the "
+        "grey quadrants $f\\,v_\\mathrm{rel} < 0$ and the device dissipates; a semi-active damper is confined to "
+        "the purple sector between the dashed lines $f = -c_\\mathrm{min}v_\\mathrm{rel}$ (the shallower) and "
+        "$f = -c_\\mathrm{max}v_\\mathrm{rel}$ (the steeper). The skyhook force follows $\\dot x$, not "
+        "$v_\\mathrm{rel}$, so it also falls in the quadrants that need power, where only an actuator can produce "
+        "it."
     )
     alt = (
         "A mass on a spring and a damper over a moving base, once with an extra damper up to a fixed sky and once "
@@ -109,4 +111,4 @@ def skyhook() -> Captioned:
         "against relative velocity in which a semi-active damper is confined to a sector of the two dissipative "
         "quadrants."
     )
-    return Captioned(fig, caption, "fig-schematic-skyhook", alt)
+    return Captioned(fig, caption, "fig-schematic-skyhook", alt, remark=remark)

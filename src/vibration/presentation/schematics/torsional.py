@@ -9,7 +9,7 @@ from matplotlib.patches import Circle, Polygon, Rectangle
 
 from ..captions import Captioned
 from ..style import OKABE_ITO, figure
-from .kit import BODY, COORDINATE, FORCE, INK, LW, NEWTON_TORQUES, TEXT, arc_arrow, blank, ground, sentence_panels
+from .kit import BODY, COORDINATE, FORCE, INK, LW, TEXT, arc_arrow, blank, ground, sentence_panels
 
 
 def _spiral(ax, r0: float, r1: float, turns: float, end_deg: float) -> tuple[float, float]:
@@ -64,10 +64,10 @@ def torsional_oscillator(
     Parameters
     ----------
     description : str, optional
-        What the data folder says the rig is (its ``rig.csv`` description); quoted in the caption.
+        What the data folder says the rig is (its ``rig.csv`` description); quoted in the remark.
     max_angle_rad, encoder_step_rad : float, optional
         The largest angle the wheel can turn and the angle sensor's step (rad), when the folder documents them.
-        The caption says which of these, and what else the drawing assumes, the data do not document.
+        The remark says which of these, and what else the drawing assumes, the data do not document.
     """
     fig, (left, right) = figure(1, 2, height=3.7)
     R = 1.3
@@ -137,32 +137,32 @@ def torsional_oscillator(
         + sentence_panels(
             fig,
             [
-                "a wheel of moment of inertia $I$ (kg m²) turns on a bearing about its axle; the spiral spring of "
-                "torsional stiffness $\\kappa$ (N m/rad) joins the axle to a lever; a motor turns an eccentric (a "
-                "crank) through the angle $\\omega t$ ($\\omega$ in rad/s, $t$ in s) and, through a push rod, rocks "
-                "the lever, which winds the spring's outer end; an eddy-current (magnetic) brake (grey) astride the "
-                "rim damps the wheel viscously with coefficient $b$ (N m s/rad), and the bearing adds dry friction "
-                "of torque $\\tau_c$ (N m). The wheel's angle $\\theta$ (rad, blue) is the pointer's turn from its "
-                "rest position "
-                "(dashed).",
-                "the torques on the wheel about its axle (N m): the drive $\\tau_0\\sin\\omega t$ that the rocked "
-                "spring passes on, the spring's $\\kappa\\theta$, the brake's $b\\dot\\theta$ and the bearing's "
-                "Coulomb friction $\\tau_c\\,\\mathrm{sgn}\\,\\dot\\theta$, the last three against positive "
-                "$\\theta$ and $\\dot\\theta$; the weight and the bearing's reaction act through the axle and have "
-                "no moment about it.",
+                "the wheel $I$ on a spiral spring $\\kappa$, rocked by a motor's crank at the angle $\\omega t$, "
+                "with an eddy-current brake $b$ (grey) and bearing friction $\\tau_c$; its angle $\\theta$ (blue) "
+                "from rest (dashed).",
+                "the torques $\\tau_0\\sin\\omega t$, $\\kappa\\theta$, $b\\dot\\theta$ and "
+                "$\\tau_c\\,\\mathrm{sgn}\\,\\dot\\theta$ on the wheel, in vermillion.",
             ],
         )
-        + " Torques are vermillion. Divided by $I$, this is the chapter's model with $\\omega_n^2 = \\kappa/I$, "
-        "$2\\zeta\\omega_n = b/I$ and the friction angle $\\Delta = \\tau_c/\\kappa$ (the spring's resting angle "
-        "$c$ taken as zero); the drive there is the measured drive signal $u(t)$ times the gain $g$, the torque "
+    )
+    remark = (
+        "The wheel (moment of inertia $I$, kg m²) turns on a bearing; the spiral spring (torsional stiffness "
+        "$\\kappa$, N m/rad) joins its axle to a lever, which a push rod from the motor's eccentric rocks, winding "
+        "the spring's outer end ($\\omega$ in rad/s, $t$ in s). The magnetic brake astride the rim damps the wheel "
+        "viscously ($b$, N m s/rad); the bearing adds dry friction of torque $\\tau_c$ (N m). The angle $\\theta$ "
+        "(rad) is the pointer's turn from rest. In Newton's form for a turning body, each torque about the axle "
+        "(N m) is drawn as it acts for positive $\\theta$ and $\\dot\\theta$, and $I\\ddot\\theta$, their sum, is "
+        "not drawn: the drive, passed on by the rocked spring, turns the wheel forward; the spring, the brake and "
+        "the bearing's Coulomb friction turn it back; the weight and the bearing's reaction act through the axle "
+        "and have no moment about it. Divided by $I$, this is the chapter's model with $\\omega_n^2 = \\kappa/I$, "
+        "$2\\zeta\\omega_n = b/I$ and the friction angle $\\Delta = \\tau_c/\\kappa$ (the spring's resting angle $c$ "
+        "taken as zero); the drive there is the measured drive signal $u(t)$ times the gain $g$, the torque "
         "$\\kappa g u(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily."
         + _rig_sentence(description, max_angle_rad, encoder_step_rad)
-        + " "
-        + NEWTON_TORQUES
     )
     alt = (
         "A wheel on a spiral spring whose outer end is rocked by a motor through a crank and a push rod, with a "
         "magnetic brake at its rim, and beside it the wheel alone with the drive torque turning it one way and the "
         "spring, brake and friction torques turning it back."
     )
-    return Captioned(fig, caption, "fig-schematic-torsional", alt)
+    return Captioned(fig, caption, "fig-schematic-torsional", alt, remark=remark)
