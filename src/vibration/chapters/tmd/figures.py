@@ -440,4 +440,4 @@ def building_schematic(st: TMDStudy) -> Captioned:
         head, f"The {n}-storey shear building of chapter 8 with its roof absorber (drawn with {drawn} storeys).", 1
     )
     alt = cap.alt.replace(f"A {drawn}-storey frame", f"A {n}-storey frame (drawn with {drawn} storeys)", 1)
-    return Captioned(cap.fig, caption, cap.name, alt)
+    return Captioned(cap.fig, caption, cap.name, alt, remark=cap.remark)
