@@ -30,7 +30,7 @@ from vibration.chapters.control.figures import all_figures, closeness
 from vibration.chapters.control.notation import LABELS, cell, num
 from vibration.chapters.control.params import SCHEMA, Params
 from vibration.chapters.control.study import control_study
-from vibration.presentation.captions import Captioned, check_caption
+from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 
 ROOT = Path(__file__).resolve().parents[3]
 NOTEBOOK = ROOT / "notebooks" / "07_control.ipynb"
@@ -60,7 +60,8 @@ def other(request):
 
 
 def _paragraphs(study) -> list[str]:
-    """Every paragraph the chapter's code writes: sentence blocks split at bullets, table and figure captions."""
+    """Every paragraph the chapter's code writes: sentence blocks split at bullets, table captions and notes,
+    figure captions and the remarks under the figures."""
     out = []
     for block in X.all_text(study):
         for para in re.split(r"\n\s*\n|\n(?=- |> \* )", block):
@@ -68,7 +69,9 @@ def _paragraphs(study) -> list[str]:
             if para and para != "**Key results**":
                 out.append(para)
     out += [t(study).caption for t in TABLES]
+    out += [note for t in TABLES for note in t(study).notes]
     out += [c.caption for c in all_figures(study)]
+    out += [c.remark for c in all_figures(study) if c.remark]
     return out
 
 
@@ -127,9 +130,14 @@ ASCII_NAMES = re.compile(
 )
 
 
-@pytest.mark.parametrize("where", ["sentences", "figure captions"])
+@pytest.mark.parametrize("where", ["sentences", "figure captions", "figure remarks"])
 def test_prose_uses_the_readers_notation(default, where):
-    texts = X.all_text(default) if where == "sentences" else [c.caption for c in all_figures(default)]
+    figs = all_figures(default)
+    texts = {
+        "sentences": X.all_text(default),
+        "figure captions": [c.caption for c in figs],
+        "figure remarks": [c.remark for c in figs],
+    }[where]
     for text in texts:
         prose = _prose(text)
         assert not CODE_NAMES.search(prose), CODE_NAMES.search(prose)
@@ -147,6 +155,7 @@ def test_tables_use_the_readers_notation_and_one_precision_per_column(default):
         # spelled-out code names; cells are not typeset, so they hold no "_" at all
         assert not ASCII_NAMES.search(t.caption + " ".join(c.header for c in t.columns)), t.name
         assert not any("_" in v for row in t.cells() for v in row), t.name
+        assert not any("_" in note or ASCII_NAMES.search(note) for note in t.notes), t.name  # notes: not typeset
         assert "nan" not in text and "inf" not in text.replace("infinite", "")
         for j, col in enumerate(t.columns):
             digits = set()
@@ -197,8 +206,27 @@ def test_coinciding_curves_are_said_to_coincide_exactly_when_they_do(default):
     ref = np.max(np.abs(a.x["PD"][tail] - a.x["LQR"][tail])) / max(np.max(np.abs(a.x["PD"][tail])),
                                                                   np.max(np.abs(a.x["LQR"][tail])))  # fmt: skip
     assert d == pytest.approx(ref, rel=1e-12)
-    assert ("PD and LQR curves nearly coincide" in zoom.caption) == (d < 0.05)
-    assert "PID and PD curves nearly coincide" not in zoom.caption  # 0.0366 m against 0.16 m at the defaults
+    said = zoom.caption + " " + zoom.remark  # what the figure shows is said under it
+    assert ("PD and LQR curves nearly coincide" in said) == (d < 0.05)
+    assert "PID and PD curves nearly coincide" not in said  # 0.0366 m against 0.16 m at the defaults
+    assert "coincide" not in zoom.caption
+
+
+#: A parameter set far from the defaults: heavier, stiffer, lighter damped, forced off resonance.
+FAR = {"m": 3.0, "k": 80.0, "F0": 12.0, "c_nominal": 1.2, "omega_res": 5.16}
+
+
+def test_every_caption_is_at_most_sixty_words(default):
+    """Every figure's and every table's caption says what is drawn or listed in at most 60 words, at the defaults
+    and far from them; the findings go to the remark under the figure or to the table's notes."""
+    for st in (default, control_study(**FAR, **CHEAP)):
+        for f in all_figures(st):
+            assert caption_words(f.caption) <= CAPTION_WORDS, (f.name, caption_words(f.caption), f.caption)
+        for make in TABLES:
+            t = make(st)
+            assert caption_words(t.caption) <= CAPTION_WORDS, (t.name, caption_words(t.caption), t.caption)
+    tradeoff = next(f for f in all_figures(default) if f.name == "fig-control-tradeoff")
+    assert "least-force curve" in tradeoff.remark and "least-force curve" not in tradeoff.caption
 
 
 def test_the_panel_is_shown_once_and_figures_are_single_calls():

@@ -175,14 +175,13 @@ def active_zoom_figure(study: ControlStudy) -> Captioned:
         f"The last {ZOOM_PERIODS} forcing periods of {{numref}}`fig-control-active`, steady state: PID "
         f"({look(lines['PID'])}), PD ({look(lines['PD'])}, drawn wider underneath) and LQR ({look(lines['LQR'])}). "
         + _panels(fig, ["displacement in millimetres.", "control force."])
-        + same
     )
     best = min(_ORDER, key=lambda n: a.metrics[n].peak_x_ss)
     alt = (
         f"Steady displacement and control force against time for the PD, LQR and PID loops over {ZOOM_PERIODS} "
         f"forcing periods; the {LABELS[best]} displacement is the smallest."
     )
-    return Captioned(fig, caption, "fig-control-active-zoom", alt)
+    return Captioned(fig, caption, "fig-control-active-zoom", alt, remark=same.strip())
 
 
 def tradeoff_figure(study: ControlStudy) -> Captioned:
@@ -222,18 +221,18 @@ def tradeoff_figure(study: ControlStudy) -> Captioned:
             "so that both show"
         )
     caption = (
-        "Steady amplitude against steady RMS control force on logarithmic axes as the LQR force weight r varies "
-        f"over {decades} decades ({look(lines['LQR, $r$ varied'])}), with the chapter's LQR design (cross) and the "
-        f"PD loop (diamond). The passive amplitude is the {look(lines[passive])} line; "
-        f"{look(lines['least force for $X$'])}: the least RMS force any controller needs to hold each amplitude; "
-        f"grey dotted vertical line: its limit $F_0/\\sqrt{{2}}$ = {num(F_inf)} N at zero amplitude." + _join(clauses)
+        "Steady amplitude against steady RMS control force, logarithmic axes: the LQR over "
+        f"{decades} decades of its force weight $r$ ({look(lines['LQR, $r$ varied'])}), its design (cross), the "
+        f"PD loop (diamond), the passive amplitude ({look(lines[passive])}), the least RMS force any controller "
+        f"needs for each amplitude ({look(lines['least force for $X$'])}) and its zero-amplitude limit "
+        f"$F_0/\\sqrt{{2}}$ = {num(F_inf)} N (grey dotted vertical)."
     )
     along = ", along the least force any controller needs" if tr.excess - 1.0 < COINCIDE else ""
     alt = (
         "Log-log plot of the LQR designs' steady amplitude against their RMS control force: the amplitude falls "
         f"as the force approaches {num(F_inf)} N{along}."
     )
-    return Captioned(fig, caption, "fig-control-tradeoff", alt)
+    return Captioned(fig, caption, "fig-control-tradeoff", alt, remark=_join(clauses).strip())
 
 
 def move_figure(study: ControlStudy) -> Captioned:
@@ -272,19 +271,18 @@ def move_figure(study: ControlStudy) -> Captioned:
     off = a.moves["unlimited"].peak_u
     off_scale = f" The force without a limit peaks at {num(off)} N, off the scale." if off > 2.2 * a.u_max else ""
     caption = (
-        f"PID move to $x_\\mathrm{{ref}}$ = {num(a.x_ref)} m under the disturbance, over the first {num(t_show)} s: "
-        f"without a force limit ({look(lines[LABELS['unlimited']])}) and limited to ±{num(a.u_max)} N without "
-        f"anti-windup ({look(lines[LABELS['none']])}), with clamping ({look(lines[LABELS['clamping']])}) and with "
+        f"PID move to $x_\\mathrm{{ref}}$ = {num(a.x_ref)} m under the disturbance, first {num(t_show)} s: no force "
+        f"limit ({look(lines[LABELS['unlimited']])}); limited to ±{num(a.u_max)} N without anti-windup "
+        f"({look(lines[LABELS['none']])}), with clamping ({look(lines[LABELS['clamping']])}) and with "
         f"back-calculation ({look(lines[LABELS['back-calculation']])}, drawn over clamping). "
         + _panels(fig, ["displacement, set point black dotted.", "force, limits black dotted."])
-        + off_scale
-        + same
     )
+    remark = (off_scale + same).strip()
     alt = (
         "Displacement and force against time for the PID set-point move with and without a force limit and "
         f"anti-windup: without anti-windup the mass overshoots by {num(a.moves['none'].overshoot)} m."
     )
-    return Captioned(fig, caption, "fig-control-windup", alt)
+    return Captioned(fig, caption, "fig-control-windup", alt, remark=remark)
 
 
 # ----------------------------------------------------------------------------- semi-active
@@ -327,14 +325,13 @@ def transmissibility_figure(study: ControlStudy) -> Captioned:
     lines = _lines(axes[0, 0])
     word = dict(zip(range(4), panel_words(fig), strict=True))
     caption = (
-        "Transmissibility of the suspension, steady max |x| over the base amplitude Y, against the frequency ratio "
-        "on logarithmic axes, one panel per device: "
-        f"{word[0]}, the passive damper at its soft ({look(lines[LABELS['soft']])}, $c + c_\\mathrm{{min}}$) and "
-        f"firm ({look(lines[LABELS['firm']])}, $c + c_\\mathrm{{max}}$) settings; {word[1]}, the clipped skyhook; "
-        f"{word[2]}, the on-off skyhook; {word[3]}, the MR damper switched on-off (each semi-active law "
-        f"{look(_lines(axes[0, 1])[LABELS['clipped']])}, sampled at {r.size} frequencies). Every panel "
-        f"repeats the best any passive damper can do ({look(lines['best passive (bound)'])}) and the ideal skyhook "
-        f"({look(lines[LABELS['skyhook']])}); the grey dotted vertical line marks $\\sqrt{{2}}$." + _join(clauses)
+        "Suspension transmissibility (steady max|x| over base amplitude) against frequency ratio, "
+        f"logarithmic axes. {word[0].capitalize()}: passive, soft ({look(lines[LABELS['soft']])}, "
+        f"$c + c_\\mathrm{{min}}$) and firm ({look(lines[LABELS['firm']])}, $c + c_\\mathrm{{max}}$); {word[1]}: "
+        f"clipped skyhook; {word[2]}: on-off skyhook; {word[3]}: MR damper, on-off (each "
+        f"{look(_lines(axes[0, 1])[LABELS['clipped']])}, {r.size} frequencies). All panels: best passive damper "
+        f"({look(lines['best passive (bound)'])}), ideal skyhook ({look(lines[LABELS['skyhook']])}), "
+        "$\\sqrt{2}$ (grey dotted)."
     )
     f = s.findings
     alt = (
@@ -342,7 +339,7 @@ def transmissibility_figure(study: ControlStudy) -> Captioned:
         f"dampers: at the natural frequency the clipped skyhook transmits {num(f.t_res['clipped'])} of the base "
         "motion, every passive damper more than 1."
     )
-    return Captioned(fig, caption, "fig-control-transmissibility", alt)
+    return Captioned(fig, caption, "fig-control-transmissibility", alt, remark=_join(clauses).strip())
 
 
 def _at_both_bounds(s) -> bool:
@@ -373,18 +370,22 @@ def mr_figure(study: ControlStudy) -> Captioned:
         + _panels(
             fig,
             [
-                "the MR damper switched on-off: a hysteresis loop, its force depends on the motion's history, not on "
-                "the velocity alone.",
-                f"the clipped skyhook, its damping coefficient held between {num(s.c_min)} and {num(s.c_max)} N s/m"
-                + (" (the straight segments through the origin have those slopes)." if _at_both_bounds(s) else "."),
+                "the MR damper switched on-off.",
+                f"the clipped skyhook, its damping coefficient held between {num(s.c_min)} and {num(s.c_max)} N s/m.",
             ],
         )
+    )
+    remark = "The MR damper traces a hysteresis loop: its force depends on the motion's history, not on the " + (
+        "velocity alone. The clipped skyhook's straight segments through the origin have the slopes of its two "
+        "damping bounds."
+        if _at_both_bounds(s)
+        else "velocity alone."
     )
     alt = (
         "Damper force against relative velocity for the MR damper and the clipped skyhook: the MR damper traces a "
         "hysteresis loop, the clipped skyhook a force that switches between its damping bounds."
     )
-    return Captioned(fig, caption, "fig-control-mr", alt)
+    return Captioned(fig, caption, "fig-control-mr", alt, remark=remark)
 
 
 # ----------------------------------------------------------------------------- input shaping
@@ -412,11 +413,11 @@ def shaping_figure(study: ControlStudy) -> Captioned:
     caption = _panels(
         fig,
         [
-            f"the move of {num(s.move * 1e3)} mm (black dotted) on the real oscillator, whose natural frequency is "
+            f"a {num(s.move * 1e3)} mm move (black dotted) on an oscillator whose natural frequency is "
             f"{signed_pct(s.freq_error)} off the model: unshaped ({look(l1['unshaped step'])}), ZV "
-            f"({look(l1['ZV'])}) and ZVD ({look(l1['ZVD'])}) designed on the model.",
-            "residual vibration as a percentage of the unshaped step's against the ratio of real to model natural "
-            "frequency; the dots mark this chapter's error, the grey dotted line 5 %.",
+            f"({look(l1['ZV'])}) and ZVD ({look(l1['ZVD'])}) shapers designed on the model.",
+            "residual vibration in % of the unshaped step's against real over model natural frequency; dots at "
+            "this error, 5 % grey dotted.",
         ],
     )
     width = {n: s.bands[n][1] - s.bands[n][0] for n in ("ZV", "ZVD")}

@@ -151,15 +151,19 @@ def costs_table(study: ControlStudy) -> Table:
             Column(key="bn", header="B_n (rad/s)"),
         ],
         caption=(
-            f"The active laws at {_at(study)} on equal footing: position and velocity gains K_x, K_v of the PD-type "
-            "laws, K_P, K_I, K_D of the PID. X_ss: steady amplitude of the unlimited loop; "
-            "u_rms: steady RMS force of the run; the least RMS force any controller needs to hold X_ss, "
-            "(F_0 − |k − mω² + icω| X_ss)/√2; |L(iω)|: loop gain at the forcing; ω_c: the gain crossover that sets "
-            "the delay margin (the loop's bandwidth); delay margin: the smallest time delay in the loop that "
-            "destabilises it; B_n = ∫|T(iω)|² dω over ω > 0: white position-sensor noise of two-sided density S_n "
-            "moves the mass with variance 2 S_n B_n."
+            f"The active laws at {_at(study)} on equal footing: gains (K_x, K_v of the PD-type laws; K_P, K_I, K_D of "
+            "the PID), the unlimited loop's steady amplitude X_ss, the run's steady RMS force u_rms against the "
+            "least any controller needs, loop gain |L(iω)| at the forcing, gain crossover ω_c, margins and noise "
+            "bandwidth B_n."
         ),
         name="tab-control-costs",
+        notes=(
+            "The least RMS force that holds the steady amplitude Xₛₛ is (F₀ − |k − mω² + icω| Xₛₛ)/√2.",
+            "The gain crossover sets the delay margin (it is the loop's bandwidth); the delay margin is the "
+            "smallest time delay in the loop that destabilises it.",
+            "Bₙ = ∫|T(iω)|² dω over ω > 0: white position-sensor noise of two-sided density Sₙ moves the mass with "
+            "variance 2 Sₙ Bₙ.",
+        ),
     )
 
 
@@ -171,9 +175,9 @@ def active_metrics_table(study: ControlStudy) -> Table:
         _METRIC_COLUMNS,
         caption=(
             f"Active control at {_at(study)} from rest over {num(a.t[-1])} s: displacement over the window and in "
-            f"steady state (the last {STEADY_PERIODS} forcing periods, from t = {num(a.t_steady, 4)} s), the steady "
-            "RMS reduction against the passive oscillator, control force and the energy ∫|u v| dt the actuator "
-            "exchanges with the mass. The PID is force-limited with clamping."
+            f"steady state (last {STEADY_PERIODS} forcing periods, from t = {num(a.t_steady, 4)} s), steady RMS "
+            "reduction against the passive oscillator, control force and the energy ∫|u v| dt the actuator "
+            "exchanges with the mass; the PID is force-limited with clamping."
         ),
         name="tab-control-active",
     )
@@ -281,13 +285,16 @@ def semi_active_metrics_table(study: ControlStudy) -> Table:
         caption=(
             f"Semi-active suspension at ω = {num(s.omega)} rad/s (ω/ω_n = {cell(s.omega / s.osc.natural_frequency)}), "
             f"base amplitude Y = F_0/k = {num(s.Y)} m, from rest over {num(s.runs['soft'].t[-1])} s: absolute "
-            "displacement of the mass, device force on the mass and the energy ∫|f v_rel| dt it exchanges with the "
-            "mass and the base, v_rel = v − v_b (all of it dissipated by the passive and semi-active dampers; for "
-            "the ideal skyhook's actuator the gross exchange, split in {numref}`tab-control-skyhook-energy`). "
-            f"Soft: damping c + c_min = {num(s.osc.c + s.c_min)} N s/m; firm: c + c_max = {num(s.osc.c + s.c_max)} "
-            f"N s/m. Steady state is the last {STEADY_PERIODS} periods; reduction against the soft passive damper."
+            "displacement of the mass, device force on it and the energy ∫|f v_rel| dt exchanged with mass and base, "
+            "v_rel = v − v_b (for the ideal skyhook the gross exchange, split in {numref}`tab-control-skyhook-energy`)."
         ),
         name="tab-control-semiactive",
+        notes=(
+            f"Soft: damping c + cₘᵢₙ = {num(s.osc.c + s.c_min)} N s/m; firm: c + cₘₐₓ = {num(s.osc.c + s.c_max)} "
+            "N s/m.",
+            f"Steady state is the last {STEADY_PERIODS} periods; the RMS reduction is against the soft passive "
+            "damper. The passive and semi-active dampers dissipate all the energy they exchange.",
+        ),
     )
 
 
@@ -309,14 +316,13 @@ def skyhook_energy_table(study: ControlStudy) -> Table:
             Column(key="run", header="run, steady tail (W)"),
         ],
         caption=(
-            f"The ideal skyhook (c_sky = {num(s.c_sky)} N s/m) at ω = {num(s.omega)} rad/s, base amplitude "
-            f"Y = {num(s.Y)} m, realised by an actuator between the mass and the base (v_rel = v − v_b): mean powers "
-            "in steady state, what the skyhook force removes from the mass, c_sky v², and the actuator's power "
-            "f v_rel, net, supplied (its positive part) and gross (|f v_rel|), in closed form and measured on the RK4 "
-            f"run over its last {STEADY_PERIODS} periods. "
-            "A negative net power means the actuator absorbs more than it supplies."
+            f"Mean steady powers of the ideal skyhook (c_sky = {num(s.c_sky)} N s/m) at ω = {num(s.omega)} rad/s, "
+            f"base amplitude Y = {num(s.Y)} m, realised by an actuator between mass and base: the power c_sky v² "
+            "removed from the mass and the actuator's power f v_rel (v_rel = v − v_b), in closed "
+            f"form and on the RK4 run's last {STEADY_PERIODS} periods."
         ),
         name="tab-control-skyhook-energy",
+        notes=("A negative net power means the actuator absorbs more than it supplies.",),
     )
 
 
@@ -408,10 +414,13 @@ def shaping_table(study: ControlStudy) -> Table:
         ],
         caption=(
             f"Move of {num(s.move)} m on an oscillator whose natural frequency is {signed_pct(s.freq_error)} off the "
-            "model the shapers were designed on: delay added to the move, residual vibration V as a percentage of "
-            "the unshaped step's (closed form and measured on the exact response), ringing amplitude just after the "
-            f"last impulse, and the frequency band where V stays below {num(100 * SHAPER_LEVEL)} % (edges are roots "
-            "of V(ω/ω_model) = 5 %, solved to 10⁻¹² in the ratio)."
+            "model the shapers were designed on: added delay, residual vibration V as a percentage of the unshaped "
+            "step's (closed form and simulated on the exact response), ringing just after the last impulse, and the "
+            f"frequency band where V stays below {num(100 * SHAPER_LEVEL)} %."
         ),
         name="tab-control-shaping",
+        notes=(
+            f"The band's edges are the ratios of real to model natural frequency where V = {num(100 * SHAPER_LEVEL)} "
+            "%, solved to 10⁻¹² in the ratio.",
+        ),
     )
