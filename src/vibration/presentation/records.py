@@ -7,12 +7,12 @@ the named ones read-only properties of the record class, so figures and sentence
 Examples
 --------
 >>> from dataclasses import dataclass
->>> @dataclass(frozen=True)
+>>> @dataclass(frozen=True, kw_only=True)
 ... class P:
 ...     m: float  # mass, kg
 ...     c_nominal: float  # damping, N s/m
 >>> @with_params("m", c="c_nominal")
-... @dataclass(frozen=True)
+... @dataclass(frozen=True, kw_only=True)
 ... class Study:
 ...     params: P
 >>> st = Study(params=P(m=1.0, c_nominal=0.5))
