@@ -114,9 +114,12 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
             continue
         if cell.cell_type == "code":
             _drop_widget_views(cell)
-            _caption_from_output(cell)
+            remarks = _caption_from_output(cell)
             if "show-input" not in tags and not {"hide-input", "remove-input", "remove-cell"} & set(tags):
                 cell.metadata.setdefault("tags", []).append("hide-input")
+            cells.append(cell)
+            cells.extend(remarks)  # a figure's remark: a paragraph under it, outside the figure
+            continue
         cells.append(cell)
     cells = fold_details(cells)
     banner = banner_html(page.parameters, changes)
@@ -203,14 +206,32 @@ def _level(cell) -> int:
     return len(head[1]) if head else 0
 
 
-def _caption_from_output(cell) -> None:
+def _caption_from_output(cell) -> list:
     """A figure's caption, label and alt text, carried by its output (a ``Captioned`` figure), become the
-    cell's myst-nb figure options; the output's text form (the caption again) is dropped."""
+    cell's myst-nb figure options; the output's text form (the caption again) is dropped. The Markdown
+    outputs after the figure (its remark) leave the cell as markdown cells, returned with the cell's tags:
+    myst-nb would frame every output of a figure cell as the figure, caption and all.
+
+    >>> cell = nbformat.v4.new_code_cell("fig", outputs=[
+    ...     nbformat.v4.new_output("display_data", {"image/png": "AA==", "text/plain": "Figure"},
+    ...                            metadata={"vibration/figure": {"caption": "C.", "name": "fig-x", "alt": "A."}}),
+    ...     nbformat.v4.new_output("display_data", {"text/markdown": "It rises.", "text/plain": "<Markdown>"})])
+    >>> [c.source for c in _caption_from_output(cell)], len(cell.outputs), cell.metadata["mystnb"]["figure"]["caption"]
+    (['It rises.'], 1, 'C.')
+    """
     from ..presentation.captions import METADATA_KEY
 
-    for out in cell.get("outputs", []):
+    remarks, moved, figure = [], [], False
+    for i, out in enumerate(cell.get("outputs", [])):
         facts = out.get("metadata", {}).get(METADATA_KEY)
+        if figure and "text/markdown" in out.get("data", {}):
+            remark = nbformat.v4.new_markdown_cell("".join(out["data"]["text/markdown"]))
+            if _tags(cell):
+                remark.metadata["tags"] = _tags(cell)
+            remarks.append(remark)
+            moved.append(i)
         if facts:
+            figure = True
             mystnb = cell.metadata.setdefault("mystnb", {})
             mystnb["figure"] = {"caption": facts["caption"], "name": facts["name"]}
             image = {"alt": facts["alt"]}
@@ -219,6 +240,9 @@ def _caption_from_output(cell) -> None:
                 image["width"] = f"{width}px"
             mystnb["image"] = image
             out.get("data", {}).pop("text/plain", None)
+    if moved:
+        cell.outputs = [o for i, o in enumerate(cell.outputs) if i not in moved]
+    return remarks
 
 
 def _drop_widget_views(cell) -> None:
