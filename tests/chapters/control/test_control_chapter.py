@@ -59,6 +59,12 @@ def other(request):
     return request.param, control_study(**OTHER[request.param], **CHEAP)
 
 
+@pytest.fixture(scope="module")
+def paragraphs(default) -> list[str]:
+    """The default run's paragraphs (its figures drawn once for the tests that read them)."""
+    return _paragraphs(default)
+
+
 def _paragraphs(study) -> list[str]:
     """Every paragraph the chapter's code writes: sentence blocks split at bullets, table captions and notes,
     figure captions and the remarks under the figures."""
@@ -92,8 +98,8 @@ def _notebook_markdown() -> list[str]:
 # ----------------------------------------------------------------------------- the default run
 
 
-def test_no_paragraph_appears_twice(default):
-    paras = _paragraphs(default) + [p for md in _notebook_markdown() for p in md.split("\n\n") if len(p) > 40]
+def test_no_paragraph_appears_twice(paragraphs):
+    paras = paragraphs + [p for md in _notebook_markdown() for p in md.split("\n\n") if len(p) > 40]
     seen: dict[str, str] = {}
     for p in paras:
         key = _normal(p)
@@ -101,10 +107,10 @@ def test_no_paragraph_appears_twice(default):
         seen[key] = p
 
 
-def test_no_sentence_appears_twice(default):
+def test_no_sentence_appears_twice(paragraphs):
     """Stricter: no sentence of 40 characters or more is said twice, numbers aside (the summary says new things)."""
     seen: dict[str, str] = {}
-    for p in _paragraphs(default):
+    for p in paragraphs:
         for s in re.split(r"(?<=[.!?])\s+(?=[A-Z*])", p):
             if len(s) >= 40:
                 key = _normal(s)

@@ -45,7 +45,7 @@ SCHEMA = Schema(
             0.1,
             low=0.02,
             high=0.5,
-            meaning="smallest |ω/ω_n − 1| of the runs that calibrate the drive gain (off resonance)",
+            meaning="smallest |ω/ωₙ − 1| of the runs that calibrate the drive gain (off resonance)",
         ),
     ),
 )
