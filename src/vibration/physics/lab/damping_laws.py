@@ -149,8 +149,8 @@ def equivalent_zeta(amplitude, omega_n, *, zeta=0.0, quadratic=0.0, power=0.0, p
 def _half_cycles(theta0, offset, omega_n, zeta, friction, quad, power, p, t_span):
     """Half cycles of the energy-balance model: start times, extrema, centres, ratios and the stop index.
 
-    Computed by the compiled :func:`_half_cycles_kernel` (a decay fit calls this some 10^5 times); the same
-    recurrence in Python is :func:`_half_cycles_reference`.
+    Computed by the compiled :func:`_half_cycles_kernel` (a decay fit calls this some 10^5 times); the tests
+    hold it to the same recurrence written in Python.
     """
     kp = _sine_power_integral(p + 1.0) * omega_n ** (p - 2.0) / math.pi if power else 0.0
     T, e, centre, zk, n, stop = _half_cycles_kernel()(
@@ -222,47 +222,6 @@ def _half_cycles_kernel():
         return T, e, centre, zk, n, stop
 
     return kernel
-
-
-def _half_cycles_reference(theta0, offset, omega_n, zeta, friction, quad, power, p, t_span):
-    """:func:`_half_cycles` in Python, the recurrence as written (the compiled kernel's reference in tests)."""
-    cap = 0.9
-    n_max = MAX_HALF_CYCLES
-    T = [0.0]
-    e = [theta0]
-    centre: list[float] = []
-    zk: list[float] = []
-    stop = None
-    kp = _sine_power_integral(p + 1.0) * omega_n ** (p - 2.0) / math.pi if power else 0.0
-
-    def z_of(a):
-        z = zeta + 4.0 * quad * a / (3.0 * math.pi)
-        if power:
-            z += power * kp * a ** (p - 1.0)
-        return min(z, cap)
-
-    while T[-1] <= t_span:
-        if len(centre) >= n_max:
-            raise ParameterError(
-                f"t spans more than {n_max} half periods which is out of range: allowed at most {n_max} (omega_n * "
-                "duration too large)"
-            )
-        d = e[-1] - offset
-        if abs(d) <= friction:
-            stop = len(centre)
-            break
-        c = offset + math.copysign(friction, d)
-        a = abs(e[-1] - c)
-        z = z_of(a)
-        q = math.exp(-math.pi * z / math.sqrt(1.0 - z * z))
-        z = z_of(0.5 * (a + q * a))  # corrector: the ratio at the half period's mean amplitude
-        q = math.exp(-math.pi * z / math.sqrt(1.0 - z * z))
-        centre.append(c)
-        zk.append(z)
-        e.append(c - q * (e[-1] - c))
-        T.append(T[-1] + math.pi / (omega_n * math.sqrt(1.0 - z * z)))
-    n = len(centre)
-    return np.asarray(T), np.asarray(e), np.asarray(centre), np.asarray(zk), (n if stop is None else stop)
 
 
 #: The arguments of :func:`_response_general` after the times, in order.
