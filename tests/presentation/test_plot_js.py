@@ -201,7 +201,8 @@ def test_helper_loads_twice_and_redraws_at_the_new_width(browser, tmp_path):
 # ----------------------------------------------------------------------------- the panels
 
 
-def _fragments(real_oscillator) -> dict:
+def _fragment(name: str, request) -> tuple[str, str]:
+    """The panel ``name``'s CSS selector and HTML fragment, built only for the panels a run tests."""
     from vibration.chapters.control.panel import control_panel_html
     from vibration.chapters.digital_twin.panel import twin_panel_html
     from vibration.chapters.duffing.panel import hb_panel_html
@@ -211,21 +212,24 @@ def _fragments(real_oscillator) -> dict:
     from vibration.chapters.tmd.panel import tmd_panel_html
     from vibration.physics import twin
 
-    grid = twin.estimate_grid(Oscillator(m=1.0, c=0.5, k=20.0), noises=(0.005, 0.1, 0.4), durations=(10.0, 40.0))
-    return {
-        "control": ("div.vc-panel", control_panel_html()),
-        "stability": ("div.vst-panel", stability_panel_html()),
-        "tmd": ("div.vtm-panel", tmd_panel_html(0.05)),
-        "digital_twin": ("div.twin-panel", twin_panel_html(grid)),
-        "real_oscillator": ("div.vro-panel", decay_panel_html(real_oscillator)),
-        "duffing": ("div.vib-duffing", hb_panel_html()),
-        "explore": ("div.vib-panel", slider_panel_html()),
+    def twin_html():
+        osc = Oscillator(m=1.0, c=0.5, k=20.0)
+        return twin_panel_html(twin.estimate_grid(osc, noises=(0.005, 0.1, 0.4), durations=(10.0, 40.0)))
+
+    build = {
+        "control": ("div.vc-panel", control_panel_html),
+        "stability": ("div.vst-panel", stability_panel_html),
+        "tmd": ("div.vtm-panel", lambda: tmd_panel_html(0.05)),
+        "digital_twin": ("div.twin-panel", twin_html),
+        "real_oscillator": (
+            "div.vro-panel",
+            lambda: decay_panel_html(request.getfixturevalue("real_oscillator_default")),
+        ),
+        "duffing": ("div.vib-duffing", hb_panel_html),
+        "explore": ("div.vib-panel", slider_panel_html),
     }
-
-
-@pytest.fixture(scope="module")
-def fragments(real_oscillator_default):
-    return _fragments(real_oscillator_default)
+    sel, make = build[name]
+    return sel, make()
 
 
 #: Every element of a panel inside the panel (left and right), every SVG element inside its SVG (lines clipped
@@ -265,8 +269,8 @@ LAYOUT = """([sel, s]) => {
 
 @pytest.mark.browser
 @pytest.mark.parametrize("name", [n if n in SAMPLE else pytest.param(n, marks=pytest.mark.slow) for n in PANELS])
-def test_panel_fits_a_phone_and_a_desktop(browser, tmp_path, fragments, name):
-    sel, frag = fragments[name]
+def test_panel_fits_a_phone_and_a_desktop(browser, tmp_path, request, name):
+    sel, frag = _fragment(name, request)
     path = _blank(tmp_path, frag, f"{name}.html")
     for width in WIDTHS:
         page, outside, errors = open_offline(browser, path, viewport=(width, 900))
