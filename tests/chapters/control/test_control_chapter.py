@@ -222,15 +222,24 @@ def test_coinciding_curves_are_said_to_coincide_exactly_when_they_do(default):
 FAR = {"m": 3.0, "k": 80.0, "F0": 12.0, "c_nominal": 1.2, "omega_res": 5.16}
 
 
+def _assert_captions_short(st) -> None:
+    for f in all_figures(st):
+        assert caption_words(f.caption) <= CAPTION_WORDS, (f.name, caption_words(f.caption), f.caption)
+    for make in TABLES:
+        t = make(st)
+        assert caption_words(t.caption) <= CAPTION_WORDS, (t.name, caption_words(t.caption), t.caption)
+
+
+@pytest.mark.slow
+def test_every_caption_is_at_most_sixty_words_far_from_the_defaults():
+    """The caption limit below holds for a run far from the defaults too (a whole study: with the slow tests)."""
+    _assert_captions_short(control_study(**FAR, **CHEAP))
+
+
 def test_every_caption_is_at_most_sixty_words(default):
-    """Every figure's and every table's caption says what is drawn or listed in at most 60 words, at the defaults
-    and far from them; the findings go to the remark under the figure or to the table's notes."""
-    for st in (default, control_study(**FAR, **CHEAP)):
-        for f in all_figures(st):
-            assert caption_words(f.caption) <= CAPTION_WORDS, (f.name, caption_words(f.caption), f.caption)
-        for make in TABLES:
-            t = make(st)
-            assert caption_words(t.caption) <= CAPTION_WORDS, (t.name, caption_words(t.caption), t.caption)
+    """Every figure's and every table's caption says what is drawn or listed in at most 60 words; the findings go
+    to the remark under the figure or to the table's notes."""
+    _assert_captions_short(default)
     tradeoff = next(f for f in all_figures(default) if f.name == "fig-control-tradeoff")
     assert "least-force curve" in tradeoff.remark and "least-force curve" not in tradeoff.caption
 

@@ -7,6 +7,7 @@ import re
 
 import numpy as np
 import pohl_generator as gen
+import pytest
 from scipy import signal
 
 from vibration.chapters.real_oscillator import exercises as ex
@@ -49,6 +50,7 @@ def test_answers_follow_todays_data():
     assert items["12.4"].correct == "a"
 
 
+@pytest.mark.slow  # a whole study of a generated lab's files
 def test_exercises_on_another_lab(tmp_path):
     gen.write_lab(tmp_path)
     items = {e.id: e for e in ex.exercises(Params(lab_data=str(tmp_path)))}
