@@ -11,6 +11,13 @@ Each chapter package may hold a module ``exercises`` with
   every numerical answer computed by the package from those parameters, each built by the sheet
   (:meth:`Sheet.numerical`, :meth:`Sheet.conceptual`, :meth:`Sheet.explore`), which fills in the chapter.
 
+The words of a sheet are content a lecturer edits, so a chapter keeps them in a data file next to its
+module, ``exercises.toml``, read by :meth:`SheetTemplate.read`: the sheet's question, level, objectives and
+prerequisites, and for each exercise its id, kind, question and worked answer as templates with named
+placeholders (``{mu}``, ``{x0:.5}`` for five significant digits), its answers (quantity, symbol, the name
+of the value, unit, tolerances), the options of a conceptual one and the phrases a branch chooses. The
+chapter's Python computes only the named values, and :meth:`SheetTemplate.fill` builds the exercises.
+
 Answers are numbers with a unit and a tolerance (checked by :meth:`Answer.accepts`), or the key of
 the correct option of a multiple-choice question. ``worked`` holds the steps with the run's own
 numbers, not only the result.
@@ -38,8 +45,12 @@ vibration.physics.model.ParameterError: rtol = -1.0 must be >= 0 (the relative t
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+import numbers
+import string
+import tomllib
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from importlib import resources
 from typing import Literal
 
 from ..physics.model import ParameterError
@@ -52,6 +63,8 @@ __all__ = [
     "Choice",
     "Exercise",
     "Sheet",
+    "SheetTemplate",
+    "TemplateError",
     "answer_markdown",
     "check_answer",
     "exercise_markdown",
@@ -405,3 +418,166 @@ def fmt(x: float, digits: int = 4) -> str:
         text = power if mant in ("1", "-1") else f"{mant}×{power}"
         text = ("-" + text) if mant == "-1" else text
     return text.replace("-", "−", 1) if text.startswith("-") else text
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Sheets read from a data file
+
+
+class TemplateError(ValueError):
+    """A sheet's data file does not fit its chapter: a placeholder, a phrase or a field it names is missing."""
+
+
+#: The fields an exercise of a data file may set, by kind.
+_FIELDS = {
+    "numerical": {"id", "kind", "text", "worked", "answers", "when", "phrases"},
+    "explore": {"id", "kind", "text", "worked", "answers", "when", "phrases"},
+    "conceptual": {"id", "kind", "text", "worked", "options", "correct", "when", "phrases"},
+}
+_ANSWER_FIELDS = {"quantity", "symbol", "value", "unit", "rtol", "atol"}
+
+
+class _Filler(string.Formatter):
+    """``str.format`` for one exercise: reals through the sheet's number format, phrases chosen by a value."""
+
+    def __init__(self, where: str, values: Mapping[str, object], phrases: Mapping[str, Mapping[str, str]], number):
+        super().__init__()
+        self.where, self.values, self.phrases, self.number = where, values, phrases, number
+
+    def fill(self, template: str) -> str:
+        return self.vformat(template, (), {})
+
+    def get_value(self, key, args, kwargs):
+        if key not in self.values:
+            raise TemplateError(f"{self.where}: the placeholder {{{key}}} names no value the chapter computes")
+        value = self.values[key]
+        if key not in self.phrases:
+            return value
+        if value not in self.phrases[key]:
+            raise TemplateError(
+                f"{self.where}: phrase {key} = {value!r} is not one of {', '.join(map(repr, self.phrases[key]))}"
+            )
+        return self.fill(self.phrases[key][value])
+
+    def format_field(self, value, format_spec: str) -> str:
+        if isinstance(value, numbers.Real) and not isinstance(value, numbers.Integral):
+            if not format_spec:
+                return self.number(value)
+            if format_spec.startswith(".") and format_spec[1:].isdigit():
+                return self.number(value, int(format_spec[1:]))
+        return format(value, format_spec)
+
+
+@dataclass(frozen=True, kw_only=True)
+class SheetTemplate:
+    """A chapter's sheet and its exercises as its data file words them; :meth:`fill` builds the exercises.
+
+    Examples
+    --------
+    >>> source = '''
+    ... question = "How fast?"
+    ... level = "core"
+    ... objectives = ["Compute ω_d.", "Compute ζ.", "Explain the decay."]
+    ... prerequisites = ["algebra"]
+    ... [[exercise]]
+    ... id = "01.1"
+    ... kind = "numerical"
+    ... text = "With ζ = {zeta}, compute ω<sub>d</sub> (rad/s)."
+    ... worked = "ω<sub>d</sub> = {wd:.5} rad/s: the motion {moves}."
+    ... phrases.moves = { yes = "oscillates", no = "creeps back" }
+    ... answers = [{ quantity = "omega_d", value = "wd", unit = "rad/s", rtol = 1e-3 }]
+    ... '''
+    >>> book = SheetTemplate.parse(source, chapter="01_x")
+    >>> (ex,) = book.fill({"zeta": 0.1, "wd": 4.465145, "moves": "yes"})
+    >>> ex.text, ex.worked, ex.answers[0].value
+    ('With ζ = 0.1, compute ω<sub>d</sub> (rad/s).', 'ω<sub>d</sub> = 4.4651 rad/s: the motion oscillates.', 4.465145)
+    >>> book.fill({"zeta": 0.1, "moves": "yes"})  # doctest: +NORMALIZE_WHITESPACE
+    Traceback (most recent call last):
+    ...
+    vibration.presentation.exercises.TemplateError: chapter 01_x, exercise 01.1, worked:
+    the placeholder {wd} names no value the chapter computes
+    """
+
+    sheet: Sheet  # the chapter's sheet: its question, level, objectives and prerequisites
+    exercises: tuple[Mapping[str, object], ...]  # each exercise's fields as the data file gives them
+    number: Callable[..., str] = fmt  # how a real number is written: number(x) or number(x, digits)
+
+    @classmethod
+    def parse(cls, source: str, *, chapter: str, number: Callable[..., str] = fmt) -> SheetTemplate:
+        """The sheet of ``chapter`` from the TOML text ``source``."""
+        data = tomllib.loads(source)
+        sheet = Sheet(
+            chapter=chapter,
+            question=data["question"],
+            level=data["level"],
+            objectives=tuple(data["objectives"]),
+            prerequisites=tuple(data["prerequisites"]),
+        )
+        items = tuple(data.get("exercise", ()))
+        for item in items:
+            where = f"chapter {chapter}, exercise {item.get('id', '?')}"
+            kind = item.get("kind")
+            if kind not in _FIELDS:
+                raise TemplateError(f"{where}: kind = {kind!r} is not allowed: allowed one of {', '.join(_FIELDS)}")
+            unknown = sorted(set(item) - _FIELDS[kind])
+            if unknown:
+                raise TemplateError(f"{where}: field {unknown[0]} is not allowed in a {kind} exercise")
+            for answer in item.get("answers", ()):
+                unknown = sorted(set(answer) - _ANSWER_FIELDS)
+                if unknown:
+                    raise TemplateError(f"{where}: answer field {unknown[0]} is not allowed")
+        return cls(sheet=sheet, exercises=items, number=number)
+
+    @classmethod
+    def read(
+        cls, package: str, *, chapter: str, number: Callable[..., str] = fmt, name: str = "exercises.toml"
+    ) -> SheetTemplate:
+        """The sheet of ``chapter`` from the data file ``name`` of the package ``package``."""
+        return cls.parse(
+            resources.files(package).joinpath(name).read_text(encoding="utf-8"), chapter=chapter, number=number
+        )
+
+    def fill(self, values: Mapping[str, object]) -> tuple[Exercise, ...]:
+        """The exercises for the chapter's computed ``values``: each placeholder filled, each answer looked up.
+
+        An exercise with ``when = "name"`` is set only when the value ``name`` is true.
+        """
+        out = []
+        for item in self.exercises:
+            where = f"chapter {self.sheet.chapter}, exercise {item['id']}"
+            if "when" in item:
+                if item["when"] not in values:
+                    raise TemplateError(f"{where}: when = {item['when']!r} names no value the chapter computes")
+                if not values[item["when"]]:
+                    continue
+            out.append(self._exercise(where, item, values))
+        return tuple(out)
+
+    def _exercise(self, where: str, item: Mapping, values: Mapping[str, object]) -> Exercise:
+        phrases = item.get("phrases", {})
+
+        def fill(field: str, template: str) -> str:
+            return _Filler(f"{where}, {field}", values, phrases, self.number).fill(template)
+
+        text, worked = fill("text", item["text"]), fill("worked", item["worked"])
+        if item["kind"] == "conceptual":
+            options = {key: fill(f"option {key}", option) for key, option in item["options"].items()}
+            correct = fill("correct", item["correct"])
+            return self.sheet.conceptual(item["id"], text=text, worked=worked, options=options, correct=correct)
+        answers = tuple(self._answer(where, answer, values) for answer in item["answers"])
+        build = self.sheet.numerical if item["kind"] == "numerical" else self.sheet.explore
+        return build(item["id"], text=text, worked=worked, answers=answers)
+
+    @staticmethod
+    def _answer(where: str, answer: Mapping[str, object], values: Mapping[str, object]) -> Answer:
+        fields = dict(answer)
+        for name in ("value", "rtol", "atol"):
+            ref = fields.get(name)
+            if isinstance(ref, str):
+                if ref not in values:
+                    quantity = fields.get("quantity")
+                    raise TemplateError(
+                        f"{where}, answer {quantity}: {name} = {ref!r} names no value the chapter computes"
+                    )
+                fields[name] = values[ref]
+        return Answer(**fields)
