@@ -42,7 +42,11 @@ def violations(browser, path: Path, mode: str) -> list[str]:
 
 
 @pytest.mark.browser
-@pytest.mark.parametrize("mode", ["light", "dark"], ids=["lightmode", "darkmode"])  # "light" alone marks slow
+@pytest.mark.parametrize(
+    "mode",
+    ["light", pytest.param("dark", marks=pytest.mark.slow)],  # dark mode: every page, with the slow tests
+    ids=["lightmode", "darkmode"],
+)
 def test_sample_pages_have_no_axe_violations(browser, site, mode):
     found = [v for name in SAMPLE for v in violations(browser, site / name, mode)]
     assert not found, "\n".join(found)

@@ -180,7 +180,8 @@ WIDE_JS = """() => {
 
 @pytest.fixture(scope="module")
 def visited(browser, site) -> dict:
-    """Every page opened once at 1280 px: what it loaded from outside, its errors, its sidebar, what is too wide."""
+    """Every page opened once at 1280 px: what it loaded from outside, its errors, its sidebar, what is too wide
+    (about 30 s: the tests that read it run with the slow tests)."""
     out = {}
     for path in _pages(site):
         page, outside, errors = open_offline(browser, path, viewport=(1280, 900))
@@ -196,6 +197,7 @@ def visited(browser, site) -> dict:
     return out
 
 
+@pytest.mark.slow
 @pytest.mark.browser
 def test_every_page_loads_offline_without_errors(visited):
     for path, facts in visited.items():
@@ -203,6 +205,7 @@ def test_every_page_loads_offline_without_errors(visited):
         assert facts["errors"] == [], (path.name, facts["errors"])
 
 
+@pytest.mark.slow
 @pytest.mark.browser
 def test_every_chapter_is_reachable_from_the_sidebar_of_every_page(visited):
     for path, facts in visited.items():
@@ -215,6 +218,7 @@ def test_every_chapter_is_reachable_from_the_sidebar_of_every_page(visited):
             assert part.title in facts["sidebar"], (path.name, part.title)
 
 
+@pytest.mark.slow
 @pytest.mark.browser
 def test_nothing_is_wider_than_the_text_column_at_1280_px(visited):
     wide = {path.name: facts["wide"] for path, facts in visited.items() if facts.get("wide")}

@@ -60,12 +60,18 @@ def other(request):
 
 
 @pytest.fixture(scope="module")
-def paragraphs(default) -> list[str]:
-    """The default run's paragraphs (its figures drawn once for the tests that read them)."""
-    return _paragraphs(default)
+def figs(default):
+    """The default run's figures, drawn once for every test that reads them."""
+    return all_figures(default)
 
 
-def _paragraphs(study) -> list[str]:
+@pytest.fixture(scope="module")
+def paragraphs(default, figs) -> list[str]:
+    """The default run's paragraphs."""
+    return _paragraphs(default, figs)
+
+
+def _paragraphs(study, figs) -> list[str]:
     """Every paragraph the chapter's code writes: sentence blocks split at bullets, table captions and notes,
     figure captions and the remarks under the figures."""
     out = []
@@ -76,8 +82,8 @@ def _paragraphs(study) -> list[str]:
                 out.append(para)
     out += [t(study).caption for t in TABLES]
     out += [note for t in TABLES for note in t(study).notes]
-    out += [c.caption for c in all_figures(study)]
-    out += [c.remark for c in all_figures(study) if c.remark]
+    out += [c.caption for c in figs]
+    out += [c.remark for c in figs if c.remark]
     return out
 
 
@@ -137,8 +143,7 @@ ASCII_NAMES = re.compile(
 
 
 @pytest.mark.parametrize("where", ["sentences", "figure captions", "figure remarks"])
-def test_prose_uses_the_readers_notation(default, where):
-    figs = all_figures(default)
+def test_prose_uses_the_readers_notation(default, figs, where):
     texts = {
         "sentences": X.all_text(default),
         "figure captions": [c.caption for c in figs],
@@ -186,8 +191,7 @@ def test_cell_keeps_its_significant_figures():
     assert num(3e-15) == "3×10⁻¹⁵" and num(1e-5) == "10⁻⁵" and num(1e-4) == "0.0001"
 
 
-def test_every_figure_is_captioned_truthfully(default):
-    figs = all_figures(default)
+def test_every_figure_is_captioned_truthfully(figs):
     assert [f.name for f in figs] == [
         "fig-control-active",
         "fig-control-active-zoom",
@@ -203,9 +207,9 @@ def test_every_figure_is_captioned_truthfully(default):
         assert "/" not in f.alt and f.alt.endswith(".")
 
 
-def test_coinciding_curves_are_said_to_coincide_exactly_when_they_do(default):
+def test_coinciding_curves_are_said_to_coincide_exactly_when_they_do(default, figs):
     a = default.active
-    zoom = next(f for f in all_figures(default) if f.name == "fig-control-active-zoom")
+    zoom = next(f for f in figs if f.name == "fig-control-active-zoom")
     tail = a.t >= a.t[-1] - 3 * 2 * math.pi / a.force.omega
     d = closeness(a.x["PD"][tail], a.x["LQR"][tail])
     # independent of the helper: the largest difference over the largest value, computed here
@@ -222,8 +226,8 @@ def test_coinciding_curves_are_said_to_coincide_exactly_when_they_do(default):
 FAR = {"m": 3.0, "k": 80.0, "F0": 12.0, "c_nominal": 1.2, "omega_res": 5.16}
 
 
-def _assert_captions_short(st) -> None:
-    for f in all_figures(st):
+def _assert_captions_short(st, figs) -> None:
+    for f in figs:
         assert caption_words(f.caption) <= CAPTION_WORDS, (f.name, caption_words(f.caption), f.caption)
     for make in TABLES:
         t = make(st)
@@ -233,14 +237,15 @@ def _assert_captions_short(st) -> None:
 @pytest.mark.slow
 def test_every_caption_is_at_most_sixty_words_far_from_the_defaults():
     """The caption limit below holds for a run far from the defaults too (a whole study: with the slow tests)."""
-    _assert_captions_short(control_study(**FAR, **CHEAP))
+    far = control_study(**FAR, **CHEAP)
+    _assert_captions_short(far, all_figures(far))
 
 
-def test_every_caption_is_at_most_sixty_words(default):
+def test_every_caption_is_at_most_sixty_words(default, figs):
     """Every figure's and every table's caption says what is drawn or listed in at most 60 words; the findings go
     to the remark under the figure or to the table's notes."""
-    _assert_captions_short(default)
-    tradeoff = next(f for f in all_figures(default) if f.name == "fig-control-tradeoff")
+    _assert_captions_short(default, figs)
+    tradeoff = next(f for f in figs if f.name == "fig-control-tradeoff")
     assert "least-force curve" in tradeoff.remark and "least-force curve" not in tradeoff.caption
 
 

@@ -11,6 +11,7 @@ import re
 import matplotlib
 import numpy as np
 import pytest
+from drawn import drawn_once
 
 from vibration.chapters.digital_twin import figures, tables, text
 from vibration.chapters.digital_twin.study import digital_twin_study
@@ -34,7 +35,12 @@ TABLES = (
     tables.detection_table,
     tables.run_length_table,
 )
-FIGURES = (figures.identification_figure, figures.scaling_figure, figures.tracking_figure, figures.tradeoff_figure)
+FIGURES = tuple(
+    map(
+        drawn_once,
+        (figures.identification_figure, figures.scaling_figure, figures.tracking_figure, figures.tradeoff_figure),
+    )
+)
 CODE_NAMES = re.compile(r"\b(omega_\w+|x_ss|c_sky|zeta_p|K_v\*|F_rms|f_max|t_record|k_std)\b")
 
 

@@ -78,7 +78,11 @@ def _other(name: str):
     return duffing_study(Params(**OTHER[name]))
 
 
-@pytest.fixture(scope="module", params=sorted(OTHER))
+@pytest.fixture(
+    scope="module",
+    # the heavy set is a whole second study: it runs with the slow tests (the soft set stays)
+    params=[pytest.param(name, marks=pytest.mark.slow) if name == "heavy" else name for name in sorted(OTHER)],
+)
 def other(request):
     return _other(request.param)
 

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from drawn import drawn_once
 from prose import header_problems, prose_problems, repeated, table_texts
 
 from vibration import Oscillator, SineForce, exact_response
@@ -82,7 +83,12 @@ TABLES = (
     tables.checks_table,
     tables.design_table,
 )
-FIGURES = (figures.response_figure, figures.decomposition_figure, figures.energy_figure, figures.design_figure)
+FIGURES = tuple(
+    map(
+        drawn_once,
+        (figures.response_figure, figures.decomposition_figure, figures.energy_figure, figures.design_figure),
+    )
+)
 
 
 @pytest.fixture(scope="module", params=list(PARAMETER_SETS))

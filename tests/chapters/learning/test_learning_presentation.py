@@ -15,6 +15,7 @@ matplotlib.use("Agg")
 
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
+from drawn import drawn_once
 
 from vibration.chapters.learning import figures, summary, tables, text  # noqa: E402
 from vibration.chapters.learning.study import ACTIVE, SEMI, learning_study  # noqa: E402
@@ -48,7 +49,7 @@ SENTENCES = (
     summary.key_results,
     summary.summary_text,
 )
-FIGURES = (figures.learning_figure, figures.surface_figure, figures.episode_figure)
+FIGURES = tuple(map(drawn_once, (figures.learning_figure, figures.surface_figure, figures.episode_figure)))
 
 #: A number as the chapter prints it (minus signs, decimals, ×10ⁿ, superscript powers).
 NUMBER = re.compile(r"[−-]?\d+(?:[.,]\d+)*(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?|10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+")
@@ -275,8 +276,14 @@ def check_caption_words(st) -> None:
 
 
 def test_every_caption_is_at_most_sixty_words(study):
-    """At the default parameters and at a far set: heavier, stiffer, more damped, forced harder at its resonance."""
+    """At the default parameters."""
     check_caption_words(study)
+
+
+@pytest.mark.slow
+def test_every_caption_is_at_most_sixty_words_far_from_the_defaults():
+    """At a far set: heavier, stiffer, more damped, forced harder at its resonance (a whole study: with the slow
+    tests)."""
     check_caption_words(learning_study(m=3.0, k=80.0, F0=12.0, c_nominal=1.2, omega_res=5.16, n_eval=200))
 
 

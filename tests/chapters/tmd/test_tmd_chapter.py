@@ -65,7 +65,11 @@ CODE_NAMES = re.compile(r"\b(?:zeta_[a-z]|omega_[a-z]+|x_ss|c_sky|K_v|mu_buildin
 E_NOTATION = re.compile(r"\d(?:\.\d+)?e[+-]?\d")
 
 
-@pytest.fixture(scope="module", params=list(PARAMETER_SETS), ids=list(PARAMETER_SETS))
+#: The heavy set builds a third whole chapter: it runs with the slow tests (the defaults and the soft set stay).
+_SETS = [pytest.param(name, marks=pytest.mark.slow) if name == "heavy" else name for name in PARAMETER_SETS]
+
+
+@pytest.fixture(scope="module", params=_SETS, ids=list(PARAMETER_SETS))
 def chapter(request):
     """The study at one parameter set, every sentence, table and captioned figure of the chapter built from it."""
     st = tmd_study(n_points=501, **PARAMETER_SETS[request.param])
