@@ -58,10 +58,11 @@ test-fast: $(STAMP) ## unit, property and doctests only (no kernels, no browser)
 bench: $(STAMP) ## print speed ratios measured side by side in one run
 	$(PY) -m vibration.bench
 
-lint: $(STAMP) ## ruff check and format check (notebooks included), import-linter layers
+lint: $(STAMP) ## ruff check and format check (notebooks included), import-linter layers, no repeated code in src
 	$(PY) -m ruff check src tests notebooks
 	$(PY) -m ruff format --check src tests notebooks
 	$(VENV)/bin/lint-imports
+	$(PY) -m pylint --rcfile pyproject.toml --score n src/vibration
 
 format: $(STAMP) ## apply ruff formatting and safe fixes
 	$(PY) -m ruff check --fix src tests notebooks
