@@ -163,19 +163,19 @@ def test_every_drawn_symbol_is_explained_in_the_caption_or_its_remark(figures, n
     assert not missing, f"drawn but not in the caption or its remark: {missing}"
 
 
-def _far_schematics():
+def _far_schematics(figures):
     """Every schematic under its defaults and under far arguments: the fewest and the most storeys, and a rig
     whose data document everything the torsional caption can quote."""
-    yield from (getattr(schematics, name)() for name in EXPECTED)
+    yield from figures.values()
     yield from (schematics.shear_building(n) for n in (2, 3, 8))
     long = "a brass wheel of 0.2 m diameter on a spiral spring, rocked by a 24 V motor through an eccentric and a rod"
     yield schematics.torsional_oscillator(description=long, max_angle_rad=3.14159, encoder_step_rad=0.00153398)
 
 
-def test_every_caption_is_at_most_60_words_under_defaults_and_far_arguments():
+def test_every_caption_is_at_most_60_words_under_defaults_and_far_arguments(figures):
     """What is drawn fits the book's caption limit; the free-body detail lives in the remark."""
     long = {}
-    for cap in _far_schematics():
+    for cap in _far_schematics(figures):
         plt.close(cap.fig)
         assert cap.remark.strip(), f"{cap.name}: the free-body detail has a remark to go to"
         if caption_words(cap.caption) > CAPTION_WORDS:
@@ -184,13 +184,12 @@ def test_every_caption_is_at_most_60_words_under_defaults_and_far_arguments():
     assert not long, long
 
 
-def test_no_sentence_closes_several_schematics():
+def test_no_sentence_closes_several_schematics(figures):
     """A shared closing sentence (the convention of the free-body diagrams, the colour of the forces) is said in each
     figure's own words: no sentence, formulas and numbers masked, appears in more than two schematics."""
     seen: dict[str, set[str]] = {}
     for name in EXPECTED:
-        cap = getattr(schematics, name)()
-        plt.close(cap.fig)
+        cap = figures[name]
         text = re.sub(r"\$[^$]*\$", "§", cap.caption + " " + cap.remark)
         text = re.sub(r"\d+(\.\d+)?", "#", text)
         for sentence in re.split(r"(?<=[.;])\s+", text):
@@ -200,8 +199,7 @@ def test_no_sentence_closes_several_schematics():
     repeated = {s: sorted(names) for s, names in seen.items() if len(names) > 2}
     assert not repeated, repeated
     for name in EXPECTED:
-        cap = getattr(schematics, name)()
-        plt.close(cap.fig)
+        cap = figures[name]
         sentences = [s for s in re.split(r"(?<=\.)\s+", cap.caption) if len(s.split()) >= 3]
         assert len(sentences) == len(set(sentences)), f"{name}: a sentence repeats within the caption"
 

@@ -173,7 +173,15 @@ def _independent_pid(kp, ki, kd, u_max, mode, x_ref, t):
     return sol.y
 
 
-@pytest.mark.parametrize("mode", ["none", "clamping", "back-calculation"])
+# one mode in make test, the other two (each a long stiff reference integration) with the slow tests
+@pytest.mark.parametrize(
+    "mode",
+    [
+        pytest.param("none", marks=pytest.mark.slow),
+        "clamping",
+        pytest.param("back-calculation", marks=pytest.mark.slow),
+    ],
+)
 def test_limited_pid_agrees_with_an_independent_integration(mode):
     t_end = 8.0
     r = pid_response(OSC, RES, 133.6, 512.0, 18.7, u_max=12.0, anti_windup=mode, x_ref=0.5, t_end=t_end, n_points=161)

@@ -101,7 +101,13 @@ def test_environment_matches_independent_integrator(task):
 
 @pytest.mark.parametrize(
     "task",
-    [L.OscillatorTask(), L.resonance_task(), L.semi_active_task(), L.semi_active_task(F0=0.0)],
+    # the semi-active rollout at resonance (a long stiff reference integration) runs with the slow tests
+    [
+        L.OscillatorTask(),
+        L.resonance_task(),
+        pytest.param(L.semi_active_task(), marks=pytest.mark.slow),
+        L.semi_active_task(F0=0.0),
+    ],
     ids=["free", "resonance", "semi-active resonance", "semi-active free"],
 )
 def test_compiled_rollout_matches_environment(task):
