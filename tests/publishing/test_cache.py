@@ -71,15 +71,15 @@ def test_the_manifest_names_each_input_and_changes_with_it(tmp_path, graph):
         "from vibration.presentation.tables import fmt\n"
         "from vibration.chapters.real_oscillator.panel import decay_panel",
     )
-    first = manifest(nb, {"a": 2.0}, ROOT, graph)
+    first = manifest(nb, {"a": 2.0}, ROOT, graph=graph)
     assert "src/vibration/presentation/tables.py" in first and "src/vibration/physics/model.py" in first
     assert "src/vibration/chapters/tmd/study.py" not in first
     assert "src/vibration/chapters/real_oscillator/panel/real_oscillator.js" in first  # files beside the modules
     assert any(k.startswith("data/") for k in first)
-    assert differences(first, manifest(nb, {"a": 2.0}, ROOT, graph)) == []
-    assert differences(first, manifest(nb, {"a": 3.0}, ROOT, graph)) == ["parameters changed"]
+    assert differences(first, manifest(nb, {"a": 2.0}, ROOT, graph=graph)) == []
+    assert differences(first, manifest(nb, {"a": 3.0}, ROOT, graph=graph)) == ["parameters changed"]
     nb.write_text(nb.read_text().replace("fmt", "fmt, DASH"))
-    assert differences(first, manifest(nb, {"a": 2.0}, ROOT, graph)) == ["notebook changed"]
+    assert differences(first, manifest(nb, {"a": 2.0}, ROOT, graph=graph)) == ["notebook changed"]
 
 
 def test_a_half_written_entry_is_never_a_hit(tmp_path):
@@ -166,16 +166,16 @@ def test_the_lab_folder_of_chapter_12_enters_its_manifest(tmp_path, graph):
     (lab / "runs.csv").write_text("file,kind,brake,brake_current_A,session,run\na.csv,free,off,,1,\n")
     (lab / "a.csv").write_text("Zeit t / s;Weg &b_A1 / rad\n0;1\n")
     params = {"lab_data": str(lab)}
-    first = manifest(nb, params, ROOT, graph)
+    first = manifest(nb, params, ROOT, graph=graph)
     assert first["parameter lab_data/a.csv"] != first["parameter lab_data/runs.csv"]
-    assert differences(first, manifest(nb, params, ROOT, graph)) == []
+    assert differences(first, manifest(nb, params, ROOT, graph=graph)) == []
     (lab / "a.csv").write_text("Zeit t / s;Weg &b_A1 / rad\n0;2\n")
-    assert differences(first, manifest(nb, params, ROOT, graph)) == ["parameter lab_data/a.csv changed"]
+    assert differences(first, manifest(nb, params, ROOT, graph=graph)) == ["parameter lab_data/a.csv changed"]
     (lab / "b.csv").write_text("x")
-    assert "parameter lab_data/b.csv is new" in differences(first, manifest(nb, params, ROOT, graph))
+    assert "parameter lab_data/b.csv is new" in differences(first, manifest(nb, params, ROOT, graph=graph))
     # the default folder is the project's copy of the lab data, hashed under the parameter's name too
-    default = manifest(nb, {}, ROOT, graph)
+    default = manifest(nb, {}, ROOT, graph=graph)
     assert "parameter lab_data/runs.csv" in default and default["parameter lab_data"] == "folder"
     # another chapter's notebook has no path parameter
     other = _notebook(tmp_path / "notebooks" / "01_x.ipynb", "from vibration.presentation.tables import fmt")
-    assert not any(k.startswith("parameter ") for k in manifest(other, {"a": 1.0}, ROOT, graph))
+    assert not any(k.startswith("parameter ") for k in manifest(other, {"a": 1.0}, ROOT, graph=graph))

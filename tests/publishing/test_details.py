@@ -57,7 +57,7 @@ def test_the_book_page_folds_what_the_notebook_tags():
         _cell("md", "### Checks", ["details"]),
         _cell("code", "c()", ["details"], [TABLE]),
     ]
-    sources = [c.source for c in prepare(ChapterPage("09_t", nb, part="P")).cells]
+    sources = [c.source for c in prepare(ChapterPage(name="09_t", notebook=nb, part="P")).cells]
     assert sources.count("</details>") == 1 and sources[1].startswith('<details class="vib-details">')
 
 

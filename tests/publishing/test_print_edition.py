@@ -34,7 +34,7 @@ def test_print_edition_title_lists_and_section_bookmarks(browser, tmp_path):
     page, outside, errors = open_offline(browser, src)
     pdf = tmp_path / "book.pdf"
     try:
-        edition = print_book(page, pdf, "The book", [("Part I: Chapters", 1)], {"format": "A4"})
+        edition = print_book(page, pdf, "The book", parts=[("Part I: Chapters", 1)], pdf_options={"format": "A4"})
     finally:
         page.close()
     assert not errors and not outside, (errors, outside)

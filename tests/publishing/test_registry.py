@@ -92,10 +92,10 @@ def test_a_project_without_contents_gets_one_part_holding_its_chapter(tmp_path):
 
 def test_the_book_groups_chapters_by_their_part_not_by_their_number():
     pages = [
-        ChapterPage("00_front", None),
-        ChapterPage("01_a", None, part="First"),
-        ChapterPage("13_late", None, part="First"),
-        ChapterPage("02_b", None, part="Second"),
+        ChapterPage(name="00_front", notebook=None),
+        ChapterPage(name="01_a", notebook=None, part="First"),
+        ChapterPage(name="13_late", notebook=None, part="First"),
+        ChapterPage(name="02_b", notebook=None, part="Second"),
     ]
     assert [(title, [p.name for p in members]) for title, members in parts(pages)] == [
         ("First", ["01_a", "13_late"]),

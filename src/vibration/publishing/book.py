@@ -82,7 +82,7 @@ CHROMIUM_ARGS = [
 ]
 
 
-def sphinx_build(src: Path, out: Path, builder: str, incremental: bool = False) -> None:
+def sphinx_build(src: Path, out: Path, builder: str, *, incremental: bool = False) -> None:
     """Run Sphinx in this process: errors raise; its messages go to ``src/sphinx-<builder>.log``.
 
     ``incremental``: keep the environment in ``src/_build`` and rebuild only the pages whose sources
@@ -113,7 +113,7 @@ def sphinx_build(src: Path, out: Path, builder: str, incremental: bool = False) 
         raise RuntimeError(f"Sphinx ({builder}) failed: {warnings.getvalue().strip()[-2000:]}")
 
 
-def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), title: str = BOOK_TITLE):
+def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), *, title: str = BOOK_TITLE):
     """The print edition of ``html_path`` in ``pdf_path`` (A4, title page, contents with page numbers,
     bookmarks, page numbers; see :mod:`vibration.publishing.print_edition`); returns its :class:`Edition`."""
     from playwright.sync_api import sync_playwright
@@ -145,7 +145,7 @@ def print_pdf(html_path: Path, pdf_path: Path, pages: list[ChapterPage] = (), ti
                 page.goto(html_path.resolve().as_uri())
                 page.wait_for_load_state("load")
                 page.emulate_media(media="print")
-                return print_book(page, pdf_path, title, starts, options)
+                return print_book(page, pdf_path, title, parts=starts, pdf_options=options)
             finally:
                 browser.close()
 
@@ -196,7 +196,7 @@ def _stable_cell_ids(src: Path) -> None:
 
 
 def build_incremental(
-    pages: list[ChapterPage], out: Path, work: Path, state: Path, *, pdf: bool = True, title: str = BOOK_TITLE
+    pages: list[ChapterPage], out: Path, work: Path, *, state: Path, pdf: bool = True, title: str = BOOK_TITLE
 ) -> dict:
     """:func:`build` with a persistent Sphinx folder ``state``: only changed pages are rebuilt, the PDF is
     reprinted only when a page changed, and ``out`` receives a finished copy (the caller swaps it into place).
@@ -249,7 +249,7 @@ def build(
     Returns timings and the PDF's page count.
     """
     if state is not None:
-        return build_incremental(pages, out, work, state, pdf=pdf, title=title)
+        return build_incremental(pages, out, work, state=state, pdf=pdf, title=title)
     t0 = time.perf_counter()
     src = work / "book-src"
     write_source(pages, src, title=title)

@@ -76,7 +76,7 @@ def import_closure(modules: set[str], graph) -> set[str]:
     return closure | {m for m in parents if m in graph.modules}
 
 
-def manifest(notebook: Path, params: dict, root: Path, graph) -> dict[str, str]:
+def manifest(notebook: Path, params: dict, root: Path, *, graph) -> dict[str, str]:
     """What the chapter's executed notebook depends on: a label (a path or a name) -> its SHA-256."""
     import vibration
 

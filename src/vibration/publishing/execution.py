@@ -145,7 +145,7 @@ def _cell_preview(message: str) -> str:
 
 
 def execute_notebooks(
-    runs: list[tuple[Path, Path, dict]], jobs: int = 2, kernel: str | None = None, scheduler: str | None = None
+    runs: list[tuple[Path, Path, dict]], jobs: int = 2, kernel: str | None = None, *, scheduler: str | None = None
 ) -> list[float]:
     """Execute ``(source, output, parameters)`` runs with papermill, ``jobs`` at a time; seconds each, in order.
 

@@ -34,7 +34,7 @@ class Parameter:
         return differs(self.value, self.default)
 
 
-@dataclass
+@dataclass(kw_only=True)
 class ChapterPage:
     """An executed chapter, ready for the book."""
 

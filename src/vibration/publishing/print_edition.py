@@ -191,7 +191,7 @@ class Edition:
     page_count: int
 
 
-def chapter_pages(pdf: Path, count: int, kind: str = "doc", texts: list[str] | None = None) -> list[int]:
+def chapter_pages(pdf: Path, count: int, kind: str = "doc", *, texts: list[str] | None = None) -> list[int]:
     """1-based page on which each of ``count`` documents (``kind="doc"``) or sections (``"sec"``) opens,
     from the invisible marks the print carries (``texts``: the pages' text, read here when None)."""
     found: dict[int, int] = {}
@@ -205,7 +205,7 @@ def chapter_pages(pdf: Path, count: int, kind: str = "doc", texts: list[str] | N
     return [found[i] for i in range(count)]
 
 
-def print_book(page, pdf_path: Path, title: str, parts: list[tuple[str, int]], pdf_options: dict) -> Edition:
+def print_book(page, pdf_path: Path, title: str, *, parts: list[tuple[str, int]], pdf_options: dict) -> Edition:
     """Print the loaded single-page book (a playwright ``page``) to ``pdf_path`` as the print edition.
 
     ``parts`` are (caption, index of the part's first chapter heading) for the contents.
@@ -233,7 +233,7 @@ def print_book(page, pdf_path: Path, title: str, parts: list[tuple[str, int]], p
     if len(PdfReader(str(pdf_path)).pages) != count or _marks_left(pdf_path):
         raise RuntimeError("the print edition changed when its page marks were cleared")
     marked = [(d, t, p) for (d, t), p in zip(sections, section_pages, strict=True)]
-    add_bookmarks(pdf_path, titles, pages, parts, marked)
+    add_bookmarks(pdf_path, titles, pages, parts=parts, sections=marked)
     return Edition(titles=tuple(titles), pages=tuple(pages), page_count=len(PdfReader(str(pdf_path)).pages))
 
 
@@ -241,6 +241,7 @@ def add_bookmarks(
     pdf: Path,
     titles: list[str],
     pages: list[int],
+    *,
     parts: list[tuple[str, int]],
     sections: list[tuple[int, str, int]] = (),
 ) -> None:

@@ -81,6 +81,7 @@ def run(
     chapters: list[Chapter],
     values: dict,
     out: Path,
+    *,
     jobs: int = 2,
     log=print,
     pdf: bool = True,
@@ -118,8 +119,10 @@ def run(
                 f"{time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}"
             )
             return [
-                {"name": ch.name, "title": ChapterPage(ch.name, nbformat.read(results[ch.name]["executed"],
-                 as_version=4), []).title, "elapsed_s": results[ch.name]["elapsed_s"]}
+                {"name": ch.name,
+                 "title": ChapterPage(name=ch.name, notebook=nbformat.read(results[ch.name]["executed"],
+                                      as_version=4), parameters=[]).title,
+                 "elapsed_s": results[ch.name]["elapsed_s"]}
                 for ch in chapters
             ]  # fmt: skip
         store.forget_book()  # the tree is about to change: no record may describe it until it is complete
@@ -132,10 +135,10 @@ def run(
         contents = _contents(chapters)
         pages = [
             ChapterPage(
-                ch.name,
-                nbformat.read(results[ch.name]["executed"], as_version=4),
-                chapter_parameters(ch, values),
-                results[ch.name]["elapsed_s"],
+                name=ch.name,
+                notebook=nbformat.read(results[ch.name]["executed"], as_version=4),
+                parameters=chapter_parameters(ch, values),
+                elapsed_s=results[ch.name]["elapsed_s"],
                 part=_part(contents, ch),
             )
             for ch in chapters
@@ -279,7 +282,7 @@ def _tree_complete(out: Path, pdf: bool) -> bool:
 
 def _manifest(ch: Chapter, params: dict, graph) -> dict[str, str]:
 
-    return manifest(ch.path, params, ch.path.parent.parent, graph)
+    return manifest(ch.path, params, ch.path.parent.parent, graph=graph)
 
 
 def _why(reasons: tuple[str, ...]) -> str:
@@ -313,7 +316,10 @@ def book_from_sources(chapters: list[Chapter], out: Path, pdf: bool = True) -> d
         contents = _contents(chapters)
         pages = [
             ChapterPage(
-                ch.name, nbformat.read(ch.path, as_version=4), chapter_parameters(ch, {}), part=_part(contents, ch)
+                name=ch.name,
+                notebook=nbformat.read(ch.path, as_version=4),
+                parameters=chapter_parameters(ch, {}),
+                part=_part(contents, ch),
             )
             for ch in chapters
         ]

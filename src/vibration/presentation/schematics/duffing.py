@@ -14,29 +14,37 @@ def duffing_spring() -> Captioned:
     linear and softening springs."""
     fig, (left, middle, right) = figure(1, 3, height=2.5, gridspec_kw={"width_ratios": [1.45, 1.45, 1.0]})
     w, h = 1.1, 1.6
-    blank(left, "schematic", "schematic", (-0.1, 4.6), (-0.35, 2.6))
-    wall(left, 0.2, 0.0, 2.1)
-    ground(left, 0.2, 4.5, 0.0)
+    blank(left, "schematic", "schematic", xlim=(-0.1, 4.6), ylim=(-0.35, 2.6))
+    wall(left, 0.2, 0.0, y1=2.1)
+    ground(left, 0.2, 4.5, y=0.0)
     x0 = 2.2
-    rollers(left, x0, w, 0.0)
-    mass(left, x0, 0.22, w, h, "$m$")
+    rollers(left, x0, w, y=0.0)
+    mass(left, x0, 0.22, w=w, h=h, label="$m$")
     spring(left, (0.2, 1.42), (x0, 1.42), coils=4)
     left.text(1.2, 1.72, "$k$, $k_3$", ha="center", va="bottom", fontsize=TEXT)
     dashpot(left, (0.2, 0.74), (x0, 0.74))
     left.text(1.2, 0.5, "$c$", ha="center", va="top", fontsize=TEXT)
-    load(left, (x0 + w, 0.6), (x0 + w + 0.9, 0.6), r"$F_0\cos\omega t$", (x0 + w + 0.05, 0.72), "left", "bottom")
-    coordinate(left, (x0, 2.15), 0.7, "$x$")
+    load(
+        left,
+        (x0 + w, 0.6),
+        (x0 + w + 0.9, 0.6),
+        label=r"$F_0\cos\omega t$",
+        at=(x0 + w + 0.05, 0.72),
+        ha="left",
+        va="bottom",
+    )
+    coordinate(left, (x0, 2.15), 0.7, label="$x$")
 
-    blank(middle, "free-body diagram", "free-body diagram", (-0.1, 4.6), (-1.0, 2.6))
+    blank(middle, "free-body diagram", "free-body diagram", xlim=(-0.1, 4.6), ylim=(-1.0, 2.6))
     x0, y0 = 1.75, 0.2
-    mass(middle, x0, y0, w, h, "$m$")
-    force(middle, (x0, 1.3), (x0 - 1.0, 1.3), "$kx + k_3x^3$", (x0 - 0.05, 1.42), "right", "bottom")
-    force(middle, (x0, 0.55), (x0 - 1.0, 0.55), r"$c\dot x$", (x0 - 0.5, 0.43), va="top")
-    force(middle, (x0 + w, 0.75), (x0 + w + 0.9, 0.75), r"$F_0\cos\omega t$", (x0 + w + 0.05, 0.87), "left",
-           "bottom")  # fmt: skip
-    force(middle, (x0 + 0.3, y0), (x0 + 0.3, y0 - 0.85), "$mg$", (x0 + 0.22, y0 - 0.55), "right")
-    force(middle, (x0 + w - 0.3, y0 - 0.85), (x0 + w - 0.3, y0), "$N$", (x0 + w - 0.22, y0 - 0.55), "left")
-    coordinate(middle, (x0, 2.15), 0.7, "$x$")
+    mass(middle, x0, y0, w=w, h=h, label="$m$")
+    force(middle, (x0, 1.3), (x0 - 1.0, 1.3), label="$kx + k_3x^3$", at=(x0 - 0.05, 1.42), ha="right", va="bottom")
+    force(middle, (x0, 0.55), (x0 - 1.0, 0.55), label=r"$c\dot x$", at=(x0 - 0.5, 0.43), va="top")
+    force(middle, (x0 + w, 0.75), (x0 + w + 0.9, 0.75), label=r"$F_0\cos\omega t$", at=(x0 + w + 0.05, 0.87), ha="left",
+           va="bottom")  # fmt: skip
+    force(middle, (x0 + 0.3, y0), (x0 + 0.3, y0 - 0.85), label="$mg$", at=(x0 + 0.22, y0 - 0.55), ha="right")
+    force(middle, (x0 + w - 0.3, y0 - 0.85), (x0 + w - 0.3, y0), label="$N$", at=(x0 + w - 0.22, y0 - 0.55), ha="left")
+    coordinate(middle, (x0, 2.15), 0.7, label="$x$")
 
     right.set_label("restoring force")
     xi = np.linspace(-1.0, 1.0, 201)

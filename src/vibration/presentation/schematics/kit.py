@@ -49,7 +49,7 @@ LW = 1.3  # line width of the structure, points
 TEXT = 9.5  # label size, points (the book's figure text)
 
 
-def blank(ax, label: str, title: str, xlim: tuple[float, float], ylim: tuple[float, float]) -> None:
+def blank(ax, label: str, title: str, *, xlim: tuple[float, float], ylim: tuple[float, float]) -> None:
     """A drawing panel: no ticks, spines or grid, equal scales, the given box; still a panel for the caption."""
     ax.set_label(label)
     ax.set_title(title, fontsize=10)
@@ -74,7 +74,7 @@ def _unit(a, b) -> tuple[np.ndarray, np.ndarray, float]:
     return u, np.array([-u[1], u[0]]), length
 
 
-def spring(ax, a, b, coils: int = 5, width: float = 0.26, lead: float = 0.18, color: str = INK) -> None:
+def spring(ax, a, b, *, coils: int = 5, width: float = 0.26, lead: float = 0.18, color: str = INK) -> None:
     """A zigzag spring from point ``a`` to point ``b`` with straight leads at both ends."""
     u, n, length = _unit(a, b)
     lead = min(lead, 0.2 * length)
@@ -90,7 +90,7 @@ def spring(ax, a, b, coils: int = 5, width: float = 0.26, lead: float = 0.18, co
     ax.plot(pts[:, 0], pts[:, 1], color=color, lw=LW, solid_joinstyle="miter", solid_capstyle="butt")
 
 
-def dashpot(ax, a, b, width: float = 0.3, color: str = INK, variable: bool = False) -> None:
+def dashpot(ax, a, b, *, width: float = 0.3, color: str = INK, variable: bool = False) -> None:
     """A dashpot from ``a`` (the cylinder's end) to ``b`` (the piston rod's end); ``variable`` adds the
     through-arrow of an adjustable damper."""
     a = np.asarray(a, float)
@@ -116,34 +116,34 @@ def dashpot(ax, a, b, width: float = 0.3, color: str = INK, variable: bool = Fal
         )
 
 
-def ground(ax, x0: float, x1: float, y: float, depth: float = 0.22, below: bool = True) -> None:
+def ground(ax, x0: float, x1: float, *, y: float, depth: float = 0.22, below: bool = True) -> None:
     """Fixed ground: a line from ``x0`` to ``x1`` at height ``y``, hatched on the side away from the model."""
     y_box = y - depth if below else y
     ax.add_patch(Rectangle((x0, y_box), x1 - x0, depth, facecolor="none", edgecolor=HATCH, lw=0, hatch="////"))
     ax.plot([x0, x1], [y, y], color=INK, lw=1.6 * LW, solid_capstyle="butt")
 
 
-def wall(ax, x: float, y0: float, y1: float, depth: float = 0.22, left: bool = True) -> None:
+def wall(ax, x: float, y0: float, *, y1: float, depth: float = 0.22, left: bool = True) -> None:
     """A fixed wall at ``x`` from ``y0`` to ``y1``, hatched on the side away from the model."""
     x_box = x - depth if left else x
     ax.add_patch(Rectangle((x_box, y0), depth, y1 - y0, facecolor="none", edgecolor=HATCH, lw=0, hatch="////"))
     ax.plot([x, x], [y0, y1], color=INK, lw=1.6 * LW, solid_capstyle="butt")
 
 
-def mass(ax, x0: float, y0: float, w: float, h: float, label: str | None = None, fill: str = BODY) -> None:
+def mass(ax, x0: float, y0: float, *, w: float, h: float, label: str | None = None, fill: str = BODY) -> None:
     """A rigid block with its lower left corner at (``x0``, ``y0``), labelled in its middle."""
     ax.add_patch(Rectangle((x0, y0), w, h, facecolor=fill, edgecolor=INK, lw=LW, zorder=2))
     if label:
         ax.text(x0 + 0.5 * w, y0 + 0.5 * h, label, ha="center", va="center", fontsize=10, zorder=3)
 
 
-def rollers(ax, x0: float, w: float, y: float, r: float = 0.11) -> None:
+def rollers(ax, x0: float, w: float, *, y: float, r: float = 0.11) -> None:
     """Two frictionless rollers under a block of width ``w`` whose bottom is at ``y + 2 r``."""
     for xc in (x0 + 0.25 * w, x0 + 0.75 * w):
         ax.add_patch(Circle((xc, y + r), r, facecolor="white", edgecolor=INK, lw=LW, zorder=2))
 
 
-def arrow(ax, tail, head, color: str, gid: str, lw: float = 1.5, scale: float = 11.0) -> FancyArrowPatch:
+def arrow(ax, tail, head, *, color: str, gid: str, lw: float = 1.5, scale: float = 11.0) -> FancyArrowPatch:
     arrow = FancyArrowPatch(
         tail, head, arrowstyle="-|>", mutation_scale=scale, lw=lw, color=color, shrinkA=0, shrinkB=0, zorder=4
     )
@@ -152,19 +152,19 @@ def arrow(ax, tail, head, color: str, gid: str, lw: float = 1.5, scale: float = 
     return arrow
 
 
-def force(ax, tail, head, label: str, at, ha: str = "center", va: str = "center") -> None:
+def force(ax, tail, head, *, label: str, at, ha: str = "center", va: str = "center") -> None:
     """A force arrow (vermillion) from ``tail`` to ``head`` with its label at ``at``."""
-    arrow(ax, tail, head, FORCE, "force:" + label)
+    arrow(ax, tail, head, color=FORCE, gid="force:" + label)
     ax.text(*at, label, color=FORCE, ha=ha, va=va, fontsize=TEXT, zorder=5)
 
 
-def load(ax, tail, head, label: str, at, ha: str = "center", va: str = "center") -> None:
+def load(ax, tail, head, *, label: str, at, ha: str = "center", va: str = "center") -> None:
     """An applied load drawn in a schematic (vermillion, not counted as a free-body force)."""
-    arrow(ax, tail, head, FORCE, "load:" + label)
+    arrow(ax, tail, head, color=FORCE, gid="load:" + label)
     ax.text(*at, label, color=FORCE, ha=ha, va=va, fontsize=TEXT, zorder=5)
 
 
-def coordinate(ax, origin, length: float, label: str, vertical: bool = False, tick: float = 0.18, side: str = "end"):
+def coordinate(ax, origin, length: float, *, label: str, vertical: bool = False, tick: float = 0.18, side: str = "end"):
     """A coordinate: a thin reference tick at ``origin`` and a blue arrow of ``length`` in its positive direction."""
     ox, oy = origin
     if vertical:
@@ -177,7 +177,7 @@ def coordinate(ax, origin, length: float, label: str, vertical: bool = False, ti
         at, ha, va = (ox + length + 0.08, oy), "left", "center"
     if side == "start" and not vertical:
         at, ha = (ox - 0.08, oy), "right"
-    arrow(ax, origin, head, COORDINATE, "coordinate:" + label, lw=1.1, scale=9.0)
+    arrow(ax, origin, head, color=COORDINATE, gid="coordinate:" + label, lw=1.1, scale=9.0)
     ax.text(*at, label, color=COORDINATE, ha=ha, va=va, fontsize=TEXT, zorder=5)
 
 
@@ -186,7 +186,7 @@ def _arc_path(centre, radius: float, start_deg: float, end_deg: float, n: int = 
     return Path(np.column_stack([centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t)]))
 
 
-def arc_arrow(ax, centre, radius, start_deg, end_deg, color: str, gid: str, lw: float = 1.5, scale: float = 11.0):
+def arc_arrow(ax, centre, radius, *, start_deg, end_deg, color: str, gid: str, lw: float = 1.5, scale: float = 11.0):
     """A curved arrow along a circle from ``start_deg`` to ``end_deg`` (head at the end)."""
     arrow = FancyArrowPatch(
         path=_arc_path(centre, radius, start_deg, end_deg),

@@ -11,28 +11,44 @@ from .kit import TEXT, blank, coordinate, dashpot, force, ground, load, mass, ro
 def single_mass() -> Captioned:
     """The paper's model: wall, spring k, dashpot c, mass m, force F0 sin(omega t), coordinate x."""
     fig, (left, right) = figure(1, 2, height=2.5)
-    blank(left, "schematic", "schematic", (-0.35, 6.0), (-0.35, 2.6))
-    wall(left, 0.3, 0.0, 2.1)
-    ground(left, 0.3, 5.7, 0.0)
+    blank(left, "schematic", "schematic", xlim=(-0.35, 6.0), ylim=(-0.35, 2.6))
+    wall(left, 0.3, 0.0, y1=2.1)
+    ground(left, 0.3, 5.7, y=0.0)
     x0, y0, w, h = 2.8, 0.22, 1.2, 1.6
-    rollers(left, x0, w, 0.0)
-    mass(left, x0, y0, w, h, "$m$")
+    rollers(left, x0, w, y=0.0)
+    mass(left, x0, y0, w=w, h=h, label="$m$")
     spring(left, (0.3, 1.42), (x0, 1.42))
     left.text(1.55, 1.72, "$k$", ha="center", va="bottom", fontsize=TEXT)
     dashpot(left, (0.3, 0.62), (x0, 0.62))
     left.text(1.55, 0.3, "$c$", ha="center", va="top", fontsize=TEXT)
-    load(left, (x0 + w, 1.02), (x0 + w + 1.0, 1.02), r"$F_0\sin\omega t$", (x0 + w + 0.08, 1.14), "left", "bottom")
-    coordinate(left, (x0, 2.1), 0.8, "$x$")
+    load(
+        left,
+        (x0 + w, 1.02),
+        (x0 + w + 1.0, 1.02),
+        label=r"$F_0\sin\omega t$",
+        at=(x0 + w + 0.08, 1.14),
+        ha="left",
+        va="bottom",
+    )
+    coordinate(left, (x0, 2.1), 0.8, label="$x$")
 
-    blank(right, "free-body diagram", "free-body diagram of the mass", (-0.45, 5.9), (-1.1, 2.6))
+    blank(right, "free-body diagram", "free-body diagram of the mass", xlim=(-0.45, 5.9), ylim=(-1.1, 2.6))
     x0, y0 = 2.0, 0.2
-    mass(right, x0, y0, w, h, "$m$")
-    force(right, (x0, 1.3), (x0 - 1.1, 1.3), "$kx$", (x0 - 0.55, 1.42), va="bottom")
-    force(right, (x0, 0.55), (x0 - 1.1, 0.55), r"$c\dot x$", (x0 - 0.55, 0.43), va="top")
-    force(right, (x0 + w, 1.0), (x0 + w + 1.0, 1.0), r"$F_0\sin\omega t$", (x0 + w + 0.08, 1.12), "left", "bottom")
-    force(right, (x0 + 0.35, y0), (x0 + 0.35, y0 - 0.9), "$mg$", (x0 + 0.27, y0 - 0.6), "right")
-    force(right, (x0 + w - 0.35, y0 - 0.9), (x0 + w - 0.35, y0), "$N$", (x0 + w - 0.27, y0 - 0.6), "left")
-    coordinate(right, (x0, 2.1), 0.8, "$x$")
+    mass(right, x0, y0, w=w, h=h, label="$m$")
+    force(right, (x0, 1.3), (x0 - 1.1, 1.3), label="$kx$", at=(x0 - 0.55, 1.42), va="bottom")
+    force(right, (x0, 0.55), (x0 - 1.1, 0.55), label=r"$c\dot x$", at=(x0 - 0.55, 0.43), va="top")
+    force(
+        right,
+        (x0 + w, 1.0),
+        (x0 + w + 1.0, 1.0),
+        label=r"$F_0\sin\omega t$",
+        at=(x0 + w + 0.08, 1.12),
+        ha="left",
+        va="bottom",
+    )
+    force(right, (x0 + 0.35, y0), (x0 + 0.35, y0 - 0.9), label="$mg$", at=(x0 + 0.27, y0 - 0.6), ha="right")
+    force(right, (x0 + w - 0.35, y0 - 0.9), (x0 + w - 0.35, y0), label="$N$", at=(x0 + w - 0.27, y0 - 0.6), ha="left")
+    coordinate(right, (x0, 2.1), 0.8, label="$x$")
 
     caption = r"The paper's model, $m\ddot x + c\dot x + kx = F_0\sin\omega t$. " + sentence_panels(
         fig,
@@ -66,25 +82,25 @@ def single_mass() -> Captioned:
 def base_excitation() -> Captioned:
     """A mass on a spring and a dashpot whose base moves as y(t): chapter 6's isolation, chapter 7's suspension."""
     fig, (left, right) = figure(1, 2, height=3.0)
-    blank(left, "schematic", "schematic", (-2.4, 2.4), (-0.2, 3.3))
+    blank(left, "schematic", "schematic", xlim=(-2.4, 2.4), ylim=(-0.2, 3.3))
     bw, bh = 2.6, 0.35  # base plate
-    mass(left, -0.5 * bw, 0.0, bw, bh)
+    mass(left, -0.5 * bw, 0.0, w=bw, h=bh)
     left.text(-0.5 * bw - 0.1, 0.5 * bh, "base", ha="right", va="center", fontsize=TEXT)
-    coordinate(left, (0.5 * bw + 0.3, 0.5 * bh), 0.6, "$y(t)$", vertical=True)
+    coordinate(left, (0.5 * bw + 0.3, 0.5 * bh), 0.6, label="$y(t)$", vertical=True)
     mw, mh, my = 1.7, 0.9, 1.85
     spring(left, (-0.45, bh), (-0.45, my))
     left.text(-0.75, 0.5 * (bh + my), "$k$", ha="right", va="center", fontsize=TEXT)
     dashpot(left, (0.45, bh), (0.45, my))
     left.text(0.75, 0.5 * (bh + my), "$c$", ha="left", va="center", fontsize=TEXT)
-    mass(left, -0.5 * mw, my, mw, mh, "$m$")
-    coordinate(left, (0.5 * mw + 0.3, my + 0.5 * mh), 0.6, "$x$", vertical=True)
+    mass(left, -0.5 * mw, my, w=mw, h=mh, label="$m$")
+    coordinate(left, (0.5 * mw + 0.3, my + 0.5 * mh), 0.6, label="$x$", vertical=True)
 
-    blank(right, "free-body diagram", "free-body diagram of the mass", (-2.4, 2.4), (-0.2, 3.3))
+    blank(right, "free-body diagram", "free-body diagram of the mass", xlim=(-2.4, 2.4), ylim=(-0.2, 3.3))
     my = 1.55
-    mass(right, -0.5 * mw, my, mw, mh, "$m$")
-    force(right, (-0.45, my), (-0.45, my - 1.0), "$k(x - y)$", (-0.55, my - 0.5), "right")
-    force(right, (0.45, my), (0.45, my - 1.0), r"$c(\dot x - \dot y)$", (0.55, my - 0.5), "left")
-    coordinate(right, (0.5 * mw + 0.3, my + 0.5 * mh), 0.6, "$x$", vertical=True)
+    mass(right, -0.5 * mw, my, w=mw, h=mh, label="$m$")
+    force(right, (-0.45, my), (-0.45, my - 1.0), label="$k(x - y)$", at=(-0.55, my - 0.5), ha="right")
+    force(right, (0.45, my), (0.45, my - 1.0), label=r"$c(\dot x - \dot y)$", at=(0.55, my - 0.5), ha="left")
+    coordinate(right, (0.5 * mw + 0.3, my + 0.5 * mh), 0.6, label="$x$", vertical=True)
 
     caption = (
         r"Base excitation, $m\ddot x + c\dot x + kx = c\dot y + ky$, or $m\ddot z + c\dot z + kz = -m\ddot y$ in "

@@ -13,8 +13,8 @@ def _suspension(ax, device: str) -> None:
     """Chapter 7's suspension: base plate, spring k and damper c to the mass, and the device (``"sky"`` or
     ``"semi"``)."""
     bw, bh, my, mw, mh = 2.4, 0.3, 1.7, 1.8, 0.8
-    mass(ax, -0.5 * bw, 0.0, bw, bh)
-    coordinate(ax, (0.5 * bw + 0.25, 0.5 * bh), 0.55, "$y(t)$", vertical=True)
+    mass(ax, -0.5 * bw, 0.0, w=bw, h=bh)
+    coordinate(ax, (0.5 * bw + 0.25, 0.5 * bh), 0.55, label="$y(t)$", vertical=True)
     xs = (-0.6, 0.0, 0.6) if device == "semi" else (-0.4, 0.4)
     spring(ax, (xs[0], bh), (xs[0], my), width=0.24)
     ax.text(xs[0] - 0.25, 0.5 * (bh + my), "$k$", ha="right", va="center", fontsize=TEXT)
@@ -26,12 +26,12 @@ def _suspension(ax, device: str) -> None:
         ax.text(xs[2] + 0.3, 0.5 * (bh + my), r"$c_\mathrm{sa}$", ha="left", va="center", fontsize=TEXT, color=col)
     else:
         ax.text(xs[1] + 0.25, 0.5 * (bh + my), "$c$", ha="left", va="center", fontsize=TEXT)
-    mass(ax, -0.5 * mw, my, mw, mh, "$m$")
-    coordinate(ax, (0.5 * mw + 0.25, my + 0.5 * mh), 0.55, "$x$", vertical=True)
+    mass(ax, -0.5 * mw, my, w=mw, h=mh, label="$m$")
+    coordinate(ax, (0.5 * mw + 0.25, my + 0.5 * mh), 0.55, label="$x$", vertical=True)
     if device == "sky":
         col = case_style("skyhook")["color"]
         sky = my + mh + 1.0
-        ground(ax, -1.0, 1.0, sky, below=False, depth=0.18)
+        ground(ax, -1.0, 1.0, y=sky, below=False, depth=0.18)
         dashpot(ax, (0.0, sky), (0.0, my + mh), width=0.26, color=col)
         ax.text(0.25, my + mh + 0.5, r"$c_\mathrm{sky}$", ha="left", va="center", fontsize=TEXT, color=col)
         ax.text(-1.1, sky + 0.09, "sky", ha="right", va="center", fontsize=TEXT)
@@ -42,19 +42,19 @@ def skyhook() -> Captioned:
     base, the body's free-body diagram and the forces a semi-active damper can produce."""
     fig, axes = figure(2, 2, height=5.6)
     (sky_ax, semi_ax), (fbd, fmap) = axes
-    box = ((-2.0, 2.2), (-0.15, 3.75))
-    blank(sky_ax, "schematic", "ideal skyhook", *box)
+    box = {"xlim": (-2.0, 2.2), "ylim": (-0.15, 3.75)}
+    blank(sky_ax, "schematic", "ideal skyhook", **box)
     _suspension(sky_ax, "sky")
-    blank(semi_ax, "schematic", "semi-active damper", *box)
+    blank(semi_ax, "schematic", "semi-active damper", **box)
     _suspension(semi_ax, "semi")
 
-    blank(fbd, "free-body diagram", "free-body diagram of the mass", (-2.0, 2.2), (-0.1, 3.3))
+    blank(fbd, "free-body diagram", "free-body diagram of the mass", xlim=(-2.0, 2.2), ylim=(-0.1, 3.3))
     mw, mh, my = 1.8, 0.8, 1.25
-    mass(fbd, -0.5 * mw, my, mw, mh, "$m$")
-    force(fbd, (-0.45, my), (-0.45, my - 0.9), "$k(x - y)$", (-0.55, my - 0.45), "right")
-    force(fbd, (0.45, my), (0.45, my - 0.9), r"$c(\dot x - \dot y)$", (0.55, my - 0.45), "left")
-    force(fbd, (0.0, my + mh), (0.0, my + mh + 0.8), "$f$", (0.12, my + mh + 0.45), "left")
-    coordinate(fbd, (0.5 * mw + 0.25, my + 0.5 * mh), 0.55, "$x$", vertical=True)
+    mass(fbd, -0.5 * mw, my, w=mw, h=mh, label="$m$")
+    force(fbd, (-0.45, my), (-0.45, my - 0.9), label="$k(x - y)$", at=(-0.55, my - 0.45), ha="right")
+    force(fbd, (0.45, my), (0.45, my - 0.9), label=r"$c(\dot x - \dot y)$", at=(0.55, my - 0.45), ha="left")
+    force(fbd, (0.0, my + mh), (0.0, my + mh + 0.8), label="$f$", at=(0.12, my + mh + 0.45), ha="left")
+    coordinate(fbd, (0.5 * mw + 0.25, my + 0.5 * mh), 0.55, label="$x$", vertical=True)
 
     fmap.set_label("force map")
     fmap.set_title("forces a semi-active damper can produce", fontsize=10)

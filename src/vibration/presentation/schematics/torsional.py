@@ -71,8 +71,8 @@ def torsional_oscillator(
     """
     fig, (left, right) = figure(1, 2, height=3.7)
     R = 1.3
-    blank(left, "schematic", "schematic", (-2.2, 2.9), (-2.35, 2.75))
-    ground(left, -1.4, 1.4, -1.95)
+    blank(left, "schematic", "schematic", xlim=(-2.2, 2.9), ylim=(-2.35, 2.75))
+    ground(left, -1.4, 1.4, y=-1.95)
     left.add_patch(Rectangle((-0.09, -1.95), 0.18, 1.95, facecolor=BODY, edgecolor=INK, lw=LW, zorder=1))
     left.add_patch(Circle((0, 0), R, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
     left.text(-0.85, 0.3, "$I$", ha="center", va="center", fontsize=10, zorder=5)
@@ -82,7 +82,17 @@ def torsional_oscillator(
     left.plot([0.62 * R, 1.12 * R], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
     left.plot([0.62 * R * math.cos(t), R * math.cos(t)], [0.62 * R * math.sin(t), R * math.sin(t)], color=INK,
               lw=2.2, zorder=3)  # fmt: skip
-    arc_arrow(left, (0, 0), 0.8 * R, 2.0, theta - 2.0, COORDINATE, "coordinate:$\\theta$", lw=1.1, scale=9.0)
+    arc_arrow(
+        left,
+        (0, 0),
+        0.8 * R,
+        start_deg=2.0,
+        end_deg=theta - 2.0,
+        color=COORDINATE,
+        gid="coordinate:$\\theta$",
+        lw=1.1,
+        scale=9.0,
+    )
     left.text(0.8 * R + 0.06, 0.26, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
     # spiral spring from the axle to the lever, the lever, the push rod, the crank and the motor
     xe, ye = _spiral(left, 0.2, 0.62, 2.25, 90.0)
@@ -97,7 +107,17 @@ def torsional_oscillator(
     left.plot([top[0], pin[0]], [top[1], pin[1]], color=INK, lw=1.6, zorder=4)
     for p, r in ((top, 0.06), (pin, 0.05), (crank_c, 0.04)):
         left.add_patch(Circle(p, r, facecolor="white", edgecolor=INK, lw=1.0, zorder=5))
-    arc_arrow(left, crank_c, crank_r + 0.14, 20.0, 120.0, COORDINATE, "coordinate:$\\omega t$", lw=1.1, scale=9.0)
+    arc_arrow(
+        left,
+        crank_c,
+        crank_r + 0.14,
+        start_deg=20.0,
+        end_deg=120.0,
+        color=COORDINATE,
+        gid="coordinate:$\\omega t$",
+        lw=1.1,
+        scale=9.0,
+    )
     left.text(crank_c[0] + 0.45, crank_c[1] + 0.3, "$\\omega t$", color=COORDINATE, ha="left", va="bottom",
               fontsize=TEXT)  # fmt: skip
     # the eddy-current brake astride the rim, and the bearing
@@ -110,7 +130,7 @@ def torsional_oscillator(
     left.plot([0.09, 0.5], [-0.09, -0.58], color=INK, lw=0.7, zorder=5)
     left.text(0.52, -0.58, "$\\tau_c$", ha="left", va="top", fontsize=TEXT, zorder=5)
 
-    blank(right, "free-body diagram", "free-body diagram of the wheel", (-2.55, 2.55), (-2.35, 2.75))
+    blank(right, "free-body diagram", "free-body diagram of the wheel", xlim=(-2.55, 2.55), ylim=(-2.35, 2.75))
     Rf = 1.05
     right.add_patch(Circle((0, 0), Rf, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
     right.add_patch(Circle((0, 0), 0.08, facecolor="white", edgecolor=INK, lw=1.2, zorder=3))
@@ -118,7 +138,17 @@ def torsional_oscillator(
     right.plot([0.1, 0.95 * Rf], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
     right.plot([0.1 * math.cos(t), Rf * math.cos(t)], [0.1 * math.sin(t), Rf * math.sin(t)], color=INK, lw=2.2,
                zorder=3)  # fmt: skip
-    arc_arrow(right, (0, 0), 0.7 * Rf, 2.0, theta - 2.0, COORDINATE, "coordinate:$\\theta$", lw=1.1, scale=9.0)
+    arc_arrow(
+        right,
+        (0, 0),
+        0.7 * Rf,
+        start_deg=2.0,
+        end_deg=theta - 2.0,
+        color=COORDINATE,
+        gid="coordinate:$\\theta$",
+        lw=1.1,
+        scale=9.0,
+    )
     right.text(0.7 * Rf + 0.06, 0.2, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
     ra = Rf + 0.28
     torques = (
@@ -128,7 +158,7 @@ def torsional_oscillator(
         (r"$\tau_c\,\mathrm{sgn}\,\dot\theta$", 205.0, 155.0, (-ra - 0.2, 0.0), "right", "center"),
     )
     for label, a0, a1, at_xy, ha, va in torques:
-        arc_arrow(right, (0, 0), ra, a0, a1, FORCE, "force:" + label)
+        arc_arrow(right, (0, 0), ra, start_deg=a0, end_deg=a1, color=FORCE, gid="force:" + label)
         right.text(*at_xy, label, color=FORCE, ha=ha, va=va, fontsize=TEXT, zorder=5)
 
     caption = (
