@@ -30,3 +30,47 @@ def test_repetition_check_sees_a_repeat_with_other_rounding():
     b = "- It settles after 15.65 s.\n- Something else."
     assert repeated([a, b]) == ["- It settles after 15.65 s."]
     assert repeated([a, "- It settles later."]) == []
+
+
+def test_columns_read_key_header_digits_and_flags_from_a_text_block():
+    from vibration.presentation.tables import Column, columns
+
+    got = columns(
+        """
+        case   case
+        c      c (N s/m)          3
+        err    max |x − x_exact|  2  hidden
+        omega  ω (rad/s)          4  nozeros
+        """
+    )
+    assert got == [
+        Column(key="case", header="case"),
+        Column(key="c", header="c (N s/m)", digits=3),
+        Column(key="err", header="max |x − x_exact|", digits=2, shown=False),
+        Column(key="omega", header="ω (rad/s)", digits=4, zeros=False),
+    ]
+
+
+def test_columns_refuse_a_line_without_header_or_with_an_unknown_word():
+    import pytest
+
+    from vibration.presentation.tables import columns
+
+    with pytest.raises(ValueError, match="two spaces apart"):
+        columns("c (N s/m)")
+    with pytest.raises(ValueError, match="'bold'"):
+        columns("c  c (N s/m)  bold")
+
+
+def test_self_checks_is_a_table_of_checks_with_the_given_headers():
+    from vibration.presentation.tables import self_checks
+
+    t = self_checks(
+        [("energy balance", "< 10⁻¹²", True), ("poles", 0.0123456, False)],
+        caption="Checks.",
+        name="tab-checks",
+        headers=("self-check", "difference", "passes"),
+        digits=3,
+    )
+    assert [c.header for c in t.columns] == ["self-check", "difference", "passes"]
+    assert t.cells() == [["energy balance", "< 10⁻¹²", "yes"], ["poles", "0.0123", "no"]]

@@ -103,6 +103,66 @@ class Column:
     shown: bool = True  # False: a derived column kept for the CSV file and the plain text, not shown to the reader
 
 
+def text_rows(spec: str) -> list[list[str]]:
+    """The lines of a text block as lists of fields, separated by two or more spaces; blank lines skipped.
+
+    >>> text_rows('''
+    ...     natural frequency ωₙ  omega_n  rad/s
+    ...
+    ...     damping ratio ζ       zeta
+    ... ''')
+    [['natural frequency ωₙ', 'omega_n', 'rad/s'], ['damping ratio ζ', 'zeta']]
+    """
+    return [re.split(r"\s{2,}", line.strip()) for line in spec.splitlines() if line.strip()]
+
+
+#: What may follow a column's header in a :func:`columns` spec, besides its significant digits.
+_FLAGS = {"hidden": {"shown": False}, "nozeros": {"zeros": False}}
+
+
+def columns(spec: str) -> list[Column]:
+    """A table's columns written as data, one column a line: ``key  header  digits  flags``.
+
+    The fields are separated by two or more spaces (a header may hold single spaces); the digits
+    (default 4) and the flags are optional. ``hidden`` is a column kept for the CSV file and the plain
+    text only (``shown=False``); ``nozeros`` drops trailing zeros (``zeros=False``). Blank lines are skipped.
+
+    Examples
+    --------
+    >>> cols = columns('''
+    ...     case    case
+    ...     c       c (N s/m)       3
+    ...     ratio   error / stated  3  hidden
+    ...     omega   ω (rad/s)       4  nozeros
+    ... ''')
+    >>> [(c.key, c.header, c.digits, c.shown, c.zeros) for c in cols]  # doctest: +NORMALIZE_WHITESPACE
+    [('case', 'case', 4, True, True), ('c', 'c (N s/m)', 3, True, True),
+     ('ratio', 'error / stated', 3, False, True), ('omega', 'ω (rad/s)', 4, True, False)]
+    >>> columns("c  c (N s/m)  three")
+    Traceback (most recent call last):
+    ...
+    ValueError: column line 'c  c (N s/m)  three': 'three' is neither a number of digits nor one of hidden, nozeros
+    """
+    out = []
+    for fields in text_rows(spec):
+        line = "  ".join(fields)
+        if len(fields) < 2:
+            raise ValueError(f"column line {line.strip()!r}: allowed 'key  header  digits  flags' (two spaces apart)")
+        options: dict = {}
+        for word in fields[2:]:
+            if word.isdigit():
+                options["digits"] = int(word)
+            elif word in _FLAGS:
+                options.update(_FLAGS[word])
+            else:
+                allowed = ", ".join(_FLAGS)
+                raise ValueError(
+                    f"column line {line.strip()!r}: {word!r} is neither a number of digits nor one of {allowed}"
+                )
+        out.append(Column(key=fields[0], header=fields[1], **options))
+    return out
+
+
 def fmt(value, digits: int = 4, zeros: bool = False) -> str:
     """Text of a cell: floats in the book's number format (:func:`vibration.presentation.numbers.sig`).
 
@@ -397,6 +457,47 @@ def bound(value: float, tol: float) -> str | Missing:
         return Missing(reason="infinite")
     text = _bound(value, tol)
     return Missing(reason="not computed for this case") if text is None else text
+
+
+def self_checks(
+    checks: Iterable[tuple],
+    *,
+    caption: str,
+    name: str,
+    headers: tuple[str, ...] = ("check", "bound"),
+    digits: int = 4,
+) -> Table:
+    """A chapter's self-checks: one row a check, what it compares, its value and, when told, whether it passes.
+
+    Parameters
+    ----------
+    checks : iterable of tuples
+        Each check's description and its value (a bound such as ``"< 10⁻¹²"`` as :func:`bound` prints it,
+        a number or a :class:`Missing`), then, with a third header, whether it passes.
+    caption, name : str
+        The table's caption and label.
+    headers : tuple of two or three str
+        The headers of the columns.
+    digits : int
+        Significant figures of a value given as a number.
+
+    Examples
+    --------
+    >>> print(repr(self_checks([("residual, relative", bound(3e-15, 1e-12))], caption="Checks.", name="tab-c")))
+    Table tab-c: Checks.
+    check               bound
+    ------------------  -------
+    residual, relative  < 10⁻¹²
+    >>> t = self_checks([("energy", 2.5e-3, False)], caption="C.", name="tab-d", headers=("check", "difference", "ok"))
+    >>> t.rows, [c.header for c in t.columns]
+    ([{'check': 'energy', 'value': 0.0025, 'ok': False}], ['check', 'difference', 'ok'])
+    """
+    if len(headers) not in (2, 3):
+        raise ValueError(f"headers = {headers!r}: allowed two or three headers (check, value and whether it passes)")
+    keys = ("check", "value", "ok")[: len(headers)]
+    rows = [dict(zip(keys, check, strict=True)) for check in checks]
+    cols = [Column(key=k, header=h, digits=digits) for k, h in zip(keys, headers, strict=True)]
+    return Table(rows, cols, caption, name)
 
 
 def _csv_cell(value) -> str:

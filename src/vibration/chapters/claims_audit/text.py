@@ -19,7 +19,7 @@ from vibration.chapters.claims_audit.study import Claim, ClaimsAuditStudy
 from vibration.physics.audit import COLUMNS, PARTLY_FACTOR, VERDICTS, verdict
 from vibration.presentation.findings import case_name
 from vibration.presentation.narrative import fixed, g
-from vibration.presentation.tables import TABLES_ENV, Column, Missing, Table, fmt
+from vibration.presentation.tables import TABLES_ENV, Column, Missing, Table, columns, fmt
 
 #: How the claims table names each audited quantity.
 QUANTITY_TEXT = {
@@ -118,15 +118,17 @@ def claims_table(st: ClaimsAuditStudy) -> Table:
         )
     return Table(
         out,
-        [
-            Column(key="id", header="claim"),
-            Column(key="says", header="the paper says"),
-            Column(key="q", header="quantity, case"),
-            Column(key="rk45", header="paper's method (RK45)"),
-            Column(key="exact", header="exact"),
-            Column(key="verdict", header="verdict"),
-            Column(key="case", header="case run"),
-        ],
+        columns(
+            """
+            id       claim
+            says     the paper says
+            q        quantity, case
+            rk45     paper's method (RK45)
+            exact    exact
+            verdict  verdict
+            case     case run
+            """
+        ),
         notes=notes,
         caption="Every checkable claim of the paper: its kind and value, the value the paper's own method gives, "
         "the exact value, and the verdict of the stated rule.",
@@ -154,13 +156,15 @@ def readings_table(st: ClaimsAuditStudy) -> Table | None:
         return None
     return Table(
         out,
-        [
-            Column(key="id", header="claim"),
-            Column(key="reading", header="reading tested"),
-            Column(key="value", header="its value"),
-            Column(key="verdict", header="verdict of this reading"),
-            Column(key="best", header="fits best"),
-        ],
+        columns(
+            """
+            id       claim
+            reading  reading tested
+            value    its value
+            verdict  verdict of this reading
+            best     fits best
+            """
+        ),
         caption="Readings that could explain each discrepancy, computed exactly and judged by the same rule; "
         "'best' marks the reading that fits best (which number matches, not what the authors meant).",
         name="tab-claims-readings",

@@ -17,24 +17,12 @@ from vibration.chapters.control.study import (
     ControlStudy,
 )
 from vibration.physics.control import Metrics
-from vibration.presentation.tables import Column, Missing, Table
+from vibration.presentation.tables import Missing, Table, bound, columns, self_checks
 
 NO_INTEGRATOR = Missing(reason="no integral term")
 NO_CROSSOVER = Missing(reason="the loop gain never reaches 1: no crossover, and no delay destabilises the loop")
 FIRST_ROW = Missing(reason="first row")
 NO_SHAPER = Missing(reason="no shaper: the unshaped step is the reference")
-
-
-def within(value: float, tol: float) -> str | Missing:
-    """A check against its stated tolerance: "< tol" when it holds, else the value and the tolerance (×10ⁿ).
-
-    The printed tolerance, not the value's order of magnitude, is what reproduces on every machine.
-    """
-    if not math.isfinite(value):
-        return Missing(reason="not computed for this case") if math.isnan(value) else Missing(reason="infinite")
-    if abs(value) < tol:
-        return f"< {num(tol)}"
-    return f"{num(abs(value), 2)} (above {num(tol)})"
 
 
 def _metric_rows(metrics: dict[str, Metrics], reference: str) -> list[dict]:
@@ -57,17 +45,19 @@ def _metric_rows(metrics: dict[str, Metrics], reference: str) -> list[dict]:
     return rows
 
 
-_METRIC_COLUMNS = [
-    Column(key="controller", header="controller"),
-    Column(key="peak_x", header="max|x| (m)"),
-    Column(key="rms_x", header="x_rms (m)"),
-    Column(key="peak_x_ss", header="max|x|, steady (m)"),
-    Column(key="rms_x_ss", header="x_rms, steady (m)"),
-    Column(key="reduction", header="RMS reduction, steady"),
-    Column(key="peak_u", header="max|u| (N)"),
-    Column(key="rms_u", header="u_rms (N)"),
-    Column(key="energy", header="E (J)"),
-]
+_METRIC_COLUMNS = columns(
+    """
+    controller  controller
+    peak_x      max|x| (m)
+    rms_x       x_rms (m)
+    peak_x_ss   max|x|, steady (m)
+    rms_x_ss    x_rms, steady (m)
+    reduction   RMS reduction, steady
+    peak_u      max|u| (N)
+    rms_u       u_rms (N)
+    energy      E (J)
+    """
+)
 
 
 def _at(study: ControlStudy) -> str:
@@ -93,16 +83,18 @@ def gains_table(study: ControlStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="law", header="law"),
-            Column(key="kx", header="K_x (N/m)"),
-            Column(key="kv", header="K_v (N s/m)"),
-            Column(key="wn", header="ω_n,cl (rad/s)"),
-            Column(key="zeta", header="ζ_cl"),
-            Column(key="re", header="Re s (1/s)"),
-            Column(key="im", header="|Im s| (rad/s)"),
-            Column(key="X", header="X_ss (m)"),
-        ],
+        columns(
+            """
+            law   law
+            kx    K_x (N/m)
+            kv    K_v (N s/m)
+            wn    ω_n,cl (rad/s)
+            zeta  ζ_cl
+            re    Re s (1/s)
+            im    |Im s| (rad/s)
+            X     X_ss (m)
+            """
+        ),
         caption=(
             "The closed loop of u = −K_x x − K_v v is the oscillator (m, c + K_v, k + K_x): its natural frequency "
             f"ω_n,cl, damping ratio ζ_cl, pole pair s and steady amplitude X_ss at the forcing {_at(study)}."
@@ -136,20 +128,22 @@ def costs_table(study: ControlStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="law", header="law"),
-            Column(key="kx", header="K_x, K_P (N/m)"),
-            Column(key="ki", header="K_I (N/(m s))"),
-            Column(key="kv", header="K_v, K_D (N s/m)"),
-            Column(key="X", header="X_ss (m)"),
-            Column(key="u_rms", header="u_rms (N)"),
-            Column(key="floor", header="least u_rms for X_ss (N)"),
-            Column(key="L", header="|L(iω)|"),
-            Column(key="wc", header="ω_c (rad/s)"),
-            Column(key="pm", header="phase margin (°)"),
-            Column(key="dm", header="delay margin (s)"),
-            Column(key="bn", header="B_n (rad/s)"),
-        ],
+        columns(
+            """
+            law    law
+            kx     K_x, K_P (N/m)
+            ki     K_I (N/(m s))
+            kv     K_v, K_D (N s/m)
+            X      X_ss (m)
+            u_rms  u_rms (N)
+            floor  least u_rms for X_ss (N)
+            L      |L(iω)|
+            wc     ω_c (rad/s)
+            pm     phase margin (°)
+            dm     delay margin (s)
+            bn     B_n (rad/s)
+            """
+        ),
         caption=(
             f"The active laws at {_at(study)} on equal footing: gains (K_x, K_v of the PD-type laws; K_P, K_I, K_D of "
             "the PID), the unlimited loop's steady amplitude X_ss, the run's steady RMS force u_rms against the "
@@ -186,21 +180,14 @@ def active_metrics_table(study: ControlStudy) -> Table:
 def checks_table(study: ControlStudy) -> Table:
     """Rounding-level checks of the active designs, printed as bounds."""
     a = study.active
-    rows = [
-        {"check": "PD loop simulated (DOP853) against the exact closed-loop oscillator, max |Δx| (m)",
-         "value": within(a.pd_error, 1e-9)},
-        {"check": "LQR gains: python-control against scipy's Riccati solver, relative",
-         "value": within(a.lqr_check["scipy"], 1e-12)},
-        {"check": "LQR gains: python-control against the closed form, relative",
-         "value": within(a.lqr_check["closed form"], 1e-12)},
-        {"check": "Riccati residual of the returned P, relative", "value": within(a.lqr_check["residual"], 1e-12)},
-    ]  # fmt: skip
-    return Table(
-        rows,
-        [Column(key="check", header="check"), Column(key="value", header="bound")],
-        caption="Self-checks of the active designs (rounding level, printed as bounds).",
-        name="tab-control-checks",
+    checks = (
+        ("PD loop simulated (DOP853) against the exact closed-loop oscillator, max |Δx| (m)", bound(a.pd_error, 1e-9)),
+        ("LQR gains: python-control against scipy's Riccati solver, relative", bound(a.lqr_check["scipy"], 1e-12)),
+        ("LQR gains: python-control against the closed form, relative", bound(a.lqr_check["closed form"], 1e-12)),
+        ("Riccati residual of the returned P, relative", bound(a.lqr_check["residual"], 1e-12)),
     )
+    caption = "Self-checks of the active designs (rounding level, printed as bounds)."
+    return self_checks(checks, caption=caption, name="tab-control-checks")
 
 
 def move_table(study: ControlStudy) -> Table:
@@ -222,15 +209,17 @@ def move_table(study: ControlStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="scheme", header="force limit and integrator"),
-            Column(key="over", header="overshoot (m)"),
-            Column(key="amp", header="X_ss (m)"),
-            Column(key="mean", header="mean error, steady (m)"),
-            Column(key="sat", header="time at the limit (%)"),
-            Column(key="imax", header="max|I| (m s)"),
-            Column(key="peak_u", header="max|u| (N)"),
-        ],
+        columns(
+            """
+            scheme  force limit and integrator
+            over    overshoot (m)
+            amp     X_ss (m)
+            mean    mean error, steady (m)
+            sat     time at the limit (%)
+            imax    max|I| (m s)
+            peak_u  max|u| (N)
+            """
+        ),
         caption=(
             f"PID move to x_ref = {num(a.x_ref)} m under the disturbance at {_at(study)}, force limited to "
             f"±{num(a.u_max)} N (first row: no limit): overshoot, steady half peak-to-peak oscillation X_ss and mean "
@@ -260,13 +249,15 @@ def flutter_table(study: ControlStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="case", header="velocity gain"),
-            Column(key="kd", header="K_v (N s/m)"),
-            Column(key="re", header="max Re s (1/s)"),
-            Column(key="im", header="|Im s| (rad/s)"),
-            Column(key="verdict", header="loop"),
-        ],
+        columns(
+            """
+            case     velocity gain
+            kd       K_v (N s/m)
+            re       max Re s (1/s)
+            im       |Im s| (rad/s)
+            verdict  loop
+            """
+        ),
         caption=(
             f"Negative damping c = {num(a.flutter.c)} N s/m (the linear galloping or stall-flutter model) under "
             "u = −K_v v: the poles have real part −(c + K_v)/(2m); the loop is stable exactly when "
@@ -310,11 +301,13 @@ def skyhook_energy_table(study: ControlStudy) -> Table:
     ]
     return Table(
         [{"what": what, "closed": cell(getattr(p, key), 4), "run": cell(r[key], 4)} for what, key in rows],
-        [
-            Column(key="what", header="mean power"),
-            Column(key="closed", header="closed form (W)"),
-            Column(key="run", header="run, steady tail (W)"),
-        ],
+        columns(
+            """
+            what    mean power
+            closed  closed form (W)
+            run     run, steady tail (W)
+            """
+        ),
         caption=(
             f"Mean steady powers of the ideal skyhook (c_sky = {num(s.c_sky)} N s/m) at ω = {num(s.omega)} rad/s, "
             f"base amplitude Y = {num(s.Y)} m, realised by an actuator between mass and base: the power c_sky v² "
@@ -342,12 +335,14 @@ def refinement_table(study: ControlStudy) -> Table:
         prev = val
     return Table(
         rows,
-        [
-            Column(key="spp", header="RK4 steps per period"),
-            Column(key="dt", header="Δt (s)"),
-            Column(key="T", header="max|x|/Y at ω_n"),
-            Column(key="d", header="change from the row above"),
-        ],
+        columns(
+            """
+            spp  RK4 steps per period
+            dt   Δt (s)
+            T    max|x|/Y at ω_n
+            d    change from the row above
+            """
+        ),
         caption=(
             "On-off skyhook transmissibility at ω = ω_n under step refinement. The law switches the damping "
             "discontinuously, so fixed-step RK4 loses its fourth order at each switch; the table shows how far "
@@ -363,24 +358,23 @@ def semi_active_checks_table(study: ControlStudy) -> Table:
     p, pr = s.power, s.power_run
     vals = list(s.refine.values())
     power = max(abs(pr[f] - getattr(p, f)) / max(abs(p.gross), 1e-300) for f in ("removed", "net", "supplied", "gross"))
-    rows = [
-        {"check": f"{LABELS[n]}: RK4 run's steady max|x|/Y against the closed form, relative",
-         "value": within(s.closed_run_error[n], 1e-4)}
+    checks = [
+        (
+            f"{LABELS[n]}: RK4 run's steady max|x|/Y against the closed form, relative",
+            bound(s.closed_run_error[n], 1e-4),
+        )
         for n in ("soft", "skyhook")
-    ] + [
-        {"check": "ideal skyhook: mean powers of the run against the closed form, largest relative difference",
-         "value": within(power, 1e-3)},
-        {"check": "on-off skyhook at ωₙ: last refinement step (16000 to 64000 steps per period), absolute",
-         "value": within(abs(vals[-1] - vals[-2]), 1e-4)},
-        {"check": "on-off and clipped dampers: largest instantaneous power they deliver (W)",
-         "value": "≤ 0" if s.worst_power <= 0.0 else within(s.worst_power, 1e-12)},
+    ]
+    checks += [
+        ("ideal skyhook: mean powers of the run against the closed form, largest relative difference",
+         bound(power, 1e-3)),
+        ("on-off skyhook at ωₙ: last refinement step (16000 to 64000 steps per period), absolute",
+         bound(abs(vals[-1] - vals[-2]), 1e-4)),
+        ("on-off and clipped dampers: largest instantaneous power they deliver (W)",
+         "≤ 0" if s.worst_power <= 0.0 else bound(s.worst_power, 1e-12)),
     ]  # fmt: skip
-    return Table(
-        rows,
-        [Column(key="check", header="check"), Column(key="value", header="bound")],
-        caption="Self-checks of the semi-active runs (printed as bounds against stated tolerances).",
-        name="tab-control-semiactive-checks",
-    )
+    caption = "Self-checks of the semi-active runs (printed as bounds against stated tolerances)."
+    return self_checks(checks, caption=caption, name="tab-control-semiactive-checks")
 
 
 def shaping_table(study: ControlStudy) -> Table:
@@ -403,15 +397,17 @@ def shaping_table(study: ControlStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="shaper", header="command"),
-            Column(key="delay", header="added delay (s)"),
-            Column(key="V", header="V, closed form (%)"),
-            Column(key="Vsim", header="V, simulated (%)"),
-            Column(key="amp", header="ringing after the move (m)"),
-            Column(key="lo", header=f"V ≤ {num(100 * SHAPER_LEVEL)} % from ω/ω_model"),
-            Column(key="hi", header="to"),
-        ],
+        columns(
+            f"""
+            shaper  command
+            delay   added delay (s)
+            V       V, closed form (%)
+            Vsim    V, simulated (%)
+            amp     ringing after the move (m)
+            lo      V ≤ {num(100 * SHAPER_LEVEL)} % from ω/ω_model
+            hi      to
+            """
+        ),
         caption=(
             f"Move of {num(s.move)} m on an oscillator whose natural frequency is {signed_pct(s.freq_error)} off the "
             "model the shapers were designed on: added delay, residual vibration V as a percentage of the unshaped "

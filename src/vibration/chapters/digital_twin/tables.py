@@ -13,7 +13,7 @@ import numpy as np
 from vibration.chapters.digital_twin.study import KALMAN_BLOCK, KALMAN_SETTLE, MIN_ALARMS, DigitalTwinStudy
 from vibration.physics.twin import binomial_halfwidth
 from vibration.presentation.numbers import pm
-from vibration.presentation.tables import Approx, Column, Missing, Table
+from vibration.presentation.tables import Approx, Missing, Table, columns
 
 #: A rounding-level check value is compared with its reference within this fraction of its bound.
 ROUNDING_MARGIN = 0.01
@@ -43,12 +43,14 @@ def checks_table(st: DigitalTwinStudy) -> Table:
     p = st.params
     return Table(
         rows,
-        [
-            Column(key="check", header="check"),
-            Column(key="value", header="measured difference", digits=2),
-            Column(key="bound", header="bound", digits=2),
-            Column(key="ok", header="passes"),
-        ],
+        columns(
+            """
+            check  check
+            value  measured difference  2
+            bound  bound                2
+            ok     passes
+            """
+        ),
         caption="Checks of the exact discretisation and of the batch identification against independent methods.",
         name="tab-twin-checks",
         notes=(
@@ -82,17 +84,19 @@ def identification_table(st: DigitalTwinStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="p", header="parameter"),
-            Column(key="truth", header="true", digits=4),
-            Column(key="est", header="least squares", digits=5),
-            Column(key="se", header="std. error", digits=2),
-            Column(key="lo", header="95 % low", digits=5),
-            Column(key="hi", header="95 % high", digits=5),
-            Column(key="in", header="covers truth"),
-            Column(key="hp", header="half-power", digits=3),
-            Column(key="cf", header="circle fit", digits=3),
-        ],
+        columns(
+            """
+            p      parameter
+            truth  true           4
+            est    least squares  5
+            se     std. error     2
+            lo     95 % low       5
+            hi     95 % high      5
+            in     covers truth
+            hp     half-power     3
+            cf     circle fit     3
+            """
+        ),
         caption="Identified parameters: output-error least squares on the exact discrete model, and the "
         "frequency-domain estimates from the measured frequency response.",
         name="tab-twin-identified",
@@ -127,19 +131,21 @@ def coverage_table(st: DigitalTwinStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="what", header="experiment"),
-            Column(key="noise", header="noise / rms", digits=2),
-            Column(key="T", header="T (s)", digits=3),
-            Column(key="R", header="runs"),
-            Column(key="cm", header="coverage m"),
-            Column(key="cc", header="coverage c"),
-            Column(key="ck", header="coverage k"),
-            Column(key="em", header="rms error m (%)", digits=2, shown=False),
-            Column(key="ec", header="rms error c (%)", digits=2, shown=False),
-            Column(key="ek", header="rms error k (%)", digits=2, shown=False),
-            Column(key="ratio", header="rms error / std. error", digits=3, shown=False),
-        ],
+        columns(
+            """
+            what   experiment
+            noise  noise / rms             2
+            T      T (s)                   3
+            R      runs
+            cm     coverage m
+            cc     coverage c
+            ck     coverage k
+            em     rms error m (%)         2  hidden
+            ec     rms error c (%)         2  hidden
+            ek     rms error k (%)         2  hidden
+            ratio  rms error / std. error  3  hidden
+            """
+        ),
         # the errors (in the CSV file and the plain text) are drawn in the next figure
         caption="Monte Carlo: how often the 95 % intervals contain the truth; the next figure draws the errors.",
         name="tab-twin-coverage",
@@ -187,18 +193,20 @@ def assumption_table(st: DigitalTwinStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="case", header="case"),
-            Column(key="R", header="runs"),
-            Column(key="cm", header="coverage m"),
-            Column(key="cc", header="coverage c"),
-            Column(key="ck", header="coverage k"),
-            Column(key="pk", header="predicted k", digits=2),
-            Column(key="bk", header="error k (%)", digits=2),
-            Column(key="se", header="rms / s.e.", digits=3),
-            Column(key="lb", header="whiteness flags"),
-            Column(key="ic", header="input flags"),
-        ],
+        columns(
+            """
+            case  case
+            R     runs
+            cm    coverage m
+            cc    coverage c
+            ck    coverage k
+            pk    predicted k      2
+            bk    error k (%)      2
+            se    rms / s.e.       3
+            lb    whiteness flags
+            ic    input flags
+            """
+        ),
         caption="Coverage of the 95 % intervals, and the share of runs the residual tests flag at the 5 % level, "
         "when the records break one assumption at a time.",
         name="tab-twin-assumptions",
@@ -235,14 +243,16 @@ def kalman_table(st: DigitalTwinStudy) -> Table:
     ]
     return Table(
         rows,
-        [
-            Column(key="truth", header="true stiffness"),
-            Column(key="R", header="records"),
-            Column(key="n", header="samples"),
-            Column(key="stated", header="rms stated σ_k (N/m)", digits=3),
-            Column(key="actual", header="rms error of k (N/m)", digits=3),
-            Column(key="ratio", header="error / stated"),
-        ],
+        columns(
+            """
+            truth   true stiffness
+            R       records
+            n       samples
+            stated  rms stated σ_k (N/m)  3
+            actual  rms error of k (N/m)  3
+            ratio   error / stated
+            """
+        ),
         caption="The Kalman filter's stated standard deviation of the stiffness against its actual error.",
         name="tab-twin-kalman",
         notes=(
@@ -276,17 +286,19 @@ def detection_table(st: DigitalTwinStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="fault", header="fault"),
-            Column(key="R", header="runs of each kind"),
-            Column(key="fa", header="false alarm probability", digits=3),
-            Column(key="far", header="false alarms (1/h)", digits=3),
-            Column(key="faru", header="95 % upper bound (1/h)", digits=3),
-            Column(key="gmax", header="largest healthy g", digits=3),
-            Column(key="margin", header="h / largest healthy g", digits=3),
-            Column(key="pd", header="detection probability", digits=3),
-            Column(key="delay", header="mean delay (s)", digits=3),
-        ],
+        columns(
+            """
+            fault   fault
+            R       runs of each kind
+            fa      false alarm probability  3
+            far     false alarms (1/h)       3
+            faru    95 % upper bound (1/h)   3
+            gmax    largest healthy g        3
+            margin  h / largest healthy g    3
+            pd      detection probability    3
+            delay   mean delay (s)           3
+            """
+        ),
         caption=f"Change detection at the chosen CUSUM threshold h = {st.params.threshold:g} over seeded healthy "
         "and faulty records.",
         name="tab-twin-detection",
@@ -351,16 +363,18 @@ def run_length_table(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> Tabl
         )
     return Table(
         rows,
-        [
-            Column(key="what", header="quantity"),
-            Column(key="h", header="h", digits=3),
-            Column(key="count", header="alarms or detections"),
-            Column(key="meas", header="measured", digits=3),
-            Column(key="se", header="std. error", digits=3),
-            Column(key="bound", header="95 % lower bound (s)", digits=3),
-            Column(key="theory", header="Markov chain", digits=3),
-            Column(key="z", header="difference / std. error", digits=2),
-        ],
+        columns(
+            """
+            what    quantity
+            h       h                        3
+            count   alarms or detections
+            meas    measured                 3
+            se      std. error               3
+            bound   95 % lower bound (s)     3
+            theory  Markov chain             3
+            z       difference / std. error  2
+            """
+        ),
         caption="CUSUM run lengths: Monte Carlo against the Markov-chain theory.",
         name="tab-twin-arl",
         notes=(

@@ -13,7 +13,7 @@ import math
 from vibration.chapters.duffing.notation import ERROR_FACTOR, Z_ATOL, exponent_approx, forcing_term, k3_text
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 from vibration.presentation.numbers import Approx, bound, column, minus
-from vibration.presentation.tables import Column, Missing, Table
+from vibration.presentation.tables import Missing, Table, columns, self_checks
 
 NO_ORBIT = "shooting did not converge"
 
@@ -66,15 +66,17 @@ def hb_table(study: DuffingStudy) -> Table:
     p = study.params
     return Table(
         rows,
-        [
-            Column(key="case", header="spring"),
-            Column(key="wl", header="ω_low (rad/s)"),
-            Column(key="wh", header="ω_high (rad/s)"),
-            Column(key="wp", header="ω_peak (rad/s)"),
-            Column(key="ap", header="A_peak (m)"),
-            Column(key="abb", header="F₀/(c ω_bb) (m)"),
-            Column(key="lin", header="linear peak (m)"),
-        ],
+        columns(
+            """
+            case  spring
+            wl    ω_low (rad/s)
+            wh    ω_high (rad/s)
+            wp    ω_peak (rad/s)
+            ap    A_peak (m)
+            abb   F₀/(c ω_bb) (m)
+            lin   linear peak (m)
+            """
+        ),
         caption=f"One-harmonic frequency response at m = {p.m:g} kg, k = {p.k:g} N/m, c = {p.c_nominal:g} N s/m, "
         f"F₀ = {p.F0:g} N: the folds ω_low and ω_high bounding the band of three amplitudes, the peak, its "
         "textbook estimate F₀/(c ω) on the backbone ω_bb, and the peak of the same oscillator with a linear spring.",
@@ -106,16 +108,18 @@ def stability_table(study: DuffingStudy) -> Table:
         rows = [{"case": "—", "w": none, "a": none, "st": none, "ao": none, "mu": none, "stf": none, "agree": none}]
     return Table(
         rows,
-        [
-            Column(key="case", header="spring"),
-            Column(key="w", header="ω (rad/s)"),
-            Column(key="a", header="A, one harmonic (m)"),
-            Column(key="st", header="slow flow"),
-            Column(key="ao", header="A, shooting (m)"),
-            Column(key="mu", header="max |μ|"),
-            Column(key="stf", header="Floquet"),
-            Column(key="agree", header="agree"),
-        ],
+        columns(
+            """
+            case   spring
+            w      ω (rad/s)
+            a      A, one harmonic (m)
+            st     slow flow
+            ao     A, shooting (m)
+            mu     max |μ|
+            stf    Floquet
+            agree  agree
+            """
+        ),
         caption="Stability of each one-harmonic amplitude at two frequencies inside the band: the slow flow's "
         "verdict against the Floquet multipliers μ of the periodic orbit of the full equation found from it by "
         "Newton shooting with an eighth-order Runge–Kutta integrator.",
@@ -149,16 +153,18 @@ def fold_table(study: DuffingStudy) -> Table:
     steps = study.params.n_sweep
     return Table(
         rows,
-        [
-            Column(key="case", header="spring"),
-            Column(key="dir", header="sweep"),
-            Column(key="orbit", header="fold, periodic orbit (rad/s)"),
-            Column(key="hb", header="fold, one harmonic (rad/s)"),
-            Column(key="jump", header="jump, time integration (rad/s)"),
-            Column(key="bracket", header="jump bracket (rad/s)"),
-            Column(key="hb_err", header="one harmonic − orbit (rad/s)"),
-            Column(key="jump_err", header="jump − orbit (rad/s)"),
-        ],
+        columns(
+            """
+            case      spring
+            dir       sweep
+            orbit     fold, periodic orbit (rad/s)
+            hb        fold, one harmonic (rad/s)
+            jump      jump, time integration (rad/s)
+            bracket   jump bracket (rad/s)
+            hb_err    one harmonic − orbit (rad/s)
+            jump_err  jump − orbit (rad/s)
+            """
+        ),
         caption="Where each sweep leaves its branch: the fold of the periodic orbit of the full equation "
         "(pseudo-arclength continuation by shooting; the branch turns where a Floquet multiplier passes +1), the "
         f"one-harmonic fold, and the sweep's jump ({steps} frequencies per sweep, the bracket refined by sweeping it "
@@ -193,16 +199,18 @@ def history_table(study: DuffingStudy) -> Table:
     )
     return Table(
         rows,
-        [
-            Column(key="where", header="frequency"),
-            Column(key="omega", header="ω (rad/s)"),
-            Column(key="linear", header="linear (m)"),
-            Column(key="hb_low", header="lower stable A (m)"),
-            Column(key="hb_high", header="upper stable A (m)"),
-            Column(key="rest", header="from rest (m)"),
-            Column(key="up", header="sweep up (m)"),
-            Column(key="down", header="sweep down (m)"),
-        ],
+        columns(
+            """
+            where    frequency
+            omega    ω (rad/s)
+            linear   linear (m)
+            hb_low   lower stable A (m)
+            hb_high  upper stable A (m)
+            rest     from rest (m)
+            up       sweep up (m)
+            down     sweep down (m)
+            """
+        ),
         caption=f"Hardening spring, {_k3(study.hardening)}: steady amplitudes by one harmonic and "
         f"by time integration from rest and after sweeps from either side; {verdict}.",
         name="tab-duffing-history",
@@ -246,14 +254,16 @@ def lyapunov_table(study: DuffingStudy) -> Table:
     main = study.main_run
     return Table(
         rows,
-        [
-            Column(key="case", header="forcing"),
-            Column(key="method", header="method"),
-            Column(key="n", header="periods"),
-            Column(key="l1", header="λ_1 (1/s)"),
-            Column(key="se", header="standard error (1/s)", digits=1),
-            Column(key="l2", header="λ_2 (1/s)"),
-        ],
+        columns(
+            """
+            case    forcing
+            method  method
+            n       periods
+            l1      λ_1 (1/s)
+            se      standard error (1/s)  1
+            l2      λ_2 (1/s)
+            """
+        ),
         caption=f"Lyapunov exponents of Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = {forcing_term(p)} from "
         f"{_start(*study_start(study))} (per unit time, natural logarithm); standard errors by batch means over "
         f"{main.block_means.size} blocks of {main.block_periods} periods.",
@@ -287,15 +297,17 @@ def lyapunov_runs_table(study: DuffingStudy) -> Table:
                  "se": _error(pooled.standard_error), "z": None})  # fmt: skip
     return Table(
         rows,
-        [
-            Column(key="start", header="initial state"),
-            Column(key="spp", header="RK4 steps per period"),
-            Column(key="h", header="step h (s)"),
-            Column(key="n", header="periods"),
-            Column(key="l1", header="λ_1 (1/s)"),
-            Column(key="se", header="standard error (1/s)", digits=1),
-            Column(key="z", header="(λ_1 − pooled) / error", digits=2),
-        ],
+        columns(
+            """
+            start  initial state
+            spp    RK4 steps per period
+            h      step h (s)
+            n      periods
+            l1     λ_1 (1/s)
+            se     standard error (1/s)    1
+            z      (λ_1 − pooled) / error  2
+            """
+        ),
         caption=f"Largest exponent at F = {study.params.F0_ueda:g} N from runs that share no trajectory (other "
         "initial states, other RK4 steps; variational equations with QR), the first being the main run.",
         name="tab-duffing-lyapunov-runs",
@@ -315,12 +327,14 @@ def lyapunov_convergence_table(study: DuffingStudy) -> Table:
     ]
     return Table(
         rows,
-        [
-            Column(key="n", header="periods N"),
-            Column(key="time", header="averaging time (s)"),
-            Column(key="l1", header="λ_1 (1/s)"),
-            Column(key="se", header="standard error (1/s)", digits=1),
-        ],
+        columns(
+            """
+            n     periods N
+            time  averaging time (s)
+            l1    λ_1 (1/s)
+            se    standard error (1/s)  1
+            """
+        ),
         caption="The main run's largest exponent from its first N periods; its standard error falls as 1/√N.",
         name="tab-duffing-lyapunov-convergence",
     )
@@ -328,21 +342,11 @@ def lyapunov_convergence_table(study: DuffingStudy) -> Table:
 
 def checks_table(study: DuffingStudy) -> Table:
     """Rounding-level self-checks, printed as bounds (the bound, not the value, reproduces on every machine)."""
-    rows = [
-        {
-            "check": "amplitude equation on the drawn curves, relative residual",
-            "bound": _bound(study.amp_residual, 1e-12),
-        },  # fmt: skip
-        {"check": "Floquet: |μ₁ μ₂| against exp(−cT/m), relative error", "bound": _bound(study.liouville, 1e-9)},
-        {"check": "QR exponents: |λ₁ + λ₂ + c/m| (RK4 step error), 1/s", "bound": _bound(study.qr_sum_error, 1e-6)},
-        {
-            "check": "continued folds: |μ − 1| of the multiplier closest to +1",
-            "bound": _bound(study.fold_multiplier_error, 1e-8),
-        },
-    ]
-    return Table(
-        rows,
-        [Column(key="check", header="check"), Column(key="bound", header="bound")],
-        caption="Self-checks: identities the computation must meet to rounding, with the bound each meets.",
-        name="tab-duffing-checks",
+    checks = (
+        ("amplitude equation on the drawn curves, relative residual", _bound(study.amp_residual, 1e-12)),
+        ("Floquet: |μ₁ μ₂| against exp(−cT/m), relative error", _bound(study.liouville, 1e-9)),
+        ("QR exponents: |λ₁ + λ₂ + c/m| (RK4 step error), 1/s", _bound(study.qr_sum_error, 1e-6)),
+        ("continued folds: |μ − 1| of the multiplier closest to +1", _bound(study.fold_multiplier_error, 1e-8)),
     )
+    caption = "Self-checks: identities the computation must meet to rounding, with the bound each meets."
+    return self_checks(checks, caption=caption, name="tab-duffing-checks")

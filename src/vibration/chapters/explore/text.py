@@ -24,7 +24,7 @@ from vibration.chapters.explore.panel import OMEGA_STEP, panel_facts
 from vibration.chapters.explore.study import C_MAX, C_MIN, ExploreStudy
 from vibration.presentation.captions import web_only
 from vibration.presentation.numbers import sig as num
-from vibration.presentation.tables import Column, Table
+from vibration.presentation.tables import Table, columns, text_rows
 
 W_N = r"$\omega_n$"
 
@@ -130,27 +130,39 @@ def layout_text(study: ExploreStudy) -> str:
     )
 
 
+#: The readout's lines: the quantity as the reader reads it, its field of the readout, its unit (none for a ratio).
+_READOUT = text_rows(
+    """
+    natural frequency ωₙ                omega_n         rad/s
+    natural frequency fₙ                f_n             Hz
+    forcing frequency ω                 omega           rad/s
+    forcing frequency f                 f               Hz
+    frequency ratio ω/ωₙ                ratio
+    damping ratio ζ                     zeta
+    regime                              regime
+    magnification |X|/(F₀/k)            magnification
+    steady-state amplitude |X|          amplitude       m
+    peak |x| in the window              peak            m
+    2 % settling time                   settling        s
+    steady state reached in the window  steady_reached
+    time window                         t_end           s
+    """
+)
+
+
 def readout_table(study: ExploreStudy) -> Table:
     """The explorer's readout at the starting point, five significant digits."""
     r = study.start
-    rows = [
-        ("natural frequency ωₙ", r.omega_n, "rad/s"),
-        ("natural frequency fₙ", r.f_n, "Hz"),
-        ("forcing frequency ω", r.omega, "rad/s"),
-        ("forcing frequency f", r.f, "Hz"),
-        ("frequency ratio ω/ωₙ", r.ratio, ""),
-        ("damping ratio ζ", r.zeta, ""),
-        ("regime", r.regime, ""),
-        ("magnification |X|/(F₀/k)", r.magnification, ""),
-        ("steady-state amplitude |X|", r.amplitude, "m"),
-        ("peak |x| in the window", r.peak, "m"),
-        ("2 % settling time", r.settling, "s"),
-        ("steady state reached in the window", r.steady_reached, ""),
-        ("time window", r.t_end, "s"),
-    ]
+    rows = [{"q": q, "v": getattr(r, attr), "u": unit[0] if unit else ""} for q, attr, *unit in _READOUT]
     return Table(
-        [{"q": q, "v": v, "u": u} for q, v, u in rows],
-        [Column(key="q", header="quantity"), Column(key="v", header="value", digits=5), Column(key="u", header="unit")],
+        rows,
+        columns(
+            """
+            q  quantity
+            v  value     5
+            u  unit
+            """
+        ),
         caption=(
             f"The explorer's readout at its starting point (ω = {num(r.omega)} rad/s, c = {num(study.c_start)} "
             "N s/m): what the live explorer shows before any slider moves."

@@ -21,7 +21,7 @@ import math
 from vibration.chapters.frequency_response.study import TOL_CLOSED, ZETA_DECREMENT_MAX, DampingCase, FrequencyStudy
 from vibration.presentation.findings import NO_STEADY, at_least
 from vibration.presentation.narrative import g
-from vibration.presentation.tables import Column, Missing, Table
+from vibration.presentation.tables import Missing, Table, columns, self_checks
 
 NO_PEAK = "no resonant peak when ζ ≥ 1/√2: the magnification falls from 1 at ω = 0"
 NO_BAND_UNDAMPED = "no half-power band when c = 0: the peak is infinite"
@@ -68,17 +68,19 @@ def dampings_table(study: FrequencyStudy) -> Table:
     p = study.params
     return Table(
         rows,
-        [
-            Column(key="case", header="case"),
-            Column(key="c", header="c (N s/m)", digits=3),
-            Column(key="zeta", header="ζ", digits=3),
-            Column(key="regime", header="regime"),
-            Column(key="Q", header="Q", digits=3),
-            Column(key="wp", header="ω_peak (rad/s)", digits=4),
-            Column(key="Mp", header="M_peak", digits=4),
-            Column(key="Mref", header="M(ω_ref)", digits=4),
-            Column(key="Mres", header="M(ω_res)", digits=4),
-        ],
+        columns(
+            """
+            case    case
+            c       c (N s/m)       3
+            zeta    ζ               3
+            regime  regime
+            Q       Q               3
+            wp      ω_peak (rad/s)  4
+            Mp      M_peak          4
+            Mref    M(ω_ref)        4
+            Mres    M(ω_res)        4
+            """
+        ),
         caption=(
             "The three dampings: damping ratio ζ, regime, quality factor Q = 1/(2ζ), the peak of the "
             f"magnification M = |X|/(F_0/k) and its value at ω_ref = {g(p.omega_ref)} rad/s and "
@@ -111,14 +113,16 @@ def band_table(study: FrequencyStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="case", header="case"),
-            Column(key="lo", header="ω_1 (rad/s)", digits=4),
-            Column(key="hi", header="ω_2 (rad/s)", digits=4),
-            Column(key="width", header="ω_2 − ω_1 (rad/s)", digits=3),
-            Column(key="cm", header="c/m (rad/s)", digits=3),
-            Column(key="inside", header=f"ω_res = {g(study.params.omega_res)} rad/s in band"),
-        ],
+        columns(
+            f"""
+            case    case
+            lo      ω_1 (rad/s)                                        4
+            hi      ω_2 (rad/s)                                        4
+            width   ω_2 − ω_1 (rad/s)                                  3
+            cm      c/m (rad/s)                                        3
+            inside  ω_res = {g(study.params.omega_res)} rad/s in band
+            """
+        ),
         caption=(
             "Exact half-power band of the displacement: the frequencies ω_1 < ω_2 where the magnification is "
             "its peak over √2, its width beside the light-damping estimate c/m, and whether the paper's "
@@ -149,12 +153,14 @@ def estimates_table(study: FrequencyStudy) -> Table:
         rows.append({"case": c.name, "zeta": z, "hp": hp, "ld": ld})
     return Table(
         rows,
-        [
-            Column(key="case", header="case"),
-            Column(key="zeta", header="ζ = c/(2√(km))", digits=4),
-            Column(key="hp", header="ζ from half-power points", digits=4),
-            Column(key="ld", header="ζ from log decrement", digits=4),
-        ],
+        columns(
+            """
+            case  case
+            zeta  ζ = c/(2√(km))            4
+            hp    ζ from half-power points  4
+            ld    ζ from log decrement      4
+            """
+        ),
         caption=(
             "The damping ratio three independent ways: from the parameters, from the exact half-power relation "
             "on the computed magnification curve, and from the logarithmic decrement of a free decay integrated "
@@ -171,13 +177,15 @@ def decomposition_table(study: FrequencyStudy) -> Table:
     row = {"X": d.X, "phase": d.phase, "x0": d.x_h0, "x_end": d.x_h_end, "ts": ts}
     return Table(
         [row],
-        [
-            Column(key="X", header="X (m)", digits=4),
-            Column(key="phase", header="φ (rad)", digits=4),
-            Column(key="x0", header="x_h(0) (m)", digits=4),
-            Column(key="x_end", header="x_h(t_end) (m)", digits=3),
-            Column(key="ts", header="t_s (s)", digits=3),
-        ],
+        columns(
+            """
+            X      X (m)           4
+            phase  φ (rad)         4
+            x0     x_h(0) (m)      4
+            x_end  x_h(t_end) (m)  3
+            ts     t_s (s)         3
+            """
+        ),
         caption=(
             f"The resonance case (c = {g(study.resonance.oscillator.c)} N s/m) from rest: steady amplitude X and "
             "phase lag φ, the transient x_h = x − x_ss at t = 0 and at the end of the window, "
@@ -203,13 +211,15 @@ def energy_table(study: FrequencyStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="response", header="response"),
-            Column(key="W", header="W (J)", digits=5),
-            Column(key="D", header="D (J)", digits=5),
-            Column(key="E", header="ΔE (J)", digits=5),
-            Column(key="res", header="max |W − D − ΔE| / max W", digits=3),
-        ],
+        columns(
+            """
+            response  response
+            W         W (J)                     5
+            D         D (J)                     5
+            E         ΔE (J)                    5
+            res       max |W − D − ΔE| / max W  3
+            """
+        ),
         caption=(
             f"Energy of the resonance case at t_end = {g(study.params.t_end)} s: work of the force W, energy "
             "dissipated by the damper D, change of stored energy ΔE, and the worst residual of W = D + ΔE over the "
@@ -221,16 +231,12 @@ def energy_table(study: FrequencyStudy) -> Table:
 
 def checks_table(study: FrequencyStudy) -> Table:
     """Differences at rounding level, printed as bounds: the self-checks of the chapter."""
-    rows = [{"check": c.check, "value": at_least(c.value, c.tol), "ok": c.ok} for c in study.checks]
-    return Table(
-        rows,
-        [
-            Column(key="check", header="check"),
-            Column(key="value", header="relative difference", digits=3),
-            Column(key="ok", header="within bound"),
-        ],
+    return self_checks(
+        ((c.check, at_least(c.value, c.tol), c.ok) for c in study.checks),
         caption="Self-checks of the chapter: independent routes to the same quantity, with their relative differences.",
         name="tab-frequency-checks",
+        headers=("check", "relative difference", "within bound"),
+        digits=3,
     )
 
 
@@ -245,12 +251,14 @@ def design_table(study: FrequencyStudy) -> Table:
     ]
     return Table(
         rows,
-        [
-            Column(key="point", header="point"),
-            Column(key="omega", header="ω (rad/s)", digits=4),
-            Column(key="c", header="c (N s/m)", digits=3),
-            Column(key="peak", header="peak |x| (m)", digits=4),
-        ],
+        columns(
+            """
+            point  point
+            omega  ω (rad/s)     4
+            c      c (N s/m)     3
+            peak   peak |x| (m)  4
+            """
+        ),
         caption=(
             f"Largest |x| in the window [0, {g(study.params.t_end)}] s from rest: the largest on the "
             f"{dm.dampings.size} × {dm.omegas.size} grid, and the paper's three dampings at ω_res."

@@ -13,7 +13,7 @@ import numpy as np
 from vibration.chapters.learning.notation import num, power, sig
 from vibration.chapters.learning.study import ACTIVE, SEMI, TARGETS, LearningStudy
 from vibration.physics.learning import Comparison
-from vibration.presentation.tables import Column, Missing, Table
+from vibration.presentation.tables import Column, Missing, Table, columns
 
 METHOD_NAMES = {"ars": "ARS (augmented random search, V1-t)", "cma": "CMA-ES"}
 SHORT_NAMES = {"ars": "ARS", "cma": "CMA-ES"}
@@ -51,15 +51,17 @@ def lqr_table(st: LearningStudy) -> Table:
     }
     return Table(
         [row],
-        [
-            Column(key="kx", header="K_x (N/m)"),
-            Column(key="kv", header="K_v (N s/m)"),
-            Column(key="rates", header="decay rates (1/s)"),
-            Column(key="J", header="J* (s)"),
-            Column(key="Jinf", header="J*_∞ (s)"),
-            Column(key="peak", header="max |u| (N)"),
-            Column(key="umax", header="u_max (N)"),
-        ],
+        columns(
+            """
+            kx     K_x (N/m)
+            kv     K_v (N s/m)
+            rates  decay rates (1/s)
+            J      J* (s)
+            Jinf   J*_∞ (s)
+            peak   max |u| (N)
+            umax   u_max (N)
+            """
+        ),
         caption="Discrete-time LQR of the sampled task: gains of u = −K [x, v], closed-loop decay rates, "
         "expected episode cost J* and its value over an infinite horizon, largest force over every initial state.",
         name="tab-learning-lqr",
@@ -90,15 +92,17 @@ def learning_table(st: LearningStudy) -> Table:
     targets = " and ".join(f"{100 * t:g} %" for t in TARGETS)
     return Table(
         rows,
-        [
-            Column(key="method", header="learner"),
-            Column(key="episodes", header="episodes"),
-            Column(key="steps", header="steps"),
-            Column(key="kx", header="K_x (N/m)"),
-            Column(key="kv", header="K_v (N s/m)"),
-            Column(key="J", header="J (s)"),
-            Column(key="ratio", header="J / J*"),
-        ]
+        columns(
+            """
+            method    learner
+            episodes  episodes
+            steps     steps
+            kx        K_x (N/m)
+            kv        K_v (N s/m)
+            J         J (s)
+            ratio     J / J*
+            """
+        )
         + [Column(key=f"e{i}", header=f"episodes to {100 * t:g} %") for i, t in enumerate(TARGETS)],
         caption="What the learners found from episodes alone: gains, exact expected cost J of the learned law, "
         f"its ratio to the LQR optimum J*, and the training episodes each needed to come within {targets} of J*.",
@@ -131,17 +135,19 @@ def seed_table(st: LearningStudy) -> Table:
     tgt = 100 * st.seeds[0].target
     return Table(
         rows,
-        [
-            Column(key="method", header="learner"),
-            Column(key="seeds", header="seeds"),
-            Column(key="iters", header="iterations"),
-            Column(key="episodes", header="episodes per seed"),
-            Column(key="med", header="median J/J* − 1"),
-            Column(key="worst", header="worst J/J* − 1"),
-            Column(key="reached", header=f"seeds within {tgt:g} %"),
-            Column(key="emed", header=f"median episodes to {tgt:g} %"),
-            Column(key="eworst", header=f"worst episodes to {tgt:g} %"),
-        ],
+        columns(
+            f"""
+            method    learner
+            seeds     seeds
+            iters     iterations
+            episodes  episodes per seed
+            med       median J/J* − 1
+            worst     worst J/J* − 1
+            reached   seeds within {tgt:g} %
+            emed      median episodes to {tgt:g} %
+            eworst    worst episodes to {tgt:g} %
+            """
+        ),
         caption=f"Each learner trained from seeds {st.params.seed} to {st.params.seed + st.params.n_seeds - 1} on the "
         f"task without disturbance: final exact cost over the LQR optimum J*, and the training episodes to come "
         f"within {tgt:g} % of J*.",
@@ -187,18 +193,20 @@ def comparison_table(cmp: Comparison, caption: str, name: str, reference: int) -
         )
     return Table(
         rows,
-        [
-            Column(key="name", header="controller"),
-            Column(key="law", header="law"),
-            Column(key="J", header="J (s)"),
-            Column(key="sem", header="± (s)"),
-            Column(key="exact", header="J exact (s)"),
-            Column(key="rel", header="J / J_ref"),
-            Column(key="xpk", header="max |x| (m)"),
-            Column(key="xrms", header="x_rms (m)"),
-            Column(key="urms", header="u_rms (N)"),
-            Column(key="upk", header="max |u| (N)"),
-        ],
+        columns(
+            """
+            name   controller
+            law    law
+            J      J (s)
+            sem    ± (s)
+            exact  J exact (s)
+            rel    J / J_ref
+            xpk    max |x| (m)
+            xrms   x_rms (m)
+            urms   u_rms (N)
+            upk    max |u| (N)
+            """
+        ),
         caption=caption,
         name=name,
         notes=(
@@ -263,14 +271,16 @@ def references_table(st: LearningStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="name", header="reference"),
-            Column(key="info", header="what the law uses"),
-            Column(key="J", header="J exact (s)"),
-            Column(key="peak", header="max |u| (N)"),
-            Column(key="gap", header="learned law's excess (%)"),
-            Column(key="gse", header="± (%)"),
-        ],
+        columns(
+            """
+            name  reference
+            info  what the law uses
+            J     J exact (s)
+            peak  max |u| (N)
+            gap   learned law's excess (%)
+            gse   ± (%)
+            """
+        ),
         caption=f"The force-actuator task under F_0 sin(ωt) (F_0 = {num(t.F0, 4)} N, ω = {num(t.omega, 4)} rad/s): "
         "its exact optimum, the best fixed gain, LQR, and how much more the learned law costs than each.",
         name="tab-learning-references",
@@ -333,11 +343,13 @@ def checks_table(st: LearningStudy) -> Table:
         rows.append({"what": what, "against": against, "bound": _bound(value, CHECK_TOL)})
     return Table(
         rows,
-        [
-            Column(key="what", header="quantity"),
-            Column(key="against", header="independent method"),
-            Column(key="bound", header="relative difference"),
-        ],
+        columns(
+            """
+            what     quantity
+            against  independent method
+            bound    relative difference
+            """
+        ),
         caption="Self-checks of the optimum and of the simulators (relative differences, printed as bounds).",
         name="tab-learning-checks",
     )

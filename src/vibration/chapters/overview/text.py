@@ -11,7 +11,7 @@ import math
 
 from vibration.chapters.overview.study import PAPER_SAYS, OverviewStudy
 from vibration.presentation.narrative import fixed, g, sig
-from vibration.presentation.tables import Column, Missing, Table
+from vibration.presentation.tables import Column, Missing, Table, columns
 
 #: RK45's largest relative gap to the exact values below which the front page says the solver is not the cause.
 SMALL_GAP = 0.05
@@ -143,11 +143,13 @@ def headline_table(st: OverviewStudy) -> Table:
     ]
     return Table(
         rows,
-        [
-            Column(key="q", header="quantity"),
-            Column(key="paper", header="the paper says"),
-            Column(key="exact", header="exact, this run"),
-        ],
+        columns(
+            """
+            q      quantity
+            paper  the paper says
+            exact  exact, this run
+            """
+        ),
         caption="The paper's headline numbers beside the exact solution of its own equation.",
         name="tab-front-headline",
         notes=(

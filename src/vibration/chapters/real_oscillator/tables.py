@@ -16,7 +16,7 @@ from vibration.chapters.real_oscillator.notation import NONE, ascii_detail, deg,
 from vibration.chapters.real_oscillator.study import RealOscillatorStudy, best_prediction
 from vibration.chapters.real_oscillator.verdicts import claims
 from vibration.presentation.narrative import g
-from vibration.presentation.tables import Approx, Column, Composite, Missing, Table
+from vibration.presentation.tables import Approx, Column, Composite, Missing, Table, columns
 
 #: Tolerances of the power law's machine-dependent digits (declared for the regression comparison): ω_n and the
 #: rms within 50 %, its coefficients and their run-to-run errors within a factor of 10 (a coefficient moved from
@@ -59,14 +59,16 @@ def law_table(st: RealOscillatorStudy) -> Table:
     band = f" ({g(st.band[0], 3)} to {g(st.band[1], 3)} rad)" if st.band else ""
     return Table(
         rows,
-        [
-            Column(key="brake", header="brake"),
-            Column(key="current", header="I (A)", digits=3),
-            Column(key="law", header="law (summed BIC)"),
-            Column(key="wins", header="runs choosing each law"),
-            Column(key="range", header="X (rad)"),
-            Column(key="zeta", header="ζ_eq in the band"),
-        ],
+        columns(
+            """
+            brake    brake
+            current  I (A)                   3
+            law      law (summed BIC)
+            wins     runs choosing each law
+            range    X (rad)
+            zeta     ζ_eq in the band
+            """
+        ),
         f"The damping law each brake setting's free decays choose, and the mean equivalent damping ratio "
         f"with its run-to-run error over the common amplitude band{band}.",
         "tab-real-laws",
@@ -92,14 +94,16 @@ def brake_table(st: RealOscillatorStudy) -> Table | None:
         )
     return Table(
         rows,
-        [
-            Column(key="pair", header="settings"),
-            Column(key="band", header="X band (rad)"),
-            Column(key="dz", header="ζ_eq difference (bootstrap)"),
-            Column(key="ci", header="95 % interval"),
-            Column(key="joint", header="brake-only ζ (joint fit)"),
-            Column(key="resolved", header="resolved"),
-        ],
+        columns(
+            """
+            pair      settings
+            band      X band (rad)
+            dz        ζ_eq difference (bootstrap)
+            ci        95 % interval
+            joint     brake-only ζ (joint fit)
+            resolved  resolved
+            """
+        ),
         "The brake at matched amplitude: the difference of mean equivalent damping inside the band, by bootstrap "
         "over runs, and the brake-only viscous term of a joint fit with one shared amplitude law.",
         "tab-real-brake",
@@ -133,15 +137,17 @@ def resonance_table(st: RealOscillatorStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="brake", header="brake"),
-            Column(key="session", header="session"),
-            Column(key="omega", header="ω (rad/s)", digits=4),
-            Column(key="amp", header="amplitude (rad)"),
-            Column(key="deg", header="amplitude (°)", digits=3),
-            Column(key="steady", header="steady runs"),
-            Column(key="t90", header="t_90 (s)", digits=2),
-        ],
+        columns(
+            """
+            brake    brake
+            session  session
+            omega    ω (rad/s)        4
+            amp      amplitude (rad)
+            deg      amplitude (°)    3
+            steady   steady runs
+            t90      t_90 (s)         2
+            """
+        ),
         "Driven runs grouped by measured drive frequency: the mean late amplitude of the steady runs with its "
         "run-to-run error, and the median time to 90 % of the final amplitude.",
         "tab-real-groups",
@@ -166,16 +172,18 @@ def steadiness_table(st: RealOscillatorStudy) -> Table:
     ]
     return Table(
         rows,
-        [
-            Column(key="run", header="session/run"),
-            Column(key="brake", header="brake"),
-            Column(key="omega", header="ω (rad/s)", digits=4),
-            Column(key="drift", header="late drift (%)"),
-            Column(key="t90", header="t_90 (s)", digits=2),
-            Column(key="label", header="state"),
-            Column(key="fdrift", header="drive drift (%)", digits=2),
-            Column(key="centre", header="centre drift (rad)", digits=2),
-        ],
+        columns(
+            """
+            run     session/run
+            brake   brake
+            omega   ω (rad/s)           4
+            drift   late drift (%)
+            t90     t_90 (s)            2
+            label   state
+            fdrift  drive drift (%)     2
+            centre  centre drift (rad)  2
+            """
+        ),
         "Every driven run: late drift with its standard error, time to 90 % of the final amplitude, and the "
         "change of drive frequency and of the wheel's centre over the record.",
         "tab-real-runs",
@@ -207,14 +215,16 @@ def session_table(st: RealOscillatorStudy) -> Table | None:
     law = f" ({LAW_WORDS[best.law]})" if best else ""
     return Table(
         rows,
-        [
-            Column(key="session", header="session"),
-            Column(key="runs", header="steady runs"),
-            Column(key="fdrift", header="drive drift (%), median (range)"),
-            Column(key="centre", header="centre drift (rad), median (range)"),
-            Column(key="hb", header="error, harmonic balance (%)", digits=3),
-            Column(key="sim", header="error, simulated (%)", digits=3),
-        ],
+        columns(
+            """
+            session  session
+            runs     steady runs
+            fdrift   drive drift (%), median (range)
+            centre   centre drift (rad), median (range)
+            hb       error, harmonic balance (%)         3
+            sim      error, simulated (%)                3
+            """
+        ),
         "Each session's driven runs: how many are steady, the change of drive frequency from the first to the second "
         f"half of each record and of the wheel's centre from the first to the last period, and the prediction "
         f"error of the best law{law}.",
@@ -248,15 +258,17 @@ def prediction_table(st: RealOscillatorStudy) -> Table | None:
         )
     return Table(
         rows,
-        [
-            Column(key="law", header="law"),
-            Column(key="brake", header="brake"),
-            Column(key="gain", header="g", digits=3),
-            Column(key="err", header="error, harmonic balance (%)", digits=3),
-            Column(key="sim", header="error, simulated (%)", digits=3),
-            Column(key="res", header="resonance (rad)", digits=3),
-            Column(key="resdeg", header="resonance (°)", digits=3),
-        ],
+        columns(
+            """
+            law     law
+            brake   brake
+            gain    g                            3
+            err     error, harmonic balance (%)  3
+            sim     error, simulated (%)         3
+            res     resonance (rad)              3
+            resdeg  resonance (°)                3
+            """
+        ),
         "Each law, its gain calibrated off resonance, predicting the other steady runs: pooled rms relative error "
         "by harmonic balance and by simulating each run from its measured start with its measured drive, and the "
         "law's largest steady amplitude at the mean drive.",
@@ -298,14 +310,16 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
             )
     return Table(
         rows,
-        [
-            Column(key="brake", header="brake"),
-            Column(key="law", header="law"),
-            Column(key="omega_n", header="ω_n (rad/s)"),
-            Column(key="coef", header="coefficients (run-to-run error)"),
-            Column(key="bic", header="BIC (sum)", digits=6),
-            Column(key="rms", header="rms / (step/√12)", digits=3),
-        ],
+        columns(
+            """
+            brake    brake
+            law      law
+            omega_n  ω_n (rad/s)
+            coef     coefficients (run-to-run error)
+            bic      BIC (sum)                        6
+            rms      rms / (step/√12)                 3
+            """
+        ),
         "Every law fitted to every free decay, pooled per brake setting: coefficients (ζ; Δ in rad; b in 1/rad; a; "
         "p) with run-to-run standard errors, summed BIC, and the residual rms over the encoder's rounding noise.",
         "tab-real-fits",

@@ -15,7 +15,7 @@ from vibration.chapters.real_oscillator.notation import angle, pm
 from vibration.chapters.real_oscillator.study import RealOscillatorStudy, omega_n
 from vibration.physics.paper import load_claims
 from vibration.presentation.narrative import g
-from vibration.presentation.tables import Column, Table
+from vibration.presentation.tables import Table, columns
 
 VERDICTS = ("supported", "partly supported", "not supported", "not testable with these data")
 #: The paper's amplification and the factor within which "approximately" holds.
@@ -262,11 +262,13 @@ def claims_table(st: RealOscillatorStudy) -> Table:
     rows = [{"claim": f"“{c.claim}”", "verdict": c.verdict, "detail": c.detail} for c in claims(st)]
     return Table(
         rows,
-        [
-            Column(key="claim", header="the paper"),
-            Column(key="verdict", header="verdict"),
-            Column(key="detail", header="evidence"),
-        ],
+        columns(
+            """
+            claim    the paper
+            verdict  verdict
+            detail   evidence
+            """
+        ),
         "The paper's claims on the real oscillator, each with the verdict the measurements support and its evidence.",
         "tab-real-claim-verdicts",
         csv=False,

@@ -19,7 +19,7 @@ from vibration.chapters.reproduction.study import DAMPING_IDS, CaseRun, Reproduc
 from vibration.physics.audit import half_power_band
 from vibration.presentation.findings import NO_STEADY, case_name
 from vibration.presentation.narrative import fixed, g, parameters_sentence, regime_clause, sig
-from vibration.presentation.tables import TABLES_ENV, Column, Missing, Table, fmt
+from vibration.presentation.tables import TABLES_ENV, Missing, Table, columns, fmt
 
 #: RK45's error (relative to the window's peak) below which the chapter calls it negligible.
 SMALL_ERROR = 0.05
@@ -302,24 +302,26 @@ def _tau_cell(f: CaseRun):
     return fixed(f.tau, 3) if math.isfinite(f.tau) else Missing(reason="the free vibration never decays when c = 0")
 
 
+def _by_run(st: ReproductionStudy, cells) -> list[dict]:
+    """One row per distinct run: its name, then the cells ``cells(findings)`` gives for its findings."""
+    return [{"case": run_name(st, run[0]), **cells(st.cases[run[0]])} for run in st.runs]
+
+
 def findings_table(st: ReproductionStudy) -> Table:
     """One row per distinct run: regime, steady amplitude, window peak, settling (exact)."""
-    rows = []
-    for run in st.runs:
-        f = st.cases[run[0]]
-        rows.append(
-            {
-                "case": run_name(st, run[0]),
-                "c": f.c,
-                "omega": f.omega,
-                "zeta": fixed(f.zeta, 3),
-                "regime": f.regime,
-                "xss": _xss_cell(f, f.x_ss),
-                "peak": fixed(f.peak_x, 4),
-                "ts": _settle_cell(f),
-                "settled": f.settles,
-            }
-        )
+    rows = _by_run(
+        st,
+        lambda f: {
+            "c": f.c,
+            "omega": f.omega,
+            "zeta": fixed(f.zeta, 3),
+            "regime": f.regime,
+            "xss": _xss_cell(f, f.x_ss),
+            "peak": fixed(f.peak_x, 4),
+            "ts": _settle_cell(f),
+            "settled": f.settles,
+        },
+    )
     notes = ()
     if any(len(run) > 1 for run in st.runs):
         notes = (
@@ -328,17 +330,19 @@ def findings_table(st: ReproductionStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="case", header="case"),
-            Column(key="c", header="c (N s/m)", digits=4, zeros=False),
-            Column(key="omega", header="ω (rad/s)", digits=4, zeros=False),
-            Column(key="zeta", header="ζ"),
-            Column(key="regime", header="regime"),
-            Column(key="xss", header="x_ss (m)"),
-            Column(key="peak", header="peak |x| (m)"),
-            Column(key="ts", header="t_s (s)"),
-            Column(key="settled", header="settles by t_end"),
-        ],
+        columns(
+            """
+            case     case
+            c        c (N s/m)         4  nozeros
+            omega    ω (rad/s)         4  nozeros
+            zeta     ζ
+            regime   regime
+            xss      x_ss (m)
+            peak     peak |x| (m)
+            ts       t_s (s)
+            settled  settles by t_end
+            """
+        ),
         caption=(
             f"Findings per run, exact: steady amplitude x_ss, largest |x| in the window [0, {g(st.t_end)}] s from "
             "rest, and the 2 % settling time t_s (the transient stays below 2 % of x_ss after it)."
@@ -350,31 +354,30 @@ def findings_table(st: ReproductionStudy) -> Table:
 
 def methods_table(st: ReproductionStudy) -> Table:
     """The paper's method beside the exact solution: peaks of x and v, worst error, time constant."""
-    rows = []
-    for run in st.runs:
-        f = st.cases[run[0]]
-        rows.append(
-            {
-                "case": run_name(st, run[0]),
-                "vss": _xss_cell(f, f.v_ss),
-                "pv": fixed(f.peak_v, 4),
-                "pv45": fixed(f.peak_v_rk45, 4),
-                "px45": fixed(f.peak_x_rk45, 4),
-                "err": fixed(100 * f.rel_err, 2),
-                "tau": _tau_cell(f),
-            }
-        )
+    rows = _by_run(
+        st,
+        lambda f: {
+            "vss": _xss_cell(f, f.v_ss),
+            "pv": fixed(f.peak_v, 4),
+            "pv45": fixed(f.peak_v_rk45, 4),
+            "px45": fixed(f.peak_x_rk45, 4),
+            "err": fixed(100 * f.rel_err, 2),
+            "tau": _tau_cell(f),
+        },
+    )
     return Table(
         rows,
-        [
-            Column(key="case", header="case"),
-            Column(key="vss", header="v_ss (m/s)"),
-            Column(key="pv", header="peak |v| (m/s)"),
-            Column(key="pv45", header="peak |v| RK45 (m/s)"),
-            Column(key="px45", header="peak |x| RK45 (m)"),
-            Column(key="err", header="max |x_RK45 − x| (% of peak |x|)"),
-            Column(key="tau", header="τ (s)"),
-        ],
+        columns(
+            """
+            case  case
+            vss   v_ss (m/s)
+            pv    peak |v| (m/s)
+            pv45  peak |v| RK45 (m/s)
+            px45  peak |x| RK45 (m)
+            err   max |x_RK45 − x| (% of peak |x|)
+            tau   τ (s)
+            """
+        ),
         caption=(
             "The paper's method (RK45 at SciPy's default tolerances) beside the exact solution: velocity amplitude "
             "v_ss = ω x_ss, peaks in the window, RK45's worst displacement error, and the time constant τ of the "

@@ -19,7 +19,7 @@ from vibration.chapters.solver_accuracy.study import LATE, SolverStudy
 from vibration.presentation.narrative import g
 from vibration.presentation.numbers import approx
 from vibration.presentation.numbers import sig as num
-from vibration.presentation.tables import Approx, Column, Table
+from vibration.presentation.tables import Approx, Column, Table, columns
 
 #: The paper's method's worst error, relative to the peak displacement, below which it is called small.
 SMALL = 0.01
@@ -80,15 +80,17 @@ def ladder_table(study: SolverStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="method", header="method"),
-            Column(key="rtol", header="relative tolerance", digits=2),
-            Column(key="atol", header="absolute tolerance (m, m/s)", digits=2),
-            Column(key="nfev", header="evaluations"),
-            Column(key="ex", header="max |x − x_exact| (m)", digits=3),
-            Column(key="ev", header="max |v − v_exact| (m/s)", digits=3),
-            Column(key="rel", header="relative to peak |x|", digits=3),
-        ],
+        columns(
+            """
+            method  method
+            rtol    relative tolerance           2
+            atol    absolute tolerance (m, m/s)  2
+            nfev    evaluations
+            ex      max |x − x_exact| (m)        3
+            ev      max |v − v_exact| (m/s)      3
+            rel     relative to peak |x|         3
+            """
+        ),
         caption=(
             f"Each method at a ladder of tolerances on the resonance case (c = {g(study.osc.c)} N s/m, "
             f"ω = {g(study.force.omega)} rad/s): right-hand-side evaluations and the worst errors over the "
@@ -122,16 +124,18 @@ def steps_table(study: SolverStudy) -> Table:
     ]
     return Table(
         rows,
-        [
-            Column(key="rtol", header="relative tolerance", digits=2),
-            Column(key="atol", header="absolute tolerance (m, m/s)", digits=2),
-            Column(key="steps", header="steps"),
-            Column(key="h", header="largest step (s)", digits=3),
-            Column(key="pp", header="steps per period", digits=3),
-            Column(key="ps", header="mean peak of the steps (m)", digits=4),
-            Column(key="pl", header="lowest peak of the steps (m)", digits=4),
-            Column(key="pe", header="exact peak |x| (m)", digits=4),
-        ],
+        columns(
+            """
+            rtol   relative tolerance            2
+            atol   absolute tolerance (m, m/s)   2
+            steps  steps
+            h      largest step (s)              3
+            pp     steps per period              3
+            ps     mean peak of the steps (m)    4
+            pl     lowest peak of the steps (m)  4
+            pe     exact peak |x| (m)            4
+            """
+        ),
         caption=(
             f"RK45 without an output grid returns only its own steps. Peaks in the last part of the window "
             f"(t ≥ {g((1 - LATE) * study.t_end)} s): the largest |x| among the steps of each half forcing period "

@@ -27,7 +27,7 @@ from vibration.physics.stability import (
     white_noise_variance,
     white_noise_velocity_variance,
 )
-from vibration.presentation.tables import Column, Missing, Table, bound
+from vibration.presentation.tables import Missing, Table, bound, columns, self_checks
 
 #: Reasons shown in tables (as "—" with a footnote).
 WHY_UNDAMPED_PEAK = Missing(reason=f"unbounded: with c = 0 a force at {WN_CELL} grows the response like t")
@@ -41,6 +41,14 @@ def _s(value, digits: int):
     """A cell: the number at ``digits`` significant figures, or the Missing reason as it is."""
     return value if isinstance(value, Missing) else sig(value, digits)
 
+
+#: The first columns of each table by damping: the case, as the paper names it, and its damping.
+_BY_DAMPING = columns(
+    """
+    case  damping
+    c     c (N s/m)
+    """
+)
 
 # ----------------------------------------------------------------------------- poles
 
@@ -75,17 +83,19 @@ def poles_table(st: StabilityStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="case", header="case"),
-            Column(key="c", header="c (N s/m)"),
-            Column(key="zeta", header="ζ"),
-            Column(key="poles", header="poles s (1/s)"),
-            Column(key="abscissa", header="max Re s (1/s)"),
-            Column(key="asym", header="free motion decays"),
-            Column(key="lyap", header="free motion bounded"),
-            Column(key="bibo", header="bounded force, bounded x"),
-            Column(key="verdict", header="verdict"),
-        ],
+        columns(
+            """
+            case      case
+            c         c (N s/m)
+            zeta      ζ
+            poles     poles s (1/s)
+            abscissa  max Re s (1/s)
+            asym      free motion decays
+            lyap      free motion bounded
+            bibo      bounded force, bounded x
+            verdict   verdict
+            """
+        ),
         caption="Poles of m s² + c s + k and the three notions of stability.",
         name="tab-stability-poles",
     )
@@ -120,17 +130,19 @@ def growth_table(st: StabilityStudy) -> Table:
         rows.append(row)
     return Table(
         rows,
-        [
-            Column(key="case", header="growth"),
-            Column(key="c", header="c (N s/m)"),
-            Column(key="omega", header="ω (rad/s)"),
-            Column(key="t_end", header="window (s)"),
-            Column(key="steady", header="steady amplitude (m)"),
-            Column(key="slope", header="F_0/(2mω_n) (m/s)"),
-            Column(key="rate", header="max Re s (1/s)"),
-            Column(key="peak", header="max |x| in window (m)"),
-            Column(key="env_end", header="envelope at window end (m)"),
-        ],
+        columns(
+            """
+            case     growth
+            c        c (N s/m)
+            omega    ω (rad/s)
+            t_end    window (s)
+            steady   steady amplitude (m)
+            slope    F_0/(2mω_n) (m/s)
+            rate     max Re s (1/s)
+            peak     max |x| in window (m)
+            env_end  envelope at window end (m)
+            """
+        ),
         caption=f"Three ways a response from rest grows over up to {st.t_growth:g} s (exact closed forms).",
         name="tab-stability-growth",
     )
@@ -171,15 +183,17 @@ def transmissibility_table(st: StabilityStudy) -> Table:
     r = st.isolation_ratio
     return Table(
         rows,
-        [
-            Column(key="case", header="damping"),
-            Column(key="zeta", header="ζ"),
-            Column(key="t_res", header="T at ω_n"),
-            Column(key="t_iso", header="T at √2 ω_n"),
-            Column(key="t_r", header=f"T at {r:g} ω_n"),
-            Column(key="wp", header="ω_peak (rad/s)"),
-            Column(key="tp", header="T_max"),
-        ],
+        columns(
+            f"""
+            case   damping
+            zeta   ζ
+            t_res  T at ω_n
+            t_iso  T at √2 ω_n
+            t_r    T at {r:g} ω_n
+            wp     ω_peak (rad/s)
+            tp     T_max
+            """
+        ),
         caption="Base-excitation transmissibility |X/Y| (steady state) of the run's dampings and of the damping "
         "ratios 0.2, ζ* and 1, by damping.",
         name="tab-stability-transmissibility",
@@ -224,16 +238,17 @@ def step_table(st: StabilityStudy) -> Table:
     rows.append(_step_row(st, "settling-optimal ζ*", st.c_star, st.star_step))
     return Table(
         rows,
-        [
-            Column(key="case", header="damping"),
-            Column(key="c", header="c (N s/m)"),
-            Column(key="zeta", header="ζ"),
-            Column(key="os", header="overshoot (%)"),
-            Column(key="tp", header="t_peak (s)"),
-            Column(key="tr", header="t_rise (s)"),
-            Column(key="ts", header="t_s, 2 % (s)"),
-            Column(key="wts", header="ω_n t_s"),
-        ],
+        _BY_DAMPING
+        + columns(
+            """
+            zeta  ζ
+            os    overshoot (%)
+            tp    t_peak (s)
+            tr    t_rise (s)
+            ts    t_s, 2 % (s)
+            wts   ω_n t_s
+            """
+        ),
         caption="Response to a step force, normalised by its final value F/k (exact; settling is the last exit "
         "from the 2 % band).",
         name="tab-stability-step",
@@ -270,18 +285,19 @@ def random_table(st: StabilityStudy) -> Table:
         rows.append(row)
     return Table(
         rows,
-        [
-            Column(key="case", header="damping"),
-            Column(key="c", header="c (N s/m)"),
-            Column(key="exact", header="πS_0/(kc) (m²)"),
-            Column(key="mc", header="Monte Carlo (m²)"),
-            Column(key="se", header="std. error (m²)"),
-            Column(key="z", header="deviation (std. errors)"),
-            Column(key="rms", header="σ_x (m)"),
-            Column(key="vexact", header="πS_0/(mc) (m²/s²)"),
-            Column(key="vmc", header="Monte Carlo (m²/s²)"),
-            Column(key="vz", header="deviation (std. errors)"),
-        ],
+        _BY_DAMPING
+        + columns(
+            """
+            exact   πS_0/(kc) (m²)
+            mc      Monte Carlo (m²)
+            se      std. error (m²)
+            z       deviation (std. errors)
+            rms     σ_x (m)
+            vexact  πS_0/(mc) (m²/s²)
+            vmc     Monte Carlo (m²/s²)
+            vz      deviation (std. errors)
+            """
+        ),
         caption=f"Displacement and velocity variance under a white-noise force, S_0 = {st.S0:g} N² s/rad "
         f"(two-sided); Monte Carlo with {st.n_paths} paths per damping, independent draws for each damping "
         f"(seeds {st.seed}, {st.seed} + 1, ... in the order of the table), so the deviations are independent.",
@@ -303,12 +319,13 @@ def random_force_table(st: StabilityStudy) -> Table:
                  "ratio": sig(1.0, 3)})  # fmt: skip
     return Table(
         rows,
-        [
-            Column(key="case", header="damping"),
-            Column(key="c", header="c (N s/m)"),
-            Column(key="var", header="var F_T (N²)"),
-            Column(key="ratio", header="over the least"),
-        ],
+        _BY_DAMPING
+        + columns(
+            """
+            var    var F_T (N²)
+            ratio  over the least
+            """
+        ),
         caption=(
             f"Force passed to the support, F_T = k x + c v, under a white-noise force of S_0 = {st.S0:g} N² s/rad: "
             "its stationary variance πS_0(k/c + c/m) (x and v are uncorrelated in the stationary state), and the "
@@ -345,14 +362,15 @@ def cost_table(st: StabilityStudy) -> Table:
             rows.append(row)
     return Table(
         rows,
-        [
-            Column(key="case", header="damping"),
-            Column(key="c", header="c (N s/m)"),
-            Column(key="w", header="ω"),
-            Column(key="x", header="|X| (m)"),
-            Column(key="f", header="damper force (N)"),
-            Column(key="p", header="mean power (W)"),
-        ],
+        _BY_DAMPING
+        + columns(
+            """
+            w     ω
+            x     |X| (m)
+            f     damper force (N)
+            p     mean power (W)
+            """
+        ),
         caption=f"Cost of damping under F_0 = {st.F0:g} N on the mass, in the steady state.",
         name="tab-stability-cost",
     )
@@ -380,15 +398,11 @@ def checks_table(st: StabilityStudy) -> Table:
     for n, s in st.steps.items():
         band = max(band, abs(abs(float(step_response(st.osc(st.dampings[n]), s.settling_time)) - 1.0) - BAND))
     band = max(band, abs(abs(float(step_response(st.osc(st.c_star), st.star_step.settling_time)) - 1.0) - BAND))
-    rows = [
-        {"check": f"|T(√2 {WN_CELL}) − 1| over 200 ζ from 10⁻⁴ to 100", "value": bound(cross, 1e-13)},
-        {"check": f"poles against numpy.roots, relative to max({WN_CELL}, |c|/m)", "value": bound(roots, 1e-12)},
-        {"check": "|x| above its closed-form envelope, relative", "value": bound(max(env, 0.0), 1e-9)},
-        {"check": "| |y(tₛ) − 1| − 0.02 | at the settling times", "value": bound(band, 1e-12)},
-    ]
-    return Table(
-        rows,
-        [Column(key="check", header="self-check"), Column(key="value", header="value")],
-        caption="Self-checks at rounding level (printed as bounds).",
-        name="tab-stability-checks",
+    checks = (
+        (f"|T(√2 {WN_CELL}) − 1| over 200 ζ from 10⁻⁴ to 100", bound(cross, 1e-13)),
+        (f"poles against numpy.roots, relative to max({WN_CELL}, |c|/m)", bound(roots, 1e-12)),
+        ("|x| above its closed-form envelope, relative", bound(max(env, 0.0), 1e-9)),
+        ("| |y(tₛ) − 1| − 0.02 | at the settling times", bound(band, 1e-12)),
     )
+    caption = "Self-checks at rounding level (printed as bounds)."
+    return self_checks(checks, caption=caption, name="tab-stability-checks", headers=("self-check", "value"))

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from vibration.chapters.stability.study import LABELS, StabilityStudy
 from vibration.chapters.stability.tables import WHY_NO_SETTLING_0, WHY_NO_STEADY, WHY_NO_VARIANCE, WHY_UNDAMPED_PEAK
 from vibration.chapters.stability.words import WN_CELL, c_text, join, sig
-from vibration.presentation.tables import Column, Table
+from vibration.presentation.tables import Table, columns
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -134,17 +134,19 @@ def labels_table(st: StabilityStudy) -> Table:
         )
     return Table(
         rows,
-        [
-            Column(key="label", header="paper's label"),
-            Column(key="c", header="c (N s/m)"),
-            Column(key="zeta", header="ζ"),
-            Column(key="peak", header="resonant peak"),
-            Column(key="iso", header=f"T at {st.isolation_ratio:g} ω_n"),
-            Column(key="ts", header="t_s, 2 % (s)"),
-            Column(key="rms", header="σ_x, white noise (m)"),
-            Column(key="check", header="where it lands"),
-            Column(key="verdict", header="verdict"),
-        ],
+        columns(
+            f"""
+            label    paper's label
+            c        c (N s/m)
+            zeta     ζ
+            peak     resonant peak
+            iso      T at {st.isolation_ratio:g} ω_n
+            ts       t_s, 2 % (s)
+            rms      σ_x, white noise (m)
+            check    where it lands
+            verdict  verdict
+            """
+        ),
         caption="The paper's names for its three dampings, checked on the axes of the trade-off.",
         name="tab-stability-labels",
     )

@@ -12,7 +12,7 @@ import math
 from vibration.chapters.tmd.digits import Sig, power, sig
 from vibration.chapters.tmd.study import TUNINGS, TMDStudy
 from vibration.physics.tmd import mistuned_peak
-from vibration.presentation.tables import Column, Missing, Table
+from vibration.presentation.tables import Column, Missing, Table, columns, self_checks
 
 #: Tables of the chapter in the order the notebook shows them (the tests build every one).
 __all__ = [
@@ -60,16 +60,18 @@ def tuning_table(st: TMDStudy) -> Table:
             )
     return _table(
         rows,
-        [
-            Column(key="mu", header="μ"),
-            Column(key="rule", header="rule"),
-            Column(key="f", header="f = ω_a/ω_p", digits=5),
-            Column(key="za", header="ζ_a on ω_a", digits=4),
-            Column(key="zap", header="ζ'_a = f ζ_a on ω_p", digits=4, shown=False),  # in the CSV file
-            Column(key="peak0", header="peak, ζ_p = 0", digits=5),
-            Column(key="peak", header=f"peak, ζ_p = {sig(st.zeta_p, 3)}", digits=5),
-            Column(key="excess", header="excess over the best (%)", digits=2),
-        ],
+        columns(
+            f"""
+            mu      μ
+            rule    rule
+            f       f = ω_a/ω_p                      5
+            za      ζ_a on ω_a                       4
+            zap     ζ'_a = f ζ_a on ω_p              4  hidden
+            peak0   peak, ζ_p = 0                    5
+            peak    peak, ζ_p = {sig(st.zeta_p, 3)}  5
+            excess  excess over the best (%)         2
+            """
+        ),
         caption=(
             "Absorber tunings and the largest magnification |X_p|/(F_0/k_p) they give on an undamped primary and on "
             "the actual primary; the last column compares the rules on the actual primary."
@@ -102,12 +104,14 @@ def response_table(st: TMDStudy) -> Table:
     ]
     return _table(
         rows,
-        [
-            Column(key="case", header="case"),
-            Column(key="amp", header="steady amplitude (m)", digits=4),
-            Column(key="peak", header=f"largest |x|, 0 ≤ t ≤ {st.t_end:g} s (m)", digits=4),
-            Column(key="red", header="steady reduction (%)", digits=3),
-        ],
+        columns(
+            f"""
+            case  case
+            amp   steady amplitude (m)                     4
+            peak  largest |x|, 0 ≤ t ≤ {st.t_end:g} s (m)  4
+            red   steady reduction (%)                     3
+            """
+        ),
         caption=f"Response from rest to F_0 sin(ωt) at ω = {st.omega_res:g} rad/s with F_0 = {st.F0:g} N.",
         name="tab-tmd-response",
     )
@@ -150,18 +154,20 @@ def design_table(st: TMDStudy) -> Table:
     )
     return _table(
         rows,
-        [
-            Column(key="design", header="tuning"),
-            Column(key="f", header="f = ω_a/ω_p", digits=4),
-            Column(key="za", header="ζ_a on ω_a", digits=4),
-            Column(key="nominal", header="peak, nominal", digits=4),
-            Column(key="lo", header=f"peak, k_p −{e} %", digits=4),
-            Column(key="hi", header=f"peak, k_p +{e} %", digits=4),
-            Column(key="worst", header=f"worst peak, k_p ±{e} %", digits=4),
-            Column(key="rms", header="rms / rms without absorber", digits=4),
-            Column(key="zmax", header="largest stroke / (F_0/k_p)", digits=4),
-            Column(key="zf", header=f"stroke at ω = {st.omega_res:g} rad/s (m)", digits=4),
-        ],
+        columns(
+            f"""
+            design   tuning
+            f        f = ω_a/ω_p                               4
+            za       ζ_a on ω_a                                4
+            nominal  peak, nominal                             4
+            lo       peak, k_p −{e} %                          4
+            hi       peak, k_p +{e} %                          4
+            worst    worst peak, k_p ±{e} %                    4
+            rms      rms / rms without absorber                4
+            zmax     largest stroke / (F_0/k_p)                4
+            zf       stroke at ω = {st.omega_res:g} rad/s (m)  4
+            """
+        ),
         caption=(
             f"Every tuning judged on every criterion on the actual primary (ζ_p = {sig(st.zeta_p, 3)}, μ = {st.mu:g}): "
             "the nominal peak, the peak when the primary's stiffness is off (absorber unchanged), the rms "
@@ -213,13 +219,15 @@ def building_table(st: TMDStudy) -> Table:
         )
     return _table(
         rows,
-        [
-            Column(key="mode", header="mode"),
-            Column(key="T", header="T (s)", digits=4),
-            Column(key="fhz", header="f (Hz)", digits=4),
-            Column(key="zeta", header="ζ", digits=3),
-            Column(key="roof", header="roof / largest component", digits=3),
-        ],
+        columns(
+            """
+            mode  mode
+            T     T (s)                     4
+            fhz   f (Hz)                    4
+            zeta  ζ                         3
+            roof  roof / largest component  3
+            """
+        ),
         caption=f"Modes of the {b.n}-storey shear building (classical modal damping).",
         name="tab-tmd-building",
         notes=(building_source(st),),
@@ -243,15 +251,17 @@ def building_load_table(st: TMDStudy) -> Table:
     ]
     return _table(
         rows,
-        [
-            Column(key="load", header="load"),
-            Column(key="unit", header="unit"),
-            Column(key="h0", header="largest roof amplitude without absorber", digits=4),
-            Column(key="f0", header="its frequency (Hz)", digits=4),
-            Column(key="h1", header="largest with the roof absorber", digits=4),
-            Column(key="f1", header="its frequency with (Hz)", digits=4),
-            Column(key="red", header="reduction (%)", digits=3),
-        ],
+        columns(
+            """
+            load  load
+            unit  unit
+            h0    largest roof amplitude without absorber  4
+            f0    its frequency (Hz)                       4
+            h1    largest with the roof absorber           4
+            f1    its frequency with (Hz)                  4
+            red   reduction (%)                            3
+            """
+        ),
         caption=(
             f"Largest steady roof amplitude between 0 and {sig(top, 4)} Hz (near the first mode) per unit load: a "
             "harmonic roof force, and a harmonic ground acceleration (roof displacement relative to the ground)."
@@ -271,14 +281,9 @@ def _bound(value: float, tol: float) -> str | Missing:
 
 def checks_table(st: TMDStudy) -> Table:
     """Independent checks of the chapter's numbers, printed as bounds."""
-    rows = [{"check": c.name, "bound": _bound(c.value, c.tolerance), "ok": c.ok} for c in st.checks]
-    return _table(
-        rows,
-        [
-            Column(key="check", header="check"),
-            Column(key="bound", header="difference"),
-            Column(key="ok", header="within"),
-        ],
+    return self_checks(
+        ((c.name, _bound(c.value, c.tolerance), c.ok) for c in st.checks),
         caption="Independent checks of the chapter's numbers.",
         name="tab-tmd-checks",
+        headers=("check", "difference", "within"),
     )
