@@ -62,10 +62,8 @@ def simulate(
 
     Parameters
     ----------
-    osc : Oscillator
-        m (kg), c (N s/m), k (N/m).
-    force : SineForce
-        F0 (N), omega (rad/s).
+    osc, force
+        The oscillator, m (kg), c (N s/m), k (N/m), and the force, F0 (N), omega (rad/s).
     t_end : float
         End of the window, s; > 0. The window starts at t = 0.
     n_points : int

@@ -228,6 +228,17 @@ def pid_work_check(osc: Oscillator, kp: float, ki: float, kd: float, t_end: floa
     _work_check(t_end, rate, rtol, "PID loop")
 
 
+def _check_loop(osc, force, kp, ki, kd) -> tuple[float, float, float]:
+    """Check the oscillator, the optional force and the three gains of a PID loop; the gains as floats."""
+    _check_osc(osc)
+    if force is not None and not isinstance(force, SineForce):
+        raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
+    kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
+    ki = check_real("ki", ki, low=0.0, low_open=True, unit="N/(m s)")
+    kd = check_real("kd", kd, unit="N s/m")
+    return kp, ki, kd
+
+
 def pid_response(
     osc: Oscillator,
     force: SineForce | None,
@@ -285,12 +296,7 @@ def pid_response(
     >>> round(float(r.x[-1]), 6)                        # m: integral action removes the offset
     0.1
     """
-    _check_osc(osc)
-    if force is not None and not isinstance(force, SineForce):
-        raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
-    kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
-    ki = check_real("ki", ki, low=0.0, low_open=True, unit="N/(m s)")
-    kd = check_real("kd", kd, unit="N s/m")
+    kp, ki, kd = _check_loop(osc, force, kp, ki, kd)
     umax = _limit(u_max)
     if anti_windup not in ANTI_WINDUP:
         raise ParameterError(f"anti_windup = {anti_windup!r} is not supported: allowed one of {', '.join(ANTI_WINDUP)}")
@@ -351,12 +357,7 @@ def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, ki:
     """
     from scipy.linalg import expm
 
-    _check_osc(osc)
-    if force is not None and not isinstance(force, SineForce):
-        raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
-    kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
-    ki = check_real("ki", ki, low=0.0, low_open=True, unit="N/(m s)")
-    kd = check_real("kd", kd, unit="N s/m")
+    kp, ki, kd = _check_loop(osc, force, kp, ki, kd)
     x_ref = check_real("x_ref", x_ref, unit="m")
     t = np.atleast_1d(check_array("t", t, low=0.0, unit="s"))
     m, c, k = osc.m, osc.c, osc.k

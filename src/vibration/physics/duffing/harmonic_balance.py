@@ -286,15 +286,11 @@ def folds(duffing: Duffing, F0: float) -> Folds:
     m, c, k, kap = d.m, d.c, d.k, d.kappa
     a_peak, w_peak = _peak(d, F0)
     nan = math.nan
+    single_valued = Folds(
+        omega_low=nan, omega_high=nan, amplitude_low=nan, amplitude_high=nan, peak_amplitude=a_peak, peak_omega=w_peak
+    )
     if kap == 0.0:
-        return Folds(
-            omega_low=nan,
-            omega_high=nan,
-            amplitude_low=nan,
-            amplitude_high=nan,
-            peak_amplitude=a_peak,
-            peak_omega=w_peak,
-        )
+        return single_valued
     g = kap * F0 * F0
     # scale y by y0 so that the coefficients are O(1)
     y0 = abs(g) ** (1.0 / 3.0)
@@ -331,14 +327,7 @@ def folds(duffing: Duffing, F0: float) -> Folds:
             omega_low=nan, omega_high=wh, amplitude_low=nan, amplitude_high=ah, peak_amplitude=a_peak, peak_omega=w_peak
         )
     if len(found) < 2:
-        return Folds(
-            omega_low=nan,
-            omega_high=nan,
-            amplitude_low=nan,
-            amplitude_high=nan,
-            peak_amplitude=a_peak,
-            peak_omega=w_peak,
-        )
+        return single_valued
     (wl, al), (wh, ah) = found[0], found[-1]
     return Folds(
         omega_low=wl, omega_high=wh, amplitude_low=al, amplitude_high=ah, peak_amplitude=a_peak, peak_omega=w_peak

@@ -94,10 +94,8 @@ def periodic_orbit(
     ----------
     duffing : Duffing
         The oscillator.
-    F0 : float
-        Force amplitude, N (>= 0).
-    omega : float
-        Forcing frequency, rad/s (> 0).
+    F0, omega : float
+        Force amplitude, N (>= 0), and forcing frequency, rad/s (> 0).
     amplitude_guess : float, optional
         Start from the one-harmonic solution with this amplitude (m); its phase is taken
         from the amplitude equation. Default: the largest harmonic-balance amplitude.
@@ -305,9 +303,9 @@ def continue_orbits(
     Parameters
     ----------
     duffing : Duffing
-        The oscillator (c > 0).
+        The damped oscillator (c > 0).
     F0 : float
-        Force amplitude, N (> 0).
+        Force amplitude (> 0), N.
     omega_start, omega_end : float
         Start of the branch and the frequency it is followed to, rad/s (> 0, different); the
         branch stops when omega leaves the interval between them.

@@ -66,7 +66,7 @@ def load_cassy_runs(path) -> list[LoggerRun]:
     Parameters
     ----------
     path : str or os.PathLike
-        The CSV file (format in the module docstring).
+        The CASSY CSV file (format in the module docstring).
 
     Returns
     -------

@@ -79,7 +79,7 @@ def stability_class(osc: Oscillator) -> Stability:
     Parameters
     ----------
     osc : Oscillator
-        m (kg), c (N s/m, any sign), k (N/m).
+        As in :func:`poles`.
 
     Returns
     -------
@@ -135,10 +135,8 @@ def growth_envelope(osc: Oscillator, force: SineForce, t):
 
     Parameters
     ----------
-    osc : Oscillator
-        m (kg), c (N s/m, any sign), k (N/m).
-    force : SineForce
-        F0 (N), omega (rad/s).
+    osc, force
+        The oscillator, m (kg), c (N s/m, any sign), k (N/m), and the force, F0 (N), omega (rad/s).
     t : array_like
         Times, s (finite, >= 0).
 

@@ -157,10 +157,9 @@ def simulate_white_noise(
 
     Parameters
     ----------
-    osc : Oscillator
-        m (kg), c (N s/m, > 0), k (N/m).
-    S0 : float
-        Two-sided force spectral density, N^2 s/rad (>= 0).
+    osc, S0
+        As in :func:`white_noise_variance`: the damped oscillator and the two-sided force spectral
+        density, N^2 s/rad (>= 0).
     t_end : float
         End of the window, s (> 0).
     dt : float, optional

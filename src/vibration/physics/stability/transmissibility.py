@@ -68,6 +68,12 @@ def isolation_frequency(osc: Oscillator) -> float:
     return math.sqrt(2.0) * _check_osc(osc).natural_frequency
 
 
+def _zeta_and_omega_n(osc) -> tuple[float, float]:
+    """``(|zeta|, omega_n rad/s)`` of a checked oscillator."""
+    _check_osc(osc)
+    return abs(osc.damping_ratio), osc.natural_frequency
+
+
 def peak_transmissibility(osc: Oscillator) -> tuple[float, float]:
     """Largest transmissibility over frequency and where it occurs: ``(omega_peak rad/s, T_max)``.
 
@@ -80,9 +86,7 @@ def peak_transmissibility(osc: Oscillator) -> tuple[float, float]:
     >>> round(w, 4), round(t, 4)          # rad/s, 1
     (4.4583, 9.0137)
     """
-    _check_osc(osc)
-    zeta = abs(osc.damping_ratio)
-    wn = osc.natural_frequency
+    zeta, wn = _zeta_and_omega_n(osc)
     if zeta == 0.0:
         return wn, math.inf
     r = math.sqrt(2.0 / (1.0 + math.sqrt(1.0 + 8.0 * zeta * zeta)))
@@ -104,9 +108,7 @@ def peak_magnification(osc: Oscillator) -> tuple[float, float]:
     >>> peak_magnification(Oscillator(m=1.0, c=15.0, k=20.0))
     (0.0, 1.0)
     """
-    _check_osc(osc)
-    zeta = abs(osc.damping_ratio)
-    wn = osc.natural_frequency
+    zeta, wn = _zeta_and_omega_n(osc)
     if zeta == 0.0:
         return wn, math.inf
     if zeta >= 1.0 / math.sqrt(2.0):

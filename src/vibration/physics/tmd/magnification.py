@@ -275,7 +275,7 @@ def stroke_peak(mu, f, zeta_a, zeta_p=0.0) -> tuple[float, float]:
     Parameters
     ----------
     mu, f, zeta_a, zeta_p : float
-        As in :func:`tmd_magnification`.
+        Mass, tuning and damping ratios, 1, as in :func:`tmd_magnification`.
 
     Returns
     -------

@@ -253,12 +253,8 @@ def h2_tuning(mu, zeta_p=0.0, method="auto", maxiter=None) -> TMDTuning:
 
     Parameters
     ----------
-    mu : float
-        Mass ratio m_a / m_p, 1 (0 < mu <= 10).
-    zeta_p : float
-        Primary damping ratio, 1 (0 to 0.5).
-    method : {"auto", "closed form", "numerical"}
-        "auto": closed form when zeta_p is 0, numerical otherwise.
+    mu, zeta_p, method
+        As in :func:`hinf_tuning`: mass ratio (1), primary damping ratio (1) and the method.
     maxiter : int, optional
         Nelder-Mead's iteration limit (1 to 100 000; default 2000).
 
