@@ -7,7 +7,9 @@ range is written in one place. A chapter's own parameters are declared through t
 the shapes they share (:func:`positive`, :func:`frequency`, :func:`damping`, :func:`ratio`,
 :func:`count`, :func:`seed`, and :func:`quantity` for any other range): each returns a
 :class:`~vibration.presentation.schema.Param`. The rules are the checks on several values at once
-that more than one chapter needs.
+that more than one chapter needs. A chapter declares its parameters as data, in its package's
+``params.toml`` (one line a parameter, naming the shape it takes as its ``kind``), which :func:`declared`
+reads into the chapter's schema.
 
 Examples
 --------
@@ -30,10 +32,12 @@ from __future__ import annotations
 import dataclasses
 import math
 import operator
+import tomllib
 from collections.abc import Callable
+from importlib.resources import files
 
 from ..physics.model import N_POINTS_MAX, ParameterError
-from .schema import Param
+from .schema import Param, Schema
 
 # ---------------------------------------------------------------------------------------------------------
 # The shapes a parameter takes (name, symbol and default first; the rest by keyword)
@@ -136,6 +140,46 @@ def shared(name: str, **changes) -> Param:
 def shared_params(*names: str) -> tuple[Param, ...]:
     """The shared declarations of ``names``, unchanged, in that order (:func:`shared` changes one)."""
     return tuple(shared(name) for name in names)
+
+
+def _declaration(name: str, kind: str, fields: dict) -> Param:
+    """One line of a ``params.toml``: parameter ``name`` built by the shape ``kind`` from ``fields``."""
+    if kind == "shared":
+        return shared(name, **fields)
+    if kind == "seed":
+        if name != "seed":
+            raise ValueError(f"parameter {name!r} is declared a seed: the seed parameter is named 'seed'")
+        return seed(**fields)
+    if kind == "param":  # any other: the fields of Param itself
+        return Param(name=name, **fields)
+    builders = {"quantity": quantity, "positive": positive, "frequency": frequency, "damping": damping,
+                "ratio": ratio, "count": count}  # fmt: skip
+    if kind not in builders:
+        allowed = ", ".join(["shared", "seed", "param", *builders])
+        raise ValueError(f"parameter {name!r} is of kind {kind!r}: allowed {allowed}")
+    return builders[kind](name, **fields)
+
+
+def declared(package: str, *, together: tuple[Callable[[dict], None], ...] = (), name: str = "params.toml") -> Schema:
+    """The schema a chapter declares as data in ``params.toml`` of its package, with the rules that tie its values.
+
+    The file names the chapter's notebook (``notebook = "08_tmd"``) and, in its ``[params]`` table in the
+    chapter's order, one declaration a parameter: its ``kind`` (``"shared"``, a shape of this module:
+    ``"quantity"``, ``"positive"``, ``"frequency"``, ``"damping"``, ``"ratio"``, ``"count"``, ``"seed"``, or
+    ``"param"`` for the fields of :class:`~vibration.presentation.schema.Param` itself) and the arguments of that
+    shape: ``mu = {kind = "positive", symbol = "μ", default = 0.05, unit = "", high = 1.0, meaning = "..."}``;
+    ``m = {kind = "shared", meaning = "primary mass"}`` takes the shared declaration, changing only its meaning.
+
+    >>> s = declared("vibration.chapters.tmd")
+    >>> s.notebook, s["m"].meaning, s["m"].unit, s["mu"].low_open
+    ('08_tmd', 'primary mass', 'kg', True)
+    """
+    data = tomllib.loads(files(package).joinpath(name).read_text(encoding="utf-8"))
+    params = []
+    for param, fields in data["params"].items():
+        rest = dict(fields)
+        params.append(_declaration(param, rest.pop("kind"), rest))
+    return Schema(notebook=data["notebook"], params=tuple(params), together=together)
 
 
 def ordered(low: str, high: str, unit: str) -> Callable[[dict], None]:

@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-from vibration.presentation.parameters import PAPER_MODEL, paper_window, shared_params
-from vibration.presentation.schema import Schema
+from vibration.presentation.parameters import declared, paper_window
 
-SCHEMA = Schema(notebook="02_claims_audit", params=shared_params(*PAPER_MODEL), together=(paper_window,))
+SCHEMA = declared(__package__, together=(paper_window,))
 
 Params = SCHEMA.record_type(module=__name__)

@@ -2,20 +2,11 @@
 
 from __future__ import annotations
 
-import math
-
 from vibration.physics.model import ParameterError
 from vibration.presentation.parameters import (
     MAX_GROWTH,
-    count,
-    damping,
-    positive,
-    quantity,
-    seed,
-    shared,
-    shared_params,
+    declared,
 )
-from vibration.presentation.schema import Schema
 
 
 def growth_window(p: dict) -> None:
@@ -30,32 +21,6 @@ def growth_window(p: dict) -> None:
         )
 
 
-SCHEMA = Schema(
-    notebook="06_stability",
-    params=(
-        *shared_params("m", "k", "F0"),
-        shared("omega_res", meaning='"resonant" forcing frequency of the paper'),
-        shared("c_low", meaning="low damping coefficient"),
-        *shared_params("c_nominal", "c_high"),
-        damping("c_unstable", "c_u", -0.1, low=-1e4, high=0.0, meaning="damping of the flutter model (negative, or 0)"),
-        positive("t_growth", "t_g", 200.0, unit="s", high=2000.0, meaning="window of the growth comparison"),
-        quantity(
-            "isolation_ratio",
-            "r_iso",
-            3.0,
-            unit="",
-            low=math.sqrt(2.0),
-            high=100.0,
-            meaning="frequency ratio at which isolation is judged",
-            low_open=True,
-        ),
-        positive(
-            "S0", "S_0", 0.1, unit="N² s/rad", high=1e6, meaning="two-sided spectral density of the white-noise force"
-        ),
-        count("n_paths", "N_paths", 200, low=2, high=5000, meaning="Monte Carlo paths per damping"),
-        seed(1, meaning="seed of the Monte Carlo generator"),
-    ),
-    together=(growth_window,),
-)
+SCHEMA = declared(__package__, together=(growth_window,))
 
 Params = SCHEMA.record_type(module=__name__)
