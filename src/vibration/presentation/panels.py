@@ -11,6 +11,12 @@ stylesheet keeps only what is its own.
 :func:`line_style` and :func:`case_styles` turn the book's visual language (:data:`~.style.CASES`) into
 ``{"color", "dash"}`` records for ``VibPlot.draw``, so a case keeps its colour and dash in the panels too.
 
+The Python side of a panel is shared too: :class:`PanelIds` numbers a chapter's panels on a page
+(:func:`checked_panel_id` checks an id a caller gives), and :class:`KitExplorer` is the JupyterLab explorer
+over the same views: ipywidgets controls, a matplotlib figure on an Agg canvas (:func:`agg_figure`) shown as
+PNG and an HTML readout, displayed for renderers without a kernel as the chapter's panel. A chapter's explorer
+supplies only its controls, values, figure, readout and panel.
+
 Examples
 --------
 >>> block = panel_assets("vibration.chapters.control", "control.js", "control.css")
@@ -25,11 +31,17 @@ Examples
 
 from __future__ import annotations
 
+import base64
+import hashlib
+import io
+import itertools
+import json
 import re
 from importlib.resources import files
 
 from matplotlib.colors import to_hex
 
+from ..physics.model import ParameterError
 from .style import CASES
 
 #: SVG dash patterns (stroke-dasharray, px) of matplotlib's line styles, in the proportions matplotlib draws.
@@ -101,3 +113,122 @@ def line_style(style: dict | str, width: float | None = None) -> dict:
 def case_styles(*names: str) -> dict:
     """:func:`line_style` of each named case of :data:`~.style.CASES`, by name."""
     return {name: line_style(name) for name in names}
+
+
+class PanelIds:
+    """Element-id prefixes of one chapter's panels: ``<prefix>-<hash of the panel's values>-<count>``.
+
+    The hash keeps a panel's id stable for its values, the count (one per chapter, from 1) tells apart
+    panels of the same values on one page.
+
+    >>> ids = PanelIds("vx")
+    >>> ids.new({"m": 1.0}), ids.new({"m": 1.0})
+    ('vx-adcada6c-1', 'vx-adcada6c-2')
+    """
+
+    def __init__(self, prefix: str) -> None:
+        self.prefix = prefix
+        self._count = itertools.count(1)
+
+    def new(self, values: dict) -> str:
+        """A fresh id prefix for a panel showing ``values`` (JSON-serialisable)."""
+        digest = hashlib.sha1(json.dumps(values, sort_keys=True).encode()).hexdigest()[:8]
+        return f"{self.prefix}-{digest}-{next(self._count)}"
+
+
+def checked_panel_id(panel_id: str | None) -> str | None:
+    """``panel_id`` when it is usable as an element id (a letter, then letters, digits, ``_`` or ``-``), or None.
+
+    >>> checked_panel_id("p-1"), checked_panel_id(None)
+    ('p-1', None)
+    """
+    if panel_id is not None and not re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", panel_id):
+        raise ParameterError(f"panel_id = {panel_id!r}: allowed a letter followed by letters, digits, _ or -")
+    return panel_id
+
+
+def range_control(pid: str, key: str, cls: str, label: str, *, low, high, step, value) -> str:
+    """One slider of a panel's controls: its label, range input (id ``<pid>-<key>``, class ``cls``) and output.
+
+    ``pid`` is the panel's id prefix, HTML-escaped; ``label`` is HTML; ``low``, ``high``, ``step`` and ``value`` are
+    written as given (a caller formats its numbers).
+
+    >>> print(range_control("p", "z", "vx-zeta", "ζ", low=0, high=10, step=1, value=3))
+    <label for="p-z">ζ</label>
+    <input type="range" class="vx-zeta" id="p-z" min="0" max="10" step="1" value="3">
+    <output class="vx-zeta-out" for="p-z"></output>
+    <BLANKLINE>
+    """
+    return (
+        f'<label for="{pid}-{key}">{label}</label>\n'
+        f'<input type="range" class="{cls}" id="{pid}-{key}" min="{low}" max="{high}" step="{step}" value="{value}">\n'
+        f'<output class="{cls}-out" for="{pid}-{key}"></output>\n'
+    )
+
+
+def agg_figure(width: float, height: float):
+    """A matplotlib figure of ``width`` x ``height`` inches at 90 dpi on its own Agg canvas (no pyplot state)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(width, height), dpi=90, layout="constrained")
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def png_bytes(fig) -> bytes:
+    """The PNG of ``fig`` at its own size and resolution."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png")
+    return buf.getvalue()
+
+
+class KitExplorer:
+    """A chapter's JupyterLab explorer: controls over a figure and a readout, and its panel for the book.
+
+    A subclass builds ``widget`` (the ipywidgets container shown in JupyterLab), ``image`` (an
+    ``ipywidgets.Image`` of format PNG) and ``readout`` (an ``ipywidgets.HTML``), calls :meth:`watch` with its
+    controls and then :meth:`update`; it supplies :meth:`values`, :meth:`figure`, :meth:`readout_html`,
+    :meth:`panel_html` and :meth:`summary`. ``_repr_mimebundle_`` returns the widget view and, for renderers
+    without a kernel, the panel at the current values, the figure as PNG and the summary as text.
+    """
+
+    widget = image = readout = None
+
+    def values(self) -> dict:
+        """The numbers the views show at the controls' current values."""
+        raise NotImplementedError
+
+    def figure(self, v: dict):
+        """The matplotlib figure of the numbers ``v``."""
+        raise NotImplementedError
+
+    def readout_html(self, v: dict) -> str:
+        """The readout (HTML) of the numbers ``v``."""
+        raise NotImplementedError
+
+    def panel_html(self) -> str:
+        """The chapter's kernel-free panel at the controls' current values."""
+        raise NotImplementedError
+
+    def summary(self) -> str:
+        """One line of text: the explorer and its current values."""
+        raise NotImplementedError
+
+    def watch(self, *controls) -> None:
+        """Redraw whenever one of ``controls`` changes its value."""
+        for control in controls:
+            control.observe(lambda _change: self.update(), names="value")
+
+    def update(self) -> None:
+        """Redraw the figure and the readout at the controls' current values."""
+        v = self.values()
+        self.image.value = png_bytes(self.figure(v))
+        self.readout.value = self.readout_html(v)
+
+    def _repr_mimebundle_(self, **kwargs):
+        data = self.widget._repr_mimebundle_(**kwargs) or {}
+        data["text/html"] = self.panel_html()
+        data["image/png"] = base64.b64encode(self.image.value).decode("ascii")
+        data["text/plain"] = self.summary()
+        return data

@@ -7,24 +7,21 @@ JupyterLab explorer (:class:`TwinExplorer`) re-identifies live.
 
 from __future__ import annotations
 
-import hashlib
 import html
-import itertools
 import json
-import re
 
 import numpy as np
 
 from vibration.chapters.digital_twin.study import DigitalTwinStudy
-from vibration.physics.model import Oscillator, ParameterError
+from vibration.physics.model import Oscillator
 from vibration.physics.twin import EstimateGrid, Identification, identify, random_force, synthetic_measurements
-from vibration.presentation.panels import line_style, panel_assets
+from vibration.presentation.panels import PanelIds, checked_panel_id, line_style, panel_assets, range_control
 from vibration.presentation.style import OKABE_ITO
 
 NAMES = ("m", "c", "k")
 UNITS = ("kg", "N s/m", "N/m")
 
-_counter = itertools.count(1)
+_ids = PanelIds("twin")
 #: The truth as the book's exact case (black dashed), the identified model's intervals in its nominal blue, the
 #: estimate a vermillion dot; with their legend words.
 STYLES = {
@@ -66,14 +63,16 @@ def twin_panel_html(grid: EstimateGrid, *, panel_id: str | None = None) -> str:
     >>> frag.startswith('<div class="twin-panel"'), "http" in frag
     (True, False)
     """
-    if panel_id is not None and not re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", panel_id):
-        raise ParameterError(f"panel_id = {panel_id!r}: allowed a letter followed by letters, digits, _ or -")
+    panel_id = checked_panel_id(panel_id)
     payload = _grid_payload(grid)
     text = json.dumps(payload, sort_keys=True)
-    pid = panel_id or f"twin-{hashlib.sha1(text.encode()).hexdigest()[:8]}-{next(_counter)}"
+    pid = panel_id or _ids.new(payload)
     e = html.escape
     ni, nj = grid.noises.size, grid.durations.size
-    i0, j0 = ni // 2, nj // 2
+    pe = e(pid)
+    noise = range_control(pe, "noise", "twin-noise", "noise std. / rms response", low=0, high=ni - 1, step=1,
+                          value=ni // 2)  # fmt: skip
+    length = range_control(pe, "len", "twin-len", "record length T", low=0, high=nj - 1, step=1, value=nj // 2)
     rows = "\n".join(
         f'<tr><th scope="row">{n} ({u})</th><td class="twin-true"></td><td class="twin-est"></td>'
         f'<td class="twin-lo"></td><td class="twin-hi"></td><td class="twin-in"></td></tr>'
@@ -87,13 +86,7 @@ def twin_panel_html(grid: EstimateGrid, *, panel_id: str | None = None) -> str:
 with its 95 % interval.</p>
 <noscript>This panel needs JavaScript to draw its plot.</noscript>
 <div class="twin-controls">
-<label for="{e(pid)}-noise">noise std. / rms response</label>
-<input type="range" class="twin-noise" id="{e(pid)}-noise" min="0" max="{ni - 1}" step="1" value="{i0}">
-<output class="twin-noise-out" for="{e(pid)}-noise"></output>
-<label for="{e(pid)}-len">record length T</label>
-<input type="range" class="twin-len" id="{e(pid)}-len" min="0" max="{nj - 1}" step="1" value="{j0}">
-<output class="twin-len-out" for="{e(pid)}-len"></output>
-</div>
+{noise}{length}</div>
 <svg class="twin-plot" viewBox="0 0 640 200" role="img" \
 aria-label="relative error of m, c and k in percent with 95 % intervals"></svg>
 <table class="twin-readout">

@@ -8,10 +8,7 @@ kernel still get a working panel.
 
 from __future__ import annotations
 
-import hashlib
 import html
-import io
-import itertools
 import json
 import math
 
@@ -21,10 +18,10 @@ from vibration.chapters.duffing.figures import STABLE_LS, UNSTABLE_LS, plot_curv
 from vibration.physics.duffing import Duffing, backbone, folds, response_curve
 from vibration.physics.model import check_real
 from vibration.presentation.numbers import minus
-from vibration.presentation.panels import line_style, panel_assets
+from vibration.presentation.panels import PanelIds, line_style, panel_assets, png_bytes
 from vibration.presentation.style import case_style, figure, place_legend
 
-_counter = itertools.count(1)
+_ids = PanelIds("vib-duffing")
 
 
 def _colors() -> dict:
@@ -107,8 +104,7 @@ def hb_panel_html(
     """
     params = _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max)
     k3_range, F0_max = params["k3_range"], params["F0_max"]
-    digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode()).hexdigest()[:8]
-    pid = f"vib-duffing-{digest}-{next(_counter)}"
+    pid = _ids.new(params)
     e = html.escape
     return f"""<div class="vib-duffing" id="{e(pid)}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
@@ -182,9 +178,7 @@ class HBExplorer:
         ax.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
         ax.set_ylabel(r"amplitude $A$ (m)")
         place_legend(ax)
-        buf = io.BytesIO()
-        self.fig.savefig(buf, format="png")
-        self.image.value = buf.getvalue()
+        self.image.value = png_bytes(self.fig)
 
     def _repr_mimebundle_(self, include=None, exclude=None):
         data = self.widget._repr_mimebundle_()

@@ -19,9 +19,7 @@ mounted on its own ``div.vib-panel``; element ids carry a per-panel prefix.
 
 from __future__ import annotations
 
-import hashlib
 import html
-import itertools
 import json
 import math
 import re
@@ -30,8 +28,8 @@ from importlib.resources import files
 
 from vibration.chapters.explore.figure import STYLE
 from vibration.chapters.explore.study import C_MAX, C_MIN
-from vibration.physics.model import ParameterError, check_int, check_real
-from vibration.presentation.panels import line_style, panel_assets
+from vibration.physics.model import check_int, check_real
+from vibration.presentation.panels import PanelIds, checked_panel_id, line_style, panel_assets
 
 #: Positions of the logarithmic damping slider.
 C_STEPS = 1000
@@ -39,7 +37,7 @@ C_STEPS = 1000
 #: Step of the forcing-frequency slider, rad/s.
 OMEGA_STEP = 0.01
 
-_counter = itertools.count(1)
+_ids = PanelIds("vib")
 
 #: The panel's line styles, those of the JupyterLab figure (:data:`~vibration.chapters.explore.figure.STYLE`):
 #: the response and the magnification curve blue, the steady-state amplitudes and the operating point
@@ -101,11 +99,6 @@ def panel_facts() -> PanelFacts:
         log_magnification=re.search(r"\by: \{[^}]*\blog: true", freq) is not None,
         hz_axis="(Hz)" in freq,
     )
-
-
-def _panel_id(params: dict) -> str:
-    digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode()).hexdigest()[:8]
-    return f"vib-{digest}-{next(_counter)}"
 
 
 def time_caption(facts: PanelFacts) -> str:
@@ -200,9 +193,7 @@ def slider_panel_html(
         "c_min": c_min,
         "c_max": c_max,
     }
-    if panel_id is not None and not re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", panel_id):
-        raise ParameterError(f"panel_id = {panel_id!r}: allowed a letter followed by letters, digits, _ or -")
-    pid = panel_id or _panel_id(params)
+    pid = checked_panel_id(panel_id) or _ids.new(params)
     c_pos = round(C_STEPS * math.log(c / c_min) / math.log(c_max / c_min))
     e = html.escape
     facts = panel_facts()

@@ -9,11 +9,7 @@ functions); the widget draws them with matplotlib and carries the panel for rend
 
 from __future__ import annotations
 
-import base64
-import hashlib
 import html
-import io
-import itertools
 import json
 import math
 
@@ -24,13 +20,13 @@ from vibration.chapters.stability.study import BAND, StabilityStudy
 from vibration.chapters.stability.words import WN, c_text, num, pole_text, sig
 from vibration.physics.model import Oscillator, check_real
 from vibration.physics.stability import StepMetrics, poles, step_metrics, step_response, transmissibility
-from vibration.presentation.panels import line_style, panel_assets
+from vibration.presentation.panels import KitExplorer, PanelIds, agg_figure, line_style, panel_assets, range_control
 
 #: Range of the damping-ratio slider (log scale), 1.
 ZETA_MIN, ZETA_MAX = 0.005, 5.0
 #: Positions of the logarithmic slider.
 ZETA_STEPS = 600
-_counter = itertools.count(1)
+_ids = PanelIds("vst")
 #: The panel's colours, as the chapter's figures draw them: the nominal damping's curve, black marks, grey references.
 STYLES = {
     "curve": line_style(look("nominal")),
@@ -72,11 +68,14 @@ def stability_panel_html(
     omega = check_real("omega", omega, low=0.0, high=w_max, unit="rad/s")
     params = {"m": m, "k": k, "zeta": zeta, "omega": omega, "zeta_min": ZETA_MIN, "zeta_max": ZETA_MAX, "w_max": w_max}
     if panel_id is None:
-        digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode()).hexdigest()[:8]
-        panel_id = f"vst-{digest}-{next(_counter)}"
+        panel_id = _ids.new(params)
     e = html.escape
     pos = round(ZETA_STEPS * math.log(zeta / ZETA_MIN) / math.log(ZETA_MAX / ZETA_MIN))
-    step = w_max / 1000.0
+    pid = e(panel_id)
+    zeta_control = range_control(pid, "z", "vst-zeta", "damping ratio ζ (log scale)", low=0, high=ZETA_STEPS, step=1,
+                                 value=pos)  # fmt: skip
+    omega_control = range_control(pid, "w", "vst-omega", "base frequency ω", low=0, high=repr(w_max),
+                                  step=repr(w_max / 1000.0), value=repr(omega))  # fmt: skip
     return f"""<div class="vst-panel" id="{e(panel_id)}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
 {panel_assets("vibration.chapters.stability", "stability.js", "stability.css", kit="vst")}\
@@ -85,13 +84,7 @@ data-styles="{e(json.dumps(STYLES))}">
 closed forms.</p>
 <noscript>This panel needs JavaScript to draw its plots.</noscript>
 <div class="vst-controls">
-<label for="{e(panel_id)}-z">damping ratio ζ (log scale)</label>
-<input type="range" class="vst-zeta" id="{e(panel_id)}-z" min="0" max="{ZETA_STEPS}" step="1" value="{pos}">
-<output class="vst-zeta-out" for="{e(panel_id)}-z"></output>
-<label for="{e(panel_id)}-w">base frequency ω</label>
-<input type="range" class="vst-omega" id="{e(panel_id)}-w" min="0" max="{w_max!r}" step="{step!r}" value="{omega!r}">
-<output class="vst-omega-out" for="{e(panel_id)}-w"></output>
-</div>
+{zeta_control}{omega_control}</div>
 <div class="vst-body">
 <figure><svg class="vst-trans" viewBox="0 0 420 260" role="img"
 aria-label="transmissibility against base frequency in rad/s"></svg>
@@ -113,7 +106,7 @@ aria-label="poles in the complex plane"></svg>
 """
 
 
-class StabilityExplorer:
+class StabilityExplorer(KitExplorer):
     """JupyterLab sliders (ipywidgets) over the same three views; the book shows the HTML panel.
 
     ``_repr_mimebundle_`` returns the widget view for JupyterLab and, for renderers
@@ -141,8 +134,7 @@ class StabilityExplorer:
         self.image = widgets.Image(format="png")
         self.readout = widgets.HTML()
         self.widget = widgets.VBox([widgets.HBox([self.zeta_slider, self.omega_slider]), self.readout, self.image])
-        for s in (self.zeta_slider, self.omega_slider):
-            s.observe(lambda _change: self.update(), names="value")
+        self.watch(self.zeta_slider, self.omega_slider)
         self.update()
 
     def values(self) -> dict:
@@ -152,63 +144,50 @@ class StabilityExplorer:
         s = step_metrics(osc, BAND)
         return {"osc": osc, "T": float(transmissibility(osc, w)), "poles": poles(osc), "step": s, "omega": w}
 
-    def update(self) -> None:
-        v = self.values()
-        fig = _explorer_figure(v)
-        buf = io.BytesIO()
-        fig.savefig(buf, format="png")
-        self.image.value = buf.getvalue()
+    def figure(self, v: dict):
+        fig = agg_figure(9.0, 2.9)
+        at, ast, ap = fig.subplots(1, 3, width_ratios=(1.2, 1.2, 0.8))
+        osc, s = v["osc"], v["step"]
+        wn = osc.natural_frequency
+        line = look("nominal")["color"]
+        w = np.linspace(0.0, 4 * wn, 1201)
+        at.semilogy(w, transmissibility(osc, w), color=line)
+        at.plot([v["omega"]], [v["T"]], "o", color="k")
+        at.axvline(math.sqrt(2) * wn, color="0.4", ls="--", lw=0.8)
+        at.set_xlabel("ω (rad/s)")
+        at.set_ylabel("|X/Y|")
+        t = np.linspace(0.0, max(12 * 2 * math.pi / wn, 1.2 * s.settling_time), 2001)
+        ast.axhspan(1 - BAND, 1 + BAND, color="0.85")
+        ast.plot(t, step_response(osc, t), color=line)
+        ast.axvline(s.settling_time, color="0.4", ls=":")
+        ast.set_xlabel("t (s)")
+        ast.set_ylabel("k x / F")
+        p = v["poles"]
+        th = np.linspace(0, 2 * math.pi, 200)
+        ap.plot(wn * np.cos(th), wn * np.sin(th), color="0.8", lw=0.8)
+        ap.plot(p.real, p.imag, "x", color="k", ms=8, mew=2)
+        ap.axvline(0.0, color="0.3", lw=0.8)
+        ap.set_xlabel("Re s (1/s)")
+        ap.set_ylabel("Im s (1/s)")
+        ap.set_aspect("equal", adjustable="datalim")
+        return fig
+
+    def readout_html(self, v: dict) -> str:
         s: StepMetrics = v["step"]
-        self.readout.value = (
+        return (
             f"c = {sig(v['osc'].c, 4)} N s/m; T(ω) = {sig(v['T'], 4)}; poles {pole_text(v['poles'])} 1/s; "
             f"overshoot {sig(100 * s.overshoot, 3)} %; rise {sig(s.rise_time, 3)} s; "
             f"settling {sig(s.settling_time, 3)} s"
         )
 
-    def _repr_mimebundle_(self, **kwargs):
-        data = self.widget._repr_mimebundle_(**kwargs) or {}
-        data["text/html"] = stability_panel_html(
-            self.m, self.k, float(self.zeta_slider.value), float(self.omega_slider.value)
-        )
-        data["image/png"] = base64.b64encode(self.image.value).decode("ascii")
-        data["text/plain"] = (
+    def panel_html(self) -> str:
+        return stability_panel_html(self.m, self.k, float(self.zeta_slider.value), float(self.omega_slider.value))
+
+    def summary(self) -> str:
+        return (
             f"StabilityExplorer(m={self.m!r} kg, k={self.k!r} N/m, zeta={self.zeta_slider.value:.4g}, "
             f"omega={self.omega_slider.value:.4g} rad/s)"
         )
-        return data
-
-
-def _explorer_figure(v: dict):
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(9.0, 2.9), dpi=90, layout="constrained")
-    FigureCanvasAgg(fig)
-    at, ast, ap = fig.subplots(1, 3, width_ratios=(1.2, 1.2, 0.8))
-    osc, s = v["osc"], v["step"]
-    wn = osc.natural_frequency
-    line = look("nominal")["color"]
-    w = np.linspace(0.0, 4 * wn, 1201)
-    at.semilogy(w, transmissibility(osc, w), color=line)
-    at.plot([v["omega"]], [v["T"]], "o", color="k")
-    at.axvline(math.sqrt(2) * wn, color="0.4", ls="--", lw=0.8)
-    at.set_xlabel("ω (rad/s)")
-    at.set_ylabel("|X/Y|")
-    t = np.linspace(0.0, max(12 * 2 * math.pi / wn, 1.2 * s.settling_time), 2001)
-    ast.axhspan(1 - BAND, 1 + BAND, color="0.85")
-    ast.plot(t, step_response(osc, t), color=line)
-    ast.axvline(s.settling_time, color="0.4", ls=":")
-    ast.set_xlabel("t (s)")
-    ast.set_ylabel("k x / F")
-    p = v["poles"]
-    th = np.linspace(0, 2 * math.pi, 200)
-    ap.plot(wn * np.cos(th), wn * np.sin(th), color="0.8", lw=0.8)
-    ap.plot(p.real, p.imag, "x", color="k", ms=8, mew=2)
-    ap.axvline(0.0, color="0.3", lw=0.8)
-    ap.set_xlabel("Re s (1/s)")
-    ap.set_ylabel("Im s (1/s)")
-    ap.set_aspect("equal", adjustable="datalim")
-    return fig
 
 
 def stability_explorer(st: StabilityStudy) -> StabilityExplorer:

@@ -8,11 +8,7 @@ visual language: the closed-form H∞ tuning black dashed, the primary without a
 
 from __future__ import annotations
 
-import base64
-import hashlib
 import html
-import io
-import itertools
 import json
 import math
 
@@ -30,7 +26,7 @@ from vibration.physics.tmd import (
     tmd_magnification,
     tmd_peak,
 )
-from vibration.presentation.panels import line_style, panel_assets
+from vibration.presentation.panels import KitExplorer, PanelIds, agg_figure, line_style, panel_assets, range_control
 from vibration.presentation.style import OKABE_ITO, case_style
 
 __all__ = ["MU_RANGE", "F_RANGE", "ZETA_A_RANGE", "ZETA_P_RANGE", "TMDExplorer", "sliders_text", "tmd_explorer",
@@ -45,7 +41,7 @@ ZETA_P_RANGE = (0.0, 0.3)
 #: Frequency-ratio window of the slider plots, 1.
 R_RANGE = (0.4, 1.6)
 _SLIDER_RULES = (("dh", "Den Hartog"), ("hinf", "H∞ (Nishihara–Asami)"), ("h2", "H2 (Warburton)"))
-_counter = itertools.count(1)
+_ids = PanelIds("vtm")
 #: The panel's lines and marks with their legend words, as the JupyterLab explorer draws them.
 STYLES = {
     "curve": {**line_style({"color": OKABE_ITO["blue"]}), "label": "with the absorber of the sliders"},
@@ -100,19 +96,14 @@ def tmd_panel_html(mu=0.05, f=None, zeta_a=None, zeta_p=0.0, *, panel_id: str | 
     mu, f, zeta_a, zeta_p = _slider_values(mu, f, zeta_a, zeta_p)
     params = {"mu": mu, "f": f, "zeta_a": zeta_a, "zeta_p": zeta_p}
     if panel_id is None:
-        digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode()).hexdigest()[:8]
-        panel_id = f"vtm-{digest}-{next(_counter)}"
+        panel_id = _ids.new(params)
     e = html.escape
     pid = e(panel_id)
     lg = math.log10
 
     def slider(cls, label, lo, hi, value, log):
         a, b, v = (lg(lo), lg(hi), lg(value)) if log else (lo, hi, value)
-        return (
-            f'<label for="{pid}-{cls}">{label}</label>\n'
-            f'<input type="range" class="vtm-{cls}" id="{pid}-{cls}" min="{a!r}" max="{b!r}" step="any" '
-            f'value="{v!r}">\n<output class="vtm-{cls}-out" for="{pid}-{cls}"></output>\n'
-        )
+        return range_control(pid, cls, f"vtm-{cls}", label, low=repr(a), high=repr(b), step="any", value=repr(v))
 
     rules = "".join(
         f'<tr><th>{e(name)}</th><td class="vtm-{key}-f"></td><td class="vtm-{key}-za"></td>'
@@ -168,7 +159,7 @@ aria-label="primary's magnification against the frequency ratio"></svg></figure>
 """
 
 
-class TMDExplorer:
+class TMDExplorer(KitExplorer):
     """JupyterLab sliders (ipywidgets) for μ, f, ζ_a and ζ_p over the magnification curve.
 
     ``_repr_mimebundle_`` returns the widget view for JupyterLab and, for renderers
@@ -203,8 +194,7 @@ class TMDExplorer:
         self.widget = widgets.VBox(
             [widgets.HBox(sliders[:2]), widgets.HBox(sliders[2:]), self.rule_buttons, self.readout, self.image]
         )
-        for s in sliders:
-            s.observe(lambda _change: self.update(), names="value")
+        self.watch(*sliders)
         self.rule_buttons.observe(self._apply_rule, names="value")
         self.update()
 
@@ -236,19 +226,37 @@ class TMDExplorer:
             "rule_peaks": {n: tmd_peak(mu, t.f, t.zeta_a, zp) for n, t in rules.items()},
         }
 
-    def update(self) -> None:
-        v = self.values()
-        fig = _explorer_figure(v)
-        buf = io.BytesIO()
-        fig.savefig(buf, format="png")
-        self.image.value = buf.getvalue()
+    def figure(self, v: dict):
+        fig = agg_figure(7.5, 3.6)
+        ax = fig.subplots()
+        mu, f, za, zp = v["mu"], v["f"], v["zeta_a"], v["zeta_p"]
+        r = np.linspace(*R_RANGE, 2401)
+        rp, hp = v["fixed"]
+        top = max(2.0 * math.sqrt(1.0 + 2.0 / mu), 1.15 * float(hp.max()))
+        with np.errstate(divide="ignore"):
+            bare = 1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * zp * r)
+        opt = v["rules"]["H∞"]
+        ax.plot(r, np.minimum(bare, 2 * top), color=OKABE_ITO["grey"], lw=1.0, label="without absorber")
+        ax.plot(r, tmd_magnification(mu, f, za, r, zp), color=OKABE_ITO["blue"], lw=1.8,
+                label="with the sliders' absorber")  # fmt: skip
+        ax.plot(r, tmd_magnification(mu, opt.f, opt.zeta_a, r, zp), lw=1.2, label=r"H$\infty$ tuning for this $\mu$",
+                **case_style("exact"))  # fmt: skip
+        ax.plot(rp, hp, "o", color="k", ms=5, label=r"fixed points P, Q ($\zeta_p = 0$)")
+        ax.set_xlim(*R_RANGE)
+        ax.set_ylim(0.0, top)
+        ax.set_xlabel(r"frequency ratio $r = \omega/\omega_p$ (1)")
+        ax.set_ylabel(r"$|X_p|\,/\,(F_0/k_p)$ (1)")
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+        return fig
+
+    def readout_html(self, v: dict) -> str:
         rp, hp = v["fixed"]
         rows = "".join(
             f"<tr><td>{html.escape(n)}</td><td>{sig(t.f)}</td><td>{sig(t.zeta_a)}</td><td>{sig(t.peak)}</td>"
             f"<td>{sig(v['rule_peaks'][n])}</td></tr>"
             for n, t in v["rules"].items()
         )
-        self.readout.value = (
+        return (
             f"<p>peak |X<sub>p</sub>|/(F<sub>0</sub>/k<sub>p</sub>) = {sig(v['peak'])}; fixed points P "
             f"(r = {sig(rp[0])}, {sig(hp[0])}) and Q (r = {sig(rp[1])}, {sig(hp[1])}) for ζ<sub>p</sub> = 0; "
             f"ζ′<sub>a</sub> = f ζ<sub>a</sub> = {sig(v['f'] * v['zeta_a'])}</p>"
@@ -257,47 +265,15 @@ class TMDExplorer:
             f"{rows}</table>"
         )
 
-    def _repr_mimebundle_(self, **kwargs):
-        data = self.widget._repr_mimebundle_(**kwargs) or {}
-        data["text/html"] = tmd_panel_html(
-            float(self.mu_slider.value),
-            float(self.f_slider.value),
-            float(self.zeta_a_slider.value),
-            float(self.zeta_p_slider.value),
-        )
-        data["image/png"] = base64.b64encode(self.image.value).decode("ascii")
-        data["text/plain"] = (
+    def panel_html(self) -> str:
+        sliders = (self.mu_slider, self.f_slider, self.zeta_a_slider, self.zeta_p_slider)
+        return tmd_panel_html(*(float(s.value) for s in sliders))
+
+    def summary(self) -> str:
+        return (
             f"TMDExplorer(mu={self.mu_slider.value:.4g}, f={self.f_slider.value:.4g}, "
             f"zeta_a={self.zeta_a_slider.value:.4g}, zeta_p={self.zeta_p_slider.value:.4g})"
         )
-        return data
-
-
-def _explorer_figure(v: dict):
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(7.5, 3.6), dpi=90, layout="constrained")
-    FigureCanvasAgg(fig)
-    ax = fig.subplots()
-    mu, f, za, zp = v["mu"], v["f"], v["zeta_a"], v["zeta_p"]
-    r = np.linspace(*R_RANGE, 2401)
-    rp, hp = v["fixed"]
-    top = max(2.0 * math.sqrt(1.0 + 2.0 / mu), 1.15 * float(hp.max()))
-    with np.errstate(divide="ignore"):
-        bare = 1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * zp * r)
-    opt = v["rules"]["H∞"]
-    ax.plot(r, np.minimum(bare, 2 * top), color=OKABE_ITO["grey"], lw=1.0, label="without absorber")
-    ax.plot(r, tmd_magnification(mu, f, za, r, zp), color=OKABE_ITO["blue"], lw=1.8, label="with the sliders' absorber")
-    ax.plot(r, tmd_magnification(mu, opt.f, opt.zeta_a, r, zp), lw=1.2, label=r"H$\infty$ tuning for this $\mu$",
-            **case_style("exact"))  # fmt: skip
-    ax.plot(rp, hp, "o", color="k", ms=5, label=r"fixed points P, Q ($\zeta_p = 0$)")
-    ax.set_xlim(*R_RANGE)
-    ax.set_ylim(0.0, top)
-    ax.set_xlabel(r"frequency ratio $r = \omega/\omega_p$ (1)")
-    ax.set_ylabel(r"$|X_p|\,/\,(F_0/k_p)$ (1)")
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
-    return fig
 
 
 def tmd_explorer(mu=0.05, f=None, zeta_a=None, zeta_p=0.0) -> TMDExplorer:

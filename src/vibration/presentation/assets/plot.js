@@ -540,8 +540,21 @@
     }
   }
 
+  /* ---------------------------------------------------------------- panels */
+
+  /** A panel's data-params and data-styles, parsed, the first time it is mounted (its dataset[flag] then set);
+   *  null for no panel or one mounted already. */
+  function claim(panel, flag) {
+    if (!panel || panel.dataset[flag]) {
+      return null;
+    }
+    panel.dataset[flag] = "1";
+    return { cfg: JSON.parse(panel.dataset.params), styles: JSON.parse(panel.dataset.styles) };
+  }
+
   window.VibPlot = {
     version: VERSION,
+    claim: claim,
     fmt: fmt,
     fixed: fixed,
     tickText: tickText,

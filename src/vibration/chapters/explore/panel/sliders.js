@@ -311,12 +311,9 @@
 
   /** Attach the sliders of one panel (div.vib-panel with data-params JSON). */
   function mount(panel) {
-    if (!panel || panel.dataset.vibMounted) {
-      return null;
-    }
-    panel.dataset.vibMounted = "1";
-    var cfg = JSON.parse(panel.dataset.params);
-    var styles = JSON.parse(panel.dataset.styles);
+    var data = window.VibPlot.claim(panel, "vibMounted");
+    if (!data) { return null; }
+    var cfg = data.cfg, styles = data.styles;
     var state = {
       m: cfg.m, c: cfg.c, k: cfg.k, F0: cfg.F0, omega: cfg.omega,
       t_end: cfg.t_end, n_points: cfg.n_points,

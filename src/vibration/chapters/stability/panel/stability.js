@@ -260,12 +260,9 @@
 
   /** Attach one panel (div.vst-panel with data-params JSON). */
   function mount(panel) {
-    if (!panel || panel.dataset.vstMounted) {
-      return null;
-    }
-    panel.dataset.vstMounted = "1";
-    var cfg = JSON.parse(panel.dataset.params);
-    var styles = JSON.parse(panel.dataset.styles);
+    var data = window.VibPlot.claim(panel, "vstMounted");
+    if (!data) { return null; }
+    var cfg = data.cfg, styles = data.styles;
     var zIn = panel.querySelector("input.vst-zeta");
     var wIn = panel.querySelector("input.vst-omega");
     var nPos = +zIn.max;

@@ -202,12 +202,9 @@
 
   /** Attach one panel (div.vtm-panel with data-params JSON). */
   function mount(panel) {
-    if (!panel || panel.dataset.vtmMounted) {
-      return null;
-    }
-    panel.dataset.vtmMounted = "1";
-    var cfg = JSON.parse(panel.dataset.params);
-    var styles = JSON.parse(panel.dataset.styles);
+    var data = window.VibPlot.claim(panel, "vtmMounted");
+    if (!data) { return null; }
+    var cfg = data.cfg, styles = data.styles;
     var inputs = {
       mu: panel.querySelector("input.vtm-mu"),
       f: panel.querySelector("input.vtm-f"),
