@@ -18,7 +18,8 @@ _PAGE = """<!doctype html><html><head><meta charset="utf-8"><title>t</title></he
 _DOC = """<span id="document-ch{n}"></span><section><h2>{n}. Chapter {n}</h2><p>Intro.</p>
 <section><h3>First section of {n}</h3><p>{filler}</p>
 <figure id="fig-{n}"><svg width="200" height="100"></svg><figcaption><span class="caption-number">Figure {n}.1 </span>
-Response of case {n}. More words.</figcaption></figure></section>
+Response of case {n}: <math><semantics><mi>x</mi><annotation encoding="application/x-tex">x_\\mathrm{{ref}}
+</annotation></semantics></math> at rest (left: case {n}. right). More words.</figcaption></figure></section>
 <section><h3>Second section of {n}</h3><table id="tab-{n}"><caption><span class="caption-number">Table {n}.1 </span>
 Values of case {n}.</caption><tr><td>1</td></tr></table><p>{filler}</p></section></section>"""
 
@@ -43,7 +44,9 @@ def test_print_edition_title_lists_and_section_bookmarks(browser, tmp_path):
     assert "The book" in texts[0] and edition_text() in " ".join(texts[0].split())
     assert not any(re.search(r"vib(doc|sec)\d", t) for t in texts)
     lists = " ".join(texts[:6])
-    assert "List of figures" in lists and "Figure 1.1 Response of case 1." in lists
+    # the entry is the caption's first sentence as read: no TeX of its mathematics, not cut at a colon or in brackets
+    assert "List of figures" in lists and "Figure 1.1 Response of case 1: x at rest (left: case 1. right)." in lists
+    assert "mathrm" not in lists
     assert "List of tables" in lists and "Table 2.1 Values of case 2." in lists
 
     def flat(items, depth=0):

@@ -96,8 +96,21 @@ _SETUP_JS = """
     const items = [...document.querySelectorAll(`article ${sel}`)].map(el => {
       const c = el.querySelector(cap); if (!c) return null;
       const num = c.querySelector('.caption-number'); if (!num) return null;
-      const rest = c.textContent.replace(num.textContent, '').replace(/[#¶]\\s*$/, '').trim();
-      const first = rest.split(/(?<=[.:])\\s/)[0];
+      // the caption's text as read, without the TeX source that MathML carries in its annotations
+      const copy = c.cloneNode(true);
+      copy.querySelectorAll('annotation, annotation-xml, .caption-number').forEach(a => a.remove());
+      const rest = copy.textContent.replace(/\\s+/g, ' ').replace(/[#¶]\\s*$/, '').trim();
+      // the first sentence: up to a full stop followed by a space, outside brackets
+      let depth = 0, end = rest.length;
+      for (let i = 0; i < rest.length; i++) {
+        const ch = rest[i];
+        if ('([{'.includes(ch)) depth++;
+        else if (')]}'.includes(ch)) depth = Math.max(0, depth - 1);
+        else if (ch === '.' && depth === 0 && /\\s/.test(rest[i + 1] || ' ')) {
+          end = i + 1; break;
+        }
+      }
+      const first = rest.slice(0, end).trim();
       const id = el.id || (el.closest('[id]') || {}).id || '';
       return [num.textContent.trim(), first, id];
     }).filter(x => x);
