@@ -82,17 +82,10 @@ def torsional_oscillator(
     left.plot([0.62 * R, 1.12 * R], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
     left.plot([0.62 * R * math.cos(t), R * math.cos(t)], [0.62 * R * math.sin(t), R * math.sin(t)], color=INK,
               lw=2.2, zorder=3)  # fmt: skip
-    arc_arrow(
-        left,
-        (0, 0),
-        0.8 * R,
-        start_deg=2.0,
-        end_deg=theta - 2.0,
-        color=COORDINATE,
-        gid="coordinate:$\\theta$",
-        lw=1.1,
-        scale=9.0,
-    )
+    # the angle's arrow, drawn alike on the wheel and on its free-body diagram
+    theta_arrow = {"start_deg": 2.0, "end_deg": theta - 2.0, "color": COORDINATE, "gid": "coordinate:$\\theta$",
+                   "lw": 1.1, "scale": 9.0}  # fmt: skip
+    arc_arrow(left, (0, 0), 0.8 * R, **theta_arrow)
     left.text(0.8 * R + 0.06, 0.26, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
     # spiral spring from the axle to the lever, the lever, the push rod, the crank and the motor
     xe, ye = _spiral(left, 0.2, 0.62, 2.25, 90.0)
@@ -138,17 +131,7 @@ def torsional_oscillator(
     right.plot([0.1, 0.95 * Rf], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
     right.plot([0.1 * math.cos(t), Rf * math.cos(t)], [0.1 * math.sin(t), Rf * math.sin(t)], color=INK, lw=2.2,
                zorder=3)  # fmt: skip
-    arc_arrow(
-        right,
-        (0, 0),
-        0.7 * Rf,
-        start_deg=2.0,
-        end_deg=theta - 2.0,
-        color=COORDINATE,
-        gid="coordinate:$\\theta$",
-        lw=1.1,
-        scale=9.0,
-    )
+    arc_arrow(right, (0, 0), 0.7 * Rf, **theta_arrow)
     right.text(0.7 * Rf + 0.06, 0.2, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
     ra = Rf + 0.28
     torques = (
