@@ -18,9 +18,10 @@ import numpy as np
 import pytest
 
 from vibration.chapters.tmd import figures, panel, tables, text
+from vibration.chapters.tmd.designs import CLOSED, DESIGNS, H2, HINF, OPTIMA, ROBUST, TUNINGS
 from vibration.chapters.tmd.digits import Sig
 from vibration.chapters.tmd.params import SCHEMA
-from vibration.chapters.tmd.study import DESIGNS, RULES, TUNINGS, tmd_study
+from vibration.chapters.tmd.study import tmd_study
 from vibration.physics.model import ParameterError
 from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 
@@ -161,11 +162,11 @@ def test_every_caption_passes_its_check_and_says_true_coincidences(chapter):
               for n, s in st.scores.items()}  # fmt: skip
     for fig_name, data in (("fig-tmd-magnification", curves), ("fig-tmd-robustness", st.robust)):
         shown = f"{by_name[fig_name].caption} {by_name[fig_name].remark}".lower()  # the findings are in the remark
-        for group in (figures.CLOSED, figures.OPTIMA):
+        for group in (CLOSED, OPTIMA):
             for i, a in enumerate(group):
                 for b in group[i + 1 :]:
                     d = float(np.max(np.abs(np.asarray(data[a]) / np.asarray(data[b]) - 1.0)))
-                    said = f"the curves of {figures.NAME[a]} and {figures.NAME[b]} coincide".lower() in shown
+                    said = f"the curves of {a.noun} and {b.noun} coincide".lower() in shown
                     assert said == (d < figures.COINCIDE), (fig_name, a, b, d)
     # the modes figure draws one panel per mode shown
     modes = by_name["fig-tmd-modes"].fig
@@ -184,13 +185,13 @@ def test_sentences_state_what_the_numbers_say(chapter):
     st, sentences, _, _ = chapter
     for name, s in sentences.items():
         assert not re.search(r"\bnan\b|\binf\b", s), (name, s)
-    h, rb, h2 = st.scores["H∞ optimum"], st.scores["robust min-max"], st.scores["H2 optimum"]
+    h, rb, h2 = st.scores[HINF], st.scores[ROBUST], st.scores[H2]
     # the response: falls or rises as the amplitudes do
     verb = "falls" if st.amp_with <= st.amp_without else "rises"
     assert sentences["response"].count(verb) >= 1
     assert ("lower than without it" in sentences["key result 1"]) == (st.amp_with < st.amp_without)
     # the best closed form against the optimum for the actual damping
-    closed = min(st.peaks_actual[st.mu][r] for r in RULES[:3])
+    closed = min(st.peaks_actual[st.mu][r] for r in CLOSED)
     assert ("lower than the best tuning" in sentences["key result 2"]) == (h.nominal_peak < closed)
     gain = 1 - h.nominal_peak / closed
     assert ("Tune for the primary you have" in sentences["take-away 1"]) == (gain >= 0.01)
@@ -201,15 +202,15 @@ def test_sentences_state_what_the_numbers_say(chapter):
     # each criterion's winner is the one the design sentence names
     design = sentences["design"]
     for key, owner, what in (
-        ("nominal_peak", DESIGNS[1], "nominal peak"),
-        ("rms_ratio", DESIGNS[2], "rms displacement under white noise"),
+        ("nominal_peak", HINF, "nominal peak"),
+        ("rms_ratio", H2, "rms displacement under white noise"),
     ):
         vals = {n: getattr(st.scores[n], key) for n in DESIGNS}
         if not all(math.isfinite(v) for v in vals.values()):
             continue
         best = min(vals, key=vals.get)
         if best == owner or math.isclose(vals[best], vals[owner], rel_tol=1e-9):
-            assert f"the {text.PROSE[owner]} has the lowest {what}" in design
+            assert f"the {owner.prose} has the lowest {what}" in design
         else:
             assert f"the lowest {what} is that of {text._the(best)}" in design
     if math.isfinite(h.rms_ratio):
@@ -225,7 +226,7 @@ def test_sentences_state_what_the_numbers_say(chapter):
         verb = "falls" if case.peak_with <= case.peak_without else "rises"
         assert verb in sentences["building"]
     mus = sorted(st.tunings)
-    peaks = [st.peaks_actual[x][RULES[3]] for x in mus]
+    peaks = [st.peaks_actual[x][HINF] for x in mus]
     assert ("falls from" in sentences["take-away 2"]) == (peaks[-1] <= peaks[0])
 
 
@@ -251,7 +252,7 @@ def test_study_record_follows_its_parameters():
     st = tmd_study(m=4.0, k=400.0, F0=40.0, n_points=201)
     assert st.omega_p == pytest.approx(10.0, rel=1e-15) and st.x_static == pytest.approx(0.1, rel=1e-15)
     assert st.zeta_p == pytest.approx(0.5 / (2 * math.sqrt(1600.0)), rel=1e-14)
-    assert set(st.scores) == set(TUNINGS) and st.chosen is st.tunings[st.mu][RULES[3]]
+    assert set(st.scores) == set(TUNINGS) and st.chosen is st.tunings[st.mu][HINF]
 
 
 def test_the_usage_example_runs_on_its_own(tmp_path):

@@ -7,6 +7,7 @@ record), :mod:`.tables`, :mod:`.text` (sentences, the key results and the take-a
 (timings of the heaviest computations against naive alternatives).
 """
 
+from vibration.chapters.tmd.designs import DESIGNS, RULES, TUNINGS, Design
 from vibration.chapters.tmd.figures import (
     building_frf_figure,
     building_ground_figure,
@@ -18,7 +19,7 @@ from vibration.chapters.tmd.figures import (
 )
 from vibration.chapters.tmd.panel import TMDExplorer, sliders_text, tmd_explorer, tmd_panel_html
 from vibration.chapters.tmd.params import SCHEMA, Params
-from vibration.chapters.tmd.study import DESIGNS, RULES, TUNINGS, TMDStudy, tmd_study
+from vibration.chapters.tmd.study import TMDStudy, tmd_study
 from vibration.chapters.tmd.tables import (
     building_load_table,
     building_table,
@@ -40,6 +41,7 @@ from vibration.chapters.tmd.text import (
 
 __all__ = [
     "DESIGNS",
+    "Design",
     "RULES",
     "SCHEMA",
     "TUNINGS",

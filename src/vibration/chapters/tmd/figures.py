@@ -16,8 +16,9 @@ import math
 
 import numpy as np
 
+from vibration.chapters.tmd.designs import CLOSED, DEN_HARTOG, OPTIMA, TUNINGS
 from vibration.chapters.tmd.digits import sig
-from vibration.chapters.tmd.study import TUNINGS, TMDStudy, band_top
+from vibration.chapters.tmd.study import TMDStudy, band_top
 from vibration.physics.tmd import ground_acceleration_load, tmd_fixed_points, tmd_magnification
 from vibration.presentation.captions import Captioned, panel_words
 from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
@@ -33,42 +34,6 @@ __all__ = [
     "time_response_figure",
 ]
 
-#: Case of the book's visual language for each tuning, and the words a caption uses for its line.
-CASE = {
-    TUNINGS[0]: "Den Hartog",
-    TUNINGS[1]: "exact",
-    TUNINGS[2]: "H2",
-    TUNINGS[3]: "H∞",
-    TUNINGS[4]: "H2",
-    TUNINGS[5]: "robust",
-}
-LOOK = {
-    TUNINGS[0]: "orange",
-    TUNINGS[1]: "black dashed",
-    TUNINGS[2]: "sky blue dash-dot",
-    TUNINGS[3]: "purple",
-    TUNINGS[4]: "sky blue dash-dot",
-    TUNINGS[5]: "green dashed",
-}
-#: Legend labels (mathtext) and caption names of the tunings.
-LABEL = {
-    TUNINGS[0]: "Den Hartog",
-    TUNINGS[1]: r"H$\infty$ closed form",
-    TUNINGS[2]: "H2 closed form (Warburton)",
-    TUNINGS[3]: r"H$\infty$ optimum",
-    TUNINGS[4]: "H2 optimum",
-    TUNINGS[5]: "robust min-max",
-}
-NAME = {
-    TUNINGS[0]: "Den Hartog's rule",
-    TUNINGS[1]: "the closed-form H∞ optimum",
-    TUNINGS[2]: "Warburton's H2 optimum",
-    TUNINGS[3]: "the H∞ optimum",
-    TUNINGS[4]: "the H2 optimum",
-    TUNINGS[5]: "the robust min-max design",
-}
-#: The two groups drawn side by side: tunings derived for an undamped primary, optima for the actual damping.
-CLOSED, OPTIMA = TUNINGS[:3], TUNINGS[3:]
 #: Curves closer than this (largest relative difference) are said to coincide, 1.
 COINCIDE = 0.01
 GREY = OKABE_ITO["grey"]
@@ -101,23 +66,12 @@ def _cap(word: str) -> str:
     return word[:1].upper() + word[1:]
 
 
-#: What a caption calls each tuning's curve within its group (the panels' titles name the group).
-SHORT = {
-    TUNINGS[0]: "Den Hartog's rule",
-    TUNINGS[1]: "closed-form H∞",
-    TUNINGS[2]: "Warburton's H2",
-    TUNINGS[3]: "H∞",
-    TUNINGS[4]: "H2",
-    TUNINGS[5]: "robust min-max",
-}
-
-
 def _groups(fig) -> str:
     """'Left, for an undamped primary: Den Hartog's rule (orange), ... Right, optima for the actual damping: ...'."""
     w = panel_words(fig)
     heads = ("for an undamped primary", "optima for the actual damping")
     return " ".join(
-        f"{_cap(w[i])}, {heads[i]}: " + ", ".join(f"{SHORT[n]} ({LOOK[n]})" for n in g) + "."
+        f"{_cap(w[i])}, {heads[i]}: " + ", ".join(f"{n.curve} ({n.look})" for n in g) + "."
         for i, g in enumerate((CLOSED, OPTIMA))
     )
 
@@ -127,7 +81,7 @@ def _coincidences(curves: dict[str, np.ndarray]) -> str:
     pair of a group (the two panels), or ''."""
     pairs = [p for g in (CLOSED, OPTIMA) for p in coinciding({n: curves[n] for n in g})]
     within = "The curves of {} and {} coincide to within {} %. "
-    return "".join(within.format(NAME[a], NAME[b], sig(max(100 * d, 1e-3), 1)) for a, b, d in pairs)
+    return "".join(within.format(a.noun, b.noun, sig(max(100 * d, 1e-3), 1)) for a, b, d in pairs)
 
 
 # ----------------------------------------------------------------------------- the absorber
@@ -137,7 +91,7 @@ def fixed_points_figure(st: TMDStudy) -> Captioned:
     """Undamped primary, Den Hartog's tuning: the limits of the absorber damping define P and Q (left);
     every finite damping passes through them (right)."""
     mu = st.mu
-    t = st.tunings[mu][TUNINGS[0]]
+    t = st.tunings[mu][DEN_HARTOG]
     r = np.linspace(*R_WINDOW, 4001)
     rp, hp = tmd_fixed_points(mu, t.f)
     top = 2.2 * float(hp.max())
@@ -209,7 +163,7 @@ def magnification_figure(st: TMDStudy) -> Captioned:
     for ax, group in zip(axes, groups, strict=True):
         ax.plot(r, np.where(bare > top, np.nan, bare), label="no absorber", **case_style("c_nominal"))
         for n in group:
-            ax.plot(r, curves[n], label=LABEL[n], **case_style(CASE[n]))
+            ax.plot(r, curves[n], label=n.legend, **case_style(n.case))
         ax.axvline(st.r_force, color=GREY, linestyle=":", lw=0.9, label=rf"paper's $\omega$ = {st.omega_res:g} rad/s")
         ax.set_xlim(*R_WINDOW)
         ax.set_ylim(0.0, top)
@@ -282,7 +236,7 @@ def robustness_figure(st: TMDStudy) -> Captioned:
     groups = (CLOSED, OPTIMA)
     for ax, group in zip(axes, groups, strict=True):
         for n in group:
-            ax.plot(e, st.robust[n], label=LABEL[n], **case_style(CASE[n]))
+            ax.plot(e, st.robust[n], label=n.legend, **case_style(n.case))
         ax.set_xlabel(r"error of the primary's stiffness $\Delta k_p/k_p$ (%)")
         if e[-1] > e[0]:
             ax.set_xlim(e[0], e[-1])
@@ -300,13 +254,13 @@ def robustness_figure(st: TMDStudy) -> Captioned:
     )
     remark = (
         _coincidences(st.robust)
-        + f"Of all six, {NAME[best]} has the lowest worst peak, {sig(st.scores[best].worst_peak)}."
+        + f"Of all six, {best.noun} has the lowest worst peak, {sig(st.scores[best].worst_peak)}."
     )
     spread = {n: float(np.ptp(st.robust[n])) for n in TUNINGS}
     flattest = min(spread, key=spread.get)
     alt = (
         "Peak magnification against the error of the primary's stiffness for six absorber tunings in two plots; "
-        f"{NAME[flattest]} has the flattest curve."
+        f"{flattest.noun} has the flattest curve."
     )
     return Captioned(fig, caption, "fig-tmd-robustness", alt, remark=remark)
 

@@ -6,31 +6,21 @@ stiffness off by up to ±δ_k), judged on the actual (damped) primary.
 
 from __future__ import annotations
 
-from vibration.chapters.tmd.study import TUNINGS, tmd_study
+from vibration.chapters.tmd.designs import TUNINGS, Design
+from vibration.chapters.tmd.study import tmd_study
 from vibration.presentation.keyresults import KeyResult, KeyResults
 
-#: Variable name of each tuning's worst peak (letters, digits and _), in the order of TUNINGS.
-NAMES = dict(
-    zip(
-        TUNINGS,
-        (
-            "worst_peak_den_hartog",
-            "worst_peak_hinf_closed",
-            "worst_peak_h2_closed",
-            "worst_peak_hinf",
-            "worst_peak_h2",
-            "worst_peak_robust",
-        ),
-        strict=True,
-    )
-)
+
+def _name(tuning: Design) -> str:
+    """The key result's variable name of ``tuning``'s worst peak: "worst_peak_hinf"."""
+    return f"worst_peak_{tuning.key}"
 
 
-def _worst(tuning: str):
+def _worst(tuning: Design):
     def read(study) -> float:
         return study.scores[tuning].worst_peak
 
-    read.__name__ = f"worst_peak_of_{NAMES[tuning]}"
+    read.__name__ = f"worst_peak_of_{_name(tuning)}"
     return read
 
 
@@ -38,9 +28,9 @@ KEY_RESULTS = KeyResults(
     study=tmd_study,
     results=tuple(
         KeyResult(
-            name=NAMES[t],
+            name=_name(t),
             unit="1",
-            meaning=f"worst peak magnification over the mistuning band, {t} tuning",
+            meaning=f"worst peak magnification over the mistuning band, {t.name} tuning",
             read=_worst(t),
         )
         for t in TUNINGS
@@ -48,6 +38,6 @@ KEY_RESULTS = KeyResults(
 )
 
 
-def worst_peak(study, tuning: str) -> float:
-    """The declared worst peak of ``tuning`` (one of TUNINGS) read from ``study``, 1."""
-    return KEY_RESULTS[NAMES[tuning]].value(study)
+def worst_peak(study, tuning: Design) -> float:
+    """The declared worst peak of ``tuning`` (a :class:`.Design`) read from ``study``, 1."""
+    return KEY_RESULTS[_name(tuning)].value(study)

@@ -19,6 +19,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from vibration.chapters.tmd.designs import (
+    DEN_HARTOG,
+    DESIGNS,
+    H2,
+    H2_CLOSED,
+    HINF,
+    HINF_CLOSED,
+    ROBUST,
+    TUNINGS,
+    Design,
+)
 from vibration.chapters.tmd.params import Params
 from vibration.physics.exact import exact_response, steady_state
 from vibration.physics.model import Oscillator, SineForce, check_real
@@ -47,22 +58,6 @@ from vibration.presentation.records import with_params
 
 #: Mass ratios of the tunings table (the run's μ is added when it is not among them), 1.
 TABLE_MUS = (0.01, 0.02, 0.05, 0.1)
-#: Every tuning of the chapter: Den Hartog's rule and the closed-form H∞ (Nishihara and Asami) and H2
-#: (Warburton) optima of an undamped primary, then the numerical optima for the primary's actual damping
-#: of the nominal peak (H∞), the rms displacement under white noise (H2) and the worst peak over the
-#: band of stiffness errors (robust min-max).
-TUNINGS = (
-    "Den Hartog",
-    "H∞ closed form, ζₚ = 0",
-    "H2 closed form, ζₚ = 0",
-    "H∞ optimum",
-    "H2 optimum",
-    "robust min-max",
-)
-#: The rules of the tunings table (every mass ratio): the three closed forms and the H∞ optimum.
-RULES = TUNINGS[:4]
-#: The designs compared on the actual primary: the classical rule and the optimum of each criterion.
-DESIGNS = (TUNINGS[0], TUNINGS[3], TUNINGS[4], TUNINGS[5])
 #: Largest primary damping ratio the numerical optimisations accept, 1.
 ZETA_P_MAX = 0.5
 #: Stiffness errors sampled across the band of the robustness figure and table.
@@ -116,7 +111,7 @@ class TMDStudy:
 
     params: Params
     zeta_p: float  # primary damping ratio c/(2 sqrt(k m)), 1
-    tunings: dict = field(repr=False)  # μ -> rule (RULES) -> TMDTuning (.peak on the primary it was optimised for)
+    tunings: dict = field(repr=False)  # μ -> rule (a Design of RULES) -> TMDTuning (.peak where optimised)
     peaks_actual: dict = field(repr=False)  # μ -> rule -> peak magnification on the actual primary, 1
     t: np.ndarray = field(repr=False)  # time grid, s
     x_without: np.ndarray = field(repr=False)  # primary displacement without the absorber, m
@@ -126,9 +121,9 @@ class TMDStudy:
     amp_with: float  # steady amplitude with, m
     amp_absorber: float  # steady absorber amplitude, m
     eps: np.ndarray = field(repr=False)  # relative errors of the primary's stiffness, 1
-    robust: dict = field(repr=False)  # tuning (TUNINGS) -> peak over eps, 1
+    robust: dict = field(repr=False)  # tuning (a Design of TUNINGS) -> peak over eps, 1
     robust_none: np.ndarray = field(repr=False)  # peak without absorber over eps, 1
-    scores: dict = field(repr=False)  # tuning (TUNINGS) -> DesignScore on the actual primary
+    scores: dict = field(repr=False)  # tuning (a Design of TUNINGS) -> DesignScore on the actual primary
     building: MDOF = field(repr=False)
     building_tmd: MDOF = field(repr=False)
     absorber: ModeAbsorber = field(repr=False)
@@ -152,14 +147,14 @@ class TMDStudy:
         return self.F0 / self.k
 
     @property
-    def designs(self) -> dict[str, DesignScore]:
+    def designs(self) -> dict[Design, DesignScore]:
         """The four designs (DESIGNS) judged on every criterion."""
         return {d: self.scores[d] for d in DESIGNS}
 
     @property
     def chosen(self) -> TMDTuning:
         """The absorber of the time response: the H∞ optimum for the actual primary damping at μ."""
-        return self.tunings[self.mu][RULES[3]]
+        return self.tunings[self.mu][HINF]
 
     @property
     def bare_peak(self) -> float:
@@ -228,10 +223,10 @@ def tmd_study(params: Params | None = None, **values) -> TMDStudy:
     mus = sorted(set(TABLE_MUS) | {mu})
     tunings = {x: _tunings(x, zeta_p) for x in mus}
     peaks_actual = {
-        x: {r: (t.peak if r == RULES[3] else float(mistuned_peak(t, 0.0, zeta_p))) for r, t in rules.items()}
+        x: {r: (t.peak if r == HINF else float(mistuned_peak(t, 0.0, zeta_p))) for r, t in rules.items()}
         for x, rules in tunings.items()
     }
-    chosen = tunings[mu][RULES[3]]
+    chosen = tunings[mu][HINF]
     t = np.linspace(0.0, p.t_end, p.n_points)
     force = SineForce(F0=p.F0, omega=p.omega_res)
     x_without = exact_response(osc, force, t).x
@@ -240,7 +235,7 @@ def tmd_study(params: Params | None = None, **values) -> TMDStudy:
     X = model.frf([p.omega_res], [p.F0, 0.0])[0]
     r_force = p.omega_res / math.sqrt(p.k / p.m)
     robust_design = robust_tuning(mu, zeta_p, band)
-    all_tunings = {**tunings[mu], TUNINGS[4]: h2_tuning(mu, zeta_p), TUNINGS[5]: robust_design}
+    all_tunings = {**tunings[mu], H2: h2_tuning(mu, zeta_p), ROBUST: robust_design}
     scores = {name: score_design(all_tunings[name], zeta_p, band, r_force) for name in TUNINGS}
     eps = np.linspace(-band, band, N_EPS)
     robust = {name: mistuned_peak(all_tunings[name], eps, zeta_p) for name in TUNINGS}
@@ -275,12 +270,12 @@ def tmd_study(params: Params | None = None, **values) -> TMDStudy:
     )
 
 
-def _tunings(mu: float, zeta_p: float) -> dict[str, TMDTuning]:
+def _tunings(mu: float, zeta_p: float) -> dict[Design, TMDTuning]:
     return {
-        RULES[0]: den_hartog(mu),
-        RULES[1]: hinf_tuning(mu),
-        RULES[2]: h2_tuning(mu),
-        RULES[3]: hinf_tuning(mu, zeta_p),
+        DEN_HARTOG: den_hartog(mu),
+        HINF_CLOSED: hinf_tuning(mu),
+        H2_CLOSED: h2_tuning(mu),
+        HINF: hinf_tuning(mu, zeta_p),
     }
 
 
@@ -381,10 +376,7 @@ def _robust_neighbours(t: TMDTuning, zeta_p: float, band: float) -> float:
 __all__ = [
     "CHOPRA_FLOOR_MASS",
     "CHOPRA_STOREY_STIFFNESS",
-    "DESIGNS",
-    "RULES",
     "TABLE_MUS",
-    "TUNINGS",
     "Check",
     "LoadCase",
     "TMDStudy",

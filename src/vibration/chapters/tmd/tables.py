@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import math
 
+from vibration.chapters.tmd.designs import TUNINGS
 from vibration.chapters.tmd.digits import Sig, power, sig
-from vibration.chapters.tmd.study import TUNINGS, TMDStudy
+from vibration.chapters.tmd.study import TMDStudy
 from vibration.physics.tmd import mistuned_peak
 from vibration.presentation.tables import Column, Missing, Table, columns, self_checks
 
@@ -49,7 +50,7 @@ def tuning_table(st: TMDStudy) -> Table:
             rows.append(
                 {
                     "mu": f"{mu:g}",
-                    "rule": rule,
+                    "rule": rule.name,
                     "f": t.f,
                     "za": t.zeta_a,
                     "zap": t.zeta_a_primary,
@@ -121,11 +122,11 @@ def design_table(st: TMDStudy) -> Table:
     """Every tuning on the actual primary, on every criterion: peaks across the band, rms, stroke."""
     e = f"{100 * st.mistuning:g}"
     rows = []
-    for name in TUNINGS:
-        d = st.scores[name]
+    for design in TUNINGS:
+        d = st.scores[design]
         rows.append(
             {
-                "design": name,
+                "design": design.name,
                 "f": d.tuning.f,
                 "za": d.tuning.zeta_a,
                 "nominal": d.nominal_peak,

@@ -9,27 +9,23 @@ from __future__ import annotations
 
 import math
 
+from vibration.chapters.tmd.designs import (
+    CLOSED,
+    DEN_HARTOG,
+    DESIGNS,
+    H2,
+    HINF,
+    HINF_CLOSED,
+    ROBUST,
+    RULES,
+    TUNINGS,
+    Design,
+)
 from vibration.chapters.tmd.digits import pct, sig
 from vibration.chapters.tmd.keyresults import worst_peak
-from vibration.chapters.tmd.study import DESIGNS, RULES, TUNINGS, TMDStudy
+from vibration.chapters.tmd.study import TMDStudy
 
 ZP, ZA, F, R = r"$\zeta_p$", r"$\zeta_a$", "$f$", r"$r = \omega/\omega_p$"
-#: The closed-form tunings as a short noun phrase.
-SHORT = {
-    TUNINGS[0]: "Den Hartog's rule",
-    TUNINGS[1]: "the closed-form H∞ optimum",
-    TUNINGS[2]: "Warburton's H2 optimum",
-}
-#: The tunings as a sentence names them.
-PROSE = {
-    TUNINGS[0]: "Den Hartog's rule",
-    TUNINGS[1]: "closed-form H∞ tuning of an undamped primary",
-    TUNINGS[2]: "Warburton's H2 tuning",
-    TUNINGS[3]: "H∞ optimum",
-    TUNINGS[4]: "H2 optimum",
-    TUNINGS[5]: "robust min-max design",
-}
-
 __all__ = [
     "building_sentence",
     "chapter_texts",
@@ -57,8 +53,8 @@ def _change(before: float, after: float, unit: str) -> str:
     return f"{verb} from {sig(before)} to {sig(after)} {unit} ({_rel(after, before)})"
 
 
-def _the(name: str) -> str:
-    words = PROSE.get(name, name)
+def _the(design: Design) -> str:
+    words = design.prose
     return words if words.startswith(("Den Hartog", "Warburton")) else f"the {words}"
 
 
@@ -80,8 +76,8 @@ def key_results(st: TMDStudy) -> str:
 
 def key_findings(st: TMDStudy) -> list[str]:
     """Four or five computed one-sentence findings (the key-results box)."""
-    h = st.scores[TUNINGS[3]]
-    closed = {r: st.peaks_actual[st.mu][r] for r in RULES[:3]}
+    h = st.scores[HINF]
+    closed = {r: st.peaks_actual[st.mu][r] for r in CLOSED}
     alt = min(closed, key=closed.get)
     out = [
         f"An absorber of {100 * st.mu:g} % of the primary's mass, tuned for the primary's damping, makes the steady "
@@ -89,13 +85,13 @@ def key_findings(st: TMDStudy) -> list[str]:
         f"{_rel(st.amp_with, st.amp_without)} than without it ({sig(st.amp_without)} m → {sig(st.amp_with)} m).",
         f"The tuning that accounts for the primary's damping ({ZP} = {sig(st.zeta_p, 3)}) holds the peak "
         f"magnification to {sig(h.nominal_peak)}, {_rel(h.nominal_peak, closed[alt])} than the best tuning derived "
-        f"for an undamped primary (here {SHORT[alt]}).",
+        f"for an undamped primary (here {alt.noun}).",
     ]
     if st.mistuning > 0.0:
-        rb = st.scores[TUNINGS[5]]
+        rb = st.scores[ROBUST]
         out.append(
             f"If the primary's stiffness may be off by up to {_band(st)}, the robust min-max design's worst peak is "
-            f"{sig(worst_peak(st, TUNINGS[5]))}, {_rel(worst_peak(st, TUNINGS[5]), worst_peak(st, TUNINGS[3]))} than "
+            f"{sig(worst_peak(st, ROBUST))}, {_rel(worst_peak(st, ROBUST), worst_peak(st, HINF))} than "
             f"the H∞ optimum's, for a nominal peak "
             f"{_rel(rb.nominal_peak, h.nominal_peak)}."
         )
@@ -127,8 +123,8 @@ def tuning_sentence(st: TMDStudy) -> str:
         f"{sig(dh.peak, 5)} for Den Hartog's rule ({_rel(dh.peak, hinf.peak)}) and {sig(h2.peak, 5)} for "
         f"Warburton's H2 tuning ({_rel(h2.peak, hinf.peak)}). On the actual primary ({ZP} = "
         f"{sig(st.zeta_p, 3)}) the H∞ optimum moves to {F} = {sig(num.f)}, {ZA} = {sig(num.zeta_a)} and a peak "
-        f"of {sig(num.peak)}; there Den Hartog's tuning gives {sig(pa[RULES[0]])} and the closed-form H∞ tuning "
-        f"{sig(pa[RULES[1]])}."
+        f"of {sig(num.peak)}; there Den Hartog's tuning gives {sig(pa[DEN_HARTOG])} and the closed-form H∞ tuning "
+        f"{sig(pa[HINF_CLOSED])}."
     )
 
 
@@ -143,7 +139,7 @@ def response_sentence(st: TMDStudy) -> str:
 
 def robustness_sentence(st: TMDStudy) -> str:
     """How much of its benefit the H∞ optimum keeps off-nominal, against the min-max optimum of that criterion."""
-    h, rb = st.scores[TUNINGS[3]], st.scores[TUNINGS[5]]
+    h, rb = st.scores[HINF], st.scores[ROBUST]
     e = f"{100 * st.mistuning:g}"
     if st.mistuning == 0.0:
         return (
@@ -175,34 +171,34 @@ def robustness_sentence(st: TMDStudy) -> str:
         f"peak of {sig(rb.nominal_peak)} instead of {sig(h.nominal_peak)} ({_rel(rb.nominal_peak, h.nominal_peak)})."
     )
     best = min(TUNINGS, key=lambda n: st.scores[n].worst_peak)
-    if best != TUNINGS[5] and st.scores[best].worst_peak < rb.worst_peak * (1 - 1e-9):
+    if best != ROBUST and st.scores[best].worst_peak < rb.worst_peak * (1 - 1e-9):
         text += (
             f" The min-max search fell short: {_the(best)} has a lower worst peak ({sig(st.scores[best].worst_peak)})."
         )
     return text
 
 
-def _optimum_words(st: TMDStudy, key: str, owner: str, what: str) -> str:
+def _optimum_words(st: TMDStudy, key: str, owner: Design, what: str) -> str:
     """Which design wins one criterion, and whether it is the design that optimises it."""
     vals = {n: getattr(st.scores[n], key) for n in DESIGNS if math.isfinite(getattr(st.scores[n], key))}
     if not vals:
         return ""
     best = min(vals, key=vals.get)
     if best == owner or math.isclose(vals[best], vals[owner], rel_tol=1e-9):
-        return f"the {PROSE[owner]} has the lowest {what} ({sig(vals[owner])})"
+        return f"the {owner.prose} has the lowest {what} ({sig(vals[owner])})"
     return (
-        f"the lowest {what} is that of {_the(best)} ({sig(vals[best])}), not the {PROSE[owner]}'s "
+        f"the lowest {what} is that of {_the(best)} ({sig(vals[best])}), not the {owner.prose}'s "
         f"({sig(vals[owner])}): its optimisation did not reach the optimum"
     )
 
 
 def design_sentence(st: TMDStudy) -> str:
     """Each criterion's optimum on its own criterion, and what it costs on the others."""
-    h, h2, rb = (st.scores[n] for n in DESIGNS[1:])
+    h, h2, rb = (st.scores[n] for n in (HINF, H2, ROBUST))
     wins = [
-        _optimum_words(st, "nominal_peak", DESIGNS[1], "nominal peak"),
-        _optimum_words(st, "worst_peak", DESIGNS[3], f"worst peak over {_band(st)}") if st.mistuning > 0 else "",
-        _optimum_words(st, "rms_ratio", DESIGNS[2], "rms displacement under white noise"),
+        _optimum_words(st, "nominal_peak", HINF, "nominal peak"),
+        _optimum_words(st, "worst_peak", ROBUST, f"worst peak over {_band(st)}") if st.mistuning > 0 else "",
+        _optimum_words(st, "rms_ratio", H2, "rms displacement under white noise"),
     ]
     text = "Each design wins on its own criterion: " + "; ".join(w for w in wins if w) + ". "
     if math.isfinite(h.rms_ratio) and math.isfinite(h2.rms_ratio):
@@ -226,7 +222,7 @@ def design_sentence(st: TMDStudy) -> str:
 def stroke_sentence(st: TMDStudy) -> str:
     """The absorber's stroke at the load case and at its largest, which none of the designs limits."""
     xs = st.x_static
-    h = st.scores[TUNINGS[3]]
+    h = st.scores[HINF]
     zmin = min(DESIGNS, key=lambda n: st.scores[n].stroke_peak)
     return (
         "What the peak magnification does not show is the absorber's stroke, its travel relative to the primary: "
@@ -273,8 +269,8 @@ def building_sentence(st: TMDStudy) -> str:
 
 def takeaways(st: TMDStudy) -> str:
     """What a designer takes away: conclusions in new words, as a Markdown list."""
-    h = st.scores[TUNINGS[3]]
-    closed = {r: st.peaks_actual[st.mu][r] for r in RULES[:3]}
+    h = st.scores[HINF]
+    closed = {r: st.peaks_actual[st.mu][r] for r in CLOSED}
     alt = min(closed, key=closed.get)
     gain = 1.0 - h.nominal_peak / closed[alt]
     items = [
@@ -288,7 +284,7 @@ def takeaways(st: TMDStudy) -> str:
         ),
     ]
     mus = sorted(st.tunings)
-    peaks = [st.peaks_actual[x][RULES[3]] for x in mus]
+    peaks = [st.peaks_actual[x][HINF] for x in mus]
     slopes = [(peaks[i] - peaks[i + 1]) / math.log(mus[i + 1] / mus[i]) for i in range(len(mus) - 1)]
     diminishing = all(a >= b for a, b in zip(slopes, slopes[1:], strict=False))
     verb = "falls" if peaks[-1] <= peaks[0] else "rises"
@@ -299,7 +295,7 @@ def takeaways(st: TMDStudy) -> str:
         + (", and each further doubling of the mass gains less than the one before." if diminishing else ".")
     )
     if st.mistuning > 0.0:
-        rb = st.scores[TUNINGS[5]]
+        rb = st.scores[ROBUST]
         kept = min(h.kept_low, h.kept_high)
         verdict = (
             "An absorber tuned for the nominal primary tolerates the stiffness error"
