@@ -11,7 +11,9 @@ tuple positions; tables, figures and sentences read each tuning's words from its
 
 from __future__ import annotations
 
+import tomllib
 from dataclasses import dataclass
+from importlib.resources import files
 
 __all__ = [
     "CLOSED",
@@ -44,78 +46,19 @@ class Design:
     curve: str  # a caption's name for its curve within its panel's group: "H∞"
 
 
-DEN_HARTOG = Design(
-    key="den_hartog",
-    name="Den Hartog",
-    closed_form=True,
-    case="Den Hartog",
-    look="orange",
-    legend="Den Hartog",
-    noun="Den Hartog's rule",
-    prose="Den Hartog's rule",
-    curve="Den Hartog's rule",
-)
-HINF_CLOSED = Design(
-    key="hinf_closed",
-    name="H∞ closed form, ζₚ = 0",
-    closed_form=True,
-    case="exact",
-    look="black dashed",
-    legend=r"H$\infty$ closed form",
-    noun="the closed-form H∞ optimum",
-    prose="closed-form H∞ tuning of an undamped primary",
-    curve="closed-form H∞",
-)
-H2_CLOSED = Design(
-    key="h2_closed",
-    name="H2 closed form, ζₚ = 0",
-    closed_form=True,
-    case="H2",
-    look="sky blue dash-dot",
-    legend="H2 closed form (Warburton)",
-    noun="Warburton's H2 optimum",
-    prose="Warburton's H2 tuning",
-    curve="Warburton's H2",
-)
-HINF = Design(
-    key="hinf",
-    name="H∞ optimum",
-    closed_form=False,
-    case="H∞",
-    look="purple",
-    legend=r"H$\infty$ optimum",
-    noun="the H∞ optimum",
-    prose="H∞ optimum",
-    curve="H∞",
-)
-H2 = Design(
-    key="h2",
-    name="H2 optimum",
-    closed_form=False,
-    case="H2",
-    look="sky blue dash-dot",
-    legend="H2 optimum",
-    noun="the H2 optimum",
-    prose="H2 optimum",
-    curve="H2",
-)
-ROBUST = Design(
-    key="robust",
-    name="robust min-max",
-    closed_form=False,
-    case="robust",
-    look="green dashed",
-    legend="robust min-max",
-    noun="the robust min-max design",
-    prose="robust min-max design",
-    curve="robust min-max",
-)
+def _read() -> tuple[Design, ...]:
+    text = files(__package__).joinpath("designs.toml").read_text(encoding="utf-8")
+    return tuple(Design(**entry) for entry in tomllib.loads(text)["design"])
+
 
 #: Every tuning of the chapter: Den Hartog's rule and the closed-form H∞ (Nishihara and Asami) and H2
 #: (Warburton) optima of an undamped primary, then the numerical optima for the primary's actual damping
 #: of the nominal peak (H∞), the rms displacement under white noise (H2) and the worst peak over the
-#: band of stiffness errors (robust min-max).
-TUNINGS = (DEN_HARTOG, HINF_CLOSED, H2_CLOSED, HINF, H2, ROBUST)
+#: band of stiffness errors (robust min-max). The words are in ``designs.toml``.
+TUNINGS = _read()
+if [d.key for d in TUNINGS] != ["den_hartog", "hinf_closed", "h2_closed", "hinf", "h2", "robust"]:
+    raise ValueError(f"designs.toml lists the tunings {[d.key for d in TUNINGS]}, not the chapter's six in order")
+DEN_HARTOG, HINF_CLOSED, H2_CLOSED, HINF, H2, ROBUST = TUNINGS
 #: The rules of the tunings table (every mass ratio): the three closed forms and the H∞ optimum.
 RULES = (DEN_HARTOG, HINF_CLOSED, H2_CLOSED, HINF)
 #: The designs compared on the actual primary: the classical rule and the optimum of each criterion.
