@@ -23,14 +23,76 @@ import numbers
 
 import numpy as np
 
-from .model import N_POINTS_MAX, ParameterError, check_int, check_real, check_records
+from .model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real, check_records
 
-__all__ = ["check_array", "check_choice", "check_count", "check_derived", "check_int", "check_real", "check_records"]
+__all__ = [
+    "OverBudget",
+    "check_array",
+    "check_choice",
+    "check_count",
+    "check_derived",
+    "check_int",
+    "check_oscillator",
+    "check_real",
+    "check_records",
+]
 
 
 def _show(value) -> str:
     text = " ".join(repr(value).split())
     return text if len(text) <= 80 else text[:77] + "..."
+
+
+class OverBudget(Exception):
+    """Raised inside a right-hand side when its budget of evaluations is spent.
+
+    The integrators of the physics layer wrap the right-hand side they hand to the solver in a
+    counter; past its limit the counter raises this exception, which the caller catches and turns
+    into a :class:`ParameterError` naming the arguments that made the run too long. It never
+    reaches the user.
+
+    Examples
+    --------
+    >>> try:
+    ...     raise OverBudget
+    ... except OverBudget:
+    ...     print("stopped")
+    stopped
+    """
+
+
+def check_oscillator(osc, name: str = "osc") -> Oscillator:
+    """Return ``osc`` when it is an :class:`Oscillator`, or raise :class:`ParameterError`.
+
+    Parameters
+    ----------
+    osc : Oscillator
+        The record to check (mass kg, damping N s/m, stiffness N/m, validated by its constructor).
+    name : str
+        Parameter name used in the message.
+
+    Returns
+    -------
+    Oscillator
+        ``osc`` itself.
+
+    Raises
+    ------
+    ParameterError
+        When ``osc`` is anything else; the message names the parameter, what it was and what is allowed.
+
+    Examples
+    --------
+    >>> check_oscillator(Oscillator(m=1.0, c=0.5, k=20.0)).k
+    20.0
+    >>> check_oscillator((1.0, 0.5, 20.0))
+    Traceback (most recent call last):
+    ...
+    vibration.physics.model.ParameterError: osc = (1.0, 0.5, 20.0) is not an Oscillator: allowed Oscillator(m, c, k)
+    """
+    if not isinstance(osc, Oscillator):
+        raise ParameterError(f"{name} = {_show(osc)} is not an Oscillator: allowed Oscillator(m, c, k)")
+    return osc
 
 
 def check_array(

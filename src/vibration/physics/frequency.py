@@ -12,7 +12,7 @@ import numpy as np
 from scipy.integrate import cumulative_simpson
 from scipy.optimize import brentq
 
-from .checks import check_array
+from .checks import check_array, check_oscillator
 from .exact import Response, _grid_exp, _kernels, _roots, _uniform, exact_response, steady_state
 from .model import (
     N_POINTS_MAX,
@@ -31,11 +31,6 @@ MAP_CELLS_MAX = 50_000_000
 #: their peak from :func:`exact_response`: there the steady-state split the map's loop
 #: uses would cancel (it loses about ``60 eps / NEAR`` of the peak at this distance).
 NEAR = 0.1
-
-
-def _check_osc(osc) -> None:
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
 
 
 def _array(values, name: str, unit: str) -> np.ndarray:
@@ -113,7 +108,7 @@ def magnification(osc: Oscillator, omegas) -> np.ndarray:
     >>> np.round(magnification(osc, [0.0, osc.natural_frequency]), 4)
     array([1.    , 8.9443])
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     r = _omegas(omegas) / osc.natural_frequency
     with np.errstate(divide="ignore", over="ignore"):
         return 1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * osc.damping_ratio * r)
@@ -128,7 +123,7 @@ def phase_lag(osc: Oscillator, omegas) -> np.ndarray:
     >>> np.round(phase_lag(osc, [0.0, osc.natural_frequency, 1e6]), 4)
     array([0.    , 1.5708, 3.1416])
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     r = _omegas(omegas) / osc.natural_frequency
     with np.errstate(over="ignore", invalid="ignore"):
         im, re = 2.0 * osc.damping_ratio * r, (1.0 - r) * (1.0 + r)

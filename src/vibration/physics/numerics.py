@@ -7,6 +7,7 @@ import math
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from .checks import OverBudget
 from .exact import Response
 from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real, check_records
 
@@ -37,10 +38,6 @@ EXPLICIT = ("RK45", "RK23", "DOP853")
 #: Largest growth exponent ``Re(s) t_end`` of an unstable free mode: beyond about
 #: 709 the response overflows the float range.
 MAX_GROWTH = 700.0
-
-
-class _OverBudget(Exception):
-    """Raised inside the right-hand side when :data:`MAX_NFEV` is exceeded."""
 
 
 def simulate(
@@ -131,7 +128,7 @@ def simulate(
         nonlocal nfev
         nfev += 1
         if nfev > MAX_NFEV:
-            raise _OverBudget
+            raise OverBudget
         return np.array((y[1], (F0 * sin(w * t) - c * y[1] - k * y[0]) / m))
 
     def jac(t, y):
@@ -142,7 +139,7 @@ def simulate(
     try:
         with np.errstate(all="ignore"):  # an overflow is reported below, by name
             sol = solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
-    except _OverBudget:
+    except OverBudget:
         raise ParameterError(
             f"t_end = {t_end!r} s needs more than {MAX_NFEV} right-hand-side evaluations with {method} at "
             f"rtol = {rtol!r}, atol = {atol!r}: allowed a shorter window or looser tolerances"

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from ..checks import check_array
+from ..checks import OverBudget, check_array
 from ..model import N_POINTS_MAX, ParameterError, check_int, check_real
 
 
@@ -34,17 +34,13 @@ RTOL_MIN, RTOL_MAX = 1e-13, 1e-2
 EXPM_SAMPLES_MAX = 20_000
 
 
-class _OverBudget(Exception):
-    """Raised from a counting right-hand side when the run exceeds its evaluation budget."""
-
-
 def _counted(f, budget: list):
-    """Wrap ``f`` so that every call spends one unit of ``budget[0]``; :class:`_OverBudget` when spent."""
+    """Wrap ``f`` so that every call spends one unit of ``budget[0]``; :class:`OverBudget` when spent."""
 
     def g(t, y):
         budget[0] -= 1
         if budget[0] < 0:
-            raise _OverBudget
+            raise OverBudget
         return f(t, y)
 
     return g

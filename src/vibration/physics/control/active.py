@@ -9,22 +9,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_array, check_derived
+from ..checks import OverBudget, check_array, check_derived, check_oscillator
 from ..model import Oscillator, ParameterError, SineForce, check_real
-from ..stability import _check_osc
-from ._common import (
-    MAX_NFEV,
-    RTOL_MAX,
-    RTOL_MIN,
-    _base,
-    _call,
-    _counted,
-    _grid,
-    _limit,
-    _over_budget,
-    _OverBudget,
-    _work_check,
-)
+from ._common import MAX_NFEV, RTOL_MAX, RTOL_MIN, _base, _call, _counted, _grid, _limit, _over_budget, _work_check
 
 # ----------------------------------------------------------------------------- active: PD, LQR
 
@@ -52,7 +39,7 @@ def pd_oscillator(osc: Oscillator, kp: float, kd: float) -> Oscillator:
     >>> cl.c, cl.k, round(cl.damping_ratio, 3)      # N s/m, N/m, 1
     (6.0, 36.0, 0.5)
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
     kd = check_real("kd", kd, unit="N s/m")
     try:
@@ -77,7 +64,7 @@ def stabilising_velocity_gain(osc: Oscillator) -> float:
     >>> stabilising_velocity_gain(Oscillator(m=1.0, c=-0.5, k=20.0))     # N s/m
     0.5
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     return -osc.c + 0.0
 
 
@@ -100,7 +87,7 @@ class LQRResult:
 
 
 def _lqr_args(osc, q_x, q_v, r):
-    _check_osc(osc)
+    check_oscillator(osc)
     q_x = check_real("q_x", q_x, low=0.0, unit="1/m^2")
     q_v = check_real("q_v", q_v, low=0.0, unit="s^2/m^2")
     r = check_real("r", r, low=0.0, low_open=True, unit="1/N^2")
@@ -278,7 +265,7 @@ def simulate_controlled(
     """
     from scipy.integrate import solve_ivp
 
-    _check_osc(osc)
+    check_oscillator(osc)
     if not callable(controller):
         raise ParameterError(f"controller = {controller!r} is not callable: allowed a function (t, x, v) -> force in N")
     if force is not None and not isinstance(force, SineForce):
@@ -321,7 +308,7 @@ def simulate_controlled(
                 _counted(rhs, budget), (0.0, t_end), (x0, v0), method="DOP853", t_eval=grid, rtol=rtol, atol=atol,
                 max_step=step,
             )  # fmt: skip
-    except _OverBudget:
+    except OverBudget:
         raise _over_budget(math.nan, t_end, "controlled loop") from None
     if sol.status != 0:
         raise ParameterError(

@@ -25,8 +25,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, SineForce, check_real
-from ..stability import _check_osc
 
 __all__ = [
     "LoopCosts",
@@ -57,7 +57,7 @@ class LoopCosts:
 
 
 def _gains(osc, kp, ki, kd):
-    _check_osc(osc)
+    check_oscillator(osc)
     kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
     ki = check_real("ki", ki, low=0.0, unit="N/(m s)")
     kd = check_real("kd", kd, unit="N s/m")
@@ -179,7 +179,7 @@ def force_floor(osc: Oscillator, force: SineForce, X) -> np.ndarray | float:
     >>> round(force_floor(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), 0.0), 4)   # F0/sqrt(2), N
     3.5355
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     if not isinstance(force, SineForce):
         raise ParameterError(f"force = {force!r} is not a SineForce: allowed SineForce(F0, omega)")
     X = np.asarray(X, dtype=float)
@@ -199,7 +199,7 @@ def hold_force(osc: Oscillator, force: SineForce | None, x_ref: float) -> float:
     >>> hold_force(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), 0.5)
     15.0
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     x_ref = check_real("x_ref", x_ref, unit="m")
     F0 = 0.0 if force is None else abs(force.F0)
     return osc.k * abs(x_ref) + F0
@@ -207,7 +207,7 @@ def hold_force(osc: Oscillator, force: SineForce | None, x_ref: float) -> float:
 
 def largest_holdable_reference(osc: Oscillator, force: SineForce | None, u_max: float) -> float:
     """Largest set point (m) a force limited to ``u_max`` (N) can hold exactly: ``(u_max - F0) / k`` (nan if < 0)."""
-    _check_osc(osc)
+    check_oscillator(osc)
     u_max = check_real("u_max", u_max, low=0.0, low_open=True, unit="N")
     F0 = 0.0 if force is None else abs(force.F0)
     return (u_max - F0) / osc.k if u_max >= F0 else math.nan

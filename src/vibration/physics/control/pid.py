@@ -8,9 +8,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_array
+from ..checks import OverBudget, check_array, check_oscillator
 from ..model import Oscillator, ParameterError, SineForce, check_real
-from ..stability import _check_osc
 from ._common import (
     EXPM_SAMPLES_MAX,
     MAX_NFEV,
@@ -21,7 +20,6 @@ from ._common import (
     _grid,
     _limit,
     _over_budget,
-    _OverBudget,
     _work_check,
 )
 
@@ -155,7 +153,7 @@ def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) 
                     _counted(f, budget), (t0, t_end), y0, method="DOP853", t_eval=grid[filled:], rtol=rtol,
                     atol=atol, events=evs,
                 )  # fmt: skip
-        except _OverBudget:
+        except OverBudget:
             raise _over_budget(t0, t_end, what) from None
         if sol.status < 0:  # an overflow makes DOP853 fail
             break
@@ -230,7 +228,7 @@ def pid_work_check(osc: Oscillator, kp: float, ki: float, kd: float, t_end: floa
 
 def _check_loop(osc, force, kp, ki, kd) -> tuple[float, float, float]:
     """Check the oscillator, the optional force and the three gains of a PID loop; the gains as floats."""
-    _check_osc(osc)
+    check_oscillator(osc)
     if force is not None and not isinstance(force, SineForce):
         raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
     kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")

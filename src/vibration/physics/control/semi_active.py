@@ -12,9 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_choice
+from ..checks import check_choice, check_oscillator
 from ..model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real
-from ..stability import _check_osc
 from ._common import _omegas
 from ._kernels import RK4_STEPS_MAX, SWEEP_STEPS_MAX, _sa_kernel
 from .mr_damper import SPENCER_1997, MRDamper
@@ -166,7 +165,7 @@ def semi_active_response(
     >>> r.t.shape, r.law
     ((11,), 'clipped')
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     law_i, p = _sa_params(osc, law, c_sky, c_min, c_max, damper)
     w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
     Y = check_real("Y", Y, low=0.0, unit="m")
@@ -334,7 +333,7 @@ def semi_active_sweep(
     >>> bool(abs(s.fundamental[0] - skyhook_transmissibility(osc, 8.0, 4.4721)) < 1e-6)
     True
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     law_i, p = _sa_params(osc, law, c_sky, c_min, c_max, damper)
     w_arr = _omegas(omegas)
     if np.any(w_arr <= 0):

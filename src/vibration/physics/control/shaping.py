@@ -7,10 +7,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_array, check_choice
+from ..checks import check_array, check_choice, check_oscillator
 from ..exact import exact_response
 from ..model import Oscillator, ParameterError, SineForce, check_real
-from ..stability import _check_osc
 from ._common import _finite, _grid
 
 #: Most impulses a :class:`Shaper` may have.
@@ -57,7 +56,7 @@ class Shaper:
 
 
 def _underdamped(osc) -> tuple[float, float, float]:
-    _check_osc(osc)
+    check_oscillator(osc)
     zeta = osc.damping_ratio
     if not 0.0 <= zeta < 1.0:
         raise ParameterError(
@@ -180,7 +179,7 @@ def shaped_move(
     >>> np.round(x, 6)                                     # m
     array([0. , 0.1, 0.1])
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     _check_shaper(shaper)
     D = check_real("distance", distance, unit="m")
     t = _grid(t_end, n_points)

@@ -7,8 +7,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, check_real
-from ..stability import _check_osc, transmissibility
+from ..stability import transmissibility
 from ._common import _finite, _omegas
 
 __all__ = ["SkyhookPower", "passive_transmissibility", "skyhook_power", "skyhook_transmissibility"]
@@ -27,7 +28,7 @@ def passive_transmissibility(osc: Oscillator, omegas) -> np.ndarray:
     >>> float(passive_transmissibility(osc, np.sqrt(40.0)).round(12))   # at sqrt(2) omega_n: 1
     1.0
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     return np.asarray(transmissibility(osc, _omegas(omegas)))
 
 
@@ -60,7 +61,7 @@ def skyhook_transmissibility(osc: Oscillator, c_sky: float, omegas) -> np.ndarra
     >>> round(float(skyhook_transmissibility(osc, 0.0, w)), 4)          # passive: sqrt(1 + (k/(c w))^2)
     9.0
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
     w = _omegas(omegas)
     # divided through by w^2 above 1 rad/s, so that no product overflows
@@ -105,7 +106,7 @@ def skyhook_power(osc: Oscillator, c_sky: float, Y: float, omega: float) -> Skyh
     >>> round(p.removed, 4), round(p.net, 4), round(p.supplied, 4), round(p.gross, 4)
     (1.4014, -1.1073, 0.4242, 1.9556)
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     c_sky = check_real("c_sky", c_sky, low=0.0, unit="N s/m")
     Y = check_real("Y", Y, low=0.0, unit="m")
     w = check_real("omega", omega, low=0.0, unit="rad/s")

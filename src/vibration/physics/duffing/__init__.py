@@ -61,7 +61,6 @@ from .model import (
     RK4_STABILITY,  # noqa: F401
     Duffing,
     _Counted,  # noqa: F401
-    _OverBudget,  # noqa: F401
     _real_array,  # noqa: F401
     duffing_response,
 )

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_array, check_derived
+from ..checks import OverBudget, check_array, check_derived
 from ..model import N_POINTS_MAX, ParameterError, check_real
 
 #: Newton polishing steps applied to every closed-form root of the amplitude cubic.
@@ -59,10 +59,6 @@ def _real_array(name: str, value, *, unit: str = "", min_size: int = 1, max_size
     return check_array(name, value, ndim=tuple(range(33)), min_size=min_size, max_size=max_size, unit=unit)
 
 
-class _OverBudget(Exception):
-    """Raised inside a right-hand side when its evaluation budget is spent."""
-
-
 class _Counted:
     """A right-hand side that counts its evaluations and stops the integrator past ``limit``."""
 
@@ -72,7 +68,7 @@ class _Counted:
     def __call__(self, t, y):
         self.calls += 1
         if self.calls > self.limit:
-            raise _OverBudget
+            raise OverBudget
         return self.fun(t, y)
 
 
@@ -319,7 +315,7 @@ def duffing_response(
                 atol=rtol * xr,
                 events=escape if d.k3 < 0 else None,
             )
-    except _OverBudget:
+    except OverBudget:
         raise ParameterError(
             f"duffing_response spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations before "
             f"t = {t_end:.6g} s ({_rates(d)}, k3 = {k3!r} N/m^3, x0 = {x0!r} m, v0 = {v0!r} m/s): allowed a shorter "

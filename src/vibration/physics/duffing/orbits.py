@@ -7,9 +7,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import OverBudget
 from ..model import ParameterError, check_int, check_real
 from .harmonic_balance import hb_amplitudes
-from .model import MAX_RHS_EVALUATIONS, Duffing, _check_duffing, _Counted, _linear_rate, _OverBudget, _rates, _x_ref
+from .model import MAX_RHS_EVALUATIONS, Duffing, _check_duffing, _Counted, _linear_rate, _rates, _x_ref
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -40,7 +41,7 @@ def _flow_period(d: Duffing, F0: float, w: float, x0: float, v0: float, rtol: fl
         if budget is not None:
             budget.calls += 1
             if budget.calls > budget.limit:
-                raise _OverBudget
+                raise OverBudget
         x, v = y[0], y[1]
         jx = -(k + 3.0 * k3 * x * x) / m
         return (
@@ -168,7 +169,7 @@ def periodic_orbit(
     budget = _Counted(None, MAX_RHS_EVALUATIONS)
     try:
         return _shoot(d, F0, w, x, v, rtol, max_iterations, budget)
-    except _OverBudget:
+    except OverBudget:
         raise ParameterError(
             f"periodic_orbit spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations at omega = "
             f"{w!r} rad/s ({_rates(d)}): allowed fewer max_iterations, a looser rtol, a higher omega or a less "
@@ -411,7 +412,7 @@ def continue_orbits(
             h = min(step, h * (1.5 if its <= 3 else 1.0))
             if not lo <= z[2] <= hi:
                 break
-    except _OverBudget:
+    except OverBudget:
         raise ParameterError(
             f"continue_orbits spent its budget of {budget.limit} right-hand-side evaluations at omega = "
             f"{z[2]:.6g} rad/s ({_rates(d)}): allowed a narrower frequency range or a larger step"

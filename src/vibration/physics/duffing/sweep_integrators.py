@@ -11,7 +11,8 @@ import math
 
 import numpy as np
 
-from .model import _Counted, _OverBudget
+from ..checks import OverBudget
+from .model import _Counted
 
 __all__: list[str] = []
 
@@ -228,7 +229,7 @@ def _sweep_scipy(args: tuple, outs: tuple, max_steps: int) -> tuple[int, int]:
         def rhs(t, y, w=w):
             budget.calls += 1
             if budget.calls > budget.limit:
-                raise _OverBudget
+                raise OverBudget
             return (y[1], (F0 * math.cos(w * t) - c * y[1] - k * y[0] - k3 * y[0] ** 3) / m)
 
         def turning(t, y):
@@ -242,7 +243,7 @@ def _sweep_scipy(args: tuple, outs: tuple, max_steps: int) -> tuple[int, int]:
                     sol = solve_ivp(
                         rhs, (0.0, T), (x, v), method="RK45", rtol=rtol, atol=atol, events=turning, max_step=T / 16
                     )
-            except _OverBudget:
+            except OverBudget:
                 nsteps[j], periods[j] = steps, n
                 return 1, j
             steps += sol.t.size - 1

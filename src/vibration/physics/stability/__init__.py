@@ -34,7 +34,7 @@ Modules by concept: :mod:`.poles` (poles, stability notions, growth), :mod:`.tra
 
 from __future__ import annotations
 
-from ._common import _check_osc, _check_stable
+from ._common import _check_stable
 from .design import DamperLoad, DesignMetrics, damper_load, design_metrics
 from .poles import Stability, growth_envelope, poles, stability_class
 from .random_load import (
@@ -81,6 +81,6 @@ __all__ = [
 ]
 
 # names reached through the package by the control package, the tests and the benches
-_INTERNAL = (_check_osc, _check_stable, _transition, MC_CHUNK, MC_SAMPLES, MC_TOTAL_MAX, SAMPLES_MAX)
+_INTERNAL = (_check_stable, _transition, MC_CHUNK, MC_SAMPLES, MC_TOTAL_MAX, SAMPLES_MAX)
 _INTERNAL += (BAND_MIN, STEP_SAMPLES_MAX)
 del _INTERNAL

@@ -8,12 +8,6 @@ from ..checks import check_array
 from ..model import N_POINTS_MAX, Oscillator, ParameterError
 
 
-def _check_osc(osc) -> Oscillator:
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r} is not an Oscillator: allowed Oscillator(m, c, k)")
-    return osc
-
-
 def _check_stable(osc: Oscillator, what: str) -> None:
     if not osc.c > 0.0:
         raise ParameterError(

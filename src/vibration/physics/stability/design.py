@@ -7,8 +7,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, check_real
-from ._common import _check_osc, _frequencies
+from ._common import _frequencies
 from .poles import stability_class
 from .random_load import white_noise_variance
 from .step import step_metrics
@@ -52,7 +53,7 @@ def damper_load(osc: Oscillator, F0: float, omegas) -> DamperLoad:
     >>> np.round(d.force_amplitude, 4), np.round(d.mean_power, 4)     # N, W
     (array([0.6756, 5.    ]), array([ 0.4564, 25.    ]))
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     F0 = check_real("F0", F0, low=0.0, unit="N")
     if osc.c < 0.0:
         raise ParameterError(f"c = {osc.c!r} N s/m is out of range: allowed c >= 0 N s/m (a damper dissipates)")
@@ -123,7 +124,7 @@ def design_metrics(osc: Oscillator, isolation_ratio: float = 3.0, band: float = 
     >>> d.peak_magnification, round(d.transmissibility, 12), d.overshoot, d.settling_time, d.stability
     (None, 0.125, 1.0, None, 'marginally stable')
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     isolation_ratio = check_real("isolation_ratio", isolation_ratio, low=0.0, low_open=True)
     verdict = stability_class(osc).verdict
     t_r = float(transmissibility(osc, isolation_ratio * osc.natural_frequency))

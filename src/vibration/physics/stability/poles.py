@@ -7,8 +7,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, SineForce
-from ._common import _check_osc, _out, _times
+from ._common import _out, _times
 
 # ----------------------------------------------------------------------------- stability
 
@@ -39,7 +40,7 @@ def poles(osc: Oscillator) -> np.ndarray:
     >>> poles(Oscillator(m=1.0, c=0.0, k=4.0))
     array([0.+2.j, 0.-2.j])
     """
-    osc = _check_osc(osc)
+    osc = check_oscillator(osc)
     sigma = osc.decay_rate
     wn2 = osc.k / osc.m
     q = wn2 - sigma * sigma
@@ -154,7 +155,7 @@ def growth_envelope(osc: Oscillator, force: SineForce, t):
     >>> round(growth_envelope(osc, force, 1e3), 4)   # steady amplitude, m
     0.4504
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     if not isinstance(force, SineForce):
         raise ParameterError(f"force = {force!r} is not a SineForce: allowed SineForce(F0, omega)")
     tt = _times(t)

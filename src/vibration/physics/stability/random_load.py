@@ -9,8 +9,9 @@ import numpy as np
 from scipy.linalg import expm
 from scipy.signal import lfilter
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, check_int, check_real
-from ._common import _check_osc, _check_stable
+from ._common import _check_stable
 from .poles import poles
 
 #: Largest number of samples :func:`simulate_white_noise` and :func:`white_noise_monte_carlo` draw.
@@ -33,7 +34,7 @@ def _check_S0(S0) -> float:
 
 def _check_stationary(osc: Oscillator, S0, what: str = "a stationary random response") -> float:
     """Check the oscillator and the force density ``S0`` (N^2 s/rad) and that ``what`` exists (c > 0)."""
-    _check_osc(osc)
+    check_oscillator(osc)
     S0 = _check_S0(S0)
     _check_stable(osc, what)
     return S0
@@ -283,7 +284,7 @@ def white_noise_monte_carlo(
     >>> bool(abs(mc.variance - white_noise_variance(osc, 1.0)) < 4 * mc.standard_error)
     True
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     _check_stable(osc, "a stationary random response")
     n_paths = check_int("n_paths", n_paths, low=2, high=100_000)
     tau = osc.time_constant

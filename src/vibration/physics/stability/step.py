@@ -8,8 +8,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, check_real
-from ._common import _check_osc, _check_stable, _out, _times
+from ._common import _check_stable, _out, _times
 
 #: Smallest settling band :func:`step_metrics` resolves (the crossings are found to rounding in 1 - y).
 BAND_MIN = 1e-12
@@ -93,7 +94,7 @@ def step_response(osc: Oscillator, t):
     >>> np.round(step_response(osc, [0.0, np.pi / 2]), 12)
     array([0., 2.])
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     tt = _times(t, max_size=STEP_SAMPLES_MAX)
     f = _one_minus_y(osc)
 
@@ -170,7 +171,7 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
     >>> s.overshoot, s.peak_time, round(s.settling_time, 4)       # 1, s, s
     (0.0, inf, 2.723)
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     _check_stable(osc, "a settling step response")
     band = check_real("band", band, low=BAND_MIN, high=1.0)
     if band == 1.0:

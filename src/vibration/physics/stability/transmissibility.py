@@ -6,8 +6,9 @@ import math
 
 import numpy as np
 
+from ..checks import check_oscillator
 from ..model import Oscillator
-from ._common import _check_osc, _frequencies, _out
+from ._common import _frequencies, _out
 
 # ----------------------------------------------------------------------------- base excitation
 
@@ -43,7 +44,7 @@ def transmissibility(osc: Oscillator, omegas):
     >>> round(transmissibility(Oscillator(m=1.0, c=15.0, k=20.0), 3 * wn), 4)
     0.7866
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     w = _frequencies(omegas)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         r = w / osc.natural_frequency
@@ -65,12 +66,12 @@ def isolation_frequency(osc: Oscillator) -> float:
     >>> round(isolation_frequency(Oscillator(m=1.0, c=0.5, k=20.0)), 4)     # rad/s
     6.3246
     """
-    return math.sqrt(2.0) * _check_osc(osc).natural_frequency
+    return math.sqrt(2.0) * check_oscillator(osc).natural_frequency
 
 
 def _zeta_and_omega_n(osc) -> tuple[float, float]:
     """``(|zeta|, omega_n rad/s)`` of a checked oscillator."""
-    _check_osc(osc)
+    check_oscillator(osc)
     return abs(osc.damping_ratio), osc.natural_frequency
 
 

@@ -6,9 +6,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, check_int, check_real
 from .experiments import MAX_EXPERIMENT_SAMPLES, CoverageExperiment, _monte_carlo
-from .measurements import _check_osc, _check_seed, _grid_size, _work
+from .measurements import _check_seed, _grid_size, _work
 from .synthetic import random_force, synthetic_measurements
 from .validation import WHITENESS_LAGS, cubic_response, predicted_coverage
 
@@ -89,7 +90,7 @@ def assumption_study(
     >>> list(st.experiments)[:2], st.experiments["coloured sensor noise"].flagged()
     (['as assumed', 'noise on the force'], 1.0)
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     if not isinstance(reference, CoverageExperiment) or reference.sensor != "x":
         raise ParameterError(f"reference = {reference!r:.60}: allowed a displacement CoverageExperiment")
     force_noise = check_real("force_noise", force_noise, low=0.0, low_open=True, high=1.0)

@@ -7,10 +7,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..checks import check_array
+from ..checks import check_array, check_oscillator
 from ..model import RATE_MAX, RATE_MIN, Oscillator, ParameterError, check_int, check_real
 from .experiments import MAX_EXPERIMENT_SAMPLES
-from .measurements import MAX_ABS, MIN_SAMPLES, _check_osc, _check_seed, _check_sensor, _grid_size, _signal, _work
+from .measurements import MAX_ABS, MIN_SAMPLES, _check_seed, _check_sensor, _grid_size, _signal, _work
 from .synthetic import random_force, stiffness_profile, synthetic_measurements
 from .tracking import CALIBRATION, CUSUM_DRIFT, DRIFT_MAX, detect_change
 
@@ -143,7 +143,7 @@ def detection_experiment(
     >>> ex.detection_probability.tolist(), ex.false_alarm_probability.tolist()
     ([1.0, 1.0], [0.0, 0.0])
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     t = check_array("t", _signal("t", t), low=0.0, ndim=(1,), min_size=MIN_SAMPLES, increasing=True, unit="s")
     runs = check_int("runs", runs, low=2, high=10_000)
     seed = _check_seed(seed)
@@ -288,7 +288,7 @@ def detection_study(
     >>> sorted(st), [float(e.detection_probability[0]) for e in st.values()]
     (['slow decline', 'sudden drop'], [1.0, 1.0])
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     t_monitor, dt = _check_window(t_monitor, dt)
     noise = check_real("noise", noise, low=0.0, low_open=True, high=10.0)
     decline_rate = check_real("decline_rate", decline_rate, low=0.0, unit="1/s")

@@ -11,9 +11,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, check_int, check_real
 from .identification import identify
-from .measurements import MIN_SAMPLES, _check_osc, _check_seed, _check_sensor, _grid_size, _signal, _work
+from .measurements import MIN_SAMPLES, _check_seed, _check_sensor, _grid_size, _signal, _work
 from .synthetic import random_force, synthetic_measurements
 from .validation import WHITENESS_LAGS, _ar1, binomial_halfwidth, input_correlation, ljung_box
 
@@ -195,7 +196,7 @@ def identification_experiment(
     >>> ex.estimates.shape, bool(np.all(ex.coverage >= 0.8))
     ((20, 3), True)
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     duration = check_real("duration", duration, low=0.0, low_open=True, unit="s")
     dt = check_real("dt", dt, low=0.0, low_open=True, high=duration / MIN_SAMPLES, unit="s")
     noise = check_real("noise", noise, low=0.0, low_open=True, high=10.0)
@@ -320,7 +321,7 @@ def estimate_grid(
     >>> g.estimates.shape, g.ci95.shape
     ((2, 2, 3), (2, 2, 3, 2))
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     noises = _signal("noises", noises)
     durations = _signal("durations", durations)
     if np.any(noises <= 0) or np.any(durations <= 0) or np.any(noises > 10.0):

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from ..duffing import _real_array
-from ..model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real
+from ..model import N_POINTS_MAX, ParameterError, check_int, check_real
 
 __all__ = [
     "Measurements",
@@ -317,12 +317,6 @@ def _check_sensor(sensor) -> str:
     if not isinstance(sensor, str) or sensor not in ("x", "a"):
         raise ParameterError(f"sensor = {sensor!r:.60}: allowed 'x' (displacement) or 'a' (acceleration)")
     return sensor
-
-
-def _check_osc(osc) -> Oscillator:
-    if not isinstance(osc, Oscillator):
-        raise ParameterError(f"osc = {osc!r:.60} is not an Oscillator: allowed Oscillator(m, c, k)")
-    return osc
 
 
 def _grid_size(duration: float, dt: float, what: str = "duration") -> int:

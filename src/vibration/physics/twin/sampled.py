@@ -10,15 +10,10 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import signal
 
-from ..duffing import _Counted, _OverBudget, _real_array
+from ..checks import OverBudget, check_oscillator
+from ..duffing import _Counted, _real_array
 from ..model import N_POINTS_MAX, Oscillator, ParameterError, check_int, check_real
-from .measurements import (
-    MAX_ABS,
-    _check_osc,
-    _finite_output,
-    _sampling,
-    _signal,
-)
+from .measurements import MAX_ABS, _finite_output, _sampling, _signal
 
 __all__ = [
     "Discretization",
@@ -150,7 +145,7 @@ def discretize(osc: Oscillator, dt: float) -> Discretization:
     >>> float(np.round(d.gamma0.sum() + d.gamma1.sum() - (1 - np.cos(0.5)) - np.sin(0.5), 12))  # constant F = 1 N
     0.0
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     dt = check_real("dt", dt, low=0.0, low_open=True, unit="s")
     phi, g0, g1 = _foh(osc.m, osc.c, osc.k, dt)
     return Discretization(dt=dt, phi=phi[0], gamma0=g0[0], gamma1=g1[0])
@@ -225,7 +220,7 @@ def sampled_response(osc: Oscillator, t, force, x0: float = 0.0, v0: float = 0.0
     >>> bool(np.max(np.abs(r.x - exact_response(osc, f, t).x)) < 2e-5)    # m: h^2 omega^2 F0 / 8 force interpolation
     True
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     t = _signal("t", t)
     if t.size < 2:
         raise ParameterError(f"t has {t.size} samples: allowed at least 2")
@@ -271,7 +266,7 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
     from ..exact import exact_response
     from ..model import SineForce
 
-    _check_osc(osc)
+    check_oscillator(osc)
     F0 = check_real("F0", F0, low=0.0, high=MAX_ABS, unit="N")
     omega = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
@@ -315,7 +310,7 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
         budget.fun = lambda s, y, i=i, slope=slope: [y[1], (f[i] + slope * s - osc.c * y[1] - osc.k * y[0]) / osc.m]
         try:
             sol = solve_ivp(budget, (0.0, h), z, method="DOP853", rtol=1e-12, atol=1e-14 * scale)
-        except _OverBudget:
+        except OverBudget:
             raise ParameterError(
                 f"discretisation_checks spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations on the "
                 f"solve_ivp reference at sample {i} of {m_} (step {h:.3g} s, |c|/m = {abs(osc.c) / osc.m:.3g} 1/s, "

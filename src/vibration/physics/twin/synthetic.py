@@ -6,13 +6,13 @@ import math
 
 import numpy as np
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, check_real
 from .measurements import (
     MAX_ABS,
     MIN_SAMPLES,
     Measurements,
     _check_band,
-    _check_osc,
     _check_seed,
     _check_sensor,
     _finite_output,
@@ -180,7 +180,7 @@ def synthetic_measurements(
     >>> bool(np.allclose(a.x, b.x, rtol=0, atol=1e-12))
     True
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     sensor = _check_sensor(sensor)
     noise = check_real("noise", noise, low=0.0, high=MAX_ABS, unit="m" if sensor == "x" else "m/s^2")
     seed = _check_seed(seed, none=True)
@@ -272,7 +272,7 @@ def simulated_test(
     >>> len(rec), rec.sensor
     (501, 'x')
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     duration = check_real("duration", duration, low=0.0, low_open=True, unit="s")
     dt = check_real("dt", dt, low=0.0, low_open=True, high=duration / MIN_SAMPLES, unit="s")
     noise = check_real("noise", noise, low=0.0, high=10.0)

@@ -27,8 +27,9 @@ from scipy import signal
 from scipy.stats import chi2, norm
 from scipy.stats import t as student_t
 
+from ..checks import check_oscillator
 from ..model import Oscillator, ParameterError, check_int, check_real
-from .measurements import _check_osc, _signal
+from .measurements import _signal
 from .sampled import sampled_response
 
 __all__ = [
@@ -162,7 +163,7 @@ def cubic_response(osc: Oscillator, k3: float, t, force, substeps: int = 8) -> n
     ...     Oscillator(m=1, c=0.5, k=20), t, f).x)) < 1e-8)
     True
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     k3 = check_real("k3", k3, unit="N/m^3")
     substeps = check_int("substeps", substeps, low=1, high=1000)
     t = _signal("t", t)
@@ -252,7 +253,7 @@ def predicted_coverage(osc: Oscillator, t, force, colour: float = 0.0) -> np.nda
     >>> [round(float(v), 3) for v in p]
     [0.95, 0.95, 0.95]
     """
-    _check_osc(osc)
+    check_oscillator(osc)
     colour = check_real("colour", colour, low=0.0, high=0.99)
     t = _signal("t", t)
     force = _signal("force", force, t.size)
