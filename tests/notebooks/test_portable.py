@@ -44,8 +44,8 @@ def test_sanitizer_masks_the_value_and_keeps_the_tolerance():
 
 def test_reader_sees_clean_numbers_and_nbval_sees_the_tolerance():
     t = Table(
-        [{"n": Approx(value=2926.0, rtol=0.25), "e": Approx(value=0.03231, factor=5.0)}],
-        [Column(key="n", header="evaluations"), Column(key="e", header="error (m)", digits=3)],
+        rows=[{"n": Approx(value=2926.0, rtol=0.25), "e": Approx(value=0.03231, factor=5.0)}],
+        columns=[Column(key="n", header="evaluations"), Column(key="e", header="error (m)", digits=3)],
         caption="c",
         name="tab-t",
     )
@@ -98,8 +98,8 @@ def test_committed_ladder_matches_this_machine_within_its_tolerances():
 
 _CELL = "from vibration.presentation.tables import Approx, Column, Table\n" + textwrap.dedent(
     """
-    Table([{"n": Approx(value=VALUE, rtol=0.25), "k": 7}],
-          [Column(key="n", header="evaluations"), Column(key="k", header="count")], caption="c", name="tab-t")
+    Table(rows=[{"n": Approx(value=VALUE, rtol=0.25), "k": 7}],
+          columns=[Column(key="n", header="evaluations"), Column(key="k", header="count")], caption="c", name="tab-t")
     """
 )
 
@@ -109,8 +109,8 @@ def _notebook(path: Path, reference: float, value: float) -> None:
     from vibration.presentation.tables import Table as T
 
     table = T(
-        [{"n": Approx(value=reference, rtol=0.25), "k": 7}],
-        [Column(key="n", header="evaluations"), Column(key="k", header="count")],
+        rows=[{"n": Approx(value=reference, rtol=0.25), "k": 7}],
+        columns=[Column(key="n", header="evaluations"), Column(key="k", header="count")],
         caption="c",
         name="tab-t",
     )

@@ -23,8 +23,8 @@ def _doctree(text: str):
 )
 def test_markdown_is_a_table_with_its_caption(caption):
     t = Table(
-        [{"c": 0.5, "x": 2.2370381}, {"c": 15.0, "x": Missing(reason="no peak when ζ ≥ 1/√2")}],
-        [Column(key="c", header="c (N s/m)", digits=3), Column(key="x", header="x_ss (m)", digits=4)],
+        rows=[{"c": 0.5, "x": 2.2370381}, {"c": 15.0, "x": Missing(reason="no peak when ζ ≥ 1/√2")}],
+        columns=[Column(key="c", header="c (N s/m)", digits=3), Column(key="x", header="x_ss (m)", digits=4)],
         caption=caption,
         name="tab-demo",
     )
@@ -43,7 +43,7 @@ def test_markdown_is_a_table_with_its_caption(caption):
 def _wide(n_rows: int, n_cols: int) -> Table:
     cols = [Column(key=f"q{j}", header=f"q{j} (m)") for j in range(n_cols)]
     rows = [{f"q{j}": f"r{i}c{j}" for j in range(n_cols)} for i in range(n_rows)]
-    return Table(rows, cols, caption="Wide.", name="tab-wide")
+    return Table(rows=rows, columns=cols, caption="Wide.", name="tab-wide")
 
 
 def _html_grid(t: Table) -> list[list[str]]:
@@ -78,7 +78,12 @@ def test_a_turned_table_parses_as_a_table_of_seven_columns_at_most():
 
 def test_a_column_not_shown_stays_in_the_plain_text_and_the_csv(tmp_path):
     t = _wide(16, 8)
-    t = Table(t.rows, [*t.columns[:3], replace(t.columns[3], shown=False), *t.columns[4:]], "Wide.", "tab-wide")
+    t = Table(
+        rows=t.rows,
+        columns=[*t.columns[:3], replace(t.columns[3], shown=False), *t.columns[4:]],
+        caption="Wide.",
+        name="tab-wide",
+    )
     grid = _html_grid(t)
     assert {len(r) for r in grid} == {7} and all("r0c3" not in c for r in grid for c in r)
     assert "r0c3" in repr(t)

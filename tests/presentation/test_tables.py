@@ -17,10 +17,18 @@ def test_prose_checks_can_fail():
 def test_table_checks_allow_rendered_subscripts_only():
     from vibration.presentation.tables import Column
 
-    ok = Table([{"a": 1.0}], [Column(key="a", header="x_ss (m)")], caption="At t_end = 5 s and ω_res.", name="tab-x")
+    ok = Table(
+        rows=[{"a": 1.0}],
+        columns=[Column(key="a", header="x_ss (m)")],
+        caption="At t_end = 5 s and ω_res.",
+        name="tab-x",
+    )
     assert header_problems(ok) == []
     bad = Table(
-        [{"a": float("nan")}], [Column(key="a", header="omega_res (rad/s)")], caption="F0 = 1e-5 N", name="tab-y"
+        rows=[{"a": float("nan")}],
+        columns=[Column(key="a", header="omega_res (rad/s)")],
+        caption="F0 = 1e-5 N",
+        name="tab-y",
     )
     assert len(header_problems(bad)) == 4
 
@@ -74,3 +82,19 @@ def test_self_checks_is_a_table_of_checks_with_the_given_headers():
     )
     assert [c.header for c in t.columns] == ["self-check", "difference", "passes"]
     assert t.cells() == [["energy balance", "< 10⁻¹²", "yes"], ["poles", "0.0123", "no"]]
+
+
+def test_a_table_is_built_by_keyword_and_not_changed_afterwards():
+    import dataclasses
+
+    import pytest
+
+    from vibration.presentation.tables import Column, Missing
+
+    cols = [Column(key="a", header="a (m)")]
+    with pytest.raises(TypeError):
+        Table([{"a": 1.0}], cols, "Caption.", "tab-x")  # type: ignore[misc]
+    t = Table(rows=[{"a": Missing(reason="none")}], columns=cols, caption="Caption.", name="tab-x")
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        t.caption = "Other."  # type: ignore[misc]
+    assert t.caption == "Caption." and t._marks == {"none": "a"}

@@ -16,8 +16,8 @@ report runner sets it), showing a table also writes ``<name>.csv`` there.
 Examples
 --------
 >>> t = Table(
-...     [{"c": 0.5, "xss": 2.2370381}, {"c": 15.0, "xss": Missing(reason="no peak when ζ ≥ 1/√2")}],
-...     [Column(key="c", header="c (N s/m)", digits=3), Column(key="xss", header="x_ss (m)", digits=4)],
+...     rows=[{"c": 0.5, "xss": 2.2370381}, {"c": 15.0, "xss": Missing(reason="no peak when ζ ≥ 1/√2")}],
+...     columns=[Column(key="c", header="c (N s/m)", digits=3), Column(key="xss", header="x_ss (m)", digits=4)],
 ...     caption="Steady amplitudes.",
 ...     name="tab-demo",
 ... )
@@ -254,7 +254,7 @@ def _escape_md(text: str) -> str:
     return re.sub(r"([\\`*_\[\]|<>#])", r"\\\1", text)
 
 
-@dataclass
+@dataclass(frozen=True, kw_only=True)
 class Table:
     """Rows with headers, units and a caption; see the module docstring."""
 
@@ -280,7 +280,7 @@ class Table:
                 v = row[c.key]
                 if isinstance(v, Missing) and v.reason not in reasons:
                     reasons[v.reason] = _MARKS[len(reasons) % len(_MARKS)]
-        self._marks = reasons
+        object.__setattr__(self, "_marks", reasons)
 
     # -- cells ---------------------------------------------------------------
     def cells(self, *, plain: bool = False) -> list[list[str]]:
@@ -497,7 +497,7 @@ def self_checks(
     keys = ("check", "value", "ok")[: len(headers)]
     rows = [dict(zip(keys, check, strict=True)) for check in checks]
     cols = [Column(key=k, header=h, digits=digits) for k, h in zip(keys, headers, strict=True)]
-    return Table(rows, cols, caption, name)
+    return Table(rows=rows, columns=cols, caption=caption, name=name)
 
 
 def _csv_cell(value) -> str:
@@ -515,7 +515,7 @@ def table(rows: Iterable[dict], columns: Sequence[Column | tuple], caption: str,
         c if isinstance(c, Column) else Column(**dict(zip(("key", "header", "digits"), c, strict=False)))
         for c in columns
     ]
-    return Table(list(rows), cols, caption, name, tuple(notes))
+    return Table(rows=list(rows), columns=cols, caption=caption, name=name, notes=tuple(notes))
 
 
 def symbol_html(text: str) -> str:

@@ -105,7 +105,7 @@ def peak_table(st: {record}) -> Table:
     """The grid's peak beside the closed form."""
     rows = [{{"what": "grid", "peak": st.peak}}, {{"what": "closed form", "peak": st.peak_exact}}]
     columns = [Column(key="what", header="method"), Column(key="peak", header="largest X/X_st", digits=4)]
-    return Table(rows, columns, "The resonant peak.", "tab-{topic}")
+    return Table(rows=rows, columns=columns, caption="The resonant peak.", name="tab-{topic}")
 
 
 def peak_sentence(st: {record}) -> str:

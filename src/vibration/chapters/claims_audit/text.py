@@ -117,8 +117,8 @@ def claims_table(st: ClaimsAuditStudy) -> Table:
             "its verdict is about this run's case, not the paper's.",
         )
     return Table(
-        out,
-        columns(
+        rows=out,
+        columns=columns(
             """
             id       claim
             says     the paper says
@@ -155,8 +155,8 @@ def readings_table(st: ClaimsAuditStudy) -> Table | None:
     if not out:
         return None
     return Table(
-        out,
-        columns(
+        rows=out,
+        columns=columns(
             """
             id       claim
             reading  reading tested
@@ -175,8 +175,8 @@ def verdict_table(st: ClaimsAuditStudy) -> Table:
     """How many claims got each verdict, with the verdicts' definitions."""
     counts = [{"verdict": v, "n": n} for v, n in st.counts.items()]
     return Table(
-        counts,
-        [Column(key="verdict", header="verdict"), Column(key="n", header="claims")],
+        rows=counts,
+        columns=[Column(key="verdict", header="verdict"), Column(key="n", header="claims")],
         caption="Verdicts at a glance.",
         name="tab-claims-verdicts",
         notes=(

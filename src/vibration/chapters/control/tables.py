@@ -82,8 +82,8 @@ def gains_table(study: ControlStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             law   law
             kx    K_x (N/m)
@@ -127,8 +127,8 @@ def costs_table(study: ControlStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             law    law
             kx     K_x, K_P (N/m)
@@ -165,8 +165,8 @@ def active_metrics_table(study: ControlStudy) -> Table:
     """Peak and RMS displacement (window and steady state), force and energy per active controller."""
     a = study.active
     return Table(
-        _metric_rows(a.metrics, "passive"),
-        _METRIC_COLUMNS,
+        rows=_metric_rows(a.metrics, "passive"),
+        columns=_METRIC_COLUMNS,
         caption=(
             f"Active control at {_at(study)} from rest over {num(a.t[-1])} s: displacement over the window and in "
             f"steady state (last {STEADY_PERIODS} forcing periods, from t = {num(a.t_steady, 4)} s), steady RMS "
@@ -208,8 +208,8 @@ def move_table(study: ControlStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             scheme  force limit and integrator
             over    overshoot (m)
@@ -248,8 +248,8 @@ def flutter_table(study: ControlStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case     velocity gain
             kd       K_v (N s/m)
@@ -271,8 +271,8 @@ def semi_active_metrics_table(study: ControlStudy) -> Table:
     """Displacement, device force and energy of every suspension law at the base frequency."""
     s = study.semi
     return Table(
-        _metric_rows(s.metrics, "soft"),
-        _METRIC_COLUMNS,
+        rows=_metric_rows(s.metrics, "soft"),
+        columns=_METRIC_COLUMNS,
         caption=(
             f"Semi-active suspension at ω = {num(s.omega)} rad/s (ω/ω_n = {cell(s.omega / s.osc.natural_frequency)}), "
             f"base amplitude Y = F_0/k = {num(s.Y)} m, from rest over {num(s.runs['soft'].t[-1])} s: absolute "
@@ -300,8 +300,8 @@ def skyhook_energy_table(study: ControlStudy) -> Table:
         ("gross power exchanged (its absolute value)", "gross"),
     ]
     return Table(
-        [{"what": what, "closed": cell(getattr(p, key), 4), "run": cell(r[key], 4)} for what, key in rows],
-        columns(
+        rows=[{"what": what, "closed": cell(getattr(p, key), 4), "run": cell(r[key], 4)} for what, key in rows],
+        columns=columns(
             """
             what    mean power
             closed  closed form (W)
@@ -334,8 +334,8 @@ def refinement_table(study: ControlStudy) -> Table:
         )
         prev = val
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             spp  RK4 steps per period
             dt   Δt (s)
@@ -396,8 +396,8 @@ def shaping_table(study: ControlStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             f"""
             shaper  command
             delay   added delay (s)

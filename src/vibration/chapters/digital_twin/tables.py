@@ -42,8 +42,8 @@ def checks_table(st: DigitalTwinStudy) -> Table:
     )
     p = st.params
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             check  check
             value  measured difference  2
@@ -83,8 +83,8 @@ def identification_table(st: DigitalTwinStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             p      parameter
             truth  true           4
@@ -130,8 +130,8 @@ def coverage_table(st: DigitalTwinStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             what   experiment
             noise  noise / rms             2
@@ -192,8 +192,8 @@ def assumption_table(st: DigitalTwinStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case  case
             R     runs
@@ -242,8 +242,8 @@ def kalman_table(st: DigitalTwinStudy) -> Table:
         for c in st.kalman
     ]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             truth   true stiffness
             R       records
@@ -285,8 +285,8 @@ def detection_table(st: DigitalTwinStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             fault   fault
             R       runs of each kind
@@ -362,8 +362,8 @@ def run_length_table(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> Tabl
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             what    quantity
             h       h                        3

@@ -65,8 +65,8 @@ def hb_table(study: DuffingStudy) -> Table:
         )
     p = study.params
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case  spring
             wl    ω_low (rad/s)
@@ -107,8 +107,8 @@ def stability_table(study: DuffingStudy) -> Table:
         none = Missing(reason="no band of three amplitudes in either spring")
         rows = [{"case": "—", "w": none, "a": none, "st": none, "ao": none, "mu": none, "stf": none, "agree": none}]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case   spring
             w      ω (rad/s)
@@ -152,8 +152,8 @@ def fold_table(study: DuffingStudy) -> Table:
         )
     steps = study.params.n_sweep
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case      spring
             dir       sweep
@@ -198,8 +198,8 @@ def history_table(study: DuffingStudy) -> Table:
         else "the steady amplitude is the same whichever way the motion comes"
     )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             where    frequency
             omega    ω (rad/s)
@@ -253,8 +253,8 @@ def lyapunov_table(study: DuffingStudy) -> Table:
         )
     main = study.main_run
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case    forcing
             method  method
@@ -296,8 +296,8 @@ def lyapunov_runs_table(study: DuffingStudy) -> Table:
                  "n": total, "l1": _exponent(pooled.mean, total),
                  "se": _error(pooled.standard_error), "z": None})  # fmt: skip
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             start  initial state
             spp    RK4 steps per period
@@ -326,8 +326,8 @@ def lyapunov_convergence_table(study: DuffingStudy) -> Table:
         for r in study.convergence
     ]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             n     periods N
             time  averaging time (s)

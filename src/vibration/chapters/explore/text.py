@@ -155,8 +155,8 @@ def readout_table(study: ExploreStudy) -> Table:
     r = study.start
     rows = [{"q": q, "v": getattr(r, attr), "u": unit[0] if unit else ""} for q, attr, *unit in _READOUT]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             q  quantity
             v  value     5

@@ -67,8 +67,8 @@ def dampings_table(study: FrequencyStudy) -> Table:
     ]
     p = study.params
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case    case
             c       c (N s/m)       3
@@ -112,8 +112,8 @@ def band_table(study: FrequencyStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             f"""
             case    case
             lo      ω_1 (rad/s)                                        4
@@ -152,8 +152,8 @@ def estimates_table(study: FrequencyStudy) -> Table:
             )
         rows.append({"case": c.name, "zeta": z, "hp": hp, "ld": ld})
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case  case
             zeta  ζ = c/(2√(km))            4
@@ -176,8 +176,8 @@ def decomposition_table(study: FrequencyStudy) -> Table:
     ts = d.t_s if math.isfinite(d.t_s) else Missing(reason="the transient never decays when c ≤ 0")
     row = {"X": d.X, "phase": d.phase, "x0": d.x_h0, "x_end": d.x_h_end, "ts": ts}
     return Table(
-        [row],
-        columns(
+        rows=[row],
+        columns=columns(
             """
             X      X (m)           4
             phase  φ (rad)         4
@@ -210,8 +210,8 @@ def energy_table(study: FrequencyStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             response  response
             W         W (J)                     5
@@ -250,8 +250,8 @@ def design_table(study: FrequencyStudy) -> Table:
         for case, p in zip(study.cases, dm.at_res, strict=True)
     ]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             point  point
             omega  ω (rad/s)     4

@@ -50,8 +50,8 @@ def lqr_table(st: LearningStudy) -> Table:
         "umax": sig(task.u_max, 3),
     }
     return Table(
-        [row],
-        columns(
+        rows=[row],
+        columns=columns(
             """
             kx     K_x (N/m)
             kv     K_v (N s/m)
@@ -91,8 +91,8 @@ def learning_table(st: LearningStudy) -> Table:
     rows.append(lqr)
     targets = " and ".join(f"{100 * t:g} %" for t in TARGETS)
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             method    learner
             episodes  episodes
@@ -134,8 +134,8 @@ def seed_table(st: LearningStudy) -> Table:
         )
     tgt = 100 * st.seeds[0].target
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             f"""
             method    learner
             seeds     seeds
@@ -192,8 +192,8 @@ def comparison_table(cmp: Comparison, caption: str, name: str, reference: int) -
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             name   controller
             law    law
@@ -270,8 +270,8 @@ def references_table(st: LearningStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             name  reference
             info  what the law uses
@@ -307,8 +307,8 @@ def robustness_table(st: LearningStudy) -> Table:
     for j, law in enumerate(rb.laws):
         cols += [Column(key=f"r{j}", header=f"{law}: J / J_opt"), Column(key=f"s{j}", header="±")]
     return Table(
-        rows,
-        cols,
+        rows=rows,
+        columns=cols,
         caption="Laws designed on the nominal plant, run unchanged on changed plants: cost over the changed plant's "
         "exact optimum (forcing phase known).",
         name="tab-learning-robustness",
@@ -342,8 +342,8 @@ def checks_table(st: LearningStudy) -> Table:
         what, against = CHECK_LABELS[key]
         rows.append({"what": what, "against": against, "bound": _bound(value, CHECK_TOL)})
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             what     quantity
             against  independent method

@@ -142,8 +142,8 @@ def headline_table(st: OverviewStudy) -> Table:
         },
     ]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             q      quantity
             paper  the paper says
@@ -164,8 +164,8 @@ def verdict_table(st: OverviewStudy) -> Table:
     counts = sorted(((v, n) for v, n in st.verdicts.items() if n), key=lambda vn: (-vn[1], vn[0]))
     rows = [{"verdict": v, "n": n} for v, n in counts] + [{"verdict": "total", "n": st.n_claims}]
     return Table(
-        rows,
-        [Column(key="verdict", header="verdict"), Column(key="n", header="claims")],
+        rows=rows,
+        columns=[Column(key="verdict", header="verdict"), Column(key="n", header="claims")],
         caption="Verdicts of the claims audit (chapter 2) for this run.",
         name="tab-front-verdicts",
     )

@@ -58,8 +58,8 @@ def law_table(st: RealOscillatorStudy) -> Table:
         )
     band = f" ({g(st.band[0], 3)} to {g(st.band[1], 3)} rad)" if st.band else ""
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             brake    brake
             current  I (A)                   3
@@ -69,9 +69,9 @@ def law_table(st: RealOscillatorStudy) -> Table:
             zeta     ζ_eq in the band
             """
         ),
-        f"The damping law each brake setting's free decays choose, and the mean equivalent damping ratio "
+        caption=f"The damping law each brake setting's free decays choose, and the mean equivalent damping ratio "
         f"with its run-to-run error over the common amplitude band{band}.",
-        "tab-real-laws",
+        name="tab-real-laws",
         csv=False,
     )
 
@@ -93,8 +93,8 @@ def brake_table(st: RealOscillatorStudy) -> Table | None:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             pair      settings
             band      X band (rad)
@@ -104,9 +104,9 @@ def brake_table(st: RealOscillatorStudy) -> Table | None:
             resolved  resolved
             """
         ),
-        "The brake at matched amplitude: the difference of mean equivalent damping inside the band, by bootstrap "
-        "over runs, and the brake-only viscous term of a joint fit with one shared amplitude law.",
-        "tab-real-brake",
+        caption="The brake at matched amplitude: the difference of mean equivalent damping inside the band, by "
+        "bootstrap over runs, and the brake-only viscous term of a joint fit with one shared amplitude law.",
+        name="tab-real-brake",
         csv=False,
     )
 
@@ -136,8 +136,8 @@ def resonance_table(st: RealOscillatorStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             brake    brake
             session  session
@@ -148,9 +148,9 @@ def resonance_table(st: RealOscillatorStudy) -> Table:
             t90      t_90 (s)         2
             """
         ),
-        "Driven runs grouped by measured drive frequency: the mean late amplitude of the steady runs with its "
+        caption="Driven runs grouped by measured drive frequency: the mean late amplitude of the steady runs with its "
         "run-to-run error, and the median time to 90 % of the final amplitude.",
-        "tab-real-groups",
+        name="tab-real-groups",
         csv=False,
     )
 
@@ -171,8 +171,8 @@ def steadiness_table(st: RealOscillatorStudy) -> Table:
         for d in st.driven
     ]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             run     session/run
             brake   brake
@@ -184,9 +184,9 @@ def steadiness_table(st: RealOscillatorStudy) -> Table:
             centre  centre drift (rad)  2
             """
         ),
-        "Every driven run: late drift with its standard error, time to 90 % of the final amplitude, and the "
+        caption="Every driven run: late drift with its standard error, time to 90 % of the final amplitude, and the "
         "change of drive frequency and of the wheel's centre over the record.",
-        "tab-real-runs",
+        name="tab-real-runs",
         csv=False,
     )
 
@@ -214,8 +214,8 @@ def session_table(st: RealOscillatorStudy) -> Table | None:
         )
     law = f" ({LAW_WORDS[best.law]})" if best else ""
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             session  session
             runs     steady runs
@@ -225,10 +225,10 @@ def session_table(st: RealOscillatorStudy) -> Table | None:
             sim      error, simulated (%)                3
             """
         ),
-        "Each session's driven runs: how many are steady, the change of drive frequency from the first to the second "
-        f"half of each record and of the wheel's centre from the first to the last period, and the prediction "
-        f"error of the best law{law}.",
-        "tab-real-sessions",
+        caption="Each session's driven runs: how many are steady, the change of drive frequency from the first to "
+        "the second half of each record and of the wheel's centre from the first to the last period, and the "
+        f"prediction error of the best law{law}.",
+        name="tab-real-sessions",
         csv=False,
     )
 
@@ -257,8 +257,8 @@ def prediction_table(st: RealOscillatorStudy) -> Table | None:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             law     law
             brake   brake
@@ -269,10 +269,10 @@ def prediction_table(st: RealOscillatorStudy) -> Table | None:
             resdeg  resonance (°)                3
             """
         ),
-        "Each law, its gain calibrated off resonance, predicting the other steady runs: pooled rms relative error "
-        "by harmonic balance and by simulating each run from its measured start with its measured drive, and the "
-        "law's largest steady amplitude at the mean drive.",
-        "tab-real-prediction",
+        caption="Each law, its gain calibrated off resonance, predicting the other steady runs: pooled rms relative "
+        "error by harmonic balance and by simulating each run from its measured start with its measured drive, and "
+        "the law's largest steady amplitude at the mean drive.",
+        name="tab-real-prediction",
         csv=False,
     )
 
@@ -309,8 +309,8 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
                 }
             )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             brake    brake
             law      law
@@ -320,9 +320,10 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
             rms      rms / (step/√12)                 3
             """
         ),
-        "Every law fitted to every free decay, pooled per brake setting: coefficients (ζ; Δ in rad; b in 1/rad; a; "
-        "p) with run-to-run standard errors, summed BIC, and the residual rms over the encoder's rounding noise.",
-        "tab-real-fits",
+        caption="Every law fitted to every free decay, pooled per brake setting: coefficients (ζ; Δ in rad; b in "
+        "1/rad; a; p) with run-to-run standard errors, summed BIC, and the residual rms over the encoder's "
+        "rounding noise.",
+        name="tab-real-fits",
         notes=(
             "The power law's exponent is weakly determined by the decays: the last digits of its rows depend on the "
             "computer's floating-point rounding.",
@@ -352,10 +353,10 @@ def damping_csv(st: RealOscillatorStudy) -> Table:
     ]
     cols = ["brake", "brake_current_A", "zeta_eq", "zeta_eq_stderr", "band_low_rad", "band_high_rad", "law", "n_runs"]
     return Table(
-        rows,
-        [Column(key=c, header=c, digits=6) for c in cols],
-        "Equivalent damping per brake setting.",
-        "tab-real-damping",
+        rows=rows,
+        columns=[Column(key=c, header=c, digits=6) for c in cols],
+        caption="Equivalent damping per brake setting.",
+        name="tab-real-damping",
     )
 
 
@@ -378,7 +379,12 @@ def resonance_csv(st: RealOscillatorStudy) -> Table:
     cols = ["brake", "session", "omega_rad_s", "amplitude_rad", "amplitude_stderr_rad", "steady_runs", "runs"]
     if not rows:
         rows = [dict.fromkeys(cols, Missing(reason="no driven runs"))]
-    return Table(rows, [Column(key=c, header=c, digits=6) for c in cols], "Driven-run groups.", "tab-real-resonance")
+    return Table(
+        rows=rows,
+        columns=[Column(key=c, header=c, digits=6) for c in cols],
+        caption="Driven-run groups.",
+        name="tab-real-resonance",
+    )
 
 
 def claims_csv(st: RealOscillatorStudy) -> Table:
@@ -389,7 +395,10 @@ def claims_csv(st: RealOscillatorStudy) -> Table:
     ]
     cols = ["claim_id", "claim", "verdict", "detail"]
     return Table(
-        rows, [Column(key=c, header=c) for c in cols], "The paper's claims on the hardware.", "tab-real-claims"
+        rows=rows,
+        columns=[Column(key=c, header=c) for c in cols],
+        caption="The paper's claims on the hardware.",
+        name="tab-real-claims",
     )
 
 

@@ -261,15 +261,16 @@ def claims_table(st: RealOscillatorStudy) -> Table:
     """The claims with verdicts and evidence."""
     rows = [{"claim": f"“{c.claim}”", "verdict": c.verdict, "detail": c.detail} for c in claims(st)]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             claim    the paper
             verdict  verdict
             detail   evidence
             """
         ),
-        "The paper's claims on the real oscillator, each with the verdict the measurements support and its evidence.",
-        "tab-real-claim-verdicts",
+        caption="The paper's claims on the real oscillator, each with the verdict the measurements support and its "
+        "evidence.",
+        name="tab-real-claim-verdicts",
         csv=False,
     )

@@ -329,8 +329,8 @@ def findings_table(st: ReproductionStudy) -> Table:
             "Figure 2) are the same run, shown once.",
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case     case
             c        c (N s/m)         4  nozeros
@@ -366,8 +366,8 @@ def methods_table(st: ReproductionStudy) -> Table:
         },
     )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case  case
             vss   v_ss (m/s)

@@ -79,8 +79,8 @@ def ladder_table(study: SolverStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             method  method
             rtol    relative tolerance           2
@@ -123,8 +123,8 @@ def steps_table(study: SolverStudy) -> Table:
         for s in study.steps
     ]
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             rtol   relative tolerance            2
             atol   absolute tolerance (m, m/s)   2
@@ -150,8 +150,8 @@ def pair_table(study: SolverStudy) -> Table:
     rows = [{"pair": "SciPy's RK45", "nodes": ", ".join(str(c) for c in study.nodes)}]
     rows += [{"pair": name.replace("-", "–"), "nodes": ", ".join(str(c) for c in ref)} for name, ref in study.pairs]
     return Table(
-        rows,
-        [Column(key="pair", header="Runge–Kutta pair"), Column(key="nodes", header="nodes c_i")],
+        rows=rows,
+        columns=[Column(key="pair", header="Runge–Kutta pair"), Column(key="nodes", header="nodes c_i")],
         caption="The nodes of SciPy's RK45 tableau beside those of the Dormand–Prince and Fehlberg pairs.",
         name="tab-solvers-pair",
     )

@@ -82,8 +82,8 @@ def poles_table(st: StabilityStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case      case
             c         c (N s/m)
@@ -129,8 +129,8 @@ def growth_table(st: StabilityStudy) -> Table:
             row["rate"] = sig(stability_class(osc).spectral_abscissa, 3)
         rows.append(row)
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             """
             case     growth
             c        c (N s/m)
@@ -182,8 +182,8 @@ def transmissibility_table(st: StabilityStudy) -> Table:
         rows.append(row)
     r = st.isolation_ratio
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             f"""
             case   damping
             zeta   ζ
@@ -237,8 +237,8 @@ def step_table(st: StabilityStudy) -> Table:
     rows = [_step_row(st, f"{n} (“{LABELS[n]}”)", c, st.steps.get(n)) for n, c in st.by_value()]
     rows.append(_step_row(st, "settling-optimal ζ*", st.c_star, st.star_step))
     return Table(
-        rows,
-        _BY_DAMPING
+        rows=rows,
+        columns=_BY_DAMPING
         + columns(
             """
             zeta  ζ
@@ -284,8 +284,8 @@ def random_table(st: StabilityStudy) -> Table:
             row.update({key: WHY_NO_VARIANCE for key in keys})
         rows.append(row)
     return Table(
-        rows,
-        _BY_DAMPING
+        rows=rows,
+        columns=_BY_DAMPING
         + columns(
             """
             exact   πS_0/(kc) (m²)
@@ -318,8 +318,8 @@ def random_force_table(st: StabilityStudy) -> Table:
     rows.append({"case": "least force variance, c = √(km)", "c": sig(c_opt, 3), "var": sig(v_opt, 3),
                  "ratio": sig(1.0, 3)})  # fmt: skip
     return Table(
-        rows,
-        _BY_DAMPING
+        rows=rows,
+        columns=_BY_DAMPING
         + columns(
             """
             var    var F_T (N²)
@@ -361,8 +361,8 @@ def cost_table(st: StabilityStudy) -> Table:
                 )
             rows.append(row)
     return Table(
-        rows,
-        _BY_DAMPING
+        rows=rows,
+        columns=_BY_DAMPING
         + columns(
             """
             w     ω

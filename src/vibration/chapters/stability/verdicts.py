@@ -133,8 +133,8 @@ def labels_table(st: StabilityStudy) -> Table:
             }
         )
     return Table(
-        rows,
-        columns(
+        rows=rows,
+        columns=columns(
             f"""
             label    paper's label
             c        c (N s/m)

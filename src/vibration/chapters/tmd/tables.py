@@ -38,7 +38,7 @@ def _table(rows: list[dict], columns: list[Column], caption: str, name: str, not
         {k: (Sig(value=v, digits=digits[k]) if isinstance(v, float) and k in digits else v) for k, v in row.items()}
         for row in rows
     ]
-    return Table(fixed, columns, caption=caption, name=name, notes=tuple(notes))
+    return Table(rows=fixed, columns=columns, caption=caption, name=name, notes=tuple(notes))
 
 
 def tuning_table(st: TMDStudy) -> Table:
