@@ -3,7 +3,8 @@
 The rules are written here independently of :mod:`vibration.presentation.numbers` (regular expressions
 over the text a reader sees: Markdown cells and the Markdown or HTML outputs the book renders), so a
 formatter that drifts from them fails. Years, run numbers and counts are integers without signs and
-pass every rule. Inline maths (``$...$``) is typeset, not a number format, and is left out.
+pass every rule; a count grouped by narrow no-break spaces (U+202F) must be grouped in threes from the
+right. Inline maths (``$...$``) is typeset, not a number format, and is left out.
 
 The chapters listed in :data:`CHECKED` are those that use the shared format today; chapters 0 and 12
 are folded in later.
@@ -29,6 +30,10 @@ RULES = [
     ("a decimal below 10⁻⁴ written in full", re.compile(r"(?<![\d.])0\.0000\d")),
     ("≈ glued to a number, or after = or ±", re.compile(r"≈\d|[=±]\s*≈")),
     ("nan or inf in the text", re.compile(r"\b(?:nan|inf)\b")),
+    (
+        "a count not grouped in threes from the right",
+        re.compile(r"\d{4,}\u202f\d|\d\u202f(?=\d)(?!\d{3}(?!\d))|(?<![\d\u202f])\d\u202f\d{3}(?![\d\u202f])"),
+    ),
     ("a mark of the test machinery", re.compile(r"⟪|⟫|regression comparison|papermill|vibdoc\d")),
 ]
 
@@ -75,6 +80,9 @@ def test_the_rules_catch_what_they_should():
         "x = nan",
         "not part of the regression comparison",
         "<td>⟪2926 r0.25⟫</td>",
+        "9600\u202f00 steps",
+        "96\u202f0000 steps",
+        "1\u202f234 samples",
     ]
     for text in bad:
         assert violations(text), text
@@ -82,6 +90,8 @@ def test_the_rules_catch_what_they_should():
         "1.27×10⁵ N",
         "−0.5 m",
         "in 2024, run 17 of 40",
+        "960\u202f000 steps, 4096 samples, 1\u202f800\u202f200 samples, −33\u202f409",
+        "<td>11\u202f804</td><td>20\u202f000</td>",
         "0.000512 s",
         "0.1037 ± 0.0003 s⁻¹",
         "ζ ≈ 0.78",

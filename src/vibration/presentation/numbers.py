@@ -10,6 +10,10 @@ Rules
   figures shown (31540 at 3 figures is 3.15×10⁴; 1234 at 4 figures stays 1234). A mantissa of 1 is
   left out (10⁻¹²).
 * **Minus.** Negative numbers carry the true minus sign "−" (U+2212), never a hyphen.
+* **Integers** (:func:`integer`: counts of steps, samples, evaluations, episodes) of five or more digits are
+  grouped in threes from the right by a narrow no-break space (U+202F), "960 000", so a number never
+  breaks across lines; four digits stay together, "4096". Years, run numbers, seeds and other identifiers
+  are names, not amounts, and are written as they are.
 * **Uncertainty.** ``value ± error``: the error to one significant figure (two when its leading digit
   is 1), the value to the same decimal place: "0.1037 ± 0.0003"; a power of ten is factored out
   once, "(5.1 ± 0.3)×10⁻⁵".
@@ -33,6 +37,7 @@ Examples
 from __future__ import annotations
 
 import math
+import numbers
 import re
 from dataclasses import dataclass, field
 
@@ -89,6 +94,40 @@ def sig(value: float, digits: int = 4, *, zeros: bool = False) -> str:
         power = "10" + superscript(int(exp))
         text = power if mant == "1" else f"-{power}" if mant == "-1" else f"{mant}×{power}"
     return MINUS + text[1:] if text.startswith("-") else text
+
+
+#: The thousands separator of :func:`integer`: a narrow no-break space.
+GROUP = "\u202f"
+
+
+def integer(n: int) -> str:
+    """A count in the book's format: five or more digits grouped in threes by :data:`GROUP`, true minus.
+
+    Parameters
+    ----------
+    n : int
+        A whole number (an ``int``, a NumPy integer, or a float with no fractional part), 1.
+
+    Raises
+    ------
+    ParameterError
+        If ``n`` is a bool, not a number, or not a whole number.
+
+    Examples
+    --------
+    >>> integer(960000), integer(200001), integer(11804), integer(4096), integer(-33409), integer(7)
+    ('960\u202f000', '200\u202f001', '11\u202f804', '4096', '−33\u202f409', '7')
+    """
+    whole = isinstance(n, numbers.Integral) or (isinstance(n, numbers.Real) and float(n).is_integer())
+    if isinstance(n, bool) or not whole:
+        raise ParameterError(
+            f"integer n = {n!r} is not allowed: allowed a whole number (an int, or a float without a fraction)"
+        )
+    value = int(n)
+    digits = str(abs(value))
+    if len(digits) >= 5:
+        digits = f"{abs(value):,}".replace(",", GROUP)
+    return (MINUS if value < 0 else "") + digits
 
 
 def column(value: float, digits: int = 4) -> str:
@@ -283,12 +322,19 @@ class Approx:
 
 
 def parse(text: str) -> float:
-    """A number written in the book's format read back: true minus, ×10ⁿ, "∞".
+    """A number written in the book's format read back: true minus, ×10ⁿ, "∞", grouped counts.
 
-    >>> parse("−1.273×10⁵"), parse("10⁻¹²"), parse("0.1542"), parse("−∞")
-    (-127300.0, 1e-12, 0.1542, -inf)
+    A count's groups must be as :func:`integer` writes them (five or more digits, threes from the right);
+    any other use of :data:`GROUP` inside a number raises ``ValueError``.
+
+    >>> parse("−1.273×10⁵"), parse("10⁻¹²"), parse("0.1542"), parse("−∞"), parse("960\u202f000")
+    (-127300.0, 1e-12, 0.1542, -inf, 960000.0)
     """
-    t = str(text).strip().replace(MINUS, "-").replace("∞", "inf")
+    t = re.sub(rf"^[^\S{GROUP}]+|[^\S{GROUP}]+$", "", str(text)).replace(MINUS, "-").replace("∞", "inf")
+    if GROUP in t:
+        if not re.fullmatch(rf"[-+]?(?:\d{{2,3}}|\d(?={GROUP}\d{{3}}{GROUP}))(?:{GROUP}\d{{3}})+", t):
+            raise ValueError(f"{text!r} is not a count grouped in threes from the right (five or more digits)")
+        return float(t.replace(GROUP, ""))
     m = re.fullmatch(r"(?:([-+]?[\d.]+)×)?([-+]?)10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)", t)
     if m:
         return float(f"{m.group(1) or m.group(2) + '1'}e{m.group(3).translate(_FROM_SUPERSCRIPT)}")
