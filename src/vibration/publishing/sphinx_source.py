@@ -41,6 +41,7 @@ html_theme = "sphinx_book_theme"
 html_title = {title!r}
 html_static_path = ["_static"]
 html_css_files = ["vibration-book.css"]
+html_js_files = ["vibration-book.js"]
 html_show_sourcelink = False
 html_show_sphinx = False
 html_copy_source = False
@@ -56,6 +57,7 @@ html_theme_options = {{
     "home_page_in_toc": True,
     "show_navbar_depth": 1,
     "navigation_with_keys": False,
+    "navbar_persistent": [],  # one search control: the sidebar's field (the header would repeat it)
     "extra_footer": {footer!r},
 }}
 html_context = {{"default_mode": "light"}}
@@ -92,17 +94,19 @@ def write_appendices(src: Path, pages: list[ChapterPage] = ()) -> None:
         (src / f"{name}.md").write_text(text[name], encoding="utf-8")
 
 
-def _css() -> str:
+def _asset(name: str) -> str:
+    """The text of one of the book's own static files (``book.css``, ``book.js``) shipped with this package."""
     from importlib.resources import files
 
-    return files("vibration.publishing").joinpath("book.css").read_text(encoding="utf-8")
+    return files("vibration.publishing").joinpath(name).read_text(encoding="utf-8")
 
 
 def write_source(pages: list[ChapterPage], src: Path, title: str = BOOK_TITLE) -> None:
     """Write the Sphinx source tree: conf.py, prepared notebooks, the front page, CSS."""
     src.mkdir(parents=True, exist_ok=True)
     (src / "_static").mkdir(exist_ok=True)
-    (src / "_static" / "vibration-book.css").write_text(_css(), encoding="utf-8")
+    (src / "_static" / "vibration-book.css").write_text(_asset("book.css"), encoding="utf-8")
+    (src / "_static" / "vibration-book.js").write_text(_asset("book.js"), encoding="utf-8")
     footer = "Every number on these pages was computed by this run of the chapters."
     (src / "conf.py").write_text(CONF.format(title=title, footer=footer), encoding="utf-8")
     front = [p for p in pages if p.is_front]
