@@ -20,11 +20,11 @@ def site(committed_book) -> Path:
     return committed_book
 
 
-def violations(browser, path: Path, mode: str) -> list[str]:
+def violations(browser, path: Path, mode: str, viewport=(1280, 900)) -> list[str]:
     """axe-core's violations on one page in ``mode`` ("light" or "dark"): rule id, impact and the first target."""
     from axe_playwright_python.sync_playwright import Axe
 
-    page, _outside, errors = open_offline(browser, path, viewport=(1280, 900))
+    page, _outside, errors = open_offline(browser, path, viewport=viewport)
     try:
         page.evaluate(
             "(mode) => { const d = document.documentElement.dataset; d.theme = mode; d.mode = mode; }",
@@ -35,7 +35,9 @@ def violations(browser, path: Path, mode: str) -> list[str]:
         found = []
         for v in results.response["violations"]:
             targets = [", ".join(n["target"]) for n in v["nodes"][:3]]
-            found.append(f"{path.name} [{mode}] {v['id']} ({v['impact']}, {len(v['nodes'])} nodes): {targets}")
+            found.append(
+                f"{path.name} [{mode}, {viewport[0]} px] {v['id']} ({v['impact']}, {len(v['nodes'])} nodes): {targets}"
+            )
         return found
     finally:
         page.close()
@@ -49,6 +51,13 @@ def violations(browser, path: Path, mode: str) -> list[str]:
 )
 def test_sample_pages_have_no_axe_violations(browser, site, mode):
     found = [v for name in SAMPLE for v in violations(browser, site / name, mode)]
+    assert not found, "\n".join(found)
+
+
+@pytest.mark.browser
+def test_a_chapter_at_a_phones_width_has_no_axe_violations(browser, site):
+    """At 390 px wide tables and equations scroll sideways in their own boxes: each must be reachable by keyboard."""
+    found = violations(browser, site / "04_frequency_response.html", "light", viewport=(390, 844))
     assert not found, "\n".join(found)
 
 

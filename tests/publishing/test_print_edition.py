@@ -70,3 +70,35 @@ def test_edition_line_names_version_and_commit_date():
     assert date is None or re.fullmatch(r"\d{4}-\d{2}-\d{2}", date)
     text = edition_text()
     assert text.startswith("Edition ") and (date is None or date in text)
+
+
+_FOLDS = """<!doctype html><html><head><meta charset="utf-8"><title>t</title><style>{css}</style></head><body><article>
+{folds}</article></body></html>"""
+_FOLD = """<p>{words}</p><details class="vib-details" open><summary>Details: fold {n}</summary>
+<figure><svg width="300" height="420"></svg><figcaption>Figure of fold {n}.</figcaption></figure></details>"""
+
+
+@pytest.mark.browser
+def test_print_keeps_each_folds_summary_on_the_page_of_what_it_opens(browser, tmp_path):
+    """Folds after paragraphs of growing length: their summaries land at every height of a page, some at its foot,
+    where the figure they open (too tall for what is left) moves to the next page; the summary must move with it."""
+    from importlib.resources import files
+
+    from vibration.publishing.print_edition import page_texts
+
+    css = files("vibration.publishing").joinpath("book.css").read_text(encoding="utf-8")
+    folds = "".join(_FOLD.format(n=n, words=" ".join(["Words that fill lines."] * (6 * n))) for n in range(1, 25))
+    src = tmp_path / "folds.html"
+    src.write_text(_FOLDS.format(css=css, folds=folds), encoding="utf-8")
+    page, _, _ = open_offline(browser, src)
+    pdf = tmp_path / "folds.pdf"
+    try:
+        page.emulate_media(media="print")
+        page.pdf(path=str(pdf), format="A4")
+    finally:
+        page.close()
+    texts = page_texts(pdf)
+    assert len(texts) > 10, len(texts)  # enough pages that some summary meets a page's foot
+    for n in range(1, 25):
+        summary = next(i for i, t in enumerate(texts) if f"Details: fold {n}" in t)
+        assert f"Figure of fold {n}." in texts[summary], f"fold {n}: its summary is on page {summary + 1} alone"
