@@ -252,6 +252,27 @@ def _exercise(page, explorer, shot: Path | None) -> dict:
     return seen
 
 
+#: A MyST role as written in a notebook's Markdown ({numref}`tab-...`, {sub}`0`): JupyterLab's own renderer shows
+#: the braces as text; with the MyST extension the role is rendered.
+MYST_ROLE = re.compile(r"\{(?:numref|ref|eq|doc|term|sub|sup|math|cite|abbr)\}")
+#: A notebook whose Markdown cells and Markdown outputs both use roles.
+ROLES_NOTEBOOK = "04_frequency_response.ipynb"
+
+
+def _markdown_sources(path: Path) -> tuple[list[str], list[str]]:
+    """The Markdown cells' sources and the code cells' outputs whose only rich form is Markdown, of a notebook."""
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    own = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
+    outputs = [
+        "".join(o["data"]["text/markdown"])
+        for c in cells
+        if c["cell_type"] == "code"
+        for o in c.get("outputs", [])
+        if set(o.get("data", {})) - {"text/plain"} == {"text/markdown"}  # with HTML beside it, JupyterLab shows that
+    ]
+    return own, outputs
+
+
 def test_some_notebook_uses_the_widgets():
     assert "05_explore.ipynb" in widget_notebooks(NOTEBOOKS)
 
@@ -298,6 +319,39 @@ def test_explorers_run_and_respond_in_jupyterlab(lab, browser, name):
     except BaseException:
         SCREENSHOTS.mkdir(parents=True, exist_ok=True)
         page.screenshot(path=str(SCREENSHOTS / f"jupyterlab_{Path(name).stem}_failure.png"))
+        raise
+    finally:
+        page.close()
+
+
+@pytest.mark.browser
+@pytest.mark.slow
+@pytest.mark.timeout(300)
+def test_jupyterlab_renders_the_myst_roles_of_cells_and_outputs(lab, browser):
+    """Opened (not run), a chapter's Markdown cells and stored Markdown outputs show no role's raw braces."""
+    base, token, root = lab
+    own, outputs = _markdown_sources(root / ROLES_NOTEBOOK)
+    assert sum(len(MYST_ROLE.findall(t)) for t in own) > 0 and sum(len(MYST_ROLE.findall(t)) for t in outputs) > 0
+    page = browser.new_page(viewport={"width": 1400, "height": 1300})
+    try:
+        page.goto(
+            f"{base}/lab/workspaces/roles/tree/{ROLES_NOTEBOOK}?reset&token={token}", wait_until="domcontentloaded"
+        )
+        panel = page.locator(".jp-NotebookPanel").first
+        panel.wait_for(timeout=60_000)
+        cells = panel.locator(".jp-MarkdownCell .jp-Cell-inputWrapper")
+        shown = panel.locator('.jp-OutputArea-output[data-mime-type="text/markdown"]')
+
+        def rendered():  # every cell and output on the page, each with text (rendering is asynchronous)
+            texts = cells.all_inner_texts() + shown.all_inner_texts()
+            return len(texts) == len(own) + len(outputs) and all(t.strip() for t in texts) and texts
+
+        texts = _wait_for(rendered, 60, "the Markdown cells and outputs to render", interval=0.5)
+        raw = [m.group(0) + t[m.end() : m.end() + 40] for t in texts for m in MYST_ROLE.finditer(t)]
+        assert raw == [], f"{len(raw)} MyST roles shown raw in {ROLES_NOTEBOOK}: {raw[:5]}"
+    except BaseException:
+        SCREENSHOTS.mkdir(parents=True, exist_ok=True)
+        page.screenshot(path=str(SCREENSHOTS / "jupyterlab_roles_failure.png"))
         raise
     finally:
         page.close()
