@@ -40,6 +40,33 @@ def _outside_math_and_code(text: str) -> str:
     return re.sub(r"(\{\w+\})?`[^`]*`", " ", text)
 
 
+#: A count the reader sees ungrouped: five or more plain digits, not part of a decimal (0.000123456, 12345.6), a
+#: grouped count (the narrow no-break space U+202F between groups), a word or identifier (run-12345, x12345), a path,
+#: a DOI or an address (10.1016/j.jsv.2019.115012). Written out here, independently of the book's formatter.
+UNGROUPED = re.compile(r"(?<![\d.,/:#\w\u202f-])\d{5,}(?![\d\w\u202f/]|[.,]\d)")
+
+
+def ungrouped_counts(text: str) -> list[str]:
+    """The runs of five or more plain digits a reader would see in ``text`` (Markdown or HTML), outside maths,
+    code, HTML tags (attribute values) and the invisible plain form of machine-dependent values (``⟪...⟫``).
+
+    >>> ungrouped_counts("RK45 needs 11804 evaluations; LSODA 4526, Radau 28\u202f232, t = 0.000123456 s.")
+    ['11804']
+    >>> ungrouped_counts('<td data-value="27010.6">27000</td> $N = 20000$ `n=64000` (doi 10.1016/j.x.2019.115012)')
+    ['27000']
+    >>> table = "```{list-table} Runs of 20000 periods.\\n:name: tab-12345\\n\\n* - 33409\\n```\\n"
+    >>> ungrouped_counts(table + "```python\\nn = 10000\\n```")
+    ['20000', '33409']
+    """
+    text = re.sub(r"^(`{3,}|~{3,})(?!\{)[^\n]*\n.*?^\1[ \t]*$", " ", text, flags=re.M | re.S)  # code blocks
+    text = re.sub(r"^(?:`{3,}|~{3,})(?:\{[\w-]+\})?", " ", text, flags=re.M)  # a directive's fences: its text stays
+    text = re.sub(r"^:[\w-]+:.*$", " ", text, flags=re.M)  # a directive's options (name, class, width)
+    bare = _outside_math_and_code(text)
+    bare = re.sub(r"<[^>]*>", " ", bare)
+    bare = re.sub(r"⟪[^⟫]*⟫", " ", bare)
+    return [m.group(0) for m in UNGROUPED.finditer(bare)]
+
+
 #: Code names a table's caption, header or cell must not show (there a ``_`` becomes a subscript, so t_end and
 #: x_ss render as symbols; these would not).
 TABLE_CODE_NAMES = ("omega_", "zeta_", "K_v*", "F0", "n_points", "n_omega", "n_damping", "c_sky", "c_nominal")
@@ -76,6 +103,7 @@ def prose_problems(text: str) -> list[str]:
         out.append("sqrt( in prose")
     for m in re.finditer(r"(?<![\w-])(nan|inf|NaN|Inf)(?![\w-])", bare):
         out.append(f"nan or inf: {m.group(0)}")
+    out += [f"ungrouped count: {n}" for n in ungrouped_counts(text)]
     return out
 
 
@@ -91,6 +119,8 @@ def header_problems(table: Table) -> list[str]:
                 out.append(f"cell {c.header!r} is {v}")
             if isinstance(v, str):  # number cells (bounds like "< 1e-10" included) print as the table helper does
                 out += [f"cell {v!r}: {p}" for p in _table_words(v) if not p.startswith("e-notation")]
+    # what the reader sees (number cells included): the rendered table, caption and notes
+    out += [f"ungrouped count {n} in the rendered table" for n in ungrouped_counts(table._repr_markdown_())]
     return out
 
 

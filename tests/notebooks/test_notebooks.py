@@ -175,3 +175,34 @@ def test_every_figure_carries_its_caption_label_and_alt_text(path):
         for out in cell.get("outputs", []):
             plain = "".join(out.get("data", {}).get("text/plain", ""))
             assert "nan" not in re.findall(r"\bnan\b", plain), (path.name, plain[:80])
+
+
+def _reader_texts(path: Path):
+    """(where, text) of everything a reader of ``path`` sees as text: its Markdown cells, and its cells' Markdown
+    and HTML outputs (scripts and style sheets left out) and figure captions and alt texts."""
+    from vibration.presentation.captions import METADATA_KEY
+
+    for i, cell in enumerate(_nb(path)["cells"]):
+        if cell["cell_type"] == "markdown":
+            yield f"cell {i} (Markdown)", _src(cell)
+        for out in cell.get("outputs", []):
+            data = out.get("data", {})
+            if "text/markdown" in data:
+                yield f"cell {i} output (Markdown)", "".join(data["text/markdown"])
+            if "text/html" in data:
+                page = "".join(data["text/html"])
+                yield f"cell {i} output (HTML)", re.sub(r"<(script|style)\b.*?</\1>", " ", page, flags=re.S)
+            facts = out.get("metadata", {}).get(METADATA_KEY, {})
+            for key in ("caption", "alt"):
+                if facts.get(key):
+                    yield f"cell {i} figure {key}", facts[key]
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_every_count_the_reader_sees_is_grouped(path):
+    """No run of five or more plain digits in the text, tables, captions or panels of a chapter as built (counts
+    are grouped in threes by a narrow no-break space); maths, code and attribute values are left out."""
+    from prose import ungrouped_counts
+
+    found = [(where, n) for where, text in _reader_texts(path) for n in ungrouped_counts(text)]
+    assert found == [], (path.name, found)

@@ -98,3 +98,59 @@ def test_a_table_is_built_by_keyword_and_not_changed_afterwards():
     with pytest.raises(dataclasses.FrozenInstanceError):
         t.caption = "Other."  # type: ignore[misc]
     assert t.caption == "Caption." and t._marks == {"none": "a"}
+
+
+NNBSP = "\u202f"  # the narrow no-break space between a count's groups
+
+
+def test_prose_check_finds_a_count_of_five_or_more_digits_written_ungrouped():
+    assert prose_problems("RK45 needs 11804 evaluations.") == ["ungrouped count: 11804"]
+    assert prose_problems("From 1800200 samples (16000 to 64000 steps per period).") == [
+        "ungrouped count: 1800200",
+        "ungrouped count: 16000",
+        "ungrouped count: 64000",
+    ]
+    assert prose_problems('<span class="vib-approx" data-value="27010.6" data-tol="f10">27000</span> s') == [
+        "ungrouped count: 27000"
+    ]
+
+
+def test_prose_check_passes_grouped_counts_short_counts_decimals_maths_and_identifiers():
+    clean = (
+        f"RK45 needs 11{NNBSP}804 evaluations, OP853 4526; 1{NNBSP}800{NNBSP}200 samples; t = 0.000123456 s; "
+        "a value of 12345.6 m; $N = 20000$ in maths; `n_steps=64000` in code; ⟪120000 r0.25⟫ in the plain form; "
+        '<td data-value="33409">33' + NNBSP + "409</td>; doi 10.1016/j.jsv.2019.115012; in 1999."
+    )
+    assert prose_problems(clean) == []
+
+
+def test_an_integer_cell_is_a_count_grouped_for_the_reader_and_plain_in_the_csv(tmp_path):
+    from vibration.presentation.tables import Approx, Column
+
+    t = Table(
+        rows=[{"n": 4096, "m": 20000}, {"n": 7, "m": Approx(value=28232, rtol=0.25)}],
+        columns=[Column(key="n", header="steps"), Column(key="m", header="evaluations")],
+        caption="Counts.",
+        name="tab-counts",
+    )
+    assert t.cells() == [["4096", f"20{NNBSP}000"], ["7", f"28{NNBSP}232"]]
+    for shown in (t._repr_markdown_(), t._repr_html_()):
+        assert f"20{NNBSP}000" in shown and "20000" not in shown.replace('data-value="', "")
+    assert header_problems(t) == []
+    path = t.write_csv(tmp_path)
+    assert path.read_text(encoding="utf-8").splitlines()[1].split(",")[1] == "20000"
+
+
+def test_table_check_finds_an_ungrouped_count_given_as_text():
+    from vibration.presentation.tables import Column
+
+    t = Table(rows=[{"n": "64000"}], columns=[Column(key="n", header="steps")], caption="Counts.", name="tab-t")
+    assert header_problems(t) == ["cell '64000': ungrouped count: 64000", "ungrouped count 64000 in the rendered table"]
+    noted = Table(
+        rows=[{"n": 3}],
+        columns=[Column(key="n", header="alarms")],
+        caption="Counts.",
+        name="tab-n",
+        notes=("False-alarm rows: 1800200 monitored samples.",),
+    )
+    assert header_problems(noted) == ["ungrouped count 1800200 in the rendered table"]

@@ -147,6 +147,27 @@ def checked_panel_id(panel_id: str | None) -> str | None:
     return panel_id
 
 
+#: The classes the book's style sheet shows on the screen only and in print only (``publishing/book.css``);
+#: :func:`vibration.presentation.captions.web_only` writes the same spans in the chapters' prose.
+SCREEN_ONLY, PRINT_ONLY = "vib-web-only", "vib-print-only"
+
+
+def screen_words(screen: str, printed: str = "") -> str:
+    """Words of a panel that hold only on the screen ("computed in your browser", "move the slider"), and the
+    printed edition's words in their place (HTML, both).
+
+    The print style sheet hides the screen words and shows the printed ones. The printed words also carry an
+    inline ``display: none``, so a page without the book's style sheet (JupyterLab) shows the screen words only;
+    the print rule's ``!important`` overrides it.
+
+    >>> print(screen_words(", computed in your browser", ", computed from the closed form"))
+    <span class="vib-web-only">, computed in your browser</span><span class="vib-print-only" \
+style="display: none">, computed from the closed form</span>
+    """
+    out = f'<span class="{SCREEN_ONLY}">{screen}</span>'
+    return out + (f'<span class="{PRINT_ONLY}" style="display: none">{printed}</span>' if printed else "")
+
+
 def range_control(pid: str, key: str, cls: str, label: str, *, low, high, step, value) -> str:
     """One slider of a panel's controls: its label, range input (id ``<pid>-<key>``, class ``cls``) and output.
 

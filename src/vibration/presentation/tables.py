@@ -43,7 +43,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .numbers import Approx, minus, plain_width, sig
+from .numbers import Approx, integer, plain_width, sig
 from .numbers import bound as _bound
 
 TABLES_ENV = "VIBRATION_TABLES_DIR"
@@ -166,6 +166,10 @@ def columns(spec: str) -> list[Column]:
 def fmt(value, digits: int = 4, zeros: bool = False) -> str:
     """Text of a cell: floats in the book's number format (:func:`vibration.presentation.numbers.sig`).
 
+    An integer cell is a count (steps, samples, evaluations) and is written by
+    :func:`vibration.presentation.numbers.integer`: five or more digits are grouped in threes. An identifier
+    (a year, a seed, a run number) is a name, not an amount: give it to the table as text.
+
     An :class:`Approx` cell reads like any other number (its tolerance goes to the plain-text form only).
 
     Examples
@@ -174,8 +178,8 @@ def fmt(value, digits: int = 4, zeros: bool = False) -> str:
     ('2.237', '0.0001235', 'yes', '—', '—', 'overdamped')
     >>> fmt(1.273e5, 4), fmt(-2.5e-9, 2), fmt(1e-12), fmt(31540.0, 3), fmt(Approx(value=2829.0, rtol=0.25))
     ('1.273×10⁵', '−2.5×10⁻⁹', '10⁻¹²', '3.15×10⁴', '2829')
-    >>> fmt(-0.1), fmt(-1e-9), fmt(-3)
-    ('−0.1', '−10⁻⁹', '−3')
+    >>> fmt(-0.1), fmt(-1e-9), fmt(-3), fmt(4096), fmt(200001), fmt(Approx(value=28232, rtol=0.25))
+    ('−0.1', '−10⁻⁹', '−3', '4096', '200\u202f001', '28\u202f232')
     >>> fmt(0.1, 3, zeros=True), fmt(15.0, 3, zeros=True), fmt(2.0e-5, 2, zeros=True), fmt(1234.0, 3, zeros=True)
     ('0.100', '15.0', '2.0×10⁻⁵', '1.23×10³')
     """
@@ -186,7 +190,7 @@ def fmt(value, digits: int = 4, zeros: bool = False) -> str:
     if isinstance(value, bool | np.bool_):
         return "yes" if value else "no"
     if isinstance(value, int | np.integer):
-        return minus(str(int(value)))
+        return integer(value)
     if isinstance(value, float | np.floating):
         return sig(float(value), digits, zeros=zeros)
     return str(value)
@@ -506,6 +510,8 @@ def _csv_cell(value) -> str:
     value = value.value if isinstance(value, Approx) else value
     if isinstance(value, float | np.floating) and math.isfinite(value):
         return f"{float(value):.10g}"  # machine-readable: e-notation, not the book's ×10ⁿ
+    if isinstance(value, int | np.integer) and not isinstance(value, bool | np.bool_):
+        return str(int(value))  # machine-readable: no group separators
     return fmt(value, 10)
 
 

@@ -23,6 +23,7 @@ from pathlib import Path
 import control
 import numpy as np
 import pytest
+from prose import ungrouped_counts
 
 from vibration.chapters.control import tables as T
 from vibration.chapters.control import text as X
@@ -155,6 +156,14 @@ def test_prose_uses_the_readers_notation(default, figs, where):
         assert not re.search(r"[A-Za-zωζ]_[A-Za-z0-9]", prose), f"subscript outside maths: {prose}"
         assert not re.search(r"\d[eE][+-]?\d", prose), f"e-notation: {prose}"
         assert "^2" not in prose and "sqrt(" not in prose and "nan" not in prose.lower().split()
+
+
+def test_every_count_is_grouped_in_threes(default, figs):
+    """A count of five or more digits (steps per period, frequencies) reads 16 000, never 16000, in the
+    sentences, captions, remarks and the tables as the reader sees them."""
+    texts = _paragraphs(default, figs) + [t(default)._repr_markdown_() for t in TABLES]
+    found = [(n, text[:80]) for text in texts for n in ungrouped_counts(text)]
+    assert found == []
 
 
 def test_tables_use_the_readers_notation_and_one_precision_per_column(default):

@@ -12,6 +12,7 @@ import matplotlib
 import numpy as np
 import pytest
 from drawn import drawn_once
+from prose import ungrouped_counts
 
 from vibration.chapters.digital_twin import figures, tables, text
 from vibration.chapters.digital_twin.study import digital_twin_study
@@ -61,6 +62,8 @@ def _check_words(st) -> None:
     prose = list(text.paragraphs(st)) + [f"{c.caption} {c.remark}" for c in (make(st) for make in FIGURES)]
     for block in prose + [repr(make(st)) for make in TABLES]:
         assert not re.search(r"\b(nan|inf)\b", block), block
+    for block in prose + [make(st)._repr_markdown_() for make in TABLES]:
+        assert ungrouped_counts(block) == [], (ungrouped_counts(block), block[:160])  # counts grouped in threes
     for block in prose:
         assert not CODE_NAMES.search(block), block
         assert not re.search(r"\{(?!numref\})", block), block  # an unformatted placeholder

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from prose import ungrouped_counts
 
 from vibration import ParameterError
 from vibration.chapters.duffing import figures, notation, tables, text
@@ -249,6 +250,7 @@ def _check_verdicts(study) -> None:
     """Every comparison and verdict in the sentences, tables and captions agrees with the study's numbers."""
     for where, para in _everything(study):
         assert not re.search(r"\bnan\b|\binf\b", para.lower()), (where, para[:120])
+        assert ungrouped_counts(para) == [], (where, ungrouped_counts(para), para[:120])  # counts grouped in threes
     # the captions meet the figures, and say the measured coincidences and jumps
     figs = _figures(study)
     for make, c in figs.items():
@@ -350,6 +352,34 @@ def test_every_caption_is_at_most_sixty_words(default):
         captions += [(t.name, t.caption) for t in (make(study) for make in TABLES)]
         for name, caption in captions:
             assert caption_words(caption) <= 60, (name, caption_words(caption), caption)
+
+
+#: The response figure's caption is held tighter than the chapter's limit: it had grown to 65 words.
+RESPONSE_CAPTION_WORDS = 55
+
+
+def test_the_response_figure_caption_is_short_and_keeps_the_facts_a_reader_needs(default):
+    """At most 55 words, counted both as the reader counts them and as plain whitespace-separated words, and still
+    the oscillator's parameters with units, each panel's k₃ with its unit, the line styles and the colours."""
+    caption = _figures(default)[figures.frequency_response_figure].caption
+    assert len(caption.split()) <= RESPONSE_CAPTION_WORDS, (len(caption.split()), caption)
+    assert caption_words(caption) <= RESPONSE_CAPTION_WORDS
+    p = default.params
+    soft = f"{p.k3_soft:g}".replace("-", "\u2212")
+    facts = [
+        f"m = {p.m:g} kg",
+        f"k = {p.k:g} N/m",
+        f"c = {p.c_nominal:g} N s/m",
+        f"F₀ = {p.F0:g} N",
+        f"left, hardening, k₃ = {p.k3_hard:g} N/m³ (vermillion)",
+        f"right, softening, k₃ = {soft} N/m³ (sky blue)",
+        "One-harmonic",
+        "unstable dashed",
+        "folds open circles",
+        "backbones dotted black",
+        "linear spring blue",
+    ]
+    assert [f for f in facts if f not in caption] == [], caption
 
 
 def test_other_parameters_reach_both_branches_of_the_verdicts():

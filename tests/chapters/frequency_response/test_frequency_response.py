@@ -245,3 +245,18 @@ def test_captions_stay_within_the_books_limit(values):
         assert caption_words(item.caption) <= CAPTION_WORDS, (item.name, item.caption)
     for f in (figures.decomposition_figure, figures.energy_figure, figures.design_figure):
         assert f(st).remark, f.__name__
+
+
+def test_the_prose_states_the_half_power_samples_the_study_uses():
+    """The hand-written section on the damping estimates names the grid the half-power points are read from; the
+    count is written grouped (200 001 with a narrow no-break space) and equals the study's."""
+    import json
+
+    from vibration.chapters.frequency_response.study import HALF_POWER_SAMPLES
+
+    path = Path(__file__).resolve().parents[3] / "notebooks" / "04_frequency_response.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    prose = [c for c in cells if c["cell_type"] == "markdown" and "half-power points" in "".join(c["source"])]
+    stated = [m for c in prose for m in re.findall(r"\(([\d\u202f]+) samples within", "".join(c["source"]))]
+    assert stated == ["200\u202f001"]
+    assert int(stated[0].replace("\u202f", "")) == HALF_POWER_SAMPLES

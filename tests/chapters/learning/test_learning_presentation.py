@@ -16,6 +16,7 @@ matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from drawn import drawn_once
+from prose import ungrouped_counts
 
 from vibration.chapters.learning import figures, summary, tables, text  # noqa: E402
 from vibration.chapters.learning.study import ACTIVE, SEMI, learning_study  # noqa: E402
@@ -201,6 +202,17 @@ def test_one_number_of_significant_figures_per_column(study):
                 continue
             sig = {len(c.lstrip("−-").replace(".", "").lstrip("0")) for c in numeric if float(c.replace("−", "-"))}
             assert len(sig) == 1, (f.__name__, col.header, numeric)
+
+
+def test_every_count_is_grouped_in_threes(study):
+    """Steps, episodes and samples of five or more digits read 960 000, never 960000 (nor with a plain space), in
+    the sentences, captions, remarks and the tables as the reader sees them."""
+    texts = [f(study) for f in SENTENCES]
+    texts += [part for cap in (f(study) for f in FIGURES) for part in (cap.caption, cap.remark) if part]
+    texts += [f(study)._repr_markdown_() for f in TABLES]
+    found = [(n, text[:80]) for text in texts for n in ungrouped_counts(text)]
+    assert found == []
+    assert not any(re.search(r"\d{1,3}(?: \d{3})+(?!\d)", re.sub(r"\$[^$]*\$", "", t)) for t in texts)
 
 
 def _paragraphs(st) -> list[str]:

@@ -18,6 +18,7 @@ from vibration.chapters.control.notation import LABELS, cell, num, pct, signed_p
 from vibration.chapters.control.study import STEADY_PERIODS, ControlStudy
 from vibration.physics.control import force_floor
 from vibration.presentation.captions import Captioned, panel_words
+from vibration.presentation.numbers import integer
 from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
 
 #: Two curves whose largest difference is below this fraction of their largest value coincide.
@@ -329,8 +330,8 @@ def transmissibility_figure(study: ControlStudy) -> Captioned:
         f"logarithmic axes. {word[0].capitalize()}: passive, soft ({look(lines[LABELS['soft']])}, "
         f"$c + c_\\mathrm{{min}}$) and firm ({look(lines[LABELS['firm']])}, $c + c_\\mathrm{{max}}$); {word[1]}: "
         f"clipped skyhook; {word[2]}: on-off skyhook; {word[3]}: MR damper, on-off (each "
-        f"{look(_lines(axes[0, 1])[LABELS['clipped']])}, {r.size} frequencies). All panels: best passive damper "
-        f"({look(lines['best passive (bound)'])}), ideal skyhook ({look(lines[LABELS['skyhook']])}), "
+        f"{look(_lines(axes[0, 1])[LABELS['clipped']])}, {integer(r.size)} frequencies). All panels: best passive "
+        f"damper ({look(lines['best passive (bound)'])}), ideal skyhook ({look(lines[LABELS['skyhook']])}), "
         "$\\sqrt{2}$ (grey dotted)."
     )
     f = s.findings

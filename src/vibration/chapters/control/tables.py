@@ -17,6 +17,7 @@ from vibration.chapters.control.study import (
     ControlStudy,
 )
 from vibration.physics.control import Metrics
+from vibration.presentation.numbers import integer
 from vibration.presentation.tables import Missing, Table, bound, columns, self_checks
 
 NO_INTEGRATOR = Missing(reason="no integral term")
@@ -357,6 +358,7 @@ def semi_active_checks_table(study: ControlStudy) -> Table:
     s = study.semi
     p, pr = s.power, s.power_run
     vals = list(s.refine.values())
+    coarse, fine = list(s.refine)[-2:]
     power = max(abs(pr[f] - getattr(p, f)) / max(abs(p.gross), 1e-300) for f in ("removed", "net", "supplied", "gross"))
     checks = [
         (
@@ -368,8 +370,8 @@ def semi_active_checks_table(study: ControlStudy) -> Table:
     checks += [
         ("ideal skyhook: mean powers of the run against the closed form, largest relative difference",
          bound(power, 1e-3)),
-        ("on-off skyhook at ωₙ: last refinement step (16000 to 64000 steps per period), absolute",
-         bound(abs(vals[-1] - vals[-2]), 1e-4)),
+        (f"on-off skyhook at ωₙ: last refinement step ({integer(coarse)} to {integer(fine)} steps per period), "
+         "absolute", bound(abs(vals[-1] - vals[-2]), 1e-4)),
         ("on-off and clipped dampers: largest instantaneous power they deliver (W)",
          "≤ 0" if s.worst_power <= 0.0 else bound(s.worst_power, 1e-12)),
     ]  # fmt: skip

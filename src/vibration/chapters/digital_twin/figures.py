@@ -15,7 +15,7 @@ from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
 from vibration.chapters.digital_twin.study import MIN_ALARMS, DigitalTwinStudy
 from vibration.presentation.captions import Captioned, panel_words
-from vibration.presentation.numbers import sig
+from vibration.presentation.numbers import integer, sig
 from vibration.presentation.style import OKABE_ITO, case_style, colour_word, figure, place_legend
 
 #: The faults of the detection experiments: colour (and its caption word) and marker.
@@ -135,8 +135,8 @@ def scaling_figure(st: DigitalTwinStudy) -> Captioned:
         f"record length at noise {st.by_length[0].noise:g} of the rms response."
     )
     remark = (
-        f"Each point has {runs} runs of its own noise; the dots lie within {100 * spread:.2g} % of the lines (one "
-        f"point's rms error has a sampling error of about {100 / math.sqrt(2 * runs):.2g} %)."
+        f"Each point has {integer(runs)} runs of its own noise; the dots lie within {100 * spread:.2g} % of the "
+        f"lines (one point's rms error has a sampling error of about {100 / math.sqrt(2 * runs):.2g} %)."
     )
     assert {"top left", "bottom right"} <= set(words)  # the caption's words above describe this layout
     alt = (

@@ -12,7 +12,7 @@ import numpy as np
 
 from vibration.chapters.digital_twin.study import KALMAN_BLOCK, KALMAN_SETTLE, MIN_ALARMS, DigitalTwinStudy
 from vibration.physics.twin import binomial_halfwidth
-from vibration.presentation.numbers import pm
+from vibration.presentation.numbers import integer, pm
 from vibration.presentation.tables import Approx, Missing, Table, columns
 
 #: A rounding-level check value is compared with its reference within this fraction of its bound.
@@ -378,8 +378,9 @@ def run_length_table(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> Tabl
         caption="CUSUM run lengths: Monte Carlo against the Markov-chain theory.",
         name="tab-twin-arl",
         notes=(
-            f"False-alarm rows: {rl.samples} monitored samples of healthy records ({rl.samples * dt / 3600:.3g} h), "
-            "the CUSUM restarted after each alarm; measured: monitored time per alarm, standard error from the "
+            f"False-alarm rows: {integer(rl.samples)} monitored samples of healthy records "
+            f"({rl.samples * dt / 3600:.3g} h), the CUSUM restarted after each alarm; measured: monitored time per "
+            "alarm, standard error from the "
             "alarm count (Poisson). Theory: the Brook–Evans chain for a white Gaussian residual, averaged over the "
             "spread of each record's calibrated noise variance, extrapolated from two cell counts.",
             "Delay rows: mean over the faulty records detected after the fault starts; theory: the chain pushed "

@@ -14,7 +14,7 @@ from scipy.stats import chi2
 from vibration.chapters.digital_twin.study import HALFWIDTH_TARGET, MIN_ALARMS, DigitalTwinStudy
 from vibration.chapters.digital_twin.tables import flag_halfwidth
 from vibration.physics.twin import cusum_variance_ratio
-from vibration.presentation.numbers import pm, sig
+from vibration.presentation.numbers import integer, pm, sig
 
 NAMES = ("m", "c", "k")
 
@@ -65,8 +65,8 @@ def key_results(st: DigitalTwinStudy) -> str:
     )
     lines = [
         f"A {sig(fit.n * fit.dt, 3)} s broadband test identifies the stiffness as k = "
-        f"{pm(fit.k, fit.stderr[2])} N/m (true {sig(st.asset.k, 6)} N/m); over {cov.runs} noisy repeats its 95 % "
-        f"intervals cover the truth in {pm(cov.coverage[2], cov.coverage_uncertainty[2])} of the runs.",
+        f"{pm(fit.k, fit.stderr[2])} N/m (true {sig(st.asset.k, 6)} N/m); over {integer(cov.runs)} noisy repeats its "
+        f"95 % intervals cover the truth in {pm(cov.coverage[2], cov.coverage_uncertainty[2])} of the runs.",
         f"When the records break an assumption the coverage drops, down to "
         f"{float(np.min(a[worst_label].coverage)):.2f} "
         f"({worst_label}); the residual whiteness test flags at least {_pct(flagged, 0)} of those records.",
@@ -92,8 +92,8 @@ def identification_sentence(st: DigitalTwinStudy) -> str:
         "all three 95 % intervals" if inside == 3 else f"{('none', 'one', 'two')[inside]} of the three 95 % intervals"
     )
     return (
-        f"From {fit.n} samples ({sig((fit.n - 1) * fit.dt, 4)} s at {sig(1 / fit.dt, 4)} Hz) the least-squares fit "
-        f"gives m = {pm(fit.m, fit.stderr[0])} kg, c = {pm(fit.c, fit.stderr[1])} N s/m and "
+        f"From {integer(fit.n)} samples ({sig((fit.n - 1) * fit.dt, 4)} s at {sig(1 / fit.dt, 4)} Hz) the "
+        f"least-squares fit gives m = {pm(fit.m, fit.stderr[0])} kg, c = {pm(fit.c, fit.stderr[1])} N s/m and "
         f"k = {pm(fit.k, fit.stderr[2])} N/m (± one standard error). The estimates sit "
         f"{sig(np.abs(z).max(), 2)} standard errors or less from the truth, and {which} contain it. The residual's "
         f"standard deviation, {sci(fit.sigma, 3)} m, is the estimated sensor noise."
@@ -159,7 +159,7 @@ def coverage_sentence(st: DigitalTwinStudy) -> str:
         else "not all within their binomial uncertainty of 95 %, so the intervals are not exactly calibrated here"
     )
     return (
-        f"Over {main.runs} noisy realisations the 95 % intervals contained the true m, c and k in "
+        f"Over {integer(main.runs)} noisy realisations the 95 % intervals contained the true m, c and k in "
         f"{pm(cov[0], hw[0])}, {pm(cov[1], hw[1])} and {pm(cov[2], hw[2])} of the runs, {verdict}. The "
         f"stiffness error grows as the noise level to the power {_signed(p_s)} ± {u_s:.2f} (least-squares theory: 1, "
         f"{_within(p_s, u_s, 1.0)}) and falls as the record length to the power {_signed(p_d)} ± {u_d:.2f} (theory "

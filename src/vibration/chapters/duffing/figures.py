@@ -16,7 +16,7 @@ from vibration.chapters.duffing.notation import k3_text, within
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
 from vibration.physics.duffing import backbone
 from vibration.presentation.captions import Captioned, panel_words
-from vibration.presentation.numbers import minus, sig
+from vibration.presentation.numbers import integer, minus, sig
 from vibration.presentation.style import OKABE_ITO, case_style, colour_word, figure, place_legend
 
 STABLE_LS, UNSTABLE_LS = "-", "--"
@@ -91,15 +91,15 @@ def frequency_response_figure(study: DuffingStudy) -> Captioned:
         place_legend(ax)
     words = panel_words(fig)
     panels = "; ".join(
-        f"{word}, the {case.label} spring, {_k3(case)} ({COLOUR_WORD[case.label]})"
+        f"{word}, {case.label}, {_k3(case)} ({COLOUR_WORD[case.label]})"
         for word, case in zip(words, study.cases, strict=True)
     )
     dashed = any(c.folds.bistable and drew_unstable[c.label] for c in study.cases)
     branches = "Stable branches solid, unstable dashed, folds open circles" if dashed else "Stable curves solid"
     caption = (
-        f"One-harmonic frequency response of the paper's oscillator (m = {p.m:g} kg, k = {p.k:g} N/m, "
-        f"c = {p.c_nominal:g} N s/m, F₀ = {p.F0:g} N) with a cubic spring: {panels}. {branches}; "
-        f"backbones dotted black, the linear spring (k₃ = 0) {COLOUR_WORD['linear']}."
+        f"One-harmonic response of the paper's oscillator (m = {p.m:g} kg, k = {p.k:g} N/m, "
+        f"c = {p.c_nominal:g} N s/m, F₀ = {p.F0:g} N) with cubic springs: {panels}. {branches}; "
+        f"backbones dotted black; linear spring {COLOUR_WORD['linear']}."
     )
     folded = [c for c in study.cases if c.folds.bistable and drew_unstable[c.label]]
     band = " and ".join(
@@ -297,8 +297,8 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
         if n == 1:
             return "a single point: a periodic motion of the forcing period"
         if n < total:
-            return f"{n} points: a periodic motion of {n} forcing periods"
-        return f"{n} distinct points spread over a folded set, no repeating pattern"
+            return f"{integer(n)} points: a periodic motion of {integer(n)} forcing periods"
+        return f"{integer(n)} distinct points spread over a folded set, no repeating pattern"
 
     dot = f"a {COLOUR_WORD['hardening']} circle" if n_per == 1 else f"{COLOUR_WORD['hardening']} circles"
     gaps = {w: study.method_gap(w) for w in ("chaotic", "periodic")}
@@ -325,13 +325,13 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
         f"The section at F = {p.F0_ueda:g} N holds {section(n_chaos, len(study.section_chaos))}; at "
         f"F = {p.F0_ueda_periodic:g} N it holds {section(n_per, len(study.section_periodic))} ({dot}). The "
         f"exponent's estimates take the colours of the forcings; {coincide}. The map computes the exponent over "
-        f"{cmap.n_periods} periods at each point of a {cmap.omegas.size} × {cmap.forces.size} grid of forcings; red "
-        "(a positive exponent) means chaotic motion."
+        f"{integer(cmap.n_periods)} periods at each point of a {integer(cmap.omegas.size)} × "
+        f"{integer(cmap.forces.size)} grid of forcings; red (a positive exponent) means chaotic motion."
     )
     final = {w: study.running(w, "qr")[1][-1] for w in ("chaotic", "periodic")}
     alt = (
-        f"Left, a Poincaré section of {n_chaos} points for the stronger forcing and {n_per} for the weaker one; "
-        "middle, running estimates of the largest Lyapunov exponent against averaging time, settling "
+        f"Left, a Poincaré section of {integer(n_chaos)} points for the stronger forcing and {integer(n_per)} for "
+        "the weaker one; middle, running estimates of the largest Lyapunov exponent against averaging time, settling "
         + ("above zero" if final["chaotic"] > 0 else "below zero")
         + " for the stronger forcing and "
         + ("below zero" if final["periodic"] < 0 else "above zero")

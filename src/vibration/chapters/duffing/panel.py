@@ -18,7 +18,7 @@ from vibration.chapters.duffing.figures import STABLE_LS, UNSTABLE_LS, plot_curv
 from vibration.physics.duffing import Duffing, backbone, folds, response_curve
 from vibration.physics.model import check_real
 from vibration.presentation.numbers import minus
-from vibration.presentation.panels import PanelIds, line_style, panel_assets, png_bytes
+from vibration.presentation.panels import PanelIds, line_style, panel_assets, png_bytes, screen_words
 from vibration.presentation.style import case_style, figure, place_legend
 
 _ids = PanelIds("vib-duffing")
@@ -106,13 +106,14 @@ def hb_panel_html(
     k3_range, F0_max = params["k3_range"], params["F0_max"]
     pid = _ids.new(params)
     e = html.escape
+    where = screen_words(", computed in your browser")
     return f"""<div class="vib-duffing" id="{e(pid)}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
 {panel_assets("vibration.chapters.duffing", "duffing.js", "duffing.css")}\
 <p class="vd-sub">One-harmonic frequency response of \
 <i>m ẍ + c ẋ + k x + k<sub>3</sub> x<sup>3</sup> = F<sub>0</sub> cos(ωt)</i> \
-with m = {m:g} kg, c = {c:g} N s/m, k = {k:g} N/m, computed in your browser: solid stable, dashed unstable, \
-dotted the backbone, circles the folds.</p>
+with m = {m:g} kg, c = {c:g} N s/m, k = {k:g} N/m{where}: solid stable, \
+dashed unstable, dotted the backbone, circles the folds.</p>
 <noscript>This panel needs JavaScript to draw its plot.</noscript>
 <div class="vd-controls">
 <label for="{e(pid)}-k3">cubic stiffness k<sub>3</sub></label>

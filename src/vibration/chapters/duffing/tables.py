@@ -12,7 +12,7 @@ import math
 
 from vibration.chapters.duffing.notation import ERROR_FACTOR, Z_ATOL, exponent_approx, forcing_term, k3_text
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
-from vibration.presentation.numbers import Approx, bound, column, minus
+from vibration.presentation.numbers import Approx, bound, column, integer, minus
 from vibration.presentation.tables import Missing, Table, columns, self_checks
 
 NO_ORBIT = "shooting did not converge"
@@ -167,8 +167,8 @@ def fold_table(study: DuffingStudy) -> Table:
         ),
         caption="Where each sweep leaves its branch: the fold of the periodic orbit of the full equation "
         "(pseudo-arclength continuation by shooting; the branch turns where a Floquet multiplier passes +1), the "
-        f"one-harmonic fold, and the sweep's jump ({steps} frequencies per sweep, the bracket refined by sweeping it "
-        "again at 1/100 of the step).",
+        f"one-harmonic fold, and the sweep's jump ({integer(steps)} frequencies per sweep, the bracket refined by "
+        "sweeping it again at 1/100 of the step).",
         name="tab-duffing-jumps",
     )
 
@@ -266,7 +266,7 @@ def lyapunov_table(study: DuffingStudy) -> Table:
         ),
         caption=f"Lyapunov exponents of Ueda's oscillator ẍ + {p.c_ueda:g} ẋ + x³ = {forcing_term(p)} from "
         f"{_start(*study_start(study))} (per unit time, natural logarithm); standard errors by batch means over "
-        f"{main.block_means.size} blocks of {main.block_periods} periods.",
+        f"{integer(main.block_means.size)} blocks of {integer(main.block_periods)} periods.",
         name="tab-duffing-lyapunov",
     )
 

@@ -29,7 +29,7 @@ from vibration.chapters.duffing.notation import (
     k3_text,
 )
 from vibration.chapters.duffing.study import DuffingStudy, SpringCase
-from vibration.presentation.numbers import Approx, sig, signed
+from vibration.presentation.numbers import Approx, integer, sig, signed
 
 #: The pooled exponent agrees with the published one within this many standard errors.
 AGREE_Z = 2.0
@@ -236,12 +236,12 @@ def lyapunov_sentence(study: DuffingStudy) -> str:
             f", as the Floquet multipliers of its orbit give ({sig(study.floquet_periodic, 3)} 1/s)"
             if close
             else f"; the Floquet multipliers of its orbit give {sig(study.floquet_periodic, 3)} 1/s, which the "
-            f"running estimate has not reached after {study.periodic_qr.running.size} periods"
+            f"running estimate has not reached after {integer(study.periodic_qr.running.size)} periods"
         )
     return (
-        f"At F = {p.F0_ueda:g} N the main run of {main.n_periods} periods gives λ₁ "
-        f"{lam_main} 1/s (standard error by batch means over {main.block_means.size} "
-        f"blocks of {main.block_periods} periods). The {len(study.lyap_runs)} runs from {len(starts)} initial "
+        f"At F = {p.F0_ueda:g} N the main run of {integer(main.n_periods)} periods gives λ₁ "
+        f"{lam_main} 1/s (standard error by batch means over {integer(main.block_means.size)} "
+        f"blocks of {integer(main.block_periods)} periods). The {len(study.lyap_runs)} runs from {len(starts)} initial "
         f"states and step sizes h = {sig(steps[0], 2)} to {sig(steps[-1], 2)} s share no trajectory; they {agree} "
         f"and pool to λ₁ {lam_pooled} 1/s, {chaos_verdict(study)}. The two-trajectory "
         f"method gives {lam_partner} 1/s on the main run's trajectory: the two "
@@ -258,8 +258,8 @@ def _pooled_periods(study: DuffingStudy) -> int:
 
 
 def _round_count(n: float) -> str:
-    """A length (periods, seconds) rounded to two figures and written whole, as a count: 4300, 27000."""
-    return str(round(float(f"{n:.2g}")))
+    """A length (periods, seconds) rounded to two figures and written whole, as a count: 4300, 27 000."""
+    return integer(round(float(f"{n:.2g}")))
 
 
 def _z(z: float) -> str:
@@ -288,7 +288,7 @@ def published_sentence(study: DuffingStudy) -> str:
     )
     if abs(pub.z) <= AGREE_Z:
         return head + (f" The pooled {lam_pooled} 1/s agrees with it within two standard errors ({_z(pub.z)}).")
-    by_step = ", ".join(f"{spp} steps per period {_z(z)}" for spp, z in pub.step_z) or "no run"
+    by_step = ", ".join(f"{integer(spp)} steps per period {_z(z)}" for spp, z in pub.step_z) or "no run"
     step_ok = all(abs(z) <= AGREE_Z for _, z in pub.step_z)
     # the averaging length needed grows as (σ₁/Δ)²: it takes the standard error's tolerance squared
     n_text = Approx(value=pub.n_needed, factor=LENGTH_FACTOR).html(_round_count(pub.n_needed))
@@ -307,8 +307,9 @@ def published_sentence(study: DuffingStudy) -> str:
         f"{'above' if pub.z > 0 else 'below'} it ({delta} 1/s, {share} %). "
         f"{'The step size does not explain this' if step_ok else 'The step size may contribute'}: runs with other "
         f"steps differ from the pooled value by {by_step} standard errors (the published run used h = {pub.step:g} "
-        f"s, {2 * math.pi / pub.step:.0f} steps per period), and the definitions are the same (the published third "
-        "exponent, 0, is that of time taken as a variable). The averaging length can: a single run of N periods "
+        f"s, {integer(round(2 * math.pi / pub.step))} steps per period), and the definitions are the same (the "
+        "published third exponent, 0, is that of time taken as a variable). The averaging length can: a single run of "
+        "N periods "
         f"scatters about the long-run value with standard deviation {sigma1}/√N 1/s (from the main "
         f"run's batch means), so a run shorter than {n_text} periods ({t_text} s) misses it by "
         f"{miss} 1/s or more with a probability above 5 %. The published value states no "

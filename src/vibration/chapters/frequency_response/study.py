@@ -46,6 +46,10 @@ from vibration.presentation.findings import case_name, scenarios_from
 #: The three dampings of the chapter: scenario id -> the book's case name (its colour and line style).
 DAMPINGS = {"damping_low": "c_low", "damping_nominal": "c_nominal", "damping_high": "c_high"}
 
+#: Samples of the magnification curve within ±20 ζ ωₙ of the peak from which the half-power points are read
+#: (the chapter's prose states this count).
+HALF_POWER_SAMPLES = 200_001
+
 #: Largest damping ratio at which the log decrement of six free periods is fitted.
 ZETA_DECREMENT_MAX = 0.3
 
@@ -257,7 +261,7 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
     lo, hi = half_power_band(osc)
     zeta_hp = zeta_ld = None
     if lo is not None:
-        w = wn * np.linspace(max(0.0, 1 - 20 * z), 1 + 20 * z, 200001)
+        w = wn * np.linspace(max(0.0, 1 - 20 * z), 1 + 20 * z, HALF_POWER_SAMPLES)
         try:
             zeta_hp = half_power_points(w, magnification(osc, w)).damping_ratio
         except ParameterError:  # the lower point closer to 0 than one grid step

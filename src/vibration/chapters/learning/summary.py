@@ -14,6 +14,7 @@ from vibration.chapters.learning.notation import num, pct
 from vibration.chapters.learning.study import METHODS, TARGETS, LearningStudy
 from vibration.chapters.learning.tables import SHORT_NAMES
 from vibration.chapters.learning.text import TARGET, _steps, compared
+from vibration.presentation.numbers import integer
 
 
 def _best_learner(st: LearningStudy):
@@ -27,7 +28,9 @@ def key_results(st: LearningStudy) -> str:
 
 def key_findings(st: LearningStudy) -> list[str]:
     """Four computed headline sentences."""
-    ratios = " and ".join(f"{SHORT_NAMES[r.method]} {st.ratio(r):.5f} after {r.episodes} episodes" for r in st.learners)
+    ratios = " and ".join(
+        f"{SHORT_NAMES[r.method]} {st.ratio(r):.5f} after {integer(r.episodes)} episodes" for r in st.learners
+    )
     worst = max(sd.worst_ratio for sd in st.seeds) - 1.0
     n_seeds = st.seeds[0].seeds.size
     all_in = all(sd.reached == sd.seeds.size for sd in st.seeds)
@@ -55,7 +58,7 @@ def key_findings(st: LearningStudy) -> list[str]:
         f"{compared(lqr_vs_learned, 'the learned law')}.",
         f"With a semi-active damper the learned clipped law "
         f"{compared(st.semi_vs('best constant damping'), 'the best constant damping')}.",
-        f"A plant model identified from {st.id_design.samples} samples of one test record, then designed on, "
+        f"A plant model identified from {integer(st.id_design.samples)} samples of one test record, then designed on, "
         f"{compared(st.identify_vs_learned, 'the learned law')}; the learner used {_steps(st.training_steps)} "
         "simulated steps.",
     ]
@@ -83,11 +86,12 @@ def _compute_first(st: LearningStudy) -> str:
     fast = min(done, key=lambda m: reach[m])
     rest = [m for m in METHODS if m != fast]
     other = ", ".join(
-        f"{SHORT_NAMES[m]} {int(reach[m])}" if math.isfinite(reach[m]) else f"{SHORT_NAMES[m]} never did" for m in rest
+        f"{SHORT_NAMES[m]} {integer(int(reach[m]))}" if math.isfinite(reach[m]) else f"{SHORT_NAMES[m]} never did"
+        for m in rest
     )
     return (
         "**Where the model is known, compute the optimum.** One Riccati solution gives $J^*$ exactly; the quicker "
-        f"learner, {SHORT_NAMES[fast]}, spent {int(reach[fast])} training episodes "
+        f"learner, {SHORT_NAMES[fast]}, spent {integer(int(reach[fast]))} training episodes "
         f"({_steps(int(reach[fast]) * st.task.n_steps)} simulated steps) to come within {pct(fine, 2)} of it "
         f"({other})."
     )

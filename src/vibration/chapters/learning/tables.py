@@ -13,6 +13,7 @@ import numpy as np
 from vibration.chapters.learning.notation import num, power, sig
 from vibration.chapters.learning.study import ACTIVE, SEMI, TARGETS, LearningStudy
 from vibration.physics.learning import Comparison
+from vibration.presentation.numbers import integer
 from vibration.presentation.tables import Column, Missing, Table, columns
 
 METHOD_NAMES = {"ars": "ARS (augmented random search, V1-t)", "cma": "CMA-ES"}
@@ -313,8 +314,8 @@ def robustness_table(st: LearningStudy) -> Table:
         "exact optimum (forcing phase known).",
         name="tab-learning-robustness",
         notes=(
-            f"Mean over the same {rb.n_episodes} seeded episodes per plant (force bound applied), ± one standard "
-            "error; optimum: the exact finite-horizon LQ optimum of the changed task.",
+            f"Mean over the same {integer(rb.n_episodes)} seeded episodes per plant (force bound applied), ± one "
+            "standard error; optimum: the exact finite-horizon LQ optimum of the changed task.",
         ),
     )
 

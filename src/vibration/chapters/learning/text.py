@@ -17,6 +17,7 @@ import numpy as np
 from vibration.chapters.learning.notation import num, pct, sig
 from vibration.chapters.learning.study import METHODS, TARGETS, LearningStudy, Paired
 from vibration.chapters.learning.tables import EXCESS_FLOOR, METHOD_NAMES, SHORT_NAMES, decay_rates
+from vibration.presentation.numbers import integer
 
 #: The first target (5 %): the chapter's yardstick for "found the optimum".
 TARGET = TARGETS[0]
@@ -37,8 +38,8 @@ def _gains(g, digits: int = 3) -> str:
 
 
 def _steps(n: int) -> str:
-    """Simulated steps in words: "3.2 million" or "960 000"."""
-    return f"{num(n / 1e6, 3)} million" if n >= 1_000_000 else f"{n:,}".replace(",", " ")
+    """Simulated steps in words: "3.2 million", or a count grouped by the book's rule, "960 000"."""
+    return f"{num(n / 1e6, 3)} million" if n >= 1_000_000 else integer(n)
 
 
 def compared(p: Paired, other: str, verb: str = "costs") -> str:
@@ -71,7 +72,7 @@ def platform_text(st: LearningStudy) -> str:
         "action is held over the step and the state is carried forward by the matrix exponential, so the "
         "environment has no integration error. The agent observes $s = [x, v]$ and applies a force $u$, bounded by "
         f"$u_\\mathrm{{max}} = {num(t.u_max, 4)}$ N; each step costs $(x^2 + v^2 + r u^2)\\,\\Delta t$ with "
-        f"$r = {num(t.r, 3)}$ N⁻² (the reward is its negative). An episode lasts {t.n_steps} steps "
+        f"$r = {num(t.r, 3)}$ N⁻² (the reward is its negative). An episode lasts {integer(t.n_steps)} steps "
         f"({num(t.n_steps * t.dt, 4)} s) from a state drawn uniformly in $[-{num(t.x0_max, 3)}, {num(t.x0_max, 3)}]$ "
         f"m × $[-{num(t.v0_max, 3)}, {num(t.v0_max, 3)}]$ m/s, and the *expected cost* $J$ of a controller is the "
         "mean, over that distribution, of the episode's summed cost (in seconds: every term is dimensionless "
@@ -110,12 +111,12 @@ def horizon_sentence(st: LearningStudy) -> str:
     gap = ref.expected_cost / ref.infinite_horizon_cost - 1.0
     if abs(gap) <= HORIZON_AGREE:
         horizon = (
-            f"over {task.n_steps} steps the stationary gain is as good as the time-varying finite-horizon optimum: "
-            f"$J^*$ and its infinite-horizon value agree to better than {pct(HORIZON_AGREE, 1)}"
+            f"over {integer(task.n_steps)} steps the stationary gain is as good as the time-varying finite-horizon "
+            f"optimum: $J^*$ and its infinite-horizon value agree to better than {pct(HORIZON_AGREE, 1)}"
         )
     else:
         horizon = (
-            f"over only {task.n_steps} steps the episode ends before the state has decayed, so $J^*$ and its "
+            f"over only {integer(task.n_steps)} steps the episode ends before the state has decayed, so $J^*$ and its "
             f"infinite-horizon value differ by {pct(abs(gap), 2)}, and the time-varying finite-horizon law could do "
             "slightly better than the stationary gain"
         )
@@ -285,11 +286,12 @@ def identify_design_sentence(st: LearningStudy) -> str:
         else f"{pct(abs(p.rel))} {'more' if p.diff > 0 else 'less'} than the learned law (± {pct(p.rel_se, 2)})"
     )
     return (
-        f"One {num(d.duration, 3)} s broadband test record ({d.samples} samples, noise {pct(d.noise, 2)} of the "
-        f"response) gives $m = {_pm(d.fitted[0], d.stderr[0])}$ kg, $c = {_pm(d.fitted[1], d.stderr[1])}$ N s/m and "
+        f"One {num(d.duration, 3)} s broadband test record ({integer(d.samples)} samples, noise {pct(d.noise, 2)} of "
+        f"the response) gives $m = {_pm(d.fitted[0], d.stderr[0])}$ kg, $c = {_pm(d.fitted[1], d.stderr[1])}$ N s/m "
+        "and "
         f"$k = {_pm(d.fitted[2], d.stderr[2])}$ N/m (chapter 10's method). The best fixed gain "
         f"designed on that fit, {_gains(d.fixed_gains)}, costs {num(cost, 4)} s "
-        f"on the episodes, {verdict}: {d.samples} samples of data against the learner's "
+        f"on the episodes, {verdict}: {integer(d.samples)} samples of data against the learner's "
         f"{_steps(st.training_steps)} simulated steps."
     )
 

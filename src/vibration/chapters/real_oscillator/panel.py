@@ -16,7 +16,7 @@ import json
 
 from vibration.chapters.real_oscillator.figures import MODEL_STYLE, typical_decay
 from vibration.chapters.real_oscillator.study import RealOscillatorStudy
-from vibration.presentation.panels import line_style, panel_assets
+from vibration.presentation.panels import line_style, panel_assets, screen_words
 
 _counter = itertools.count(1)
 #: Slider ranges: omega_n (rad/s), zeta, Delta (rad): (low, high, step).
@@ -52,12 +52,17 @@ def decay_panel_html(st: RealOscillatorStudy, brake: str = "on") -> str:
         for k, (lo, hi, step) in RANGES.items()
     )
     title = "with" if brake == "on" else "without"
+    controls_named = screen_words(": move ω<sub>n</sub>, ζ and Δ")
+    where = screen_words(
+        ", computed in your browser. The sliders start at the whole-trace fit.",
+        ", with the whole-trace fit's parameters.",
+    )
     return f"""<div class="vro-panel" id="{pid}" data-decay="{e(json.dumps(data))}" \
 data-styles="{e(json.dumps(STYLES))}">
 {panel_assets("vibration.chapters.real_oscillator", "real_oscillator.js", "real_oscillator.css", kit="vro")}\
-<h3 class="vro-title">Free decay {title} the brake, run {d.run}: move ω<sub>n</sub>, ζ and Δ</h3>
+<h3 class="vro-title">Free decay {title} the brake, run {d.run}{controls_named}</h3>
 <p class="vro-sub">Dots: the measured angle (20 Hz, one-degree encoder). Line: the exact free decay with viscous and \
-Coulomb friction from the fitted first extremum, computed in your browser. The sliders start at the whole-trace fit.</p>
+Coulomb friction from the fitted first extremum{where}</p>
 <noscript>This panel needs JavaScript to draw its plot.</noscript>
 <div class="vro-controls">
 {controls}

@@ -13,6 +13,7 @@ from matplotlib.ticker import LogFormatterSciNotation, LogLocator
 from vibration.chapters.solver_accuracy.study import LATE, MACHINE_DEPENDENT, SolverStudy
 from vibration.chapters.solver_accuracy.text import listing, num
 from vibration.presentation.captions import Captioned, panel_words
+from vibration.presentation.numbers import integer
 from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
 
 #: One colour and marker per method (the paper's RK45 in the nominal case's blue).
@@ -106,8 +107,8 @@ def own_steps_figure(study: SolverStudy) -> Captioned:
     n_steps = int(np.count_nonzero(own))
     caption = (
         f"The last {num(n_periods, 2)} forcing periods of the resonance case (t from {num(t0, 3)} to {num(t1, 3)} s): "
-        f"the exact displacement on the output grid (black, dashed) and straight lines through the {n_steps} steps "
-        f"RK45 takes there at SciPy's defaults (blue dots)."
+        "the exact displacement on the output grid (black, dashed) and straight lines through the "
+        f"{integer(n_steps)} steps RK45 takes there at SciPy's defaults (blue dots)."
     )
     remark = (
         f"The peaks of the line through RK45's steps fall short of the exact ones, by {num(100 * s.shortfall, 2)} % "

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from vibration.chapters.solver_accuracy.study import LATE, SolverStudy
 from vibration.presentation.narrative import g
-from vibration.presentation.numbers import approx
+from vibration.presentation.numbers import integer
 from vibration.presentation.numbers import sig as num
 from vibration.presentation.tables import Approx, Column, Table, columns
 
@@ -45,7 +45,10 @@ def listing(items: list[str]) -> str:
 
 def _count(study: SolverStudy, method: str, n: int) -> str:
     """Evaluations for a sentence; a machine-dependent method's count carries its regression tolerance."""
-    return approx(n, 6, rtol=NFEV_RTOL) if any(r.machine_dependent for r in study.ladder(method)) else str(n)
+    text = integer(n)
+    return (
+        Approx(value=n, rtol=NFEV_RTOL).html(text) if any(r.machine_dependent for r in study.ladder(method)) else text
+    )
 
 
 # -- tables ------------------------------------------------------------------------------------
@@ -94,7 +97,7 @@ def ladder_table(study: SolverStudy) -> Table:
         caption=(
             f"Each method at a ladder of tolerances on the resonance case (c = {g(study.osc.c)} N s/m, "
             f"ω = {g(study.force.omega)} rad/s): right-hand-side evaluations and the worst errors over the "
-            f"{study.exact.t.size} output samples, against the exact solution. The first RK45 row is the "
+            f"{integer(study.exact.t.size)} output samples, against the exact solution. The first RK45 row is the "
             "paper's method."
         ),
         name="tab-solvers-ladder",
@@ -193,7 +196,7 @@ def case_text(study: SolverStudy) -> str:
         f"The test case is the paper's resonance case from rest: m = {g(osc.m)} kg, k = {g(osc.k)} N/m, "
         f"c = {g(osc.c)} N s/m (ζ = {g(osc.damping_ratio, 3)}), forced with $F_0$ = {g(study.force.F0)} N at "
         f"ω = {g(w)} rad/s, {g(w / osc.natural_frequency, 4)} times the natural frequency. The window of "
-        f"{g(study.t_end)} s holds {g(study.t_end / study.period, 3)} forcing periods, sampled at {n} points "
+        f"{g(study.t_end)} s holds {g(study.t_end / study.period, 3)} forcing periods, sampled at {integer(n)} points "
         f"({g(per_period, 3)} per period); the exact peak displacement is {num(study.peak)} m."
     )
 
@@ -208,7 +211,7 @@ def ladder_text(study: SolverStudy) -> str:
         f"At SciPy's default tolerances (relative {num(paper.rtol)}, absolute {num(paper.atol)}) the paper's RK45 "
         "misses the exact displacement "
         f"by at most {num(paper.err_x, 3)} m and the exact velocity by at most {num(paper.err_v, 3)} m/s, with "
-        f"{paper.nfev} evaluations of the right-hand side.\n\n"
+        f"{integer(paper.nfev)} evaluations of the right-hand side.\n\n"
         f"The smallest error that every method of the ladder reaches is {num(reach.target, 2)} m. **{cheapest}** "
         f"gets there with the fewest evaluations ({_count(study, cheapest, reach.evaluations(cheapest))})"
         + (f"; the others need {others}." if others else ".")
@@ -231,7 +234,7 @@ def steps_text(study: SolverStudy) -> str:
         "({numref}`tab-solvers-ladder`), is as large: here the solver, not only the grid, limits the peaks."
     )
     return (
-        f"At the paper's tolerance RK45 takes {s.steps} steps, {num(s.per_period, 3)} per forcing period, the "
+        f"At the paper's tolerance RK45 takes {integer(s.steps)} steps, {num(s.per_period, 3)} per forcing period, the "
         f"largest {num(s.max_step, 3)} s. Joined by straight lines, those steps reach on average "
         f"{num(s.late_mean_peak)} m per half period late in the window, and {num(s.late_low_peak)} m at worst, "
         f"where the exact peak is {num(s.late_exact_peak)} m. At a relative tolerance of {num(tight.rtol)} the "

@@ -20,7 +20,15 @@ from vibration.chapters.stability.study import BAND, StabilityStudy
 from vibration.chapters.stability.words import WN, c_text, num, pole_text, sig
 from vibration.physics.model import Oscillator, check_real
 from vibration.physics.stability import StepMetrics, poles, step_metrics, step_response, transmissibility
-from vibration.presentation.panels import KitExplorer, PanelIds, agg_figure, line_style, panel_assets, range_control
+from vibration.presentation.panels import (
+    KitExplorer,
+    PanelIds,
+    agg_figure,
+    line_style,
+    panel_assets,
+    range_control,
+    screen_words,
+)
 
 #: Range of the damping-ratio slider (log scale), 1.
 ZETA_MIN, ZETA_MAX = 0.005, 5.0
@@ -76,12 +84,15 @@ def stability_panel_html(
                                  value=pos)  # fmt: skip
     omega_control = range_control(pid, "w", "vst-omega", "base frequency ω", low=0, high=repr(w_max),
                                   step=repr(w_max / 1000.0), value=repr(omega))  # fmt: skip
+    sub = screen_words(
+        "Move the damping ratio (logarithmic) and the base frequency; computed in your browser from the closed forms.",
+        "Drawn from the closed forms at the starting damping ratio and base frequency.",
+    )
     return f"""<div class="vst-panel" id="{e(panel_id)}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
 {panel_assets("vibration.chapters.stability", "stability.js", "stability.css", kit="vst")}\
 <h3 class="vst-title">Damping as a design choice: m = {m:g} kg, k = {k:g} N/m, ω<sub>n</sub> = {wn:.4g} rad/s</h3>
-<p class="vst-sub">Move the damping ratio (logarithmic) and the base frequency; computed in your browser from the
-closed forms.</p>
+<p class="vst-sub">{sub}</p>
 <noscript>This panel needs JavaScript to draw its plots.</noscript>
 <div class="vst-controls">
 {zeta_control}{omega_control}</div>

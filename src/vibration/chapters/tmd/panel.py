@@ -26,7 +26,15 @@ from vibration.physics.tmd import (
     tmd_magnification,
     tmd_peak,
 )
-from vibration.presentation.panels import KitExplorer, PanelIds, agg_figure, line_style, panel_assets, range_control
+from vibration.presentation.panels import (
+    KitExplorer,
+    PanelIds,
+    agg_figure,
+    line_style,
+    panel_assets,
+    range_control,
+    screen_words,
+)
 from vibration.presentation.style import OKABE_ITO, case_style
 
 __all__ = ["MU_RANGE", "F_RANGE", "ZETA_A_RANGE", "ZETA_P_RANGE", "TMDExplorer", "sliders_text", "tmd_explorer",
@@ -114,13 +122,18 @@ def tmd_panel_html(mu=0.05, f=None, zeta_a=None, zeta_p=0.0, *, panel_id: str | 
         f'<button type="button" class="vtm-rule" data-rule="{key}">{e(name.split(" (")[0])}</button>'
         for key, name in _SLIDER_RULES
     )
+    sub = screen_words(
+        "Move the mass ratio μ and the absorber damping ζ<sub>a</sub> (logarithmic), the tuning "
+        "f = ω<sub>a</sub>/ω<sub>p</sub> and the primary damping ζ<sub>p</sub>; computed in your browser from the "
+        "closed forms.",
+        "Drawn from the closed forms at the starting mass ratio μ, tuning f = ω<sub>a</sub>/ω<sub>p</sub>, "
+        "absorber damping ζ<sub>a</sub> and primary damping ζ<sub>p</sub>.",
+    )
     return f"""<div class="vtm-panel" id="{pid}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
 {panel_assets("vibration.chapters.tmd", "tmd.js", "tmd.css", kit="vtm")}\
 <h3 class="vtm-title">Tuned mass damper: the primary's magnification against the frequency ratio</h3>
-<p class="vtm-sub">Move the mass ratio μ and the absorber damping ζ<sub>a</sub> (logarithmic), the tuning
-f = ω<sub>a</sub>/ω<sub>p</sub> and the primary damping ζ<sub>p</sub>; computed in your browser from the
-closed forms.</p>
+<p class="vtm-sub">{sub}</p>
 <noscript>This panel needs JavaScript to draw its plot.</noscript>
 <div class="vtm-controls">
 {slider("mu", "mass ratio μ = m<sub>a</sub>/m<sub>p</sub> (log)", *MU_RANGE, mu, True)}\
