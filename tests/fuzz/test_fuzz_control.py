@@ -214,14 +214,16 @@ def test_discontinuous_controller_hits_the_budget_in_seconds():
 def test_scalar_arguments_refused(bad):
     refused(ctl.pd_oscillator, OSC, bad, 1.0)
     refused(ctl.lqr, OSC, bad, 1.0, 1.0)
-    refused(ctl.lqr_closed_form, OSC, 1.0, 1.0, bad)
+    refused(ctl.lqr_closed_form, OSC, 1.0, 1.0, r=bad)
     refused(ctl.pid_response, OSC, None, 1.0, bad, 1.0, t_end=1.0, n_points=11)
     refused(ctl.pid_linear_response, OSC, None, bad, 1.0, 1.0, [0.0, 1.0])
     refused(ctl.pid_linear_response, OSC, None, 1.0, 1.0, bad, [0.0, 1.0])
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, t_end=bad)
     refused(ctl.semi_active_response, OSC, "on-off", bad, 0.25, c_min=0.5, c_max=15.0)
     refused(ctl.shaped_move, OSC, None, bad)
-    refused(ctl.response_metrics, [0.0, 1.0, 2.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], bad)
+    refused(
+        ctl.response_metrics, [0.0, 1.0, 2.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0], v_rel=[0.0, 0.0, 0.0], t_steady=bad
+    )
 
 
 @pytest.mark.parametrize(
@@ -233,8 +235,8 @@ def test_array_arguments_refused(bad):
     refused(ctl.skyhook_transmissibility, OSC, 8.0, bad)
     refused(ctl.semi_active_sweep, OSC, "on-off", bad, 0.25, c_min=0.5, c_max=15.0, periods=1)
     good = np.linspace(0.0, 1.0, 5)
-    refused(ctl.response_metrics, bad, good, good, good, 0.5)
-    refused(ctl.response_metrics, good, bad, good, good, 0.5)
+    refused(ctl.response_metrics, bad, good, good, v_rel=good, t_steady=0.5)
+    refused(ctl.response_metrics, good, bad, good, v_rel=good, t_steady=0.5)
     refused(ctl.residual_amplitude, OSC, good, good, bad, 0.0)
 
 
@@ -252,10 +254,10 @@ def test_pid_linear_response_findings():
 def test_response_metrics_refuses_nan_and_unordered_times():
     t = np.linspace(0.0, 1.0, 11)
     x = np.sin(t)
-    refused(ctl.response_metrics, t, np.where(t > 0.5, np.nan, x), x, x, 0.5)
-    refused(ctl.response_metrics, t[::-1], x, x, x, 0.5)
-    refused(ctl.response_metrics, t, x * 1e200, x, x, 0.5)
-    refused(ctl.response_metrics, t, x[:-1], x, x, 0.5)
+    refused(ctl.response_metrics, t, np.where(t > 0.5, np.nan, x), x, v_rel=x, t_steady=0.5)
+    refused(ctl.response_metrics, t[::-1], x, x, v_rel=x, t_steady=0.5)
+    refused(ctl.response_metrics, t, x * 1e200, x, v_rel=x, t_steady=0.5)
+    refused(ctl.response_metrics, t, x[:-1], x, v_rel=x, t_steady=0.5)
 
 
 def test_check_array_messages():
@@ -312,7 +314,7 @@ def test_simulate_controlled_fuzz(osc, gain, u_max, t_end):
 @given(osc=scalar_osc, q_x=extreme, q_v=extreme, r=extreme)
 def test_lqr_fuzz(osc, q_x, q_v, r):
     guarded(ctl.lqr, osc, q_x, q_v, r)
-    guarded(ctl.lqr_closed_form, osc, q_x, q_v, r)
+    guarded(ctl.lqr_closed_form, osc, q_x, q_v, r=r)
 
 
 @settings(max_examples=20, deadline=None)
@@ -361,7 +363,7 @@ def test_response_metrics_fuzz(x, scale, ts):
     t = np.linspace(0.0, 1.0, n) if n else np.array([])
     with np.errstate(over="ignore", invalid="ignore"):
         xa = np.asarray(x, dtype=float) * scale
-    guarded(ctl.response_metrics, t, xa, xa, xa, ts)
+    guarded(ctl.response_metrics, t, xa, xa, v_rel=xa, t_steady=ts)
     guarded(ctl.residual_amplitude, OSC, t, xa, xa, ts)
 
 

@@ -109,7 +109,7 @@ def test_lqr_matches_scipy_riccati_and_the_closed_form(seed):
     K = (B.T @ P / r).ravel()
     assert_allclose(res.P, P, rtol=1e-8, atol=1e-12 * np.max(np.abs(P)))
     assert_allclose(res.K, K, rtol=1e-8)
-    assert_allclose(lqr_closed_form(osc, q_x, q_v, r), K, rtol=1e-8)
+    assert_allclose(lqr_closed_form(osc, q_x, q_v, r=r), K, rtol=1e-8)
     resid = A.T @ res.P + res.P @ A - res.P @ B @ B.T @ res.P / r + Q
     assert np.max(np.abs(resid)) < 1e-8 * (np.max(np.abs(Q)) + np.max(np.abs(A.T @ res.P)))
     cl = res.closed_loop
@@ -121,7 +121,7 @@ def test_lqr_matches_scipy_riccati_and_the_closed_form(seed):
 
 
 def test_lqr_closed_form_without_cancellation_at_tiny_weights():
-    k0, k1 = lqr_closed_form(OSC, 1e-12, 1e-14, 1.0)
+    k0, k1 = lqr_closed_form(OSC, 1e-12, 1e-14, r=1.0)
     assert_allclose(k0, 1e-12 / (2 * 20.0), rtol=1e-12)  # sqrt(k^2 + a) - k ~ a / (2k)
     assert_allclose(k1, (1e-14 + 2 * k0) / (2 * 0.5), rtol=1e-9)
 
@@ -417,14 +417,14 @@ def test_shaper_needs_an_underdamped_oscillator(raises_parameter_error):
 
 def test_metrics_of_a_known_signal():
     t = np.linspace(0.0, 4 * np.pi, 40001)
-    m = response_metrics(t, 0.3 * np.sin(t), 2.0 * np.cos(t), np.cos(t), 2 * np.pi)
+    m = response_metrics(t, 0.3 * np.sin(t), 2.0 * np.cos(t), v_rel=np.cos(t), t_steady=2 * np.pi)
     assert_allclose([m.peak_x, m.rms_x, m.peak_x_ss, m.rms_x_ss], [0.3, 0.3 / 2**0.5, 0.3, 0.3 / 2**0.5], rtol=1e-6)
     assert_allclose([m.peak_u, m.rms_u, m.energy], [2.0, 2**0.5, 4 * np.pi], rtol=1e-6)
 
 
 def test_metrics_bad_input(raises_parameter_error):
     with raises_parameter_error("t_steady", 9.0):
-        response_metrics([0.0, 1.0, 2.0], [0, 0, 0], [0, 0, 0], [0, 0, 0], 9.0)
+        response_metrics([0.0, 1.0, 2.0], [0, 0, 0], [0, 0, 0], v_rel=[0, 0, 0], t_steady=9.0)
 
 
 def test_a_stiff_mr_damper_run_is_refined_instead_of_overflowing():

@@ -175,7 +175,7 @@ def _lqr_check(osc: Oscillator, design: LQRResult, q_x: float, q_v: float, r: fl
     scale = float(np.max(np.abs(K_sp)))
     return {
         "scipy": float(np.max(np.abs(design.K - K_sp))) / scale,
-        "closed form": float(np.max(np.abs(design.K - lqr_closed_form(osc, q_x, q_v, r)))) / scale,
+        "closed form": float(np.max(np.abs(design.K - lqr_closed_form(osc, q_x, q_v, r=r)))) / scale,
         "residual": float(np.max(np.abs(resid))) / float(np.max(np.abs(design.P)) * max(1.0, np.max(np.abs(A)))),
     }
 
@@ -265,7 +265,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
         n_points=p.n_points,
     )  # fmt: skip
     xs["PID"], us["PID"], vs["PID"] = reg.x, reg.u, reg.v
-    metrics = {name: response_metrics(t, xs[name], us[name], vs[name], ts) for name in xs}
+    metrics = {name: response_metrics(t, xs[name], us[name], v_rel=vs[name], t_steady=ts) for name in xs}
 
     designs = {}
     for name in DESIGNS:

@@ -151,7 +151,7 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
             n_points=p.n_points,
         )  # fmt: skip
     ts = t_steady(p.t_end, omega)
-    metrics = {name: response_metrics(r.t, r.x, r.f, r.v - r.v_base, ts) for name, r in runs.items()}
+    metrics = {name: response_metrics(r.t, r.x, r.f, v_rel=r.v - r.v_base, t_steady=ts) for name, r in runs.items()}
     refine = {
         spp: float(semi_active_sweep(osc, "on-off", np.array([wn]), Y, steps_per_period=spp, **kw).peak[0])
         for spp in REFINE_STEPS
