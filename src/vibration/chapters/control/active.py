@@ -279,7 +279,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
             amplitude=X,
             u_rms=metrics[name].rms_u,
             floor=float(force_floor(osc, force, X)),
-            costs=loop_costs(osc, kx, kv, ki, p.omega_res),
+            costs=loop_costs(osc, kx, kv, ki=ki, omega=p.omega_res),
         )
 
     moves = {}
@@ -325,7 +325,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
         loops=loops,
         passive_amplitude=steady_state(osc, force).amplitude,
         designs=designs,
-        pid_poles=pid_poles(osc, p.pid_kp, p.pid_ki, p.pid_kd),
+        pid_poles=pid_poles(osc, p.pid_kp, p.pid_ki, kd=p.pid_kd),
         tradeoff=_tradeoff(osc, force, p, design, loops["PD"], n_r),
         u_max=p.u_max,
         x_ref=p.x_ref,
