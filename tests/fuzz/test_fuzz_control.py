@@ -122,7 +122,7 @@ def test_pi_with_a_limit_returns_fast_and_sticks_on_the_limit():
     """The PI case of the report (kd = 0, 10 s window) that used to run for minutes."""
     t0 = time.perf_counter()
     r = guarded(
-        ctl.pid_response, OSC, RES, 133.6, 512.0, 0.0, u_max=12.0, anti_windup="clamping", x_ref=0.5, t_end=10.0
+        ctl.pid_response, OSC, RES, 133.6, ki=512.0, kd=0.0, u_max=12.0, anti_windup="clamping", x_ref=0.5, t_end=10.0
     )
     assert time.perf_counter() - t0 < 5.0
     assert isinstance(r, ctl.PIDResponse)
@@ -134,7 +134,7 @@ def test_clamping_sliding_mode_of_chapter_7(omega):
     """Chapter 7's move at omega_res 2.2 to 3: a sliding mode on u_d = u_max; fast, on the limit, finite."""
     t0 = time.perf_counter()
     f = SineForce(F0=5.0, omega=omega)
-    r = guarded(ctl.pid_response, OSC, f, 133.6, 512.0, 18.7, u_max=12.0, anti_windup="clamping", x_ref=0.5)
+    r = guarded(ctl.pid_response, OSC, f, 133.6, ki=512.0, kd=18.7, u_max=12.0, anti_windup="clamping", x_ref=0.5)
     assert time.perf_counter() - t0 < 5.0
     assert r.nfev < 100_000
     assert np.max(np.abs(r.u)) <= 12.0 * (1 + 1e-12)
@@ -150,8 +150,8 @@ def test_clamping_agrees_with_a_fine_fixed_step_solution():
         OSC,
         SineForce(F0=5.0, omega=w),
         kp,
-        ki,
-        kd,
+        ki=ki,
+        kd=kd,
         u_max=umax,
         anti_windup="clamping",
         x_ref=xr,
@@ -186,15 +186,15 @@ def test_clamping_agrees_with_a_fine_fixed_step_solution():
 
 def test_none_and_back_calculation_agree_with_the_unlimited_loop_when_never_saturated():
     for aw in ctl.ANTI_WINDUP:
-        r = ctl.pid_response(OSC, RES, 80.0, 100.0, 10.0, u_max=1e6, anti_windup=aw, t_end=10.0, n_points=101)
-        x, _, _ = ctl.pid_linear_response(OSC, RES, 80.0, 100.0, 10.0, r.t)
+        r = ctl.pid_response(OSC, RES, 80.0, ki=100.0, kd=10.0, u_max=1e6, anti_windup=aw, t_end=10.0, n_points=101)
+        x, _, _ = ctl.pid_linear_response(OSC, RES, 80.0, ki=100.0, kd=10.0, t=r.t)
         assert np.max(np.abs(r.x - x)) < 1e-8
 
 
 @pytest.mark.parametrize("k", [1e8, 1e12])
 def test_stiff_plants_are_refused_in_seconds(k):
     osc = Oscillator(m=1.0, c=0.5, k=k)
-    err = refused(ctl.pid_response, osc, RES, 80.0, 100.0, 10.0, u_max=12.0, anti_windup="clamping")
+    err = refused(ctl.pid_response, osc, RES, 80.0, ki=100.0, kd=10.0, u_max=12.0, anti_windup="clamping")
     assert "t_end" in str(err)
     err = refused(ctl.simulate_controlled, osc, lambda t, x, v: -x, RES)
     assert "t_end" in str(err)
@@ -215,9 +215,9 @@ def test_scalar_arguments_refused(bad):
     refused(ctl.pd_oscillator, OSC, bad, 1.0)
     refused(ctl.lqr, OSC, bad, 1.0, 1.0)
     refused(ctl.lqr_closed_form, OSC, 1.0, 1.0, r=bad)
-    refused(ctl.pid_response, OSC, None, 1.0, bad, 1.0, t_end=1.0, n_points=11)
-    refused(ctl.pid_linear_response, OSC, None, bad, 1.0, 1.0, [0.0, 1.0])
-    refused(ctl.pid_linear_response, OSC, None, 1.0, 1.0, bad, [0.0, 1.0])
+    refused(ctl.pid_response, OSC, None, 1.0, ki=bad, kd=1.0, t_end=1.0, n_points=11)
+    refused(ctl.pid_linear_response, OSC, None, bad, ki=1.0, kd=1.0, t=[0.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, None, 1.0, ki=1.0, kd=bad, t=[0.0, 1.0])
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, t_end=bad)
     refused(ctl.semi_active_response, OSC, "on-off", bad, 0.25, c_min=0.5, c_max=15.0)
     refused(ctl.shaped_move, OSC, None, bad)
@@ -230,7 +230,7 @@ def test_scalar_arguments_refused(bad):
     "bad", BAD_ARRAYS, ids=lambda b: type(b).__name__ + str(np.shape(b)) if b is not None else "None"
 )
 def test_array_arguments_refused(bad):
-    refused(ctl.pid_linear_response, OSC, None, 80.0, 100.0, 10.0, bad)
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=10.0, t=bad)
     refused(ctl.passive_transmissibility, OSC, bad)
     refused(ctl.skyhook_transmissibility, OSC, 8.0, bad)
     refused(ctl.semi_active_sweep, OSC, "on-off", bad, 0.25, c_min=0.5, c_max=15.0, periods=1)
@@ -242,13 +242,13 @@ def test_array_arguments_refused(bad):
 
 def test_pid_linear_response_findings():
     """The findings of issue 20: nan gains, t=None, negative times, negative ki."""
-    refused(ctl.pid_linear_response, OSC, None, math.nan, 100.0, 10.0, [0.0, 1.0])
-    refused(ctl.pid_linear_response, OSC, None, 80.0, 100.0, 10.0, None)
-    refused(ctl.pid_linear_response, OSC, None, 80.0, 100.0, 10.0, [-1.0, 1.0])
-    refused(ctl.pid_linear_response, OSC, None, 80.0, -100.0, 10.0, [0.0, 1.0])
-    refused(ctl.pid_linear_response, OSC, "force", 80.0, 100.0, 10.0, [0.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, None, math.nan, ki=100.0, kd=10.0, t=[0.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=10.0, t=None)
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=10.0, t=[-1.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=-100.0, kd=10.0, t=[0.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, "force", 80.0, ki=100.0, kd=10.0, t=[0.0, 1.0])
     # an unstable loop overflows at large times: an error, not nan
-    refused(ctl.pid_linear_response, OSC, None, 80.0, 100.0, -50.0, [0.0, 1e6], 0.1)
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=-50.0, t=[0.0, 1e6], x_ref=0.1)
 
 
 def test_response_metrics_refuses_nan_and_unordered_times():
@@ -282,7 +282,15 @@ def test_huge_sizes_refused_quickly():
     refused(ctl.semi_active_response, OSC, "mr", 4.47, 0.25, t_end=1e6)
     refused(ctl.semi_active_sweep, OSC, "mr", np.linspace(1.0, 10.0, 1000), 0.25, periods=1000)
     refused(ctl.semi_active_sweep, OSC, "on-off", [1e-6], 0.25, c_max=15.0)
-    refused(ctl.pid_linear_response, Oscillator(m=1.0, c=0.0, k=1.0), None, 0.0, 1e-300, 0.0, np.linspace(0, 1, 10**7))
+    refused(
+        ctl.pid_linear_response,
+        Oscillator(m=1.0, c=0.0, k=1.0),
+        None,
+        0.0,
+        ki=1e-300,
+        kd=0.0,
+        t=np.linspace(0, 1, 10**7),
+    )
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, t_end=1e300)
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, max_step=1e-9)
 
@@ -294,14 +302,24 @@ def test_huge_sizes_refused_quickly():
 @given(osc=scalar_osc, kp=extreme, ki=extreme, kd=extreme, u_max=st.one_of(st.none(), extreme), x_ref=extreme)
 def test_pid_response_fuzz(osc, kp, ki, kd, u_max, x_ref):
     guarded(
-        ctl.pid_response, osc, RES, kp, ki, kd, u_max=u_max, anti_windup="clamping", x_ref=x_ref, t_end=2.0, n_points=21
+        ctl.pid_response,
+        osc,
+        RES,
+        kp,
+        ki=ki,
+        kd=kd,
+        u_max=u_max,
+        anti_windup="clamping",
+        x_ref=x_ref,
+        t_end=2.0,
+        n_points=21,
     )
 
 
 @settings(max_examples=30, deadline=None)
 @given(osc=scalar_osc, kp=extreme, ki=extreme, kd=extreme, x_ref=extreme, tmax=extreme)
 def test_pid_linear_response_fuzz(osc, kp, ki, kd, x_ref, tmax):
-    guarded(ctl.pid_linear_response, osc, RES, kp, ki, kd, [0.0, tmax], x_ref)
+    guarded(ctl.pid_linear_response, osc, RES, kp, ki=ki, kd=kd, t=[0.0, tmax], x_ref=x_ref)
 
 
 @settings(max_examples=20, deadline=None)

@@ -146,8 +146,8 @@ def test_unlimited_pid_matches_the_matrix_exponential(seed):
     rng = np.random.default_rng(200 + seed)
     kp, ki, kd = rng.uniform(10, 150), rng.uniform(10, 500), rng.uniform(2, 20)
     x_ref = rng.uniform(-1, 1)
-    r = pid_response(OSC, RES, kp, ki, kd, x_ref=x_ref, t_end=20.0, n_points=801)
-    x, v, i = pid_linear_response(OSC, RES, kp, ki, kd, r.t, x_ref)
+    r = pid_response(OSC, RES, kp, ki=ki, kd=kd, x_ref=x_ref, t_end=20.0, n_points=801)
+    x, v, i = pid_linear_response(OSC, RES, kp, ki=ki, kd=kd, t=r.t, x_ref=x_ref)
     assert np.max(np.abs(r.x - x)) < 1e-8 * np.max(np.abs(x))
     assert np.max(np.abs(r.v - v)) < 1e-8 * np.max(np.abs(v))
     assert np.max(np.abs(r.integral - i)) < 1e-8 * np.max(np.abs(i))
@@ -184,7 +184,9 @@ def _independent_pid(kp, ki, kd, u_max, mode, x_ref, t):
 )
 def test_limited_pid_agrees_with_an_independent_integration(mode):
     t_end = 8.0
-    r = pid_response(OSC, RES, 133.6, 512.0, 18.7, u_max=12.0, anti_windup=mode, x_ref=0.5, t_end=t_end, n_points=161)
+    r = pid_response(
+        OSC, RES, 133.6, ki=512.0, kd=18.7, u_max=12.0, anti_windup=mode, x_ref=0.5, t_end=t_end, n_points=161
+    )
     ref = _independent_pid(133.6, 512.0, 18.7, 12.0, mode, 0.5, r.t)
     assert np.max(np.abs(r.x - ref[0])) < 1e-6
     assert np.max(np.abs(r.integral - ref[2])) < 1e-6
@@ -193,7 +195,9 @@ def test_limited_pid_agrees_with_an_independent_integration(mode):
 
 def test_anti_windup_cuts_the_overshoot_and_the_integrator():
     runs = {
-        m: pid_response(OSC, RES, 133.6, 512.0, 18.7, u_max=12.0, anti_windup=m, x_ref=0.5, t_end=30.0, n_points=601)
+        m: pid_response(
+            OSC, RES, 133.6, ki=512.0, kd=18.7, u_max=12.0, anti_windup=m, x_ref=0.5, t_end=30.0, n_points=601
+        )
         for m in ("none", "clamping", "back-calculation")
     }
     over = {m: np.max(r.x) - 0.5 for m, r in runs.items()}
@@ -204,11 +208,11 @@ def test_anti_windup_cuts_the_overshoot_and_the_integrator():
 
 def test_pid_bad_input(raises_parameter_error):
     with raises_parameter_error("anti_windup", "conditional", "clamping"):
-        pid_response(OSC, RES, 1.0, 1.0, 1.0, anti_windup="conditional")
+        pid_response(OSC, RES, 1.0, ki=1.0, kd=1.0, anti_windup="conditional")
     with raises_parameter_error("ki", 0.0, "> 0"):
-        pid_response(OSC, RES, 1.0, 0.0, 1.0)
+        pid_response(OSC, RES, 1.0, ki=0.0, kd=1.0)
     with raises_parameter_error("u_max", -1.0, "> 0"):
-        pid_response(OSC, RES, 1.0, 1.0, 1.0, u_max=-1.0)
+        pid_response(OSC, RES, 1.0, ki=1.0, kd=1.0, u_max=-1.0)
 
 
 # ----------------------------------------------------------------------------- simulation API

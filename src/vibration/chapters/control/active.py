@@ -261,7 +261,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     pd_error = float(np.max(np.abs(sim_pd.x - xs["PD"])))
 
     reg = pid_response(
-        osc, force, p.pid_kp, p.pid_ki, p.pid_kd, u_max=p.u_max, anti_windup="clamping", t_end=p.t_end,
+        osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, u_max=p.u_max, anti_windup="clamping", t_end=p.t_end,
         n_points=p.n_points,
     )  # fmt: skip
     xs["PID"], us["PID"], vs["PID"] = reg.x, reg.u, reg.v
@@ -286,7 +286,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     for scheme in MOVE_SCHEMES:
         limit = {} if scheme == "unlimited" else {"u_max": p.u_max, "anti_windup": scheme}
         run = pid_response(
-            osc, force, p.pid_kp, p.pid_ki, p.pid_kd, x_ref=p.x_ref, t_end=p.t_end, n_points=p.n_points, **limit
+            osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, x_ref=p.x_ref, t_end=p.t_end, n_points=p.n_points, **limit
         )
         moves[scheme] = _move_run(scheme, run, p.x_ref, ts)
 
@@ -296,7 +296,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     if math.isfinite(x_max) and x_max > 0.0:
         x_ok = FEASIBLE_FRACTION * x_max * (1.0 if p.x_ref >= 0.0 else -1.0)
         run = pid_response(
-            osc, force, p.pid_kp, p.pid_ki, p.pid_kd, u_max=p.u_max, anti_windup="clamping", x_ref=x_ok,
+            osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, u_max=p.u_max, anti_windup="clamping", x_ref=x_ok,
             t_end=p.t_end, n_points=p.n_points,
         )  # fmt: skip
         ok_run = _move_run("clamping", run, x_ok, ts)
