@@ -202,7 +202,7 @@ def test_stiff_plants_are_refused_in_seconds(k):
 
 def test_discontinuous_controller_hits_the_budget_in_seconds():
     """An on-off law handed to the generic simulator chatters; it must stop with a ParameterError, fast."""
-    law = ctl.semi_active_controller("on-off", 8.0, 0.5, 15.0, 0.25, 4.47)
+    law = ctl.semi_active_controller("on-off", 8.0, 0.5, c_max=15.0, Y=0.25, omega=4.47)
     out = guarded(ctl.simulate_controlled, OSC, law, base=(0.25, 4.47), t_end=50.0, rtol=1e-12, atol=1e-14)
     assert isinstance(out, ParameterError | ctl.ControlledResponse)
 
@@ -219,7 +219,7 @@ def test_scalar_arguments_refused(bad):
     refused(ctl.pid_linear_response, OSC, None, bad, ki=1.0, kd=1.0, t=[0.0, 1.0])
     refused(ctl.pid_linear_response, OSC, None, 1.0, ki=1.0, kd=bad, t=[0.0, 1.0])
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, t_end=bad)
-    refused(ctl.semi_active_response, OSC, "on-off", bad, 0.25, c_min=0.5, c_max=15.0)
+    refused(ctl.semi_active_response, OSC, "on-off", bad, Y=0.25, c_min=0.5, c_max=15.0)
     refused(ctl.shaped_move, OSC, None, bad)
     refused(
         ctl.response_metrics, [0.0, 1.0, 2.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0], v_rel=[0.0, 0.0, 0.0], t_steady=bad
@@ -233,7 +233,7 @@ def test_array_arguments_refused(bad):
     refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=10.0, t=bad)
     refused(ctl.passive_transmissibility, OSC, bad)
     refused(ctl.skyhook_transmissibility, OSC, 8.0, bad)
-    refused(ctl.semi_active_sweep, OSC, "on-off", bad, 0.25, c_min=0.5, c_max=15.0, periods=1)
+    refused(ctl.semi_active_sweep, OSC, "on-off", bad, Y=0.25, c_min=0.5, c_max=15.0, periods=1)
     good = np.linspace(0.0, 1.0, 5)
     refused(ctl.response_metrics, bad, good, good, v_rel=good, t_steady=0.5)
     refused(ctl.response_metrics, good, bad, good, v_rel=good, t_steady=0.5)
@@ -279,9 +279,9 @@ def test_check_array_messages():
 
 def test_huge_sizes_refused_quickly():
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, n_points=10**9)
-    refused(ctl.semi_active_response, OSC, "mr", 4.47, 0.25, t_end=1e6)
-    refused(ctl.semi_active_sweep, OSC, "mr", np.linspace(1.0, 10.0, 1000), 0.25, periods=1000)
-    refused(ctl.semi_active_sweep, OSC, "on-off", [1e-6], 0.25, c_max=15.0)
+    refused(ctl.semi_active_response, OSC, "mr", 4.47, Y=0.25, t_end=1e6)
+    refused(ctl.semi_active_sweep, OSC, "mr", np.linspace(1.0, 10.0, 1000), Y=0.25, periods=1000)
+    refused(ctl.semi_active_sweep, OSC, "on-off", [1e-6], Y=0.25, c_max=15.0)
     refused(
         ctl.pid_linear_response,
         Oscillator(m=1.0, c=0.0, k=1.0),
@@ -344,13 +344,13 @@ def test_lqr_fuzz(osc, q_x, q_v, r):
     c_max=positive,
 )
 def test_semi_active_response_fuzz(osc, law, omega, Y, c_max):
-    guarded(ctl.semi_active_response, osc, law, omega, Y, c_sky=8.0, c_min=0.5, c_max=c_max, t_end=2.0, n_points=21)
+    guarded(ctl.semi_active_response, osc, law, omega, Y=Y, c_sky=8.0, c_min=0.5, c_max=c_max, t_end=2.0, n_points=21)
 
 
 @settings(max_examples=15, deadline=None)
 @given(osc=scalar_osc, law=st.sampled_from(ctl.SEMI_ACTIVE_LAWS), omega=extreme, Y=extreme, c_max=positive)
 def test_semi_active_sweep_fuzz(osc, law, omega, Y, c_max):
-    guarded(ctl.semi_active_sweep, osc, law, [omega], Y, c_sky=8.0, c_min=0.5, c_max=c_max, periods=2)
+    guarded(ctl.semi_active_sweep, osc, law, [omega], Y=Y, c_sky=8.0, c_min=0.5, c_max=c_max, periods=2)
 
 
 @settings(max_examples=30, deadline=None)
@@ -395,7 +395,7 @@ def test_pd_fuzz(osc, kp, kd):
 @settings(max_examples=20, deadline=None)
 @given(law=st.sampled_from([*ctl.SEMI_ACTIVE_LAWS, "x"]), c=extreme, Y=extreme, w=extreme)
 def test_semi_active_controller_fuzz(law, c, Y, w):
-    f = guarded(ctl.semi_active_controller, law, 8.0, 0.5, c, Y, w, finite=False)
+    f = guarded(ctl.semi_active_controller, law, 8.0, 0.5, c_max=c, Y=Y, omega=w, finite=False)
     if callable(f):
         _finite(guarded(f, 0.1, 0.01, 0.2))
 
@@ -403,5 +403,5 @@ def test_semi_active_controller_fuzz(law, c, Y, w):
 def test_sweep_starts_in_the_linear_steady_state():
     """The ideal skyhook is linear: started in its steady state, one decay time constant of settling is enough."""
     w = np.array([0.7, 1.0, 1.5]) * OSC.natural_frequency
-    s = ctl.semi_active_sweep(OSC, "skyhook", w, 0.25, c_sky=8.0, c_min=0.5, c_max=15.0, settle=1.0, periods=2)
+    s = ctl.semi_active_sweep(OSC, "skyhook", w, Y=0.25, c_sky=8.0, c_min=0.5, c_max=15.0, settle=1.0, periods=2)
     assert np.max(np.abs(s.fundamental - ctl.skyhook_transmissibility(OSC, 8.0, w))) < 1e-6

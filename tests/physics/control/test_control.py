@@ -280,7 +280,7 @@ def test_skyhook_bad_input(raises_parameter_error):
 @pytest.mark.parametrize("law", ["passive", "skyhook"])
 def test_semi_active_kernel_reproduces_the_linear_closed_forms(law):
     w = np.array([0.5, 1.0, 1.7, 3.0]) * WN
-    s = semi_active_sweep(OSC, law, w, 0.25, c_sky=8.0, c_min=1.5, c_max=15.0, periods=4)
+    s = semi_active_sweep(OSC, law, w, Y=0.25, c_sky=8.0, c_min=1.5, c_max=15.0, periods=4)
     exact = (
         passive_transmissibility(Oscillator(m=1.0, c=2.0, k=20.0), w)
         if law == "passive"
@@ -294,7 +294,7 @@ def test_on_off_kernel_converges_with_the_step():
     """The on-off law switches the force discontinuously, which solve_ivp grinds through; check RK4 by refinement."""
     Y, w = 0.25, 1.1 * WN
     runs = [
-        semi_active_response(OSC, "on-off", w, Y, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=6.0, n_points=61,
+        semi_active_response(OSC, "on-off", w, Y=Y, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=6.0, n_points=61,
                              steps_per_period=n)
         for n in (2000, 16000)
     ]  # fmt: skip
@@ -304,8 +304,8 @@ def test_on_off_kernel_converges_with_the_step():
 @pytest.mark.parametrize(("law", "tol", "rtol"), [("clipped", 1e-6, 1e-10)])
 def test_semi_active_kernel_agrees_with_solve_ivp_on_the_callable(law, tol, rtol):
     Y, w = 0.25, 1.1 * WN
-    rk4 = semi_active_response(OSC, law, w, Y, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=6.0, n_points=61)
-    ctl = semi_active_controller(law, 8.0, 0.5, 15.0, Y, w)
+    rk4 = semi_active_response(OSC, law, w, Y=Y, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=6.0, n_points=61)
+    ctl = semi_active_controller(law, 8.0, 0.5, c_max=15.0, Y=Y, omega=w)
     ref = simulate_controlled(OSC, ctl, base=(Y, w), t_end=6.0, n_points=61, rtol=rtol, atol=1e-12)
     assert np.max(np.abs(rk4.x - ref.x)) < tol * Y
     assert np.max(np.abs(rk4.f - ref.u)) < 50 * tol * np.max(np.abs(ref.u))
@@ -334,7 +334,7 @@ def _mr_reference(d, law_on, Y, w, t):
 def test_mr_damper_kernel_agrees_with_an_independent_integration():
     Y, w = 0.25, WN
     d = SPENCER_1997.scaled(Y / 0.015, 10.0 / SPENCER_1997.yield_force)
-    rk4 = semi_active_response(OSC, "mr", w, Y, c_sky=8.0, damper=d, t_end=4.0, n_points=41, dt_max=5e-5)
+    rk4 = semi_active_response(OSC, "mr", w, Y=Y, c_sky=8.0, damper=d, t_end=4.0, n_points=41, dt_max=5e-5)
     ref = _mr_reference(d, True, Y, w, rk4.t)
     assert np.max(np.abs(rk4.x - ref[0])) < 2e-4 * Y
     assert np.max(np.abs(rk4.command - ref[4])) < 2e-2 * d.v_max
@@ -350,7 +350,7 @@ def test_mr_scaling_is_a_similitude():
 
 def test_clipped_skyhook_beats_every_passive_damper_at_resonance_and_keeps_isolation():
     w = np.array([1.0, 1.5, 2.0, 3.0]) * WN
-    s = semi_active_sweep(OSC, "clipped", w, 0.25, c_sky=8.0, c_min=0.5, c_max=15.0)
+    s = semi_active_sweep(OSC, "clipped", w, Y=0.25, c_sky=8.0, c_min=0.5, c_max=15.0)
     assert s.peak[0] < 1.0  # every passive c gives T(wn) > 1 (see the skyhook test)
     soft = passive_transmissibility(Oscillator(m=1.0, c=1.0, k=20.0), w[1:])
     assert np.all(s.peak[1:] <= soft * 1.001)
@@ -358,11 +358,11 @@ def test_clipped_skyhook_beats_every_passive_damper_at_resonance_and_keeps_isola
 
 def test_semi_active_bad_input(raises_parameter_error):
     with raises_parameter_error("law", "bang-bang", "on-off"):
-        semi_active_sweep(OSC, "bang-bang", [1.0], 0.25)
+        semi_active_sweep(OSC, "bang-bang", [1.0], Y=0.25)
     with raises_parameter_error("c_max", 0.1, ">= 0.5"):
-        semi_active_sweep(OSC, "clipped", [1.0], 0.25, c_min=0.5, c_max=0.1)
+        semi_active_sweep(OSC, "clipped", [1.0], Y=0.25, c_min=0.5, c_max=0.1)
     with raises_parameter_error("c + c_min"):
-        semi_active_sweep(Oscillator(m=1.0, c=0.0, k=20.0), "clipped", [1.0], 0.25, c_min=0.0, c_max=1.0)
+        semi_active_sweep(Oscillator(m=1.0, c=0.0, k=20.0), "clipped", [1.0], Y=0.25, c_min=0.0, c_max=1.0)
 
 
 # ----------------------------------------------------------------------------- input shaping
@@ -438,8 +438,8 @@ def test_a_stiff_mr_damper_run_is_refined_instead_of_overflowing():
 
     osc, w, Y = vibration.Oscillator(m=4.0, c=4.0, k=400.0), 9.020284133645712, 0.1
     damper = SPENCER_1997.scaled(Y / SPENCER_1997_STROKE, 10.0 / SPENCER_1997.yield_force)
-    auto = semi_active_sweep(osc, "mr", [w], Y, damper=damper, periods=4)
-    short = semi_active_sweep(osc, "mr", [w], Y, damper=damper, periods=4, dt_max=2e-4 / 16)
+    auto = semi_active_sweep(osc, "mr", [w], Y=Y, damper=damper, periods=4)
+    short = semi_active_sweep(osc, "mr", [w], Y=Y, damper=damper, periods=4, dt_max=2e-4 / 16)
     assert np.isfinite(auto.peak[0]) and auto.peak[0] == pytest.approx(short.peak[0], rel=1e-6)
-    run = semi_active_response(osc, "mr", w, Y, damper=damper, t_end=5.0)
+    run = semi_active_response(osc, "mr", w, Y=Y, damper=damper, t_end=5.0)
     assert np.all(np.isfinite(run.x))
