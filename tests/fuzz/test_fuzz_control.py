@@ -237,7 +237,7 @@ def test_array_arguments_refused(bad):
     good = np.linspace(0.0, 1.0, 5)
     refused(ctl.response_metrics, bad, good, good, v_rel=good, t_steady=0.5)
     refused(ctl.response_metrics, good, bad, good, v_rel=good, t_steady=0.5)
-    refused(ctl.residual_amplitude, OSC, good, good, bad, 0.0)
+    refused(ctl.residual_amplitude, OSC, good, good, v=bad, target=0.0)
 
 
 def test_pid_linear_response_findings():
@@ -367,7 +367,7 @@ def test_shaping_fuzz(osc, distance, t_end, n):
     sh = shaper if isinstance(shaper, ctl.Shaper) else None
     guarded(ctl.zvd_shaper, osc)
     guarded(ctl.shaper_residual, sh, osc)
-    guarded(ctl.shaped_move, osc, sh, distance, t_end, n)
+    guarded(ctl.shaped_move, osc, sh, distance, t_end=t_end, n_points=n)
 
 
 @settings(max_examples=30, deadline=None)
@@ -382,7 +382,7 @@ def test_response_metrics_fuzz(x, scale, ts):
     with np.errstate(over="ignore", invalid="ignore"):
         xa = np.asarray(x, dtype=float) * scale
     guarded(ctl.response_metrics, t, xa, xa, v_rel=xa, t_steady=ts)
-    guarded(ctl.residual_amplitude, OSC, t, xa, xa, ts)
+    guarded(ctl.residual_amplitude, OSC, t, xa, v=xa, target=ts)
 
 
 @settings(max_examples=30, deadline=None)

@@ -377,7 +377,7 @@ def test_shaper_amplitudes_and_zero_residual_at_the_design_frequency(make):
         assert np.all(s.amplitudes > 0) and s.times[0] == 0.0
         t, x, v, _ = shaped_move(osc, s, 0.1, t_end=12.0, n_points=1201)
         after = t > s.duration + 1e-9
-        assert np.max(residual_amplitude(osc, t[after], x[after], v[after], 0.1)) < 1e-12
+        assert np.max(residual_amplitude(osc, t[after], x[after], v=v[after], target=0.1)) < 1e-12
 
 
 @pytest.mark.parametrize("ratio", [0.7, 0.9, 1.05, 1.2, 1.5])
@@ -387,7 +387,10 @@ def test_residual_formula_matches_the_simulated_move(ratio):
         t, x, v, _ = shaped_move(actual, s, 0.1, t_end=8.0, n_points=801)
         t0, x0, v0, _ = shaped_move(actual, None, 0.1, t_end=8.0, n_points=801)
         after = t > s.duration + 1e-9
-        ratio_sim = residual_amplitude(actual, t, x, v, 0.1)[after] / residual_amplitude(actual, t0, x0, v0, 0.1)[after]
+        ratio_sim = (
+            residual_amplitude(actual, t, x, v=v, target=0.1)[after]
+            / residual_amplitude(actual, t0, x0, v=v0, target=0.1)[after]
+        )
         # Singer and Seering compare with the unshaped ringing t_N earlier (each just after its last impulse)
         ratio_sim *= math.exp(-actual.decay_rate * s.duration)
         assert_allclose(ratio_sim, shaper_residual(s, actual), rtol=1e-9)
