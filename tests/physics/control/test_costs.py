@@ -154,7 +154,7 @@ def test_damped_bands_are_roots_and_beat_the_grid():
 @pytest.mark.parametrize("c_sky, w", [(8.0, math.sqrt(20.0)), (8.0, 2.0), (3.0, 9.0), (0.0, 4.0)])
 def test_skyhook_power_against_quadrature(c_sky, w):
     Y = 0.25
-    p = skyhook_power(OSC, c_sky, Y, w)
+    p = skyhook_power(OSC, c_sky, Y, omega=w)
     H = (OSC.k + 1j * OSC.c * w) / (OSC.k - OSC.m * w * w + 1j * (OSC.c + c_sky) * w)
     assert abs(H) == pytest.approx(float(skyhook_transmissibility(OSC, c_sky, w)), rel=1e-12)
     T = 2 * math.pi / w

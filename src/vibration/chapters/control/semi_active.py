@@ -195,7 +195,7 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
         metrics=metrics,
         t_steady=ts,
         refine=refine,
-        power=skyhook_power(osc, p.c_sky, Y, omega),
+        power=skyhook_power(osc, p.c_sky, Y, omega=omega),
         power_run=power_run,
         closed_run_error=closed_run_error,
         worst_power=worst,
