@@ -122,7 +122,7 @@ def test_pi_with_a_limit_returns_fast_and_sticks_on_the_limit():
     """The PI case of the report (kd = 0, 10 s window) that used to run for minutes."""
     t0 = time.perf_counter()
     r = guarded(
-        ctl.pid_response, OSC, RES, 133.6, 512.0, 0.0, u_max=12.0, anti_windup="clamping", x_ref=0.5, t_end=10.0
+        ctl.pid_response, OSC, RES, 133.6, ki=512.0, kd=0.0, u_max=12.0, anti_windup="clamping", x_ref=0.5, t_end=10.0
     )
     assert time.perf_counter() - t0 < 5.0
     assert isinstance(r, ctl.PIDResponse)
@@ -134,7 +134,7 @@ def test_clamping_sliding_mode_of_chapter_7(omega):
     """Chapter 7's move at omega_res 2.2 to 3: a sliding mode on u_d = u_max; fast, on the limit, finite."""
     t0 = time.perf_counter()
     f = SineForce(F0=5.0, omega=omega)
-    r = guarded(ctl.pid_response, OSC, f, 133.6, 512.0, 18.7, u_max=12.0, anti_windup="clamping", x_ref=0.5)
+    r = guarded(ctl.pid_response, OSC, f, 133.6, ki=512.0, kd=18.7, u_max=12.0, anti_windup="clamping", x_ref=0.5)
     assert time.perf_counter() - t0 < 5.0
     assert r.nfev < 100_000
     assert np.max(np.abs(r.u)) <= 12.0 * (1 + 1e-12)
@@ -150,8 +150,8 @@ def test_clamping_agrees_with_a_fine_fixed_step_solution():
         OSC,
         SineForce(F0=5.0, omega=w),
         kp,
-        ki,
-        kd,
+        ki=ki,
+        kd=kd,
         u_max=umax,
         anti_windup="clamping",
         x_ref=xr,
@@ -186,15 +186,15 @@ def test_clamping_agrees_with_a_fine_fixed_step_solution():
 
 def test_none_and_back_calculation_agree_with_the_unlimited_loop_when_never_saturated():
     for aw in ctl.ANTI_WINDUP:
-        r = ctl.pid_response(OSC, RES, 80.0, 100.0, 10.0, u_max=1e6, anti_windup=aw, t_end=10.0, n_points=101)
-        x, _, _ = ctl.pid_linear_response(OSC, RES, 80.0, 100.0, 10.0, r.t)
+        r = ctl.pid_response(OSC, RES, 80.0, ki=100.0, kd=10.0, u_max=1e6, anti_windup=aw, t_end=10.0, n_points=101)
+        x, _, _ = ctl.pid_linear_response(OSC, RES, 80.0, ki=100.0, kd=10.0, t=r.t)
         assert np.max(np.abs(r.x - x)) < 1e-8
 
 
 @pytest.mark.parametrize("k", [1e8, 1e12])
 def test_stiff_plants_are_refused_in_seconds(k):
     osc = Oscillator(m=1.0, c=0.5, k=k)
-    err = refused(ctl.pid_response, osc, RES, 80.0, 100.0, 10.0, u_max=12.0, anti_windup="clamping")
+    err = refused(ctl.pid_response, osc, RES, 80.0, ki=100.0, kd=10.0, u_max=12.0, anti_windup="clamping")
     assert "t_end" in str(err)
     err = refused(ctl.simulate_controlled, osc, lambda t, x, v: -x, RES)
     assert "t_end" in str(err)
@@ -202,7 +202,7 @@ def test_stiff_plants_are_refused_in_seconds(k):
 
 def test_discontinuous_controller_hits_the_budget_in_seconds():
     """An on-off law handed to the generic simulator chatters; it must stop with a ParameterError, fast."""
-    law = ctl.semi_active_controller("on-off", 8.0, 0.5, 15.0, 0.25, 4.47)
+    law = ctl.semi_active_controller("on-off", 8.0, 0.5, c_max=15.0, Y=0.25, omega=4.47)
     out = guarded(ctl.simulate_controlled, OSC, law, base=(0.25, 4.47), t_end=50.0, rtol=1e-12, atol=1e-14)
     assert isinstance(out, ParameterError | ctl.ControlledResponse)
 
@@ -214,48 +214,50 @@ def test_discontinuous_controller_hits_the_budget_in_seconds():
 def test_scalar_arguments_refused(bad):
     refused(ctl.pd_oscillator, OSC, bad, 1.0)
     refused(ctl.lqr, OSC, bad, 1.0, 1.0)
-    refused(ctl.lqr_closed_form, OSC, 1.0, 1.0, bad)
-    refused(ctl.pid_response, OSC, None, 1.0, bad, 1.0, t_end=1.0, n_points=11)
-    refused(ctl.pid_linear_response, OSC, None, bad, 1.0, 1.0, [0.0, 1.0])
-    refused(ctl.pid_linear_response, OSC, None, 1.0, 1.0, bad, [0.0, 1.0])
+    refused(ctl.lqr_closed_form, OSC, 1.0, 1.0, r=bad)
+    refused(ctl.pid_response, OSC, None, 1.0, ki=bad, kd=1.0, t_end=1.0, n_points=11)
+    refused(ctl.pid_linear_response, OSC, None, bad, ki=1.0, kd=1.0, t=[0.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, None, 1.0, ki=1.0, kd=bad, t=[0.0, 1.0])
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, t_end=bad)
-    refused(ctl.semi_active_response, OSC, "on-off", bad, 0.25, c_min=0.5, c_max=15.0)
+    refused(ctl.semi_active_response, OSC, "on-off", bad, Y=0.25, c_min=0.5, c_max=15.0)
     refused(ctl.shaped_move, OSC, None, bad)
-    refused(ctl.response_metrics, [0.0, 1.0, 2.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], bad)
+    refused(
+        ctl.response_metrics, [0.0, 1.0, 2.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0], v_rel=[0.0, 0.0, 0.0], t_steady=bad
+    )
 
 
 @pytest.mark.parametrize(
     "bad", BAD_ARRAYS, ids=lambda b: type(b).__name__ + str(np.shape(b)) if b is not None else "None"
 )
 def test_array_arguments_refused(bad):
-    refused(ctl.pid_linear_response, OSC, None, 80.0, 100.0, 10.0, bad)
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=10.0, t=bad)
     refused(ctl.passive_transmissibility, OSC, bad)
     refused(ctl.skyhook_transmissibility, OSC, 8.0, bad)
-    refused(ctl.semi_active_sweep, OSC, "on-off", bad, 0.25, c_min=0.5, c_max=15.0, periods=1)
+    refused(ctl.semi_active_sweep, OSC, "on-off", bad, Y=0.25, c_min=0.5, c_max=15.0, periods=1)
     good = np.linspace(0.0, 1.0, 5)
-    refused(ctl.response_metrics, bad, good, good, good, 0.5)
-    refused(ctl.response_metrics, good, bad, good, good, 0.5)
-    refused(ctl.residual_amplitude, OSC, good, good, bad, 0.0)
+    refused(ctl.response_metrics, bad, good, good, v_rel=good, t_steady=0.5)
+    refused(ctl.response_metrics, good, bad, good, v_rel=good, t_steady=0.5)
+    refused(ctl.residual_amplitude, OSC, good, good, v=bad, target=0.0)
 
 
 def test_pid_linear_response_findings():
     """The findings of issue 20: nan gains, t=None, negative times, negative ki."""
-    refused(ctl.pid_linear_response, OSC, None, math.nan, 100.0, 10.0, [0.0, 1.0])
-    refused(ctl.pid_linear_response, OSC, None, 80.0, 100.0, 10.0, None)
-    refused(ctl.pid_linear_response, OSC, None, 80.0, 100.0, 10.0, [-1.0, 1.0])
-    refused(ctl.pid_linear_response, OSC, None, 80.0, -100.0, 10.0, [0.0, 1.0])
-    refused(ctl.pid_linear_response, OSC, "force", 80.0, 100.0, 10.0, [0.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, None, math.nan, ki=100.0, kd=10.0, t=[0.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=10.0, t=None)
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=10.0, t=[-1.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=-100.0, kd=10.0, t=[0.0, 1.0])
+    refused(ctl.pid_linear_response, OSC, "force", 80.0, ki=100.0, kd=10.0, t=[0.0, 1.0])
     # an unstable loop overflows at large times: an error, not nan
-    refused(ctl.pid_linear_response, OSC, None, 80.0, 100.0, -50.0, [0.0, 1e6], 0.1)
+    refused(ctl.pid_linear_response, OSC, None, 80.0, ki=100.0, kd=-50.0, t=[0.0, 1e6], x_ref=0.1)
 
 
 def test_response_metrics_refuses_nan_and_unordered_times():
     t = np.linspace(0.0, 1.0, 11)
     x = np.sin(t)
-    refused(ctl.response_metrics, t, np.where(t > 0.5, np.nan, x), x, x, 0.5)
-    refused(ctl.response_metrics, t[::-1], x, x, x, 0.5)
-    refused(ctl.response_metrics, t, x * 1e200, x, x, 0.5)
-    refused(ctl.response_metrics, t, x[:-1], x, x, 0.5)
+    refused(ctl.response_metrics, t, np.where(t > 0.5, np.nan, x), x, v_rel=x, t_steady=0.5)
+    refused(ctl.response_metrics, t[::-1], x, x, v_rel=x, t_steady=0.5)
+    refused(ctl.response_metrics, t, x * 1e200, x, v_rel=x, t_steady=0.5)
+    refused(ctl.response_metrics, t, x[:-1], x, v_rel=x, t_steady=0.5)
 
 
 def test_check_array_messages():
@@ -277,10 +279,18 @@ def test_check_array_messages():
 
 def test_huge_sizes_refused_quickly():
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, n_points=10**9)
-    refused(ctl.semi_active_response, OSC, "mr", 4.47, 0.25, t_end=1e6)
-    refused(ctl.semi_active_sweep, OSC, "mr", np.linspace(1.0, 10.0, 1000), 0.25, periods=1000)
-    refused(ctl.semi_active_sweep, OSC, "on-off", [1e-6], 0.25, c_max=15.0)
-    refused(ctl.pid_linear_response, Oscillator(m=1.0, c=0.0, k=1.0), None, 0.0, 1e-300, 0.0, np.linspace(0, 1, 10**7))
+    refused(ctl.semi_active_response, OSC, "mr", 4.47, Y=0.25, t_end=1e6)
+    refused(ctl.semi_active_sweep, OSC, "mr", np.linspace(1.0, 10.0, 1000), Y=0.25, periods=1000)
+    refused(ctl.semi_active_sweep, OSC, "on-off", [1e-6], Y=0.25, c_max=15.0)
+    refused(
+        ctl.pid_linear_response,
+        Oscillator(m=1.0, c=0.0, k=1.0),
+        None,
+        0.0,
+        ki=1e-300,
+        kd=0.0,
+        t=np.linspace(0, 1, 10**7),
+    )
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, t_end=1e300)
     refused(ctl.simulate_controlled, OSC, lambda t, x, v: 0.0, max_step=1e-9)
 
@@ -292,14 +302,24 @@ def test_huge_sizes_refused_quickly():
 @given(osc=scalar_osc, kp=extreme, ki=extreme, kd=extreme, u_max=st.one_of(st.none(), extreme), x_ref=extreme)
 def test_pid_response_fuzz(osc, kp, ki, kd, u_max, x_ref):
     guarded(
-        ctl.pid_response, osc, RES, kp, ki, kd, u_max=u_max, anti_windup="clamping", x_ref=x_ref, t_end=2.0, n_points=21
+        ctl.pid_response,
+        osc,
+        RES,
+        kp,
+        ki=ki,
+        kd=kd,
+        u_max=u_max,
+        anti_windup="clamping",
+        x_ref=x_ref,
+        t_end=2.0,
+        n_points=21,
     )
 
 
 @settings(max_examples=30, deadline=None)
 @given(osc=scalar_osc, kp=extreme, ki=extreme, kd=extreme, x_ref=extreme, tmax=extreme)
 def test_pid_linear_response_fuzz(osc, kp, ki, kd, x_ref, tmax):
-    guarded(ctl.pid_linear_response, osc, RES, kp, ki, kd, [0.0, tmax], x_ref)
+    guarded(ctl.pid_linear_response, osc, RES, kp, ki=ki, kd=kd, t=[0.0, tmax], x_ref=x_ref)
 
 
 @settings(max_examples=20, deadline=None)
@@ -312,7 +332,7 @@ def test_simulate_controlled_fuzz(osc, gain, u_max, t_end):
 @given(osc=scalar_osc, q_x=extreme, q_v=extreme, r=extreme)
 def test_lqr_fuzz(osc, q_x, q_v, r):
     guarded(ctl.lqr, osc, q_x, q_v, r)
-    guarded(ctl.lqr_closed_form, osc, q_x, q_v, r)
+    guarded(ctl.lqr_closed_form, osc, q_x, q_v, r=r)
 
 
 @settings(max_examples=20, deadline=None)
@@ -324,13 +344,13 @@ def test_lqr_fuzz(osc, q_x, q_v, r):
     c_max=positive,
 )
 def test_semi_active_response_fuzz(osc, law, omega, Y, c_max):
-    guarded(ctl.semi_active_response, osc, law, omega, Y, c_sky=8.0, c_min=0.5, c_max=c_max, t_end=2.0, n_points=21)
+    guarded(ctl.semi_active_response, osc, law, omega, Y=Y, c_sky=8.0, c_min=0.5, c_max=c_max, t_end=2.0, n_points=21)
 
 
 @settings(max_examples=15, deadline=None)
 @given(osc=scalar_osc, law=st.sampled_from(ctl.SEMI_ACTIVE_LAWS), omega=extreme, Y=extreme, c_max=positive)
 def test_semi_active_sweep_fuzz(osc, law, omega, Y, c_max):
-    guarded(ctl.semi_active_sweep, osc, law, [omega], Y, c_sky=8.0, c_min=0.5, c_max=c_max, periods=2)
+    guarded(ctl.semi_active_sweep, osc, law, [omega], Y=Y, c_sky=8.0, c_min=0.5, c_max=c_max, periods=2)
 
 
 @settings(max_examples=30, deadline=None)
@@ -347,7 +367,7 @@ def test_shaping_fuzz(osc, distance, t_end, n):
     sh = shaper if isinstance(shaper, ctl.Shaper) else None
     guarded(ctl.zvd_shaper, osc)
     guarded(ctl.shaper_residual, sh, osc)
-    guarded(ctl.shaped_move, osc, sh, distance, t_end, n)
+    guarded(ctl.shaped_move, osc, sh, distance, t_end=t_end, n_points=n)
 
 
 @settings(max_examples=30, deadline=None)
@@ -361,8 +381,8 @@ def test_response_metrics_fuzz(x, scale, ts):
     t = np.linspace(0.0, 1.0, n) if n else np.array([])
     with np.errstate(over="ignore", invalid="ignore"):
         xa = np.asarray(x, dtype=float) * scale
-    guarded(ctl.response_metrics, t, xa, xa, xa, ts)
-    guarded(ctl.residual_amplitude, OSC, t, xa, xa, ts)
+    guarded(ctl.response_metrics, t, xa, xa, v_rel=xa, t_steady=ts)
+    guarded(ctl.residual_amplitude, OSC, t, xa, v=xa, target=ts)
 
 
 @settings(max_examples=30, deadline=None)
@@ -375,7 +395,7 @@ def test_pd_fuzz(osc, kp, kd):
 @settings(max_examples=20, deadline=None)
 @given(law=st.sampled_from([*ctl.SEMI_ACTIVE_LAWS, "x"]), c=extreme, Y=extreme, w=extreme)
 def test_semi_active_controller_fuzz(law, c, Y, w):
-    f = guarded(ctl.semi_active_controller, law, 8.0, 0.5, c, Y, w, finite=False)
+    f = guarded(ctl.semi_active_controller, law, 8.0, 0.5, c_max=c, Y=Y, omega=w, finite=False)
     if callable(f):
         _finite(guarded(f, 0.1, 0.01, 0.2))
 
@@ -383,5 +403,5 @@ def test_semi_active_controller_fuzz(law, c, Y, w):
 def test_sweep_starts_in_the_linear_steady_state():
     """The ideal skyhook is linear: started in its steady state, one decay time constant of settling is enough."""
     w = np.array([0.7, 1.0, 1.5]) * OSC.natural_frequency
-    s = ctl.semi_active_sweep(OSC, "skyhook", w, 0.25, c_sky=8.0, c_min=0.5, c_max=15.0, settle=1.0, periods=2)
+    s = ctl.semi_active_sweep(OSC, "skyhook", w, Y=0.25, c_sky=8.0, c_min=0.5, c_max=15.0, settle=1.0, periods=2)
     assert np.max(np.abs(s.fundamental - ctl.skyhook_transmissibility(OSC, 8.0, w))) < 1e-6

@@ -117,7 +117,7 @@ def test_scalar_functions_fuzz(osc, band, ratio):
 def test_random_functions_fuzz(osc, S0, t_end, dt, seed):
     guarded(stb.white_noise_variance, osc, S0)
     guarded(stb.white_noise_velocity_variance, osc, S0)
-    guarded(stb.simulate_white_noise, osc, S0, t_end, dt, 2, seed)
+    guarded(stb.simulate_white_noise, osc, S0, t_end, dt=dt, n_paths=2, seed=seed)
 
 
 @settings(max_examples=8, deadline=None)

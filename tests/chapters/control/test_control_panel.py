@@ -63,7 +63,7 @@ def test_panel_javascript_matches_python(browser, tmp_path: Path):
             qx, qv, r = (float(10**v) for v in (rng.uniform(-2, 3), rng.uniform(-3, 1), rng.uniform(-6, 1)))
             osc = Oscillator(m=m, c=c, k=k)
             js = page.evaluate(f"window.vibrationControl.lqrGains({m}, {c}, {k}, {qx}, {qv}, {r})")
-            np.testing.assert_allclose(js, lqr_closed_form(osc, qx, qv, r), rtol=RTOL)
+            np.testing.assert_allclose(js, lqr_closed_form(osc, qx, qv, r=r), rtol=RTOL)
             np.testing.assert_allclose(js, vibration.lqr(osc, qx, qv, r).K, rtol=1e-8)
             ws = [float(v) for v in rng.uniform(0.1, 30, 7)]
             csky = float(rng.uniform(0, 40))
@@ -86,7 +86,7 @@ def test_panel_javascript_matches_python(browser, tmp_path: Path):
                     np.testing.assert_allclose(res[0], sh.times, rtol=RTOL)
                     np.testing.assert_allclose(res[1], sh.amplitudes, rtol=RTOL)
                     assert abs(res[2] - shaper_residual(sh, Oscillator(m=m, c=c, k=ka))) < 1e-10
-                    _, x, _, _ = shaped_move(Oscillator(m=m, c=c, k=ka), sh, 0.1, 15.0, 301)
+                    _, x, _, _ = shaped_move(Oscillator(m=m, c=c, k=ka), sh, 0.1, t_end=15.0, n_points=301)
                     assert np.max(np.abs(np.array(res[3]) - x)) < RTOL_X * 0.2
         before = page.eval_on_selector("svg.vc-sky polyline.vc-skyhook", "e => e.getAttribute('points')")
         page.eval_on_selector(

@@ -109,7 +109,7 @@ def test_lqr_matches_scipy_riccati_and_the_closed_form(seed):
     K = (B.T @ P / r).ravel()
     assert_allclose(res.P, P, rtol=1e-8, atol=1e-12 * np.max(np.abs(P)))
     assert_allclose(res.K, K, rtol=1e-8)
-    assert_allclose(lqr_closed_form(osc, q_x, q_v, r), K, rtol=1e-8)
+    assert_allclose(lqr_closed_form(osc, q_x, q_v, r=r), K, rtol=1e-8)
     resid = A.T @ res.P + res.P @ A - res.P @ B @ B.T @ res.P / r + Q
     assert np.max(np.abs(resid)) < 1e-8 * (np.max(np.abs(Q)) + np.max(np.abs(A.T @ res.P)))
     cl = res.closed_loop
@@ -121,7 +121,7 @@ def test_lqr_matches_scipy_riccati_and_the_closed_form(seed):
 
 
 def test_lqr_closed_form_without_cancellation_at_tiny_weights():
-    k0, k1 = lqr_closed_form(OSC, 1e-12, 1e-14, 1.0)
+    k0, k1 = lqr_closed_form(OSC, 1e-12, 1e-14, r=1.0)
     assert_allclose(k0, 1e-12 / (2 * 20.0), rtol=1e-12)  # sqrt(k^2 + a) - k ~ a / (2k)
     assert_allclose(k1, (1e-14 + 2 * k0) / (2 * 0.5), rtol=1e-9)
 
@@ -146,8 +146,8 @@ def test_unlimited_pid_matches_the_matrix_exponential(seed):
     rng = np.random.default_rng(200 + seed)
     kp, ki, kd = rng.uniform(10, 150), rng.uniform(10, 500), rng.uniform(2, 20)
     x_ref = rng.uniform(-1, 1)
-    r = pid_response(OSC, RES, kp, ki, kd, x_ref=x_ref, t_end=20.0, n_points=801)
-    x, v, i = pid_linear_response(OSC, RES, kp, ki, kd, r.t, x_ref)
+    r = pid_response(OSC, RES, kp, ki=ki, kd=kd, x_ref=x_ref, t_end=20.0, n_points=801)
+    x, v, i = pid_linear_response(OSC, RES, kp, ki=ki, kd=kd, t=r.t, x_ref=x_ref)
     assert np.max(np.abs(r.x - x)) < 1e-8 * np.max(np.abs(x))
     assert np.max(np.abs(r.v - v)) < 1e-8 * np.max(np.abs(v))
     assert np.max(np.abs(r.integral - i)) < 1e-8 * np.max(np.abs(i))
@@ -184,7 +184,9 @@ def _independent_pid(kp, ki, kd, u_max, mode, x_ref, t):
 )
 def test_limited_pid_agrees_with_an_independent_integration(mode):
     t_end = 8.0
-    r = pid_response(OSC, RES, 133.6, 512.0, 18.7, u_max=12.0, anti_windup=mode, x_ref=0.5, t_end=t_end, n_points=161)
+    r = pid_response(
+        OSC, RES, 133.6, ki=512.0, kd=18.7, u_max=12.0, anti_windup=mode, x_ref=0.5, t_end=t_end, n_points=161
+    )
     ref = _independent_pid(133.6, 512.0, 18.7, 12.0, mode, 0.5, r.t)
     assert np.max(np.abs(r.x - ref[0])) < 1e-6
     assert np.max(np.abs(r.integral - ref[2])) < 1e-6
@@ -193,7 +195,9 @@ def test_limited_pid_agrees_with_an_independent_integration(mode):
 
 def test_anti_windup_cuts_the_overshoot_and_the_integrator():
     runs = {
-        m: pid_response(OSC, RES, 133.6, 512.0, 18.7, u_max=12.0, anti_windup=m, x_ref=0.5, t_end=30.0, n_points=601)
+        m: pid_response(
+            OSC, RES, 133.6, ki=512.0, kd=18.7, u_max=12.0, anti_windup=m, x_ref=0.5, t_end=30.0, n_points=601
+        )
         for m in ("none", "clamping", "back-calculation")
     }
     over = {m: np.max(r.x) - 0.5 for m, r in runs.items()}
@@ -204,11 +208,11 @@ def test_anti_windup_cuts_the_overshoot_and_the_integrator():
 
 def test_pid_bad_input(raises_parameter_error):
     with raises_parameter_error("anti_windup", "conditional", "clamping"):
-        pid_response(OSC, RES, 1.0, 1.0, 1.0, anti_windup="conditional")
+        pid_response(OSC, RES, 1.0, ki=1.0, kd=1.0, anti_windup="conditional")
     with raises_parameter_error("ki", 0.0, "> 0"):
-        pid_response(OSC, RES, 1.0, 0.0, 1.0)
+        pid_response(OSC, RES, 1.0, ki=0.0, kd=1.0)
     with raises_parameter_error("u_max", -1.0, "> 0"):
-        pid_response(OSC, RES, 1.0, 1.0, 1.0, u_max=-1.0)
+        pid_response(OSC, RES, 1.0, ki=1.0, kd=1.0, u_max=-1.0)
 
 
 # ----------------------------------------------------------------------------- simulation API
@@ -276,7 +280,7 @@ def test_skyhook_bad_input(raises_parameter_error):
 @pytest.mark.parametrize("law", ["passive", "skyhook"])
 def test_semi_active_kernel_reproduces_the_linear_closed_forms(law):
     w = np.array([0.5, 1.0, 1.7, 3.0]) * WN
-    s = semi_active_sweep(OSC, law, w, 0.25, c_sky=8.0, c_min=1.5, c_max=15.0, periods=4)
+    s = semi_active_sweep(OSC, law, w, Y=0.25, c_sky=8.0, c_min=1.5, c_max=15.0, periods=4)
     exact = (
         passive_transmissibility(Oscillator(m=1.0, c=2.0, k=20.0), w)
         if law == "passive"
@@ -290,7 +294,7 @@ def test_on_off_kernel_converges_with_the_step():
     """The on-off law switches the force discontinuously, which solve_ivp grinds through; check RK4 by refinement."""
     Y, w = 0.25, 1.1 * WN
     runs = [
-        semi_active_response(OSC, "on-off", w, Y, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=6.0, n_points=61,
+        semi_active_response(OSC, "on-off", w, Y=Y, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=6.0, n_points=61,
                              steps_per_period=n)
         for n in (2000, 16000)
     ]  # fmt: skip
@@ -300,8 +304,8 @@ def test_on_off_kernel_converges_with_the_step():
 @pytest.mark.parametrize(("law", "tol", "rtol"), [("clipped", 1e-6, 1e-10)])
 def test_semi_active_kernel_agrees_with_solve_ivp_on_the_callable(law, tol, rtol):
     Y, w = 0.25, 1.1 * WN
-    rk4 = semi_active_response(OSC, law, w, Y, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=6.0, n_points=61)
-    ctl = semi_active_controller(law, 8.0, 0.5, 15.0, Y, w)
+    rk4 = semi_active_response(OSC, law, w, Y=Y, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=6.0, n_points=61)
+    ctl = semi_active_controller(law, 8.0, 0.5, c_max=15.0, Y=Y, omega=w)
     ref = simulate_controlled(OSC, ctl, base=(Y, w), t_end=6.0, n_points=61, rtol=rtol, atol=1e-12)
     assert np.max(np.abs(rk4.x - ref.x)) < tol * Y
     assert np.max(np.abs(rk4.f - ref.u)) < 50 * tol * np.max(np.abs(ref.u))
@@ -330,7 +334,7 @@ def _mr_reference(d, law_on, Y, w, t):
 def test_mr_damper_kernel_agrees_with_an_independent_integration():
     Y, w = 0.25, WN
     d = SPENCER_1997.scaled(Y / 0.015, 10.0 / SPENCER_1997.yield_force)
-    rk4 = semi_active_response(OSC, "mr", w, Y, c_sky=8.0, damper=d, t_end=4.0, n_points=41, dt_max=5e-5)
+    rk4 = semi_active_response(OSC, "mr", w, Y=Y, c_sky=8.0, damper=d, t_end=4.0, n_points=41, dt_max=5e-5)
     ref = _mr_reference(d, True, Y, w, rk4.t)
     assert np.max(np.abs(rk4.x - ref[0])) < 2e-4 * Y
     assert np.max(np.abs(rk4.command - ref[4])) < 2e-2 * d.v_max
@@ -346,7 +350,7 @@ def test_mr_scaling_is_a_similitude():
 
 def test_clipped_skyhook_beats_every_passive_damper_at_resonance_and_keeps_isolation():
     w = np.array([1.0, 1.5, 2.0, 3.0]) * WN
-    s = semi_active_sweep(OSC, "clipped", w, 0.25, c_sky=8.0, c_min=0.5, c_max=15.0)
+    s = semi_active_sweep(OSC, "clipped", w, Y=0.25, c_sky=8.0, c_min=0.5, c_max=15.0)
     assert s.peak[0] < 1.0  # every passive c gives T(wn) > 1 (see the skyhook test)
     soft = passive_transmissibility(Oscillator(m=1.0, c=1.0, k=20.0), w[1:])
     assert np.all(s.peak[1:] <= soft * 1.001)
@@ -354,11 +358,11 @@ def test_clipped_skyhook_beats_every_passive_damper_at_resonance_and_keeps_isola
 
 def test_semi_active_bad_input(raises_parameter_error):
     with raises_parameter_error("law", "bang-bang", "on-off"):
-        semi_active_sweep(OSC, "bang-bang", [1.0], 0.25)
+        semi_active_sweep(OSC, "bang-bang", [1.0], Y=0.25)
     with raises_parameter_error("c_max", 0.1, ">= 0.5"):
-        semi_active_sweep(OSC, "clipped", [1.0], 0.25, c_min=0.5, c_max=0.1)
+        semi_active_sweep(OSC, "clipped", [1.0], Y=0.25, c_min=0.5, c_max=0.1)
     with raises_parameter_error("c + c_min"):
-        semi_active_sweep(Oscillator(m=1.0, c=0.0, k=20.0), "clipped", [1.0], 0.25, c_min=0.0, c_max=1.0)
+        semi_active_sweep(Oscillator(m=1.0, c=0.0, k=20.0), "clipped", [1.0], Y=0.25, c_min=0.0, c_max=1.0)
 
 
 # ----------------------------------------------------------------------------- input shaping
@@ -373,7 +377,7 @@ def test_shaper_amplitudes_and_zero_residual_at_the_design_frequency(make):
         assert np.all(s.amplitudes > 0) and s.times[0] == 0.0
         t, x, v, _ = shaped_move(osc, s, 0.1, t_end=12.0, n_points=1201)
         after = t > s.duration + 1e-9
-        assert np.max(residual_amplitude(osc, t[after], x[after], v[after], 0.1)) < 1e-12
+        assert np.max(residual_amplitude(osc, t[after], x[after], v=v[after], target=0.1)) < 1e-12
 
 
 @pytest.mark.parametrize("ratio", [0.7, 0.9, 1.05, 1.2, 1.5])
@@ -383,7 +387,10 @@ def test_residual_formula_matches_the_simulated_move(ratio):
         t, x, v, _ = shaped_move(actual, s, 0.1, t_end=8.0, n_points=801)
         t0, x0, v0, _ = shaped_move(actual, None, 0.1, t_end=8.0, n_points=801)
         after = t > s.duration + 1e-9
-        ratio_sim = residual_amplitude(actual, t, x, v, 0.1)[after] / residual_amplitude(actual, t0, x0, v0, 0.1)[after]
+        ratio_sim = (
+            residual_amplitude(actual, t, x, v=v, target=0.1)[after]
+            / residual_amplitude(actual, t0, x0, v=v0, target=0.1)[after]
+        )
         # Singer and Seering compare with the unshaped ringing t_N earlier (each just after its last impulse)
         ratio_sim *= math.exp(-actual.decay_rate * s.duration)
         assert_allclose(ratio_sim, shaper_residual(s, actual), rtol=1e-9)
@@ -417,14 +424,14 @@ def test_shaper_needs_an_underdamped_oscillator(raises_parameter_error):
 
 def test_metrics_of_a_known_signal():
     t = np.linspace(0.0, 4 * np.pi, 40001)
-    m = response_metrics(t, 0.3 * np.sin(t), 2.0 * np.cos(t), np.cos(t), 2 * np.pi)
+    m = response_metrics(t, 0.3 * np.sin(t), 2.0 * np.cos(t), v_rel=np.cos(t), t_steady=2 * np.pi)
     assert_allclose([m.peak_x, m.rms_x, m.peak_x_ss, m.rms_x_ss], [0.3, 0.3 / 2**0.5, 0.3, 0.3 / 2**0.5], rtol=1e-6)
     assert_allclose([m.peak_u, m.rms_u, m.energy], [2.0, 2**0.5, 4 * np.pi], rtol=1e-6)
 
 
 def test_metrics_bad_input(raises_parameter_error):
     with raises_parameter_error("t_steady", 9.0):
-        response_metrics([0.0, 1.0, 2.0], [0, 0, 0], [0, 0, 0], [0, 0, 0], 9.0)
+        response_metrics([0.0, 1.0, 2.0], [0, 0, 0], [0, 0, 0], v_rel=[0, 0, 0], t_steady=9.0)
 
 
 def test_a_stiff_mr_damper_run_is_refined_instead_of_overflowing():
@@ -434,8 +441,8 @@ def test_a_stiff_mr_damper_run_is_refined_instead_of_overflowing():
 
     osc, w, Y = vibration.Oscillator(m=4.0, c=4.0, k=400.0), 9.020284133645712, 0.1
     damper = SPENCER_1997.scaled(Y / SPENCER_1997_STROKE, 10.0 / SPENCER_1997.yield_force)
-    auto = semi_active_sweep(osc, "mr", [w], Y, damper=damper, periods=4)
-    short = semi_active_sweep(osc, "mr", [w], Y, damper=damper, periods=4, dt_max=2e-4 / 16)
+    auto = semi_active_sweep(osc, "mr", [w], Y=Y, damper=damper, periods=4)
+    short = semi_active_sweep(osc, "mr", [w], Y=Y, damper=damper, periods=4, dt_max=2e-4 / 16)
     assert np.isfinite(auto.peak[0]) and auto.peak[0] == pytest.approx(short.peak[0], rel=1e-6)
-    run = semi_active_response(osc, "mr", w, Y, damper=damper, t_end=5.0)
+    run = semi_active_response(osc, "mr", w, Y=Y, damper=damper, t_end=5.0)
     assert np.all(np.isfinite(run.x))

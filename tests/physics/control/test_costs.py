@@ -45,7 +45,7 @@ def _tf(kp, kd, ki):
 def test_crossover_and_phase_margin_match_python_control(kp, kd, ki):
     import control
 
-    lc = loop_costs(OSC, kp, kd, ki, 4.47)
+    lc = loop_costs(OSC, kp, kd, ki=ki, omega=4.47)
     gm, pm, sm, wpc, wgc, wms = control.stability_margins(_tf(kp, kd, ki))
     # python-control reports the crossover of least phase margin; ours is the one of least delay margin
     assert any(abs(w - wgc) < 1e-6 * wgc for w in lc.crossovers)
@@ -60,7 +60,7 @@ def test_delay_margin_separates_stable_from_unstable_delays(kp, kd, ki):
     """Independent: the loop with a 12th-order Pade delay is stable just below the margin, unstable above."""
     import control
 
-    lc = loop_costs(OSC, kp, kd, ki, 4.47)
+    lc = loop_costs(OSC, kp, kd, ki=ki, omega=4.47)
     assert lc.stable
     L = _tf(kp, kd, ki)
     for factor, stable in ((0.97, True), (1.03, False)):
@@ -71,7 +71,7 @@ def test_delay_margin_separates_stable_from_unstable_delays(kp, kd, ki):
 
 @pytest.mark.parametrize("kp, kd, ki", LAWS)
 def test_noise_bandwidth_against_quadrature(kp, kd, ki):
-    lc = loop_costs(OSC, kp, kd, ki, 4.47)
+    lc = loop_costs(OSC, kp, kd, ki=ki, omega=4.47)
     L = _tf(kp, kd, ki)
 
     def t2(w):
@@ -87,7 +87,7 @@ def test_noise_bandwidth_pd_closed_form():
     """T = (b1 s + b0)/(s^2 + a1 s + a0): int_0^inf |T|^2 dw = pi (b1^2 a0 + b0^2) / (2 a0 a1)."""
     kp, kd = 16.0, 5.5
     b1, b0, a1, a0 = kd, kp, OSC.c + kd, OSC.k + kp
-    assert loop_costs(OSC, kp, kd, 0.0, 4.47).noise_bandwidth == pytest.approx(
+    assert loop_costs(OSC, kp, kd, ki=0.0, omega=4.47).noise_bandwidth == pytest.approx(
         math.pi * (b1 * b1 * a0 + b0 * b0) / (2 * a0 * a1), rel=1e-12
     )
 
@@ -97,7 +97,7 @@ def test_loop_amplitude_matches_pd_oscillator_and_pid_simulation():
         steady_state(pd_oscillator(OSC, 133.6, 18.7), FORCE).amplitude, rel=1e-12
     )
     t = np.linspace(40.0, 40.0 + 2 * math.pi / FORCE.omega, 4001)
-    x, _, _ = pid_linear_response(OSC, FORCE, 133.6, 512.0, 18.7, t)
+    x, _, _ = pid_linear_response(OSC, FORCE, 133.6, ki=512.0, kd=18.7, t=t)
     assert float(np.max(np.abs(x))) == pytest.approx(loop_amplitude(OSC, FORCE, 133.6, 512.0, 18.7), rel=1e-6)
 
 
@@ -120,7 +120,7 @@ def test_hold_force_and_feasibility():
 
 
 def test_pid_poles_are_the_roots_of_the_characteristic_polynomial():
-    p = pid_poles(OSC, 133.6, 512.0, 18.7)
+    p = pid_poles(OSC, 133.6, 512.0, kd=18.7)
     poly = np.poly([p.real_pole, p.pair_omega * complex(-p.pair_zeta, math.sqrt(1 - p.pair_zeta**2)),
                     p.pair_omega * complex(-p.pair_zeta, -math.sqrt(1 - p.pair_zeta**2))])  # fmt: skip
     np.testing.assert_allclose(np.real(poly), [1.0, OSC.c + 18.7, OSC.k + 133.6, 512.0], rtol=1e-10)
@@ -154,7 +154,7 @@ def test_damped_bands_are_roots_and_beat_the_grid():
 @pytest.mark.parametrize("c_sky, w", [(8.0, math.sqrt(20.0)), (8.0, 2.0), (3.0, 9.0), (0.0, 4.0)])
 def test_skyhook_power_against_quadrature(c_sky, w):
     Y = 0.25
-    p = skyhook_power(OSC, c_sky, Y, w)
+    p = skyhook_power(OSC, c_sky, Y, omega=w)
     H = (OSC.k + 1j * OSC.c * w) / (OSC.k - OSC.m * w * w + 1j * (OSC.c + c_sky) * w)
     assert abs(H) == pytest.approx(float(skyhook_transmissibility(OSC, c_sky, w)), rel=1e-12)
     T = 2 * math.pi / w

@@ -175,7 +175,7 @@ def _lqr_check(osc: Oscillator, design: LQRResult, q_x: float, q_v: float, r: fl
     scale = float(np.max(np.abs(K_sp)))
     return {
         "scipy": float(np.max(np.abs(design.K - K_sp))) / scale,
-        "closed form": float(np.max(np.abs(design.K - lqr_closed_form(osc, q_x, q_v, r)))) / scale,
+        "closed form": float(np.max(np.abs(design.K - lqr_closed_form(osc, q_x, q_v, r=r)))) / scale,
         "residual": float(np.max(np.abs(resid))) / float(np.max(np.abs(design.P)) * max(1.0, np.max(np.abs(A)))),
     }
 
@@ -261,11 +261,11 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     pd_error = float(np.max(np.abs(sim_pd.x - xs["PD"])))
 
     reg = pid_response(
-        osc, force, p.pid_kp, p.pid_ki, p.pid_kd, u_max=p.u_max, anti_windup="clamping", t_end=p.t_end,
+        osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, u_max=p.u_max, anti_windup="clamping", t_end=p.t_end,
         n_points=p.n_points,
     )  # fmt: skip
     xs["PID"], us["PID"], vs["PID"] = reg.x, reg.u, reg.v
-    metrics = {name: response_metrics(t, xs[name], us[name], vs[name], ts) for name in xs}
+    metrics = {name: response_metrics(t, xs[name], us[name], v_rel=vs[name], t_steady=ts) for name in xs}
 
     designs = {}
     for name in DESIGNS:
@@ -279,14 +279,14 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
             amplitude=X,
             u_rms=metrics[name].rms_u,
             floor=float(force_floor(osc, force, X)),
-            costs=loop_costs(osc, kx, kv, ki, p.omega_res),
+            costs=loop_costs(osc, kx, kv, ki=ki, omega=p.omega_res),
         )
 
     moves = {}
     for scheme in MOVE_SCHEMES:
         limit = {} if scheme == "unlimited" else {"u_max": p.u_max, "anti_windup": scheme}
         run = pid_response(
-            osc, force, p.pid_kp, p.pid_ki, p.pid_kd, x_ref=p.x_ref, t_end=p.t_end, n_points=p.n_points, **limit
+            osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, x_ref=p.x_ref, t_end=p.t_end, n_points=p.n_points, **limit
         )
         moves[scheme] = _move_run(scheme, run, p.x_ref, ts)
 
@@ -296,7 +296,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     if math.isfinite(x_max) and x_max > 0.0:
         x_ok = FEASIBLE_FRACTION * x_max * (1.0 if p.x_ref >= 0.0 else -1.0)
         run = pid_response(
-            osc, force, p.pid_kp, p.pid_ki, p.pid_kd, u_max=p.u_max, anti_windup="clamping", x_ref=x_ok,
+            osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, u_max=p.u_max, anti_windup="clamping", x_ref=x_ok,
             t_end=p.t_end, n_points=p.n_points,
         )  # fmt: skip
         ok_run = _move_run("clamping", run, x_ok, ts)
@@ -325,7 +325,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
         loops=loops,
         passive_amplitude=steady_state(osc, force).amplitude,
         designs=designs,
-        pid_poles=pid_poles(osc, p.pid_kp, p.pid_ki, p.pid_kd),
+        pid_poles=pid_poles(osc, p.pid_kp, p.pid_ki, kd=p.pid_kd),
         tradeoff=_tradeoff(osc, force, p, design, loops["PD"], n_r),
         u_max=p.u_max,
         x_ref=p.x_ref,

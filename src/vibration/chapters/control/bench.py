@@ -38,11 +38,11 @@ def measure(quick: bool) -> tuple[str, list[Row]]:
     damper = SPENCER_1997.scaled(Y / SPENCER_1997_STROKE, p.f_mr / SPENCER_1997.yield_force)
     kw = {"c_sky": p.c_sky, "c_min": p.c_sa_min, "c_max": p.c_sa_max}
     reps = 1 if quick else 3
-    t_mr = median_time(lambda: semi_active_sweep(osc, "mr", w, Y, damper=damper, **kw), reps)
-    t_cl = median_time(lambda: semi_active_sweep(osc, "clipped", w, Y, **kw), reps)
-    t_oo = median_time(lambda: semi_active_sweep(osc, "on-off", w, Y, **kw), reps)
+    t_mr = median_time(lambda: semi_active_sweep(osc, "mr", w, Y=Y, damper=damper, **kw), reps)
+    t_cl = median_time(lambda: semi_active_sweep(osc, "clipped", w, Y=Y, **kw), reps)
+    t_oo = median_time(lambda: semi_active_sweep(osc, "on-off", w, Y=Y, **kw), reps)
     # the same clipped-skyhook steady state by solve_ivp on the Python callable, one frequency, scaled
-    ctl = semi_active_controller("clipped", p.c_sky, p.c_sa_min, p.c_sa_max, Y, wn)
+    ctl = semi_active_controller("clipped", p.c_sky, p.c_sa_min, c_max=p.c_sa_max, Y=Y, omega=wn)
     sigma = (osc.c + p.c_sa_min) / (2.0 * osc.m)  # decay rate of the softest damping the sweep settles with, 1/s
     t_end = 12.0 / sigma + 8 * 2 * np.pi / wn  # settle + measured periods, as the sweep runs them
 

@@ -14,8 +14,8 @@ from vibration.presentation.parameters import (
 def _pid_affordable(p: dict) -> None:
     """The PID loop's work stays within its budget (checked before a kernel starts)."""
     try:
-        pid_work_check(Oscillator(m=p["m"], c=p["c_nominal"], k=p["k"]), p["pid_kp"], p["pid_ki"], p["pid_kd"],
-                       p["t_end"], p["omega_res"])  # fmt: skip
+        pid_work_check(Oscillator(m=p["m"], c=p["c_nominal"], k=p["k"]), p["pid_kp"], p["pid_ki"], kd=p["pid_kd"],
+                       t_end=p["t_end"], omega=p["omega_res"])  # fmt: skip
     except ParameterError as exc:
         gains = f"pid_kp = {p['pid_kp']!r}, pid_ki = {p['pid_ki']!r}, pid_kd = {p['pid_kd']!r}"
         raise ParameterError(f"{gains} with m = {p['m']!r} kg, k = {p['k']!r} N/m: {exc}") from None

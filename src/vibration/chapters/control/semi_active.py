@@ -136,7 +136,7 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
     scale = (Y / SPENCER_1997_STROKE, p.f_mr / SPENCER_1997.yield_force)
     damper = SPENCER_1997.scaled(*scale)
     kw = {"c_sky": p.c_sky, "c_min": c_min, "c_max": c_max}
-    sweeps = {law: semi_active_sweep(osc, law, w, Y, damper=damper, **kw) for law in ("on-off", "clipped", "mr")}
+    sweeps = {law: semi_active_sweep(osc, law, w, Y=Y, damper=damper, **kw) for law in ("on-off", "clipped", "mr")}
     runs = {}
     for name, law, cmin, cmax in (
         ("soft", "passive", c_min, c_min),
@@ -147,13 +147,13 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
         ("mr", "mr", c_min, c_max),
     ):
         runs[name] = semi_active_response(
-            osc, law, omega, Y, c_sky=p.c_sky, c_min=cmin, c_max=cmax, damper=damper, t_end=p.t_end,
+            osc, law, omega, Y=Y, c_sky=p.c_sky, c_min=cmin, c_max=cmax, damper=damper, t_end=p.t_end,
             n_points=p.n_points,
         )  # fmt: skip
     ts = t_steady(p.t_end, omega)
-    metrics = {name: response_metrics(r.t, r.x, r.f, r.v - r.v_base, ts) for name, r in runs.items()}
+    metrics = {name: response_metrics(r.t, r.x, r.f, v_rel=r.v - r.v_base, t_steady=ts) for name, r in runs.items()}
     refine = {
-        spp: float(semi_active_sweep(osc, "on-off", np.array([wn]), Y, steps_per_period=spp, **kw).peak[0])
+        spp: float(semi_active_sweep(osc, "on-off", np.array([wn]), Y=Y, steps_per_period=spp, **kw).peak[0])
         for spp in REFINE_STEPS
     }
     sky = runs["skyhook"]
@@ -195,7 +195,7 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
         metrics=metrics,
         t_steady=ts,
         refine=refine,
-        power=skyhook_power(osc, p.c_sky, Y, omega),
+        power=skyhook_power(osc, p.c_sky, Y, omega=omega),
         power_run=power_run,
         closed_run_error=closed_run_error,
         worst_power=worst,

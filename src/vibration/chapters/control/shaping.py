@@ -59,15 +59,15 @@ def shaping_study(
     actual = Oscillator(m=p.m, c=p.c_nominal, k=p.k * (1.0 + p.freq_error) ** 2)
     shapers = {"ZV": zv_shaper(model), "ZVD": zvd_shaper(model)}
     xs, res, sim, amp = {}, {}, {}, {}
-    t0, x0, v0, _ = shaped_move(actual, None, p.move, t_end, n_points)
-    a0 = residual_amplitude(actual, t0, x0, v0, p.move)
+    t0, x0, v0, _ = shaped_move(actual, None, p.move, t_end=t_end, n_points=n_points)
+    a0 = residual_amplitude(actual, t0, x0, v=v0, target=p.move)
     for name, sh in (("none", None), *shapers.items()):
-        t, x, v, _ = shaped_move(actual, sh, p.move, t_end, n_points)
+        t, x, v, _ = shaped_move(actual, sh, p.move, t_end=t_end, n_points=n_points)
         xs[name] = x
         res[name] = shaper_residual(sh, actual)
         tn = 0.0 if sh is None else sh.duration
         after = t > tn + 1e-12
-        ring = residual_amplitude(actual, t, x, v, p.move)
+        ring = residual_amplitude(actual, t, x, v=v, target=p.move)
         ratio = np.median(ring[after] / a0[after]) * math.exp(-actual.decay_rate * tn)  # Singer-Seering V
         sim[name] = float(ratio) if p.move != 0 else 0.0
         amp[name] = float(ring[after][0] * math.exp(actual.decay_rate * (t[after][0] - tn)))

@@ -89,7 +89,7 @@ def audit_claims(
                 "quantity": q + (f" [{sid}]" if sid else ""),
                 "unit": cl["unit"],
                 "kind": kind,
-                "claim_kind": claim_kind_text(kind, cl["paper_value"], cl["unit"], q),
+                "claim_kind": claim_kind_text(kind, cl["paper_value"], cl["unit"], quantity=q),
                 "paper_value": cl["paper_value"],
                 "paper_method_value": pm,
                 "exact_value": ex,

@@ -66,14 +66,14 @@ def verdict(kind: str, paper_value: str, exact_value, quantity: str = "") -> str
     raise ValueError(f"kind = {kind!r} is not known: allowed approx, greater, less, category")
 
 
-def claim_kind_text(kind: str, paper_value: str, unit: str, quantity: str = "") -> str:
+def claim_kind_text(kind: str, paper_value: str, unit: str, *, quantity: str = "") -> str:
     """The claim's kind beside its value, in words.
 
     Examples
     --------
     >>> claim_kind_text("approx", "0.5", "m"), claim_kind_text("greater", "10.0", "m")
     ('about 0.5 m', 'over 10.0 m')
-    >>> claim_kind_text("less", "0.1", "1", "amplitude_ratio_high_nominal")
+    >>> claim_kind_text("less", "0.1", "1", quantity="amplitude_ratio_high_nominal")
     'below 0.1 of nominal'
     >>> claim_kind_text("category", "unstable", "")
     'a word: unstable'

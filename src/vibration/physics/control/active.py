@@ -157,7 +157,7 @@ def lqr(osc: Oscillator, q_x: float, q_v: float, r: float) -> LQRResult:
     )
 
 
-def lqr_closed_form(osc: Oscillator, q_x: float, q_v: float, r: float) -> np.ndarray:
+def lqr_closed_form(osc: Oscillator, q_x: float, q_v: float, *, r: float) -> np.ndarray:
     """LQR gains ``[K_0 (N/m), K_1 (N s/m)]`` from the closed-form 2 x 2 Riccati solution.
 
     ``K_0 = sqrt(k^2 + q_x/r) - k`` and ``K_1 = sqrt(c^2 + q_v/r + 2 m K_0) - c``: the
@@ -167,7 +167,7 @@ def lqr_closed_form(osc: Oscillator, q_x: float, q_v: float, r: float) -> np.nda
 
     Examples
     --------
-    >>> np.round(lqr_closed_form(Oscillator(m=1.0, c=0.5, k=20.0), 96.0, 1.0, 0.01), 4)
+    >>> np.round(lqr_closed_form(Oscillator(m=1.0, c=0.5, k=20.0), 96.0, 1.0, r=0.01), 4)
     array([80.    , 15.6323])
     """
     q_x, q_v, r = _lqr_args(osc, q_x, q_v, r)
@@ -354,7 +354,7 @@ def _trapz(y, t) -> float:
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
 
 
-def response_metrics(t, x, u, v_rel, t_steady: float) -> Metrics:
+def response_metrics(t, x, u, *, v_rel, t_steady: float) -> Metrics:
     """Peak and RMS displacement (window and ``t >= t_steady``), peak and RMS force, actuator energy.
 
     RMS values are time averages by the trapezoidal rule; the energy is ``int |u v_rel| dt``
@@ -377,7 +377,7 @@ def response_metrics(t, x, u, v_rel, t_steady: float) -> Metrics:
     Examples
     --------
     >>> t = np.linspace(0.0, 2 * np.pi, 20001)
-    >>> m = response_metrics(t, np.sin(t), 2 * np.cos(t), np.cos(t), np.pi)
+    >>> m = response_metrics(t, np.sin(t), 2 * np.cos(t), v_rel=np.cos(t), t_steady=np.pi)
     >>> round(m.rms_x, 6), round(m.peak_u, 6), round(m.energy, 6)
     (0.707107, 2.0, 6.283185)
     """

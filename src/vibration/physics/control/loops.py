@@ -78,7 +78,7 @@ def _loop(osc, kp, ki, kd, w):
     return C / (osc.k - osc.m * w * w + 1j * osc.c * w)
 
 
-def loop_costs(osc: Oscillator, kp: float, kd: float, ki: float = 0.0, omega: float = 0.0) -> LoopCosts:
+def loop_costs(osc: Oscillator, kp: float, kd: float, *, ki: float = 0.0, omega: float = 0.0) -> LoopCosts:
     """Delay margin, phase margin, crossover, loop gain at ``omega`` and noise bandwidth of a PD/PID loop.
 
     The crossovers solve ``|C(i w)|^2 = |k - m w^2 + i c w|^2``, a cubic in ``w^2`` (a quadratic
@@ -223,12 +223,12 @@ class PIDPoles:
     pair_zeta: float  # damping ratio of the complex pair, 1 (nan: none)
 
 
-def pid_poles(osc: Oscillator, kp: float, ki: float, kd: float) -> PIDPoles:
+def pid_poles(osc: Oscillator, kp: float, ki: float, *, kd: float) -> PIDPoles:
     """Poles of the unlimited PID loop, as a real pole and a complex pair where there is one.
 
     Examples
     --------
-    >>> p = pid_poles(Oscillator(m=1.0, c=0.5, k=20.0), 133.6, 512.0, 18.7)
+    >>> p = pid_poles(Oscillator(m=1.0, c=0.5, k=20.0), 133.6, 512.0, kd=18.7)
     >>> round(p.real_pole, 6), round(p.pair_omega, 6), round(p.pair_zeta, 6)
     (-8.0, 8.0, 0.7)
     """

@@ -202,7 +202,7 @@ class PIDResponse:
         return float(np.mean(np.abs(self.u_demand) > self.u_max))
 
 
-def pid_work_check(osc: Oscillator, kp: float, ki: float, kd: float, t_end: float, omega: float = 0.0,
+def pid_work_check(osc: Oscillator, kp: float, ki: float, *, kd: float, t_end: float, omega: float = 0.0,
                    rtol: float = 1e-10) -> None:  # fmt: skip
     """Refuse, before any integration, a PID loop whose window spans too many of its fastest time scales.
 
@@ -210,8 +210,9 @@ def pid_work_check(osc: Oscillator, kp: float, ki: float, kd: float, t_end: floa
     forcing frequency ``omega`` (rad/s); the report runner calls this on a chapter's parameters before any
     kernel starts, so that a run it accepts finishes within the budget.
 
-    >>> pid_work_check(Oscillator(m=1.0, c=0.5, k=20.0), 133.6, 512.0, 18.7, 50.0, 4.47)  # the chapter's loop: fine
-    >>> pid_work_check(Oscillator(m=1.0, c=0.5, k=20.0), 133.6, 1e5, 18.7, 1000.0)  # doctest: +ELLIPSIS
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
+    >>> pid_work_check(osc, 133.6, 512.0, kd=18.7, t_end=50.0, omega=4.47)  # the chapter's loop: fine
+    >>> pid_work_check(Oscillator(m=1.0, c=0.5, k=20.0), 133.6, 1e5, kd=18.7, t_end=1000.0)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
     vibration.physics.model.ParameterError: t_end = 1000.0 s spans ... time scales of the PID loop ...
@@ -241,9 +242,9 @@ def pid_response(
     osc: Oscillator,
     force: SineForce | None,
     kp: float,
+    *,
     ki: float,
     kd: float,
-    *,
     u_max: float | None = None,
     anti_windup: str = "none",
     t_track: float | None = None,
@@ -290,7 +291,7 @@ def pid_response(
     Examples
     --------
     >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
-    >>> r = pid_response(osc, None, 80.0, 100.0, 10.0, x_ref=0.1, t_end=20.0, n_points=201)
+    >>> r = pid_response(osc, None, 80.0, ki=100.0, kd=10.0, x_ref=0.1, t_end=20.0, n_points=201)
     >>> round(float(r.x[-1]), 6)                        # m: integral action removes the offset
     0.1
     """
@@ -315,7 +316,7 @@ def pid_response(
     mode = ANTI_WINDUP.index(anti_windup)
     p = dict(m=osc.m, c=osc.c, k=osc.k, F0=F0, wf=wf, kp=kp, ki=ki, kd=kd, umax=umax, x_ref=x_ref, mode=mode,
              gain_bc=1.0 / (ki * tt))  # fmt: skip
-    pid_work_check(osc, kp, ki, kd, float(grid[-1]), wf, rtol)
+    pid_work_check(osc, kp, ki, kd=kd, t_end=float(grid[-1]), omega=wf, rtol=rtol)
     y, nfev = _pid_run(p, grid, rtol, atol, float(grid[-1]))
     x, v, integ = y
     with np.errstate(over="ignore", invalid="ignore"):
@@ -338,7 +339,7 @@ def pid_response(
     )
 
 
-def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, ki: float, kd: float, t, x_ref=0.0):
+def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, *, ki: float, kd: float, t, x_ref=0.0):
     """Exact response of the unlimited PID loop (matrix exponential plus particular solution).
 
     The loop ``y = [x, v, I]``, ``y' = A y + b_F F0 sin(omega t) + b_r x_ref`` is linear; its
@@ -349,7 +350,8 @@ def pid_linear_response(osc: Oscillator, force: SineForce | None, kp: float, ki:
 
     Examples
     --------
-    >>> x, v, i = pid_linear_response(Oscillator(m=1.0, c=0.5, k=20.0), None, 80.0, 100.0, 10.0, [0.0, 60.0], 0.1)
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
+    >>> x, v, i = pid_linear_response(osc, None, 80.0, ki=100.0, kd=10.0, t=[0.0, 60.0], x_ref=0.1)
     >>> np.round(x, 9)
     array([0. , 0.1])
     """

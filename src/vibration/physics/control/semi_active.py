@@ -106,8 +106,8 @@ def semi_active_response(
     osc: Oscillator,
     law: str,
     omega: float,
-    Y: float,
     *,
+    Y: float,
     c_sky: float = 0.0,
     c_min: float = 0.0,
     c_max: float = 0.0,
@@ -161,7 +161,8 @@ def semi_active_response(
     Examples
     --------
     >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
-    >>> r = semi_active_response(osc, "clipped", 4.47, 0.25, c_sky=8.0, c_min=0.5, c_max=15.0, t_end=10.0, n_points=11)
+    >>> r = semi_active_response(osc, "clipped", 4.47, Y=0.25, c_sky=8.0, c_min=0.5, c_max=15.0,
+    ...                          t_end=10.0, n_points=11)
     >>> r.t.shape, r.law
     ((11,), 'clipped')
     """
@@ -300,8 +301,8 @@ def semi_active_sweep(
     osc: Oscillator,
     law: str,
     omegas,
-    Y: float,
     *,
+    Y: float,
     c_sky: float = 0.0,
     c_min: float = 0.0,
     c_max: float = 0.0,
@@ -329,7 +330,7 @@ def semi_active_sweep(
     --------
     >>> from vibration.physics.control.skyhook import skyhook_transmissibility
     >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
-    >>> s = semi_active_sweep(osc, "skyhook", [4.4721], 0.25, c_sky=8.0, periods=2)
+    >>> s = semi_active_sweep(osc, "skyhook", [4.4721], Y=0.25, c_sky=8.0, periods=2)
     >>> bool(abs(s.fundamental[0] - skyhook_transmissibility(osc, 8.0, 4.4721)) < 1e-6)
     True
     """
@@ -380,7 +381,7 @@ def semi_active_sweep(
 
 
 def semi_active_controller(
-    law: str, c_sky: float, c_min: float, c_max: float, Y: float, omega: float
+    law: str, c_sky: float, c_min: float, *, c_max: float, Y: float, omega: float
 ) -> Callable[[float, float, float], float]:
     """The skyhook laws as a plain callable ``controller(t, x, v) -> f`` (s, m, m/s -> N).
 
@@ -390,7 +391,7 @@ def semi_active_controller(
 
     Examples
     --------
-    >>> f = semi_active_controller("on-off", 8.0, 0.5, 15.0, 0.25, 4.47)
+    >>> f = semi_active_controller("on-off", 8.0, 0.5, c_max=15.0, Y=0.25, omega=4.47)
     >>> round(f(0.0, 0.0, 1.0), 12)     # N: v (v - v_b) = 1 (1 - 1.1175) < 0, so c_min
     0.05875
     """

@@ -148,7 +148,7 @@ def _step_response(osc: Oscillator, t: np.ndarray) -> tuple[np.ndarray, np.ndarr
 
 
 def shaped_move(
-    osc: Oscillator, shaper: Shaper | None, distance: float, t_end: float = 10.0, n_points: int = 2001
+    osc: Oscillator, shaper: Shaper | None, distance: float, *, t_end: float = 10.0, n_points: int = 2001
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Exact point-to-point move: force command ``k D sum A_i H(t - t_i)`` from rest.
 
@@ -199,7 +199,7 @@ def shaped_move(
     return t, x, v, u
 
 
-def residual_amplitude(osc: Oscillator, t, x, v, target: float) -> np.ndarray:
+def residual_amplitude(osc: Oscillator, t, x, *, v, target: float) -> np.ndarray:
     """Amplitude of the ringing about ``target`` (m) at each sample, m: ``|(x - D) + i (v + sigma (x - D)) / omega_d|``.
 
     For a free underdamped oscillation this is its envelope ``a exp(-sigma t)``.
@@ -207,7 +207,7 @@ def residual_amplitude(osc: Oscillator, t, x, v, target: float) -> np.ndarray:
     Examples
     --------
     >>> osc = Oscillator(m=1.0, c=0.0, k=4.0)
-    >>> float(residual_amplitude(osc, 0.0, 1.0, 2.0, 0.0)[0])     # sqrt(1 + (2/2)^2)
+    >>> float(residual_amplitude(osc, 0.0, 1.0, v=2.0, target=0.0)[0])     # sqrt(1 + (2/2)^2)
     1.4142135623730951
     """
     zeta, wn, wd = _underdamped(osc)

@@ -90,7 +90,7 @@ class SkyhookPower:
     gross: float  # mean |f (v - v_b)|: the power it exchanges in both directions, W
 
 
-def skyhook_power(osc: Oscillator, c_sky: float, Y: float, omega: float) -> SkyhookPower:
+def skyhook_power(osc: Oscillator, c_sky: float, Y: float, *, omega: float) -> SkyhookPower:
     """Mean steady powers (W) of the ideal skyhook realised by an actuator between the mass and the base.
 
     With ``x = Im(H Y e^{i omega t})``, ``H = (k + i c omega) / (k - m omega^2 + i (c + c_sky) omega)``,
@@ -102,7 +102,7 @@ def skyhook_power(osc: Oscillator, c_sky: float, Y: float, omega: float) -> Skyh
 
     Examples
     --------
-    >>> p = skyhook_power(Oscillator(m=1.0, c=0.5, k=20.0), 8.0, 0.25, 20.0**0.5)
+    >>> p = skyhook_power(Oscillator(m=1.0, c=0.5, k=20.0), 8.0, 0.25, omega=20.0**0.5)
     >>> round(p.removed, 4), round(p.net, 4), round(p.supplied, 4), round(p.gross, 4)
     (1.4014, -1.1073, 0.4242, 1.9556)
     """

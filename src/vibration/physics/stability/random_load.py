@@ -144,6 +144,7 @@ def simulate_white_noise(
     osc: Oscillator,
     S0: float,
     t_end: float,
+    *,
     dt: float | None = None,
     n_paths: int = 1,
     seed: int = 0,
@@ -241,6 +242,7 @@ def white_noise_monte_carlo(
     osc: Oscillator,
     S0: float,
     n_paths: int = 200,
+    *,
     duration: float | None = None,
     dt: float | None = None,
     seed: int = 0,
@@ -304,7 +306,9 @@ def white_noise_monte_carlo(
     done = 0
     for child in ss.spawn(math.ceil(n_paths / chunk)):
         size = min(chunk, n_paths - done)
-        t, x, v = simulate_white_noise(osc, S0, burn + duration, dt, size, int(child.generate_state(1)[0]))
+        t, x, v = simulate_white_noise(
+            osc, S0, burn + duration, dt=dt, n_paths=size, seed=int(child.generate_state(1)[0])
+        )
         keep = t >= burn
         mx.append(np.mean(x[:, keep] ** 2, axis=1))
         mv.append(np.mean(v[:, keep] ** 2, axis=1))
