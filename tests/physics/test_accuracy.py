@@ -90,7 +90,7 @@ def pointwise_path(osc, force, t, x0=0.0, v0=0.0):
     old = exact_module.UNIFORM_MIN
     exact_module.UNIFORM_MIN = 10**15
     try:
-        return exact_response(osc, force, t, x0, v0)
+        return exact_response(osc, force, t, x0=x0, v0=v0)
     finally:
         exact_module.UNIFORM_MIN = old
 
@@ -104,7 +104,7 @@ def test_strongly_damped_free_response_pointwise(c, x0, v0):
     """Both signs of strong damping, point by point: the issue's corner and its mirror."""
     m, k = 1.0, 1.0 if abs(c) > 100 else 20.0
     t = np.array([1e-6, 1e-3, 0.0037, 0.01, 0.02])
-    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=0.0, omega=0.0), t, x0, v0)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=0.0, omega=0.0), t, x0=x0, v0=v0)
     xr, vr = modal(m, c, k, 0.0, 0.0, t, x0, v0)
     fast = (abs(c) + math.sqrt(c * c - 4 * k * m)) / (2 * m)  # 1/s
     bound = 8 * EPS * (1.0 + fast * t)  # the exponent's own rounding, relative
@@ -123,7 +123,7 @@ def test_strongly_negative_damping_forced_pointwise(c):
     """Forced, c < -c_crit, from rest and from an initial state."""
     t = np.linspace(0.0, 1.0, 41)[1:]
     for x0, v0 in [(0.0, 0.0), (0.3, -0.7)]:
-        r = exact_response(Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=3.0), t, x0, v0)
+        r = exact_response(Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=3.0), t, x0=x0, v0=v0)
         xr, vr = modal(1.0, c, 20.0, 5.0, 3.0, t, x0, v0)
         assert np.max(pointwise(r.x, xr)) <= 1e-13
         assert np.max(pointwise(r.v, vr)) <= 1e-13
@@ -158,7 +158,7 @@ def test_first_samples_of_a_window_pointwise(m, c, k, F0, w, x0, v0):
     """The first samples of an ordinary window (block path) and of a short one (pointwise path)."""
     # up to 0.3 s: before the first zero crossing, where pointwise relative error means nothing
     for t in (np.linspace(0.0, 50.0, 5001)[1:31], np.geomspace(1e-7, 0.3, 40)):
-        r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, x0, v0)
+        r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, x0=x0, v0=v0)
         xr, vr = modal(m, c, k, F0, w, t, x0, v0)
         assert np.max(pointwise(r.x, xr)) <= 5e-14
         assert np.max(pointwise(r.v, vr)) <= 5e-14
@@ -227,7 +227,7 @@ def test_block_path_equals_pointwise_path(m, c, k, F0, w, T, n, tol):
     t = np.linspace(0.0, T, n)
     osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     for x0, v0 in [(0.0, 0.0), (0.3, -0.7)]:
-        fast, slow = exact_response(osc, force, t, x0, v0), pointwise_path(osc, force, t, x0, v0)
+        fast, slow = exact_response(osc, force, t, x0=x0, v0=v0), pointwise_path(osc, force, t, x0, v0)
         assert np.max(np.abs(fast.x - slow.x)) <= tol * np.max(np.abs(slow.x))
         assert np.max(np.abs(fast.v - slow.v)) <= tol * np.max(np.abs(slow.v))
 
@@ -242,7 +242,7 @@ def test_block_path_against_50_digits(m, c, k, F0, w, T, n, tol):
     B = math.isqrt(n - 1) + 1
     rng = np.random.default_rng(7)
     idx = np.unique(np.r_[1:5, B - 1 : B + 2, n // 2 : n // 2 + 3, n - 3 : n, rng.integers(0, n, 25)])
-    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, 0.3, -0.7)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, x0=0.3, v0=-0.7)
     xr, vr = modal(m, c, k, F0, w, t[idx], 0.3, -0.7)
     assert scaled(r.x[idx], xr, np.max(np.abs(r.x))) <= tol
     assert scaled(r.v[idx], vr, np.max(np.abs(r.v))) <= tol
@@ -268,7 +268,7 @@ def test_block_sizes_and_grids_not_from_zero(n, m, c, k, F0, w):
     base = np.linspace(0.0, 20.0, 2 * n - 1)
     for t in (np.linspace(0.0, 20.0, n), np.linspace(0.05, 20.0, n), np.linspace(3.0, 20.0, n), base[::2]):
         assert exact_module._uniform(t) is not None
-        fast, slow = exact_response(osc, force, t, 0.3, -0.7), pointwise_path(osc, force, t, 0.3, -0.7)
+        fast, slow = exact_response(osc, force, t, x0=0.3, v0=-0.7), pointwise_path(osc, force, t, 0.3, -0.7)
         assert np.max(np.abs(fast.x - slow.x)) <= 1e-13 * np.max(np.abs(slow.x))
         assert np.max(np.abs(fast.v - slow.v)) <= 1e-13 * np.max(np.abs(slow.v))
 
@@ -302,7 +302,7 @@ def test_grids_that_cross_the_near_steady_split():
     for t in grids:
         assert exact_module._uniform(t) is not None
         for x0, v0 in [(0.0, 0.0), (0.3, -0.7)]:
-            fast, slow = exact_response(osc, force, t, x0, v0), pointwise_path(osc, force, t, x0, v0)
+            fast, slow = exact_response(osc, force, t, x0=x0, v0=v0), pointwise_path(osc, force, t, x0, v0)
             assert np.max(np.abs(fast.x - slow.x)) <= 1e-13 * np.max(np.abs(slow.x))
             assert np.max(np.abs(fast.v - slow.v)) <= 1e-13 * np.max(np.abs(slow.v))
             xr, _ = modal(1.0, 0.5, 20.0, 5.0, 4.47, t[[0, 1, -2, -1]], x0, v0)
@@ -333,9 +333,9 @@ def test_block_path_equals_pointwise_path_on_random_grids(log_m, log_k, zeta, ra
         slow = pointwise_path(osc, force, t, x0, v0)
     except ParameterError:  # beyond the float range: the block path refuses too
         with pytest.raises(ParameterError):
-            exact_response(osc, force, t, x0, v0)
+            exact_response(osc, force, t, x0=x0, v0=v0)
         return
-    fast = exact_response(osc, force, t, x0, v0)
+    fast = exact_response(osc, force, t, x0=x0, v0=v0)
     ro = exact_module._roots(osc)
     tol = 64 * EPS * (1.0 + max(force.omega, ro.radius, abs(ro.sigma)) * t[-1])  # the phase/exponent rounding
     for got, ref in ((fast.x, slow.x), (fast.v, slow.v)):

@@ -194,7 +194,7 @@ def test_against_expm(m, c, k, F0, w, T, regime, x0, v0):
     osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     assert osc.regime == regime
     t = np.linspace(0.0, T, 2001)
-    r = exact_response(osc, force, t, x0, v0)
+    r = exact_response(osc, force, t, x0=x0, v0=v0)
     x_ref, v_ref = expm_response(m, c, k, F0, w, t, x0, v0)
     assert r.t.shape == r.x.shape == r.v.shape == t.shape
     assert max_rel_err(r.x, x_ref) <= RTOL_EXPM
@@ -208,7 +208,7 @@ def test_against_expm(m, c, k, F0, w, T, regime, x0, v0):
 def test_against_decimal_closed_form(m, c, k, F0, w, T, regime, x0, v0):
     osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     t = np.linspace(0.0, T, 201)
-    r = exact_response(osc, force, t, x0, v0)
+    r = exact_response(osc, force, t, x0=x0, v0=v0)
     x_ref, v_ref = decimal_response(m, c, k, F0, w, t, x0, v0)
     assert max_rel_err(r.x, x_ref) <= RTOL_DECIMAL
     assert max_rel_err(r.v, v_ref) <= RTOL_DECIMAL
@@ -261,7 +261,7 @@ def test_negative_and_unordered_times():
         (1.0, 15.0, 20.0, 5.0, 4.47),
         (1.0, 0.0, 20.0, 5.0, SQRT20),
     ]:
-        r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, 0.3, -0.7)
+        r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), t, x0=0.3, v0=-0.7)
         x_ref, v_ref = expm_response(m, c, k, F0, w, t, 0.3, -0.7)
         assert max_rel_err(r.x, x_ref) <= RTOL_EXPM
         assert max_rel_err(r.v, v_ref) <= RTOL_EXPM
@@ -277,7 +277,7 @@ def test_undamped_resonance_secular_solution(k, w, x0, v0):
     m, F0 = 1.0, 5.0
     wn = math.sqrt(k / m)
     t = np.linspace(0.0, 20.0, 2001)
-    r = exact_response(Oscillator(m=m, c=0.0, k=k), SineForce(F0=F0, omega=w), t, x0, v0)
+    r = exact_response(Oscillator(m=m, c=0.0, k=k), SineForce(F0=F0, omega=w), t, x0=x0, v0=v0)
     x = F0 / (2 * m * wn**2) * (np.sin(wn * t) - wn * t * np.cos(wn * t))
     x += x0 * np.cos(wn * t) + v0 / wn * np.sin(wn * t)
     v = F0 / (2 * m) * t * np.sin(wn * t) - x0 * wn * np.sin(wn * t) + v0 * np.cos(wn * t)
@@ -298,7 +298,7 @@ def test_free_decay_from_textbook_forms(c):
     m, k, x0, v0 = 1.0, 20.0, 0.4, -1.3
     sigma, wn2 = c / (2 * m), k / m
     t = np.linspace(0.0, 10.0, 1001)
-    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=0.0, omega=3.0), t, x0, v0)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=0.0, omega=3.0), t, x0=x0, v0=v0)
     if Oscillator(m=m, c=c, k=k).regime == "underdamped":
         wd = math.sqrt(wn2 - sigma**2)
         x = np.exp(-sigma * t) * (x0 * np.cos(wd * t) + (v0 + sigma * x0) / wd * np.sin(wd * t))
@@ -325,7 +325,7 @@ def test_shapes_scalar_and_list():
 @pytest.mark.parametrize("case", ["underdamped", "critical-exact", "overdamped-15", "undamped-resonance"])
 def test_initial_conditions_hold_exactly(case):
     m, c, k, F0, w, *_ = CASES[case]
-    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), [0.0], 0.3, -0.7)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), [0.0], x0=0.3, v0=-0.7)
     assert r.x[0] == pytest.approx(0.3, abs=1e-15)
     assert r.v[0] == pytest.approx(-0.7, abs=1e-15)
 
@@ -406,7 +406,7 @@ def test_large_time_equals_steady_state(m, c, k, F0, w, t_start):
     osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     ss = steady_state(osc, force)
     t = np.linspace(t_start, t_start + 10.0, 1001)
-    r = exact_response(osc, force, t, 0.3, -0.7)
+    r = exact_response(osc, force, t, x0=0.3, v0=-0.7)
     # both sides evaluate sin of an argument ~ w t ~ 5e3 rad: allow eps * w t
     tol = 1e-12 + 4e-16 * w * t[-1]
     np.testing.assert_allclose(r.x, ss.amplitude * np.sin(w * t - ss.phase), rtol=0, atol=tol * ss.amplitude)

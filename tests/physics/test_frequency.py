@@ -263,7 +263,7 @@ def test_settling_time_without_forcing_frequency_is_zero(c):
 def test_energy_balance(m, c, k, F0, w, x0, v0):
     osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     t = np.linspace(0.0, 20.0, 40001)
-    r = exact_response(osc, force, t, x0, v0)
+    r = exact_response(osc, force, t, x0=x0, v0=v0)
     eb = energy_balance(osc, force, r)
     scale = max(np.max(np.abs(eb.work)), np.max(np.abs(eb.dissipated)), np.max(np.abs(eb.stored)))
     assert np.max(np.abs(eb.residual)) <= 1e-9 * scale  # Simpson, h = 5e-4 s: measured <= 1e-11

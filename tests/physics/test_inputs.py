@@ -279,7 +279,7 @@ def _undamped_resonance(osc, force) -> bool:
 
 
 CALLS = {
-    "exact_response": lambda d: exact_response(d(oscillators()), d(forces()), d(junk_array), d(junk), d(junk)),
+    "exact_response": lambda d: exact_response(d(oscillators()), d(forces()), d(junk_array), x0=d(junk), v0=d(junk)),
     "steady_state": lambda d: steady_state(d(oscillators()), d(forces())),
     "simulate": lambda d: simulate(
         d(oscillators()), d(forces()), d(junk_scalar), d(st.one_of(junk_scalar, st.integers(2, 200))), d(junk), d(junk)

@@ -51,7 +51,7 @@ def _tight_cases():
 
 
 def _errors(osc, force, r, x0, v0):
-    e = exact_response(osc, force, r.t, x0, v0)
+    e = exact_response(osc, force, r.t, x0=x0, v0=v0)
     return (
         float(np.max(np.abs(r.x - e.x))),
         float(np.max(np.abs(r.v - e.v))),

@@ -77,7 +77,7 @@ def _fastest_rate(m, c, k, w, T):
 @given(systems())
 def test_initial_conditions(params):
     m, c, k, F0, w, x0, v0 = params
-    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), [0.0], x0, v0)
+    r = exact_response(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), [0.0], x0=x0, v0=v0)
     assert abs(r.x[0] - x0) <= 1e-12
     assert abs(r.v[0] - v0) <= 1e-12
 
@@ -97,9 +97,9 @@ def test_velocity_is_dx_dt_and_ode_residual_vanishes(params):
     ts = np.linspace(0.0, T, 41)[1:]
     ts = ts[ts > 2 * h]
     offsets = np.array([-2.0, -1.0, 1.0, 2.0]) * h
-    around = exact_response(osc, force, (ts[:, None] + offsets[None, :]).ravel(), x0, v0)
+    around = exact_response(osc, force, (ts[:, None] + offsets[None, :]).ravel(), x0=x0, v0=v0)
     xs, vs = around.x.reshape(-1, 4), around.v.reshape(-1, 4)
-    at = exact_response(osc, force, ts, x0, v0)
+    at = exact_response(osc, force, ts, x0=x0, v0=v0)
 
     def d4(y):
         return (y[:, 0] - 8.0 * y[:, 1] + 8.0 * y[:, 2] - y[:, 3]) / (12.0 * h)
@@ -122,7 +122,7 @@ def test_energy_balance(params):
     T = _window(m, c, k)
     lam = _fastest_rate(m, c, k, w, T)
     n = min(200_001, max(2001, 2 * math.ceil(30.0 * T * lam) + 1))  # >= 30 samples per 1/lam
-    r = exact_response(osc, force, np.linspace(0.0, T, n), x0, v0)
+    r = exact_response(osc, force, np.linspace(0.0, T, n), x0=x0, v0=v0)
     eb = energy_balance(osc, force, r)
     energy = 0.5 * m * r.v**2 + 0.5 * k * r.x**2  # stored (kinetic + potential), J
     # energy scales: the terms themselves, and F0^2/k (force times static deflection)

@@ -76,7 +76,7 @@ def test_each_printed_equation_matches_exact_response(case, x0, v0):
     if case == "critically damped":
         assert osc.regime == "critically damped"
     x, v = _as_printed(m, c, k, F0, w, x0, v0, T)
-    ref = exact_response(osc, SineForce(F0=F0, omega=w), T, x0, v0)
+    ref = exact_response(osc, SineForce(F0=F0, omega=w), T, x0=x0, v0=v0)
     scale_x, scale_v = np.max(np.abs(ref.x)), np.max(np.abs(ref.v))
     assert np.max(np.abs(x - ref.x)) <= RTOL * scale_x, case
     assert np.max(np.abs(v - ref.v)) <= RTOL * scale_v, case

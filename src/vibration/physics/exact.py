@@ -427,7 +427,7 @@ def _pointwise(ro: _Roots, w: float, kind: str, c: dict, t: np.ndarray) -> np.nd
     return out
 
 
-def exact_response(osc: Oscillator, force: SineForce, t, x0: float = 0.0, v0: float = 0.0) -> Response:
+def exact_response(osc: Oscillator, force: SineForce, t, *, x0: float = 0.0, v0: float = 0.0) -> Response:
     """Exact displacement and velocity at the times ``t``.
 
     On a uniform increasing grid from ``t >= 0`` (``numpy.linspace``, detected

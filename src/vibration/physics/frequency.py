@@ -293,14 +293,14 @@ def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float
     t_hi = tau * (max(0.0, math.log(max(bound, level) / level)) + 3.0)
     free = SineForce(F0=0.0, omega=0.0)
     grid = np.linspace(0.0, t_hi, 4001)
-    tr = np.abs(exact_response(osc, free, grid, x0, v0).x)
+    tr = np.abs(exact_response(osc, free, grid, x0=x0, v0=v0).x)
     above = np.nonzero(tr > level)[0]
     if above.size == 0:
         return 0.0
     j = above[-1]
     if j == grid.size - 1:
         return float(grid[-1])
-    f = lambda s: abs(exact_response(osc, free, s, x0, v0).x) - level  # noqa: E731
+    f = lambda s: abs(exact_response(osc, free, s, x0=x0, v0=v0).x) - level  # noqa: E731
     return float(brentq(f, grid[j], grid[j + 1], xtol=1e-12))
 
 
