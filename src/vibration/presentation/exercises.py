@@ -16,7 +16,8 @@ module, ``exercises.toml``, read by :meth:`SheetTemplate.read`: the sheet's ques
 prerequisites, and for each exercise its id, kind, question and worked answer as templates with named
 placeholders (``{mu}``, ``{x0:.5}`` for five significant digits), its answers (quantity, symbol, the name
 of the value, unit, tolerances), the options of a conceptual one and the phrases a branch chooses. The
-chapter's Python computes only the named values, and :meth:`SheetTemplate.fill` builds the exercises.
+chapter's Python computes only the named values, and :meth:`SheetTemplate.fill` builds the exercises;
+:class:`ChapterExercises` binds the two into the module's ``exercises`` (the data file read once, at import).
 
 Answers are numbers with a unit and a tolerance (checked by :meth:`Answer.accepts`), or the key of
 the correct option of a multiple-choice question. ``worked`` holds the steps with the run's own
@@ -59,6 +60,7 @@ __all__ = [
     "KINDS",
     "LEVELS",
     "Answer",
+    "ChapterExercises",
     "Checked",
     "Choice",
     "Exercise",
@@ -581,3 +583,84 @@ class SheetTemplate:
                     )
                 fields[name] = values[ref]
         return Answer(**fields)
+
+
+@dataclass(frozen=True, kw_only=True)
+class ChapterExercises:
+    """A chapter's ``exercises`` function: its data file's sheet, filled with the values the chapter computes.
+
+    A chapter's ``exercises.py`` defines ``values(params) -> dict`` (the numbers its templates name) and binds
+
+    .. code-block:: python
+
+        exercises = ChapterExercises.read(__package__, Params, values)
+        SHEET = exercises.sheet
+        CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
+
+    so the module's ``exercises(params)`` reads its ``exercises.toml`` once, at import, and fills it per call.
+
+    Examples
+    --------
+    >>> import dataclasses
+    >>> @dataclasses.dataclass(frozen=True)
+    ... class Params:
+    ...     zeta: float = 0.1
+    >>> template = SheetTemplate.parse('''
+    ... question = "How fast?"
+    ... level = "core"
+    ... objectives = ["Compute ω_d.", "Compute ζ.", "Explain the decay."]
+    ... prerequisites = ["algebra"]
+    ... [[exercise]]
+    ... id = "01.1"
+    ... kind = "numerical"
+    ... text = "With ζ = {zeta}, compute 2ζ."
+    ... worked = "2ζ = {two_zeta}."
+    ... answers = [{ quantity = "two_zeta", value = "two_zeta", unit = "", rtol = 1e-3 }]
+    ... ''', chapter="01_x")
+    >>> exercises = ChapterExercises(template=template, params=Params,
+    ...                              values=lambda p: {"zeta": p.zeta, "two_zeta": 2 * p.zeta})
+    >>> [e.worked for e in exercises()], [e.worked for e in exercises(Params(zeta=0.3))]
+    (['2ζ = 0.2.'], ['2ζ = 0.6.'])
+    >>> exercises({"zeta": 0.3})  # doctest: +NORMALIZE_WHITESPACE
+    Traceback (most recent call last):
+    ...
+    vibration.physics.model.ParameterError: params = {'zeta': 0.3} is not allowed: allowed a Params record
+    of chapter 01_x or None (its defaults)
+    """
+
+    template: SheetTemplate  # the sheet and its exercises as the chapter's data file words them
+    params: type  # the chapter's parameter record type (``Params``); ``params()`` gives the defaults
+    values: Callable[..., Mapping[str, object]]  # values(params): the numbers the templates name
+
+    @classmethod
+    def read(
+        cls,
+        package: str,
+        params: type,
+        values: Callable[..., Mapping[str, object]],
+        *,
+        number: Callable[..., str] = fmt,
+        name: str = "exercises.toml",
+    ) -> ChapterExercises:
+        """The exercises of the chapter package ``package``, worded in its data file ``name``.
+
+        The chapter is ``params.SCHEMA.notebook``; ``number`` writes a real number (``number(x, digits)``).
+        """
+        template = SheetTemplate.read(package, chapter=params.SCHEMA.notebook, number=number, name=name)
+        return cls(template=template, params=params, values=values)
+
+    @property
+    def sheet(self) -> Sheet:
+        """The chapter's sheet: its question, level, objectives and prerequisites."""
+        return self.template.sheet
+
+    def __call__(self, params=None) -> tuple[Exercise, ...]:
+        """The chapter's exercises for the record ``params`` (None: the defaults), answers computed by the package."""
+        if params is None:
+            params = self.params()
+        if not isinstance(params, self.params):
+            raise ParameterError(
+                f"params = {params!r:.200} is not allowed: allowed a {self.params.__name__} record of chapter "
+                f"{self.sheet.chapter} or None (its defaults)"
+            )
+        return self.template.fill(self.values(params))
