@@ -13,13 +13,9 @@ from scipy.optimize import brentq
 from vibration.physics.exact import exact_response, steady_state
 from vibration.physics.frequency import settling_time
 from vibration.physics.model import Oscillator, SineForce
-from vibration.presentation.exercises import Exercise, SheetTemplate
+from vibration.presentation.exercises import ChapterExercises
 
 from .params import Params
-
-TEMPLATE = SheetTemplate.read(__package__, chapter=Params.SCHEMA.notebook)
-SHEET = TEMPLATE.sheet
-CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 #: The paper's resonance amplitude, m ("a level of ±5.0 meters in the resonance case").
 PAPER_RESONANCE_AMPLITUDE = 5.0
@@ -75,6 +71,6 @@ def values(params: Params) -> dict[str, object]:
     return out
 
 
-def exercises(params: Params) -> tuple[Exercise, ...]:
-    """The chapter's exercises for ``params``, answers computed by the package."""
-    return TEMPLATE.fill(values(params))
+exercises = ChapterExercises.read(__package__, Params, values)
+SHEET = exercises.sheet
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()

@@ -8,13 +8,9 @@ from __future__ import annotations
 import math
 
 from vibration.physics.duffing import Duffing, backbone, linear_trust_amplitude
-from vibration.presentation.exercises import Exercise, SheetTemplate
+from vibration.presentation.exercises import ChapterExercises
 
 from .params import Params
-
-TEMPLATE = SheetTemplate.read(__package__, chapter=Params.SCHEMA.notebook)
-SHEET = TEMPLATE.sheet
-CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 #: The free amplitude of exercise 09.1, m.
 AMPLITUDE = 1.0
@@ -40,6 +36,6 @@ def values(params: Params) -> dict[str, object]:
     return out
 
 
-def exercises(params: Params) -> tuple[Exercise, ...]:
-    """The chapter's exercises for ``params``, answers computed by the package."""
-    return TEMPLATE.fill(values(params))
+exercises = ChapterExercises.read(__package__, Params, values)
+SHEET = exercises.sheet
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()

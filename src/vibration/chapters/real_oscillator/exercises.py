@@ -15,20 +15,15 @@ from vibration.chapters.real_oscillator.params import Params
 from vibration.chapters.real_oscillator.study import driven_run, lab_folder
 from vibration.physics.lab import damping_vs_amplitude, load_lab_data
 from vibration.physics.model import ParameterError
-from vibration.presentation.exercises import Exercise, SheetTemplate
+from vibration.presentation.exercises import ChapterExercises
 from vibration.presentation.narrative import g
-
-TEMPLATE = SheetTemplate.read(__package__, chapter=Params.SCHEMA.notebook, number=g)
-SHEET = TEMPLATE.sheet
-CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 #: The tolerance of the explore exercise's ``-p`` run (a looser steadiness test than the default).
 EXPLORE_TOLERANCE = 0.05
 
 
-def values(params: Params | None = None) -> dict[str, object]:
+def values(params: Params) -> dict[str, object]:
     """The numbers the sheet's templates name, for ``params`` (from the folder ``params.lab_data``)."""
-    params = params or Params()
     data = load_lab_data(lab_folder(params.lab_data))
     free = data.select(kind="free")
     if not free:
@@ -74,6 +69,6 @@ def values(params: Params | None = None) -> dict[str, object]:
     return out
 
 
-def exercises(params: Params | None = None) -> tuple[Exercise, ...]:
-    """The chapter's exercises for one parameter record (answers from the folder ``params.lab_data``)."""
-    return TEMPLATE.fill(values(params))
+exercises = ChapterExercises.read(__package__, Params, values, number=g)
+SHEET = exercises.sheet
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()

@@ -9,13 +9,9 @@ import math
 
 from vibration.physics.frequency import settling_time
 from vibration.physics.model import Oscillator, SineForce
-from vibration.presentation.exercises import Exercise, SheetTemplate
+from vibration.presentation.exercises import ChapterExercises
 
 from .params import Params
-
-TEMPLATE = SheetTemplate.read(__package__, chapter=Params.SCHEMA.notebook)
-SHEET = TEMPLATE.sheet
-CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def values(params: Params) -> dict[str, object]:
@@ -42,6 +38,6 @@ def values(params: Params) -> dict[str, object]:
     return out
 
 
-def exercises(params: Params) -> tuple[Exercise, ...]:
-    """The chapter's exercises for ``params``, answers computed by the package."""
-    return TEMPLATE.fill(values(params))
+exercises = ChapterExercises.read(__package__, Params, values)
+SHEET = exercises.sheet
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()

@@ -8,13 +8,9 @@ from __future__ import annotations
 import math
 
 from vibration.physics.tmd import den_hartog
-from vibration.presentation.exercises import Exercise, SheetTemplate
+from vibration.presentation.exercises import ChapterExercises
 
 from .params import Params
-
-TEMPLATE = SheetTemplate.read(__package__, chapter=Params.SCHEMA.notebook)
-SHEET = TEMPLATE.sheet
-CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
 
 
 def values(params: Params) -> dict[str, object]:
@@ -43,6 +39,6 @@ def values(params: Params) -> dict[str, object]:
     }
 
 
-def exercises(params: Params) -> tuple[Exercise, ...]:
-    """The chapter's exercises for ``params``, answers computed by the package."""
-    return TEMPLATE.fill(values(params))
+exercises = ChapterExercises.read(__package__, Params, values)
+SHEET = exercises.sheet
+CHAPTER, QUESTION, LEVEL, OBJECTIVES, PREREQUISITES = SHEET.module_constants()
