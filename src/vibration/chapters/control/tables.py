@@ -146,10 +146,9 @@ def costs_table(study: ControlStudy) -> Table:
             """
         ),
         caption=(
-            f"The active laws at {_at(study)} on equal footing: gains (K_x, K_v of the PD-type laws; K_P, K_I, K_D of "
-            "the PID), the unlimited loop's steady amplitude X_ss, the run's steady RMS force u_rms against the "
-            "least any controller needs, loop gain |L(iω)| at the forcing, gain crossover ω_c, margins and noise "
-            "bandwidth B_n."
+            f"The active laws at {_at(study)}: gains (K_x, K_v; K_P, K_I, K_D of the PID), the unlimited loop's "
+            "steady amplitude X_ss, steady RMS force u_rms against the least any controller needs, loop gain "
+            "|L(iω)| at the forcing, crossover ω_c, margins and noise bandwidth B_n."
         ),
         name="tab-control-costs",
         notes=(
@@ -276,9 +275,9 @@ def semi_active_metrics_table(study: ControlStudy) -> Table:
         columns=_METRIC_COLUMNS,
         caption=(
             f"Semi-active suspension at ω = {num(s.omega)} rad/s (ω/ω_n = {cell(s.omega / s.osc.natural_frequency)}), "
-            f"base amplitude Y = F_0/k = {num(s.Y)} m, from rest over {num(s.runs['soft'].t[-1])} s: absolute "
-            "displacement of the mass, device force on it and the energy ∫|f v_rel| dt exchanged with mass and base, "
-            "v_rel = v − v_b (for the ideal skyhook the gross exchange, split in {numref}`tab-control-skyhook-energy`)."
+            f"base amplitude Y = F_0/k = {num(s.Y)} m, from rest over {num(s.runs['soft'].t[-1])} s: the mass's "
+            "displacement, the device force and the energy ∫|f v_rel| dt it exchanges, v_rel = v − v_b (for the "
+            "ideal skyhook the gross exchange, split in {numref}`tab-control-skyhook-energy`)."
         ),
         name="tab-control-semiactive",
         notes=(

@@ -62,7 +62,7 @@ def duffing_spring() -> Captioned:
     colours = {"hardening": "vermillion", "linear": "blue", "softening": "sky blue"}
     caption = (
         r"The Duffing oscillator of chapter 9, $m\ddot x + c\dot x + kx + k_3x^3 = F_0\cos\omega t$. "
-        f"{words[0].capitalize()}: a mass $m$ on a spring of stiffnesses $k$ and $k_3$ and a dashpot $c$, driven "
+        f"{words[0].capitalize()}: a mass $m$ on a spring ($k$, $k_3$) and a dashpot $c$, driven "
         r"by $F_0\cos\omega t$; $x$ in blue. "
         f"{words[1].capitalize()}: its free-body diagram: $kx + k_3x^3$, $c\\dot x$, $F_0\\cos\\omega t$, "
         "$mg$ and $N$ in vermillion. "

@@ -84,8 +84,8 @@ def skyhook() -> Captioned:
     words = dict(zip(("sky", "semi", "fbd", "map"), panel_words(fig), strict=True))
     caption = (
         "Chapter 7's suspension, $m\\ddot x + c(\\dot x - \\dot y) + k(x - y) = f$. "
-        f"{words['sky'].capitalize()}: a skyhook damper $c_\\mathrm{{sky}}$ (green) ties the mass $m$, on spring $k$ "
-        "and damper $c$ over the base $y(t)$, to the sky; $x$ in blue. "
+        f"{words['sky'].capitalize()}: a skyhook damper $c_\\mathrm{{sky}}$ (green) ties the mass $m$, on $k$ "
+        "and $c$ over the base $y(t)$, to the sky; $x$ in blue. "
         f"{words['semi'].capitalize()}: a semi-active damper $c_\\mathrm{{sa}}$ (purple) instead. "
         f"{words['fbd'].capitalize()}: the mass's forces $k(x - y)$, $c(\\dot x - \\dot y)$ and $f$ (vermillion). "
         f"{words['map'].capitalize()}: what a semi-active damper can produce, $f$ against $v_\\mathrm{{rel}}$."
