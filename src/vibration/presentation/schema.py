@@ -96,8 +96,9 @@ class Schema:
 
         The chapter's ``Params = SCHEMA.record_type(module=__name__)`` writes each parameter once: ``Params(**values)``
         checks every value and the rules that tie them together; ``Params.from_values(mapping)`` takes
-        a mapping (missing names keep their defaults). With ``module``, the module that binds the class
-        under ``name``, its records pickle.
+        a mapping (missing names keep their defaults); ``Params.from_namespace(globals())`` takes every
+        parameter from a notebook's namespace after its parameters cell, in one call that restates no name.
+        With ``module``, the module that binds the class under ``name``, its records pickle.
 
         >>> n = Param(name="n", symbol="n", default=3, unit="", low=1, high=9, meaning="count")
         >>> c = Param(name="c", symbol="c", default=0.5, unit="N s/m", low=0.0, high=9.0, meaning="d")
@@ -105,6 +106,12 @@ class Schema:
         >>> P = S.record_type()
         >>> P(), P.from_values({"n": 4}).n
         (Params(n=3, c=0.5), 4)
+        >>> P.from_namespace({"n": 5, "c": 0.25, "other": "not a parameter"})
+        Params(n=5, c=0.25)
+        >>> P.from_namespace({"n": 5})
+        Traceback (most recent call last):
+        ...
+        vibration.physics.model.ParameterError: parameter 'c' is not in the namespace: allowed one defining n, c
         >>> P(n=10)
         Traceback (most recent call last):
         ...
@@ -120,6 +127,15 @@ class Schema:
         def from_values(cls, values: Mapping | None = None):
             return cls(**(schema.defaults() | schema.check(dict(values or {}))))
 
+        def from_namespace(cls, namespace: Mapping):
+            missing = [n for n in schema.names() if n not in namespace]
+            if missing:
+                raise ParameterError(
+                    f"parameter {missing[0]!r} is not in the namespace: allowed one defining "
+                    + ", ".join(schema.names())
+                )
+            return cls(**{n: namespace[n] for n in schema.names()})
+
         def as_dict(rec) -> dict:
             return {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
 
@@ -130,6 +146,7 @@ class Schema:
             namespace={
                 "__post_init__": post_init,
                 "from_values": classmethod(from_values),
+                "from_namespace": classmethod(from_namespace),
                 "as_dict": as_dict,
                 "SCHEMA": self,
                 "__doc__": f"The validated parameters of {self.notebook} (defaults and ranges: its SCHEMA).",

@@ -104,3 +104,12 @@ def control_panel(study: ControlStudy | Params | None = None, **values) -> Contr
     if isinstance(study, ControlStudy):
         return ControlPanel(study.params)
     return ControlPanel(study if study is not None else Params.from_values(values))
+
+
+def panel(study: ControlStudy) -> ControlPanel:
+    """The suspension and active-control panel at the study's parameters.
+
+    The chapter's one entry point for its panel, as in every chapter with a panel: in JupyterLab a live
+    explorer, in the rendered book the same controls without a kernel.
+    """
+    return control_panel(study)

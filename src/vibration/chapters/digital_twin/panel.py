@@ -182,3 +182,12 @@ def twin_explorer(st: DigitalTwinStudy) -> TwinExplorer:
     """
     p = st.params
     return TwinExplorer(st.asset, st.grid, dt=p.dt, seed=p.seed, band=st.band, rms=p.F_rms)
+
+
+def panel(study: DigitalTwinStudy) -> TwinExplorer:
+    """The identification explorer over the study's grid of estimates.
+
+    The chapter's one entry point for its panel, as in every chapter with a panel: in JupyterLab a live
+    explorer, in the rendered book the same controls without a kernel.
+    """
+    return twin_explorer(study)

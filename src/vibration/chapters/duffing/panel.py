@@ -11,6 +11,7 @@ from __future__ import annotations
 import html
 import json
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -20,6 +21,9 @@ from vibration.physics.model import check_real
 from vibration.presentation.numbers import minus
 from vibration.presentation.panels import PanelIds, line_style, panel_assets, png_bytes, screen_words
 from vibration.presentation.style import case_style, figure, place_legend
+
+if TYPE_CHECKING:  # annotations only
+    from vibration.chapters.duffing.study import DuffingStudy
 
 _ids = PanelIds("vib-duffing")
 
@@ -202,3 +206,13 @@ def hb_explorer(m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=None, k3_range=N
     8.9443
     """
     return HBExplorer(m, c, k, k3, F0, omega_max, k3_range, F0_max)
+
+
+def panel(study: DuffingStudy) -> HBExplorer:
+    """The harmonic-balance explorer of the study's hardening spring.
+
+    The chapter's one entry point for its panel, as in every chapter with a panel: in JupyterLab a live
+    explorer, in the rendered book the same controls without a kernel.
+    """
+    p = study.params
+    return hb_explorer(m=p.m, c=p.c_nominal, k=p.k, k3=p.k3_hard, F0=p.F0)

@@ -25,11 +25,16 @@ import math
 import re
 from dataclasses import dataclass
 from importlib.resources import files
+from typing import TYPE_CHECKING
 
 from vibration.chapters.explore.figure import STYLE
 from vibration.chapters.explore.study import C_MAX, C_MIN
 from vibration.physics.model import check_int, check_real
 from vibration.presentation.panels import PanelIds, checked_panel_id, line_style, panel_assets
+
+if TYPE_CHECKING:  # annotations only
+    from vibration.chapters.explore.study import ExploreStudy
+    from vibration.chapters.explore.widget import Explorer
 
 #: Positions of the logarithmic damping slider.
 C_STEPS = 1000
@@ -249,3 +254,14 @@ aria-label="magnification against forcing frequency in rad/s"></svg>
 <script>window.vibrationSliders.mount(document.getElementById({json.dumps(pid)}));</script>
 </div>
 """
+
+
+def panel(study: ExploreStudy) -> Explorer:
+    """The slider explorer started at the study's parameters.
+
+    The chapter's one entry point for its panel, as in every chapter with a panel: in JupyterLab a live
+    explorer, in the rendered book the same controls without a kernel.
+    """
+    from vibration.chapters.explore.widget import live_explorer  # the widget module imports this one
+
+    return live_explorer(study)

@@ -93,3 +93,12 @@ class DecayPanel:
 def decay_panel(st: RealOscillatorStudy, brake: str = "on") -> DecayPanel:
     """The kernel-free free-decay panel of the chapter (see the module docstring)."""
     return DecayPanel(st, brake)
+
+
+def panel(study: RealOscillatorStudy) -> DecayPanel:
+    """The free-decay panel of the study's measurements, brake on.
+
+    The chapter's one entry point for its panel, as in every chapter with a panel: in JupyterLab a live
+    explorer, in the rendered book the same controls without a kernel.
+    """
+    return decay_panel(study)

@@ -231,3 +231,12 @@ def explorer_sentence(st: StabilityStudy) -> str:
     if st.omega_res <= w_max:
         return text + f", and at the paper's forcing frequency {num(st.omega_res, 4)} rad/s."
     return text + f", and at {num(w_max, 4)} rad/s = 4 {WN}, the top of the frequency slider."
+
+
+def panel(study: StabilityStudy) -> StabilityExplorer:
+    """The pole explorer started at the study's oscillator and forcing.
+
+    The chapter's one entry point for its panel, as in every chapter with a panel: in JupyterLab a live
+    explorer, in the rendered book the same controls without a kernel.
+    """
+    return stability_explorer(study)

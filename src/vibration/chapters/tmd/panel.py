@@ -350,3 +350,12 @@ def sliders_text(st: TMDStudy) -> str:
         f"$f$ = {sig(t.f)}, $\\zeta_a$ = {sig(t.zeta_a)} on an undamped primary ($\\zeta_p$ = 0), where P and Q are "
         f"exact; set $\\zeta_p$ to {sig(st.zeta_p, 3)} for this run's primary, where they are only approximate."
     )
+
+
+def panel(study: TMDStudy) -> TMDExplorer:
+    """The absorber explorer started at the study's mass ratio with the H∞ tuning.
+
+    The chapter's one entry point for its panel, as in every chapter with a panel: in JupyterLab a live
+    explorer, in the rendered book the same controls without a kernel.
+    """
+    return tmd_explorer(study.mu)
