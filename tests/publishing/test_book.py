@@ -272,6 +272,25 @@ def test_equations_render_as_mathml_with_size(browser, site):
     page.close()
 
 
+INLINE_MATH_JS = """() => [...document.querySelectorAll('article p math:not([display=block]) mi')].map(mi => {
+    const s = getComputedStyle(mi), p = getComputedStyle(mi.closest('p'));
+    return {text: mi.textContent, letter: mi.classList.contains('vib-it'), family: s.fontFamily === p.fontFamily,
+            transform: s.textTransform, style: s.fontStyle, upright: mi.getAttribute('mathvariant') === 'normal'};
+})"""
+
+
+@pytest.mark.browser
+def test_inline_math_is_set_in_the_texts_typeface(browser, site):
+    """A letter of inline math is the text's own italic, not the math font's mathematical italic; a name such as
+    sin and a letter marked upright (a unit) stay upright."""
+    page, _, _ = open_offline(browser, site / "01_reproduction.html")
+    found = page.evaluate(INLINE_MATH_JS)
+    page.close()
+    assert len(found) > 20 and any(len(f["text"]) > 1 for f in found)
+    assert [f for f in found if not f["family"] or f["transform"] != "none"] == []
+    assert [f for f in found if (f["style"] == "italic") != (len(f["text"]) == 1 and not f["upright"])] == []
+
+
 @pytest.mark.browser
 def test_front_page_reports_computed_headline(browser, site):
     page, _, errors = open_offline(browser, site / "index.html", viewport=(1280, 900))

@@ -16,6 +16,10 @@ from latex2mathml.converter import convert as _latex2mathml
 _ENV_ALIASES = {"aligned": "split", "equation": None, "equation*": None, "displaymath": None}
 
 
+# A one-letter identifier of inline math: italic by a class, not by the browser's mapping to the Unicode
+# mathematical italic letters, which only a math font has (the letter would drop out of the text's typeface).
+_LETTER_MI = re.compile(r"<mi>(.|&#x[0-9A-Fa-f]+;)</mi>")
+
 # |, / and \| are ordinary symbols in TeX; MathML would space them as infix operators.
 _ORD_MO = re.compile(r"<mo((?: (?:stretchy|fence)=\"false\")*)>(&#x0007C;|&#x0002F;|&#x02016;)</mo>")
 
@@ -44,6 +48,13 @@ def latex_to_mathml(tex: str, display: bool) -> str:
     --------
     >>> latex_to_mathml(r"\omega_n", display=False)[:40]
     '<math display="inline"><semantics><mrow>'
+
+    Inline, a one-letter identifier carries the class ``vib-it`` (the stylesheet sets it italic in the text's
+    own typeface); a name such as sin stays upright:
+
+    >>> inline = latex_to_mathml(r"x\sin t", display=False)
+    >>> inline.count('<mi class="vib-it">'), '<mi>sin</mi>' in inline
+    (2, True)
     """
     body = tex.strip()
     for env, alias in _ENV_ALIASES.items():
@@ -62,6 +73,8 @@ def latex_to_mathml(tex: str, display: bool) -> str:
         return f'<code class="vib-tex-fallback">{html.escape(delim + tex + delim)}</code>'
     inner = mathml[mathml.index(">") + 1 : mathml.rindex("</math>")]
     inner = _ORD_MO.sub(r'<mo\1 lspace="0em" rspace="0em">\2</mo>', inner)
+    if not display:
+        inner = _LETTER_MI.sub(r'<mi class="vib-it">\1</mi>', inner)
     annotation = html.escape(tex.strip(), quote=False)
     return (
         f'<math display="{mode}"><semantics><mrow>{inner}</mrow>'
