@@ -25,6 +25,8 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from .named import by_name, check_unique
+
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 
 
@@ -66,15 +68,10 @@ class KeyResults:
     results: tuple[KeyResult, ...]
 
     def __post_init__(self) -> None:
-        names = [r.name for r in self.results]
-        if len(set(names)) != len(names):
-            raise ValueError(f"a key result is declared twice in {names}")
+        check_unique([r.name for r in self.results], "a key result")
 
     def __getitem__(self, name: str) -> KeyResult:
-        for r in self.results:
-            if r.name == name:
-                return r
-        raise KeyError(name)
+        return by_name(self.results, name)
 
     def names(self) -> tuple[str, ...]:
         """The results' names, in declaration order."""

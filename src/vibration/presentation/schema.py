@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..physics.model import ParameterError, check_int, check_real
+from .named import by_name, check_unique
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -73,15 +74,10 @@ class Schema:
     together: tuple[Callable[[dict], None], ...] = field(default=())
 
     def __post_init__(self) -> None:
-        names = [p.name for p in self.params]
-        if len(set(names)) != len(names):
-            raise ValueError(f"schema {self.notebook}: a parameter is declared twice in {names}")
+        check_unique([p.name for p in self.params], f"schema {self.notebook}: a parameter")
 
     def __getitem__(self, name: str) -> Param:
-        for p in self.params:
-            if p.name == name:
-                return p
-        raise KeyError(name)
+        return by_name(self.params, name)
 
     def defaults(self) -> dict:
         """Every parameter at its default."""

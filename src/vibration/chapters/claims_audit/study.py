@@ -19,7 +19,7 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 from vibration.chapters.claims_audit.params import Params
 from vibration.physics.audit import VERDICTS, audit_claims
@@ -97,24 +97,13 @@ class ClaimsAuditStudy:
         return [c for c in self.claims if c.verdict == verdict]
 
 
+#: The fields of a :class:`Claim` that the audit's row holds under the same name (all but the quote and readings).
+_ROW_FIELDS = tuple(f.name for f in fields(Claim) if f.name not in ("quote", "readings"))
+
+
 def _claim(row: dict) -> Claim:
-    return Claim(
-        claim_id=row["claim_id"],
-        quote=row["claim"],
-        quantity=row["quantity"],
-        unit=row["unit"],
-        kind=row["kind"],
-        claim_kind=row["claim_kind"],
-        paper_value=row["paper_value"],
-        paper_method_value=row["paper_method_value"],
-        exact_value=row["exact_value"],
-        verdict=row["verdict"],
-        reason=row["reason"],
-        best_reading=row["best_reading"],
-        readings=tuple(Reading(description=d, value=v, unit=u, verdict=vd) for d, v, u, vd in row["readings"]),
-        scenario_id=row["scenario_id"],
-        changed=row["changed"],
-    )
+    readings = tuple(Reading(description=d, value=v, unit=u, verdict=vd) for d, v, u, vd in row["readings"])
+    return Claim(quote=row["claim"], readings=readings, **{name: row[name] for name in _ROW_FIELDS})
 
 
 def claims_audit_study(params: Params | None = None, **values) -> ClaimsAuditStudy:

@@ -19,7 +19,6 @@ from vibration.chapters.digital_twin import cusum, montecarlo
 from vibration.chapters.digital_twin.params import Params
 from vibration.physics.model import Oscillator
 from vibration.physics.twin import (
-    ASSUMPTION_CASES,
     THRESHOLDS,
     WHITENESS_LAGS,
     AssumptionStudy,
@@ -33,7 +32,6 @@ from vibration.physics.twin import (
     Identification,
     Measurements,
     StiffnessTrack,
-    cubic_response,
     detect_change,
     detection_study,
     discretisation_checks,
@@ -49,6 +47,7 @@ from vibration.physics.twin import (
     synthetic_measurements,
     track_stiffness,
 )
+from vibration.physics.twin.assumptions import assumption_records
 
 #: Length of the sine record of the discretisation check, s.
 CHECK_WINDOW = 50.0
@@ -149,11 +148,7 @@ def _assumptions(asset, p: Params, band, reference: CoverageExperiment) -> tuple
     f_rms = float(np.sqrt(np.mean(force**2)))
     experiments = {"as assumed": reference}
     predicted = {"as assumed": predicted_coverage(asset, t, force, 0.0)}
-    cubic = None
-    for j, (label, (uf, uy, uc, uk)) in enumerate(ASSUMPTION_CASES.items()):
-        if uk:
-            cubic = cubic_response(asset, k3, t, force) if cubic is None else cubic
-        clean = cubic if uk else linear
+    for j, label, (uf, uy, uc, _uk), clean in assumption_records(asset, k3, t, force, linear):
         experiments[label] = montecarlo.experiment(
             asset,
             t,

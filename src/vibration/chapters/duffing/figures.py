@@ -60,6 +60,13 @@ def _join(parts: list[str]) -> str:
     return text[:1].upper() + text[1:]
 
 
+def _legends_and_panels(fig, axes, cases, describe) -> str:
+    """Place each panel's legend, then name the panels for the caption: ``"left, <describe(case)>; right, ..."``."""
+    for ax in axes:
+        place_legend(ax)
+    return "; ".join(f"{word}, {describe(case)}" for word, case in zip(panel_words(fig), cases, strict=True))
+
+
 # ------------------------------------------------------------------------------ frequency response
 
 
@@ -87,13 +94,7 @@ def frequency_response_figure(study: DuffingStudy) -> Captioned:
         ax.set_xlim(case.curve_omega.min(), case.curve_omega.max())
     axes[0].set_ylabel(r"amplitude $A$ (m)")
     axes[0].set_ylim(0.0, 1.7 * max(np.nanmax(c.curve_amplitude) for c in study.cases))  # room for the legends
-    for ax in axes:
-        place_legend(ax)
-    words = panel_words(fig)
-    panels = "; ".join(
-        f"{word}, {case.label}, {_k3(case)} ({COLOUR_WORD[case.label]})"
-        for word, case in zip(words, study.cases, strict=True)
-    )
+    panels = _legends_and_panels(fig, axes, study.cases, lambda c: f"{c.label}, {_k3(c)} ({COLOUR_WORD[c.label]})")
     dashed = any(c.folds.bistable and drew_unstable[c.label] for c in study.cases)
     branches = "Stable branches solid, unstable dashed, folds open circles" if dashed else "Stable curves solid"
     caption = (
@@ -155,13 +156,7 @@ def sweep_figure(study: DuffingStudy) -> Captioned:
         ax.set_xlim(case.up.omega.min(), case.up.omega.max())
     axes[0].set_ylabel(r"steady amplitude $A$ (m)")
     axes[0].set_ylim(0.0, 1.75 * max(np.nanmax(c.curve_amplitude) for c in study.cases))
-    for ax in axes:
-        place_legend(ax)
-    words = panel_words(fig)
-    panels = "; ".join(
-        f"{word}, the {case.label} spring ({COLOUR_WORD[case.label]})"
-        for word, case in zip(words, study.cases, strict=True)
-    )
+    panels = _legends_and_panels(fig, axes, study.cases, lambda c: f"the {c.label} spring ({COLOUR_WORD[c.label]})")
     parts = []
     for case in study.cases:
         jumps = sum(j is not None for j in (case.jump_up, case.jump_down))

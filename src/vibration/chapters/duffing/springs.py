@@ -199,6 +199,19 @@ def _fold_jump(d: Duffing, F0: float, f: Folds, res: SweepResult) -> tuple[float
     return locate_jump(d, F0, res, which=max(fits)[1])
 
 
+def _stability_check(omega: float, amplitude: float, stable: bool, orbit) -> StabilityCheck:
+    """The balance's verdict at ``omega`` (rad/s), ``amplitude`` (m) beside the orbit's (none: nan, None)."""
+    found = orbit is not None
+    return StabilityCheck(
+        omega=omega,
+        amplitude=amplitude,
+        stable=stable,
+        orbit_amplitude=orbit.amplitude if found else math.nan,
+        max_multiplier=max(abs(x) for x in orbit.multipliers) if found else math.nan,
+        floquet_stable=orbit.stable if found else None,
+    )
+
+
 def _spring(label: str, d: Duffing, F0: float, ws: np.ndarray, omega_max: float) -> tuple[SpringCase, float, float]:
     """One spring: curve, sweeps, jumps, Floquet checks inside the band, the continued branch.
 
@@ -227,29 +240,11 @@ def _spring(label: str, d: Duffing, F0: float, ws: np.ndarray, omega_max: float)
                 try:
                     orb = periodic_orbit(d, F0, w, a)
                 except ParameterError:
-                    checks.append(
-                        StabilityCheck(
-                            omega=w,
-                            amplitude=a,
-                            stable=st,
-                            orbit_amplitude=math.nan,
-                            max_multiplier=math.nan,
-                            floquet_stable=None,
-                        )
-                    )
+                    checks.append(_stability_check(w, a, st, None))
                     continue
                 T = 2 * math.pi / w
                 liou = max(liou, abs(abs(np.prod(orb.multipliers)) / math.exp(-d.c * T / d.m) - 1))
-                checks.append(
-                    StabilityCheck(
-                        omega=w,
-                        amplitude=a,
-                        stable=st,
-                        orbit_amplitude=orb.amplitude,
-                        max_multiplier=max(abs(x) for x in orb.multipliers),
-                        floquet_stable=orb.stable,
-                    )
-                )
+                checks.append(_stability_check(w, a, st, orb))
         width = f.omega_high - f.omega_low  # continue the periodic orbit from below the band to above it
         branch = continue_orbits(d, F0, f.omega_low - 0.5 * width, f.omega_high + 0.5 * width, step=CONTINUATION_STEP)
     case = SpringCase(

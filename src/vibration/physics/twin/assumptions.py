@@ -39,6 +39,41 @@ class AssumptionStudy:
     lags: int  # lags of the residual tests, samples
 
 
+def assumption_records(osc: Oscillator, k3: float, t, force, linear):
+    """Each case of :data:`ASSUMPTION_CASES` with the noise-free displacement its records are made from.
+
+    Parameters
+    ----------
+    osc : Oscillator
+        The truth: m (kg), c (N s/m), k (N/m).
+    k3 : float
+        Cubic coefficient of the unmodelled spring, N/m^3.
+    t, force, linear : numpy.ndarray
+        Sample times (s), the force (N) and the oscillator's response to it (m).
+
+    Yields
+    ------
+    tuple
+        ``(j, label, multipliers, clean)``: the case's index (its noise stream is ``1000 + j``), its label, its
+        multipliers (force noise, response noise, colour, cubic) and ``linear`` or, for a cubic case, the
+        response with the spring ``k3 x^3`` (computed once).
+
+    Examples
+    --------
+    >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
+    >>> t = np.arange(0.0, 2.0, 0.01)
+    >>> f = np.sin(3.0 * t)
+    >>> x = synthetic_measurements(osc, t, f).x
+    >>> [(j, uk, clean is x) for j, _, (_, _, _, uk), clean in assumption_records(osc, 5.0, t, f, x)]
+    [(0, 0.0, True), (1, 0.0, True), (2, 0.0, True), (3, 1.0, False)]
+    """
+    cubic = None
+    for j, (label, multipliers) in enumerate(ASSUMPTION_CASES.items()):
+        if multipliers[3] and cubic is None:
+            cubic = cubic_response(osc, k3, t, force)
+        yield j, label, multipliers, cubic if multipliers[3] else linear
+
+
 def assumption_study(
     osc: Oscillator,
     reference: CoverageExperiment,
@@ -111,13 +146,7 @@ def assumption_study(
     lags = WHITENESS_LAGS
     experiments = {"as assumed": reference}
     predicted = {"as assumed": predicted_coverage(osc, t, force, 0.0)}
-    clean_cubic = None
-    for j, (label, (uf, uy, uc, uk)) in enumerate(ASSUMPTION_CASES.items()):
-        if uk:
-            clean_cubic = cubic_response(osc, k3, t, force) if clean_cubic is None else clean_cubic
-            clean = clean_cubic
-        else:
-            clean = linear
+    for j, label, (uf, uy, uc, _uk), clean in assumption_records(osc, k3, t, force, linear):
         sd = uy * reference.noise * float(np.sqrt(np.mean(clean**2)))
         experiments[label] = _monte_carlo(
             truth,
