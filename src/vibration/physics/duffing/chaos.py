@@ -21,28 +21,6 @@ def _rk4_kernel():
     import numba
 
     @numba.njit(cache=True)
-    def slopes(m, c, k, k3, f, y):  # pragma: no cover
-        """Rates of y = (x, v, q11, q21, q12, q22) under the force f: the state's and its two tangent vectors'."""
-        x, v, q11, q21, q12, q22 = y
-        j = -(k + 3.0 * k3 * x * x) / m
-        return v, (f - c * v - k * x - k3 * x**3) / m, q21, j * q11 - c / m * q21, q22, j * q12 - c / m * q22
-
-    @numba.njit(cache=True)
-    def along(y, a, s):  # pragma: no cover
-        """y + a s, component by component."""
-        return y[0] + a * s[0], y[1] + a * s[1], y[2] + a * s[2], y[3] + a * s[3], y[4] + a * s[4], y[5] + a * s[5]
-
-    @numba.njit(cache=True)
-    def rk4_step(m, c, k, k3, f0, fh, f1, h, y):  # pragma: no cover
-        """y after one RK4 step of h (s), the force being f0, fh and f1 (N) at its start, middle and end."""
-        s1 = slopes(m, c, k, k3, f0, y)
-        s2 = slopes(m, c, k, k3, fh, along(y, 0.5 * h, s1))
-        s3 = slopes(m, c, k, k3, fh, along(y, 0.5 * h, s2))
-        s4 = slopes(m, c, k, k3, f1, along(y, h, s3))
-        total = along(along(along(s1, 2.0, s2), 2.0, s3), 1.0, s4)  # s1 + 2 s2 + 2 s3 + s4
-        return along(y, h / 6.0, total)
-
-    @numba.njit(cache=True)
     def rk4_kernel(
         m, c, k, k3, F0, w, x0, v0, n_periods, steps_per_period, mode, d0, record, gs_every, blow_up
     ):  # pragma: no cover
@@ -70,12 +48,49 @@ def _rk4_kernel():
                 f0 = F0 * np.cos(w * tau)
                 fh = F0 * np.cos(w * (tau + 0.5 * h))
                 f1 = F0 * np.cos(w * (tau + h))
-                # main trajectory with (in mode 1) the two tangent vectors
-                x, v, t11, t21, t12, t22 = rk4_step(m, c, k, k3, f0, fh, f1, h, (x, v, q11, q21, q12, q22))
+                # main trajectory with (optionally) the two tangent vectors
+                j1 = -(k + 3.0 * k3 * x * x) / m
+                k1x, k1v = v, (f0 - c * v - k * x - k3 * x**3) / m
+                l1a, l1b = q21, j1 * q11 - c / m * q21
+                l1c, l1d = q22, j1 * q12 - c / m * q22
+                xa, va = x + 0.5 * h * k1x, v + 0.5 * h * k1v
+                ja = -(k + 3.0 * k3 * xa * xa) / m
+                qa11, qa21 = q11 + 0.5 * h * l1a, q21 + 0.5 * h * l1b
+                qa12, qa22 = q12 + 0.5 * h * l1c, q22 + 0.5 * h * l1d
+                k2x, k2v = va, (fh - c * va - k * xa - k3 * xa**3) / m
+                l2a, l2b = qa21, ja * qa11 - c / m * qa21
+                l2c, l2d = qa22, ja * qa12 - c / m * qa22
+                xb, vb = x + 0.5 * h * k2x, v + 0.5 * h * k2v
+                jb = -(k + 3.0 * k3 * xb * xb) / m
+                qb11, qb21 = q11 + 0.5 * h * l2a, q21 + 0.5 * h * l2b
+                qb12, qb22 = q12 + 0.5 * h * l2c, q22 + 0.5 * h * l2d
+                k3x, k3v = vb, (fh - c * vb - k * xb - k3 * xb**3) / m
+                l3a, l3b = qb21, jb * qb11 - c / m * qb21
+                l3c, l3d = qb22, jb * qb12 - c / m * qb22
+                xc, vc = x + h * k3x, v + h * k3v
+                jc = -(k + 3.0 * k3 * xc * xc) / m
+                qc11, qc21 = q11 + h * l3a, q21 + h * l3b
+                qc12, qc22 = q12 + h * l3c, q22 + h * l3d
+                k4x, k4v = vc, (f1 - c * vc - k * xc - k3 * xc**3) / m
+                l4a, l4b = qc21, jc * qc11 - c / m * qc21
+                l4c, l4d = qc22, jc * qc12 - c / m * qc22
+                x += h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x)
+                v += h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
                 if mode == 1:
-                    q11, q21, q12, q22 = t11, t21, t12, t22
+                    q11 += h / 6.0 * (l1a + 2 * l2a + 2 * l3a + l4a)
+                    q21 += h / 6.0 * (l1b + 2 * l2b + 2 * l3b + l4b)
+                    q12 += h / 6.0 * (l1c + 2 * l2c + 2 * l3c + l4c)
+                    q22 += h / 6.0 * (l1d + 2 * l2d + 2 * l3d + l4d)
                 if mode == 2:  # partner trajectory, the same RK4 steps
-                    px, pv = rk4_step(m, c, k, k3, f0, fh, f1, h, (px, pv, 0.0, 0.0, 0.0, 0.0))[:2]
+                    m1x, m1v = pv, (f0 - c * pv - k * px - k3 * px**3) / m
+                    ya, wa = px + 0.5 * h * m1x, pv + 0.5 * h * m1v
+                    m2x, m2v = wa, (fh - c * wa - k * ya - k3 * ya**3) / m
+                    yb, wb = px + 0.5 * h * m2x, pv + 0.5 * h * m2v
+                    m3x, m3v = wb, (fh - c * wb - k * yb - k3 * yb**3) / m
+                    yc, wc = px + h * m3x, pv + h * m3v
+                    m4x, m4v = wc, (f1 - c * wc - k * yc - k3 * yc**3) / m
+                    px += h / 6.0 * (m1x + 2 * m2x + 2 * m3x + m4x)
+                    pv += h / 6.0 * (m1v + 2 * m2v + 2 * m3v + m4v)
                 renorm = i == steps_per_period - 1 or (i + 1) % gs_every == 0
                 if mode == 1 and renorm:  # Gram-Schmidt (QR) once per period (or every gs_every steps)
                     r11 = np.sqrt(q11 * q11 + q21 * q21)
