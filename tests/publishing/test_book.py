@@ -272,6 +272,31 @@ def test_equations_render_as_mathml_with_size(browser, site):
     page.close()
 
 
+def test_a_mention_of_another_chapter_links_to_it(site):
+    """'chapter 4' in the text is a link to chapter 4's page (not when a page names itself, nor in headings or
+    in tables, which are the chapters' raw HTML)."""
+    from bs4 import BeautifulSoup
+
+    from vibration.publishing.sphinx_ext import chapter_mentions
+
+    linked, unlinked = 0, []
+    for page in _pages(site):
+        article = BeautifulSoup(page.read_text(encoding="utf-8"), "html.parser").select_one("article")
+        if article is None:
+            continue
+        for element in article.select("div.cell_input, script, style, h1, h2, h3, h4, table"):
+            element.decompose()
+        here = int(page.stem[:2]) if page.stem[:2].isdigit() else None
+        for text in article.find_all(string=True):
+            link = text.find_parent("a")
+            named = [n for _, n in chapter_mentions(str(text)) if n not in (None, here)]
+            if named and not (link is not None and named == [int(link.get_text().split()[-1])]):
+                unlinked.append((page.name, str(text)[:60]))
+        numbers = [(a, a.get_text().split()[-1]) for a in article.select("a") if a.get_text().split()]
+        linked += sum(n.isdigit() and a["href"].startswith(f"{int(n):02d}_") for a, n in numbers)
+    assert linked > 50 and unlinked == []
+
+
 INLINE_MATH_JS = """() => [...document.querySelectorAll('article p math:not([display=block]) mi')].map(mi => {
     const s = getComputedStyle(mi), p = getComputedStyle(mi.closest('p'));
     return {text: mi.textContent, letter: mi.classList.contains('vib-it'), family: s.fontFamily === p.fontFamily,

@@ -6,6 +6,8 @@
 * Figures and tables are numbered ``<chapter>.<n>`` where the chapter number is the
   leading number of the document name (``06_stability`` -> 6), without Sphinx's section
   numbering (which would renumber the chapters of Part II from 1).
+* A mention of another chapter in the text ("chapter 4", "chapters 1 and 4") links to that chapter's
+  page, the number read from the table of contents' document names, so a reader can follow it.
 """
 
 from __future__ import annotations
@@ -64,6 +66,60 @@ def _prefix_numbers(app, env):
     return []
 
 
+#: "chapter 4", "Chapters 1 and 4", "chapters 1-5", "chapters 1 to 4": the word and its run of numbers.
+_MENTION = re.compile(r"\b([Cc]hapters?)(\s+)(\d{1,2}(?:(?:\s*[,\u2013-]\s*|\s+(?:and|or|to)\s+)\d{1,2})*)\b")
+_NUMBER = re.compile(r"\d{1,2}")
+#: Nodes whose text is left as it is: code, formulas, links already, headings and raw markup.
+_NO_LINKS = (nodes.literal, nodes.literal_block, nodes.math, nodes.math_block, nodes.reference, nodes.title,
+             nodes.raw, nodes.target)  # fmt: skip
+
+
+def chapter_mentions(text: str) -> list[tuple[str, int | None]]:
+    """``text`` cut into pieces, each with the chapter number it names (or ``None``); the word goes with the
+    first number.
+
+    >>> chapter_mentions("see chapters 1 and 4, then chapter 12.")
+    [('see ', None), ('chapters 1', 1), (' and ', None), ('4', 4), (', then ', None), ('chapter 12', 12), ('.', None)]
+    """
+    pieces, at = [], 0
+    for mention in _MENTION.finditer(text):
+        for i, number in enumerate(_NUMBER.finditer(mention.group(3))):
+            start = mention.start(1) if i == 0 else mention.start(3) + number.start()  # "chapter 4" as one link
+            end = mention.start(3) + number.end()
+            pieces += [(text[at:start], None), (text[start:end], int(number.group()))]
+            at = end
+    pieces.append((text[at:], None))
+    return [(piece, n) for piece, n in pieces if piece]
+
+
+def _link_chapter_mentions(app, doctree, docname) -> None:
+    """Each mention of another chapter in the page's text becomes a link to that chapter's page."""
+    pages = {chapter_number(d): d for d in app.env.found_docs if chapter_number(d) not in (None, 0)}
+    here = chapter_number(docname)
+    for text in list(doctree.findall(nodes.Text)):
+        parent = text.parent
+        if parent is None or any(isinstance(a, _NO_LINKS) for a in _ancestors(text)):
+            continue
+        pieces = chapter_mentions(str(text))
+        if not any(n in pages and n != here for _, n in pieces):
+            continue
+        replacement = []
+        for piece, n in pieces:
+            if n in pages and n != here:
+                uri = app.builder.get_relative_uri(docname, pages[n])
+                replacement.append(nodes.reference(piece, piece, refuri=uri, internal=True))
+            else:
+                replacement.append(nodes.Text(piece))
+        parent.replace(text, replacement)
+
+
+def _ancestors(node):
+    node = node.parent
+    while node is not None:
+        yield node
+        node = node.parent
+
+
 def _stable_build_info(app) -> None:
     """Record the HTML configuration after the themes have set theirs, so an unchanged book is not rewritten.
 
@@ -83,6 +139,7 @@ def setup(app):
     app.connect("env-get-updated", _prefix_numbers, priority=900)
     app.connect("builder-inited", _stable_build_info, priority=900)
     app.connect("build-finished", _accessible_pages)
+    app.connect("doctree-resolved", _link_chapter_mentions)
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}
 
 
