@@ -273,6 +273,34 @@ def _markdown_sources(path: Path) -> tuple[list[str], list[str]]:
     return own, outputs
 
 
+#: A cross-reference in a notebook's Markdown: {numref}`fig-x` or {numref}`Figure 4.1 <fig-x>`.
+NUMREF = re.compile(r"\{numref\}`(?:[^`<]*<)?(?P<label>[^`<>]+)>?`")
+#: What JupyterLab's MyST renderer shows for a reference whose target it cannot find (as a tooltip; the text is
+#: the label itself).
+NOT_FOUND = "Cross Reference Not Found"
+
+
+def _numbers(path: Path, chapter: int) -> dict[str, str]:
+    """Label -> "Figure 4.1" / "Table 4.2": the book's numbering, counted here from the notebook's outputs in order
+    (a figure carries its label in the output's metadata, a table in its Markdown's ``:name:`` line)."""
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    found, counts = {}, {"Figure": 0, "Table": 0}
+    for c in cells:
+        for o in c.get("outputs", []) if c["cell_type"] == "code" else []:
+            labels = []
+            figure = o.get("metadata", {}).get("vibration/figure")
+            if figure:
+                labels.append(("Figure", figure["name"]))
+            labels += [
+                ("Table", n)
+                for n in re.findall(r"^:name: (\S+)", "".join(o.get("data", {}).get("text/markdown", "")), re.M)
+            ]
+            for kind, label in labels:
+                counts[kind] += 1
+                found[label] = f"{kind} {chapter}.{counts[kind]}"
+    return found
+
+
 def test_some_notebook_uses_the_widgets():
     assert "05_explore.ipynb" in widget_notebooks(NOTEBOOKS)
 
@@ -349,6 +377,18 @@ def test_jupyterlab_renders_the_myst_roles_of_cells_and_outputs(lab, browser):
         texts = _wait_for(rendered, 60, "the Markdown cells and outputs to render", interval=0.5)
         raw = [m.group(0) + t[m.end() : m.end() + 40] for t in texts for m in MYST_ROLE.finditer(t)]
         assert raw == [], f"{len(raw)} MyST roles shown raw in {ROLES_NOTEBOOK}: {raw[:5]}"
+        # every cross-reference of the Markdown cells reads as the book numbers it ("Figure 4.1"), none as its label
+        # or as the renderer's "not found"
+        numbers = _numbers(root / ROLES_NOTEBOOK, int(ROLES_NOTEBOOK[:2]))
+        labels = [m.group("label") for t in own for m in NUMREF.finditer(t)]
+        assert len(labels) >= 5 and set(labels) <= set(numbers), set(labels) - set(numbers)
+        not_found = panel.locator(f'[title="{NOT_FOUND}"]').all_inner_texts()
+        assert not_found == [], f"{len(not_found)} references not found in {ROLES_NOTEBOOK}: {not_found[:5]}"
+        shown_text = "\n".join(cells.all_inner_texts())
+        assert NOT_FOUND not in shown_text
+        assert [label for label in labels if label in shown_text] == []  # a label shown as text
+        missing = [numbers[label] for label in labels if not re.search(rf"\b{re.escape(numbers[label])}\b", shown_text)]
+        assert missing == [], f"not shown in {ROLES_NOTEBOOK}'s Markdown cells: {missing}"
     except BaseException:
         SCREENSHOTS.mkdir(parents=True, exist_ok=True)
         page.screenshot(path=str(SCREENSHOTS / "jupyterlab_roles_failure.png"))
