@@ -132,6 +132,8 @@ def test_the_notebooks_references_read_as_the_book_numbers_them(site):
         ):
             assert book.get(label) == text, (path.stem, label, text, book.get(label))
             checked += 1
+        # the outputs' references ("the table" in JupyterLab) are numbered too
+        assert [t for t in book.values() if not re.fullmatch(r"(Figure|Table) \d+(\.\d+)?", t)] == [], path.stem
     assert checked >= 40
 
 

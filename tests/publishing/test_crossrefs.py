@@ -51,6 +51,23 @@ def test_each_reference_of_the_markdown_cells_carries_its_number(path):
     assert [r for r in roles if r not in written] == []
 
 
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_each_reference_of_the_markdown_outputs_carries_words_to_show(path):
+    """A Markdown output's reference reads "the table" (or "the figure", "the next figure") in JupyterLab, which
+    renders each output alone and numbers nothing."""
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    outputs = [
+        "".join(o["data"]["text/markdown"])
+        for c in cells
+        if c["cell_type"] == "code"
+        for o in c.get("outputs", [])
+        if set(o.get("data", {})) - {"text/plain"} == {"text/markdown"}  # a table shows its HTML there ("the table")
+    ]
+    roles = [m.group(1) for t in outputs for m in ROLE.finditer(t)]
+    words = re.compile(r"the (?:next )?(?:figure|table) <(?:fig|tab)-[a-z0-9-]+>")
+    assert [r for r in roles if not words.fullmatch(r)] == []
+
+
 def test_numbers_are_written_once_and_removed_for_the_book():
     nb = nbformat.v4.new_notebook()
     fig = nbformat.v4.new_code_cell("f")
@@ -79,3 +96,12 @@ def test_numbers_are_written_once_and_removed_for_the_book():
     )
     assert nb.cells[0].source.startswith("{numref}`Figure 7.1 <fig-a>`")  # the notebook itself is unchanged
     assert book_text("{numref}`Figure %s <fig-a>`") == "{numref}`Figure %s <fig-a>`"
+    # a Markdown output's words go too
+    said = nbformat.v4.new_code_cell("s")
+    said.outputs = [
+        nbformat.v4.new_output(
+            "display_data", {"text/markdown": "Here ({numref}`the table <tab-b>`).", "text/plain": "M"}
+        )
+    ]
+    nb.cells.append(said)
+    assert prepare(page).cells[-1].outputs[0]["data"]["text/markdown"] == "Here ({numref}`tab-b`)."

@@ -10,6 +10,10 @@ carry the number as the reference's own text, ``{numref}`Figure 4.1 <fig-frequen
   so the committed notebooks follow their figures and tables);
 - :func:`book_references` removes it again for the book, which numbers and links every reference itself.
 
+A sentence a chapter shows as a Markdown output cannot know its number (JupyterLab renders each output
+alone): it carries words instead, ``{numref}`the table <tab-x>```
+(:func:`vibration.presentation.tables.cross_reference`), which the book removes as well.
+
 Examples
 --------
 >>> text = "See {numref}`fig-a` and {numref}`Table 9.9 <tab-b>`; {numref}`eq-c` stays."
@@ -17,6 +21,8 @@ Examples
 'See {numref}`Figure 4.1 <fig-a>` and {numref}`Table 4.2 <tab-b>`; {numref}`eq-c` stays.'
 >>> book_text(number_text(text, {"fig-a": "Figure 4.1", "tab-b": "Table 4.2"}))
 'See {numref}`fig-a` and {numref}`tab-b`; {numref}`eq-c` stays.'
+>>> book_text("({numref}`the table <tab-b>`, {numref}`the next figure <fig-a>`, {numref}`my words <fig-a>`)")
+'({numref}`tab-b`, {numref}`fig-a`, {numref}`my words <fig-a>`)'
 """
 
 from __future__ import annotations
@@ -24,6 +30,7 @@ from __future__ import annotations
 import re
 
 from ..presentation.captions import METADATA_KEY
+from ..presentation.tables import REFERENCE_WORDS
 
 __all__ = ["book_references", "book_text", "number_references", "number_text", "reference_numbers"]
 
@@ -31,6 +38,8 @@ __all__ = ["book_references", "book_text", "number_references", "number_text", "
 _NUMREF = re.compile(r"\{numref\}`(?:(?P<text>[^`<]*?)\s*<(?P<target>[^`<>]+)>|(?P<label>[^`<>]+))`")
 #: The text :func:`number_text` writes: a kind and a number, nothing else.
 _NUMBER = re.compile(r"(?:Figure|Table) (?:\d+\.)?\d+")
+#: What the book removes from a reference: a number, or the words of a Markdown output's reference.
+_STAND_IN = re.compile(rf"{_NUMBER.pattern}|{REFERENCE_WORDS}")
 #: A table's label in its Markdown output (a ``list-table`` directive's ``:name:`` option).
 _TABLE_NAME = re.compile(r"^:name:\s*(\S+)\s*$", re.M)
 
@@ -75,10 +84,11 @@ def number_text(text: str, numbers: dict[str, str]) -> str:
 
 
 def book_text(text: str) -> str:
-    """``text`` with each number written by :func:`number_text` removed: the book numbers the reference."""
+    """``text`` with each number written by :func:`number_text` (or each output's "the table") removed: the book
+    numbers the reference."""
 
     def sub(m: re.Match) -> str:
-        if m.group("target") and _NUMBER.fullmatch(m.group("text") or ""):
+        if m.group("target") and _STAND_IN.fullmatch(m.group("text") or ""):
             return f"{{numref}}`{m.group('target')}`"
         return m.group(0)
 
@@ -99,7 +109,13 @@ def number_references(nb, chapter: int | None) -> int:
 
 
 def book_references(nb) -> None:
-    """Remove the written numbers from ``nb``'s Markdown cells (the book's copy): Sphinx numbers and links them."""
+    """Remove the written numbers and words from ``nb``'s Markdown cells and Markdown outputs (the book's copy):
+    Sphinx numbers and links the references."""
     for cell in nb.cells:
         if cell.cell_type == "markdown":
             cell.source = book_text(cell.source)
+        for out in cell.get("outputs", []) if cell.cell_type == "code" else []:
+            data = out.get("data", {})
+            if "text/markdown" in data:
+                markdown = data["text/markdown"]
+                data["text/markdown"] = book_text("".join(markdown) if isinstance(markdown, list) else markdown)

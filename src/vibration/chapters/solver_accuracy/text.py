@@ -19,7 +19,7 @@ from vibration.chapters.solver_accuracy.study import LATE, SolverStudy
 from vibration.presentation.narrative import g
 from vibration.presentation.numbers import integer
 from vibration.presentation.numbers import sig as num
-from vibration.presentation.tables import Approx, Column, Table, columns
+from vibration.presentation.tables import Approx, Column, Table, columns, cross_reference
 
 #: The paper's method's worst error, relative to the peak displacement, below which it is called small.
 SMALL = 0.01
@@ -227,11 +227,11 @@ def steps_text(study: SolverStudy) -> str:
     change = "drops" if tight.shortfall < s.shortfall else "does not drop"
     grid = (
         f"On the output grid the same loose solver is off by only {num(100 * paper.rel_err_x, 2)} % of the peak "
-        "({numref}`tab-solvers-ladder`): the grid a curve is drawn on, not the solver, decides how faithfully its "
-        "peaks show."
+        f"({cross_reference('tab-solvers-ladder')}): the grid a curve is drawn on, not the solver, decides how "
+        "faithfully its peaks show."
         if paper.rel_err_x < s.shortfall
         else f"On the output grid the solver's own error, {num(100 * paper.rel_err_x, 2)} % of the peak "
-        "({numref}`tab-solvers-ladder`), is as large: here the solver, not only the grid, limits the peaks."
+        f"({cross_reference('tab-solvers-ladder')}), is as large: here the solver, not only the grid, limits the peaks."
     )
     return (
         f"At the paper's tolerance RK45 takes {integer(s.steps)} steps, {num(s.per_period, 3)} per forcing period, the "
