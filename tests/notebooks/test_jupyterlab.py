@@ -255,8 +255,9 @@ def _exercise(page, explorer, shot: Path | None) -> dict:
 #: A MyST role as written in a notebook's Markdown ({numref}`tab-...`, {sub}`0`): JupyterLab's own renderer shows
 #: the braces as text; with the MyST extension the role is rendered.
 MYST_ROLE = re.compile(r"\{(?:numref|ref|eq|doc|term|sub|sup|math|cite|abbr)\}")
-#: A notebook whose Markdown cells and Markdown outputs both use roles.
-ROLES_NOTEBOOK = "04_frequency_response.ipynb"
+#: Notebooks whose Markdown cells and Markdown outputs both use roles (chapter 7's outputs refer to its tables and
+#: figures too).
+ROLES_NOTEBOOKS = ("04_frequency_response.ipynb", "07_control.ipynb")
 
 
 def _markdown_sources(path: Path) -> tuple[list[str], list[str]]:
@@ -271,6 +272,34 @@ def _markdown_sources(path: Path) -> tuple[list[str], list[str]]:
         if set(o.get("data", {})) - {"text/plain"} == {"text/markdown"}  # with HTML beside it, JupyterLab shows that
     ]
     return own, outputs
+
+
+#: A cross-reference in a notebook's Markdown: {numref}`fig-x` or {numref}`Figure 4.1 <fig-x>`.
+NUMREF = re.compile(r"\{numref\}`(?:[^`<]*<)?(?P<label>[^`<>]+)>?`")
+#: What JupyterLab's MyST renderer shows for a reference whose target it cannot find (as a tooltip; the text is
+#: the label itself).
+NOT_FOUND = "Cross Reference Not Found"
+
+
+def _numbers(path: Path, chapter: int) -> dict[str, str]:
+    """Label -> "Figure 4.1" / "Table 4.2": the book's numbering, counted here from the notebook's outputs in order
+    (a figure carries its label in the output's metadata, a table in its Markdown's ``:name:`` line)."""
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    found, counts = {}, {"Figure": 0, "Table": 0}
+    for c in cells:
+        for o in c.get("outputs", []) if c["cell_type"] == "code" else []:
+            labels = []
+            figure = o.get("metadata", {}).get("vibration/figure")
+            if figure:
+                labels.append(("Figure", figure["name"]))
+            labels += [
+                ("Table", n)
+                for n in re.findall(r"^:name: (\S+)", "".join(o.get("data", {}).get("text/markdown", "")), re.M)
+            ]
+            for kind, label in labels:
+                counts[kind] += 1
+                found[label] = f"{kind} {chapter}.{counts[kind]}"
+    return found
 
 
 def test_some_notebook_uses_the_widgets():
@@ -327,15 +356,17 @@ def test_explorers_run_and_respond_in_jupyterlab(lab, browser, name):
 @pytest.mark.browser
 @pytest.mark.slow
 @pytest.mark.timeout(300)
-def test_jupyterlab_renders_the_myst_roles_of_cells_and_outputs(lab, browser):
-    """Opened (not run), a chapter's Markdown cells and stored Markdown outputs show no role's raw braces."""
+@pytest.mark.parametrize("name", ROLES_NOTEBOOKS)
+def test_jupyterlab_renders_the_myst_roles_of_cells_and_outputs(lab, browser, name):
+    """Opened (not run), a chapter's Markdown cells and stored Markdown outputs show no role's raw braces, and
+    every cross-reference reads as a number or words, never as its label or "not found"."""
     base, token, root = lab
-    own, outputs = _markdown_sources(root / ROLES_NOTEBOOK)
+    own, outputs = _markdown_sources(root / name)
     assert sum(len(MYST_ROLE.findall(t)) for t in own) > 0 and sum(len(MYST_ROLE.findall(t)) for t in outputs) > 0
     page = browser.new_page(viewport={"width": 1400, "height": 1300})
     try:
         page.goto(
-            f"{base}/lab/workspaces/roles/tree/{ROLES_NOTEBOOK}?reset&token={token}", wait_until="domcontentloaded"
+            f"{base}/lab/workspaces/roles-{name[:2]}/tree/{name}?reset&token={token}", wait_until="domcontentloaded"
         )
         panel = page.locator(".jp-NotebookPanel").first
         panel.wait_for(timeout=60_000)
@@ -348,10 +379,25 @@ def test_jupyterlab_renders_the_myst_roles_of_cells_and_outputs(lab, browser):
 
         texts = _wait_for(rendered, 60, "the Markdown cells and outputs to render", interval=0.5)
         raw = [m.group(0) + t[m.end() : m.end() + 40] for t in texts for m in MYST_ROLE.finditer(t)]
-        assert raw == [], f"{len(raw)} MyST roles shown raw in {ROLES_NOTEBOOK}: {raw[:5]}"
+        assert raw == [], f"{len(raw)} MyST roles shown raw in {name}: {raw[:5]}"
+        # every cross-reference of the Markdown cells reads as the book numbers it ("Figure 4.1"), none as its label
+        # or as the renderer's "not found"
+        numbers = _numbers(root / name, int(name[:2]))
+        labels = [m.group("label") for t in own for m in NUMREF.finditer(t)]
+        assert len(labels) >= 2 and set(labels) <= set(numbers), set(labels) - set(numbers)
+        not_found = panel.locator(f'[title="{NOT_FOUND}"]').all_inner_texts()
+        assert not_found == [], f"{len(not_found)} references not found in {name}: {not_found[:5]}"
+        shown_text = "\n".join(cells.all_inner_texts())
+        assert NOT_FOUND not in shown_text
+        assert [label for label in labels if label in shown_text] == []  # a label shown as text
+        said = "\n".join(shown.all_inner_texts())
+        out_labels = {m.group("label") for t in outputs for m in NUMREF.finditer(t)}
+        assert [label for label in out_labels if label in said] == []  # an output's label shown as text
+        missing = [numbers[label] for label in labels if not re.search(rf"\b{re.escape(numbers[label])}\b", shown_text)]
+        assert missing == [], f"not shown in {name}'s Markdown cells: {missing}"
     except BaseException:
         SCREENSHOTS.mkdir(parents=True, exist_ok=True)
-        page.screenshot(path=str(SCREENSHOTS / "jupyterlab_roles_failure.png"))
+        page.screenshot(path=str(SCREENSHOTS / f"jupyterlab_roles_{name[:2]}_failure.png"))
         raise
     finally:
         page.close()

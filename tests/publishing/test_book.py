@@ -113,6 +113,30 @@ def test_figures_and_tables_are_numbered_per_chapter_from_one(site):
     assert numbered >= 1
 
 
+def test_the_notebooks_references_read_as_the_book_numbers_them(site):
+    """A notebook's Markdown writes each reference's number for JupyterLab ({numref}`Figure 4.1 <fig-x>`); the book
+    numbers and links the same reference itself, and the two agree."""
+    role = re.compile(r"\{numref\}`([^`<]*?)\s*<([^`<>]+)>`")
+    checked = 0
+    for path in NOTEBOOKS:
+        page = site / ("index.html" if path.stem == CONTENTS.front else f"{path.stem}.html")
+        html = page.read_text(encoding="utf-8")
+        book = dict(
+            re.findall(
+                r'<a class="reference internal" href="#([^"]+)"><span class="std std-numref">([^<]+)</span>', html
+            )
+        )
+        cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+        for text, label in (
+            m.groups() for c in cells if c["cell_type"] == "markdown" for m in role.finditer("".join(c["source"]))
+        ):
+            assert book.get(label) == text, (path.stem, label, text, book.get(label))
+            checked += 1
+        # the outputs' references ("the table" in JupyterLab) are numbered too
+        assert [t for t in book.values() if not re.fullmatch(r"(Figure|Table) \d+(\.\d+)?", t)] == [], path.stem
+    assert checked >= 40
+
+
 def test_banner_lists_own_and_other_changes():
     from vibration.publishing.book import Parameter, banner_html
 

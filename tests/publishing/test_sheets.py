@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import math
+import re
 
 import numpy as np
 import pytest
@@ -217,6 +218,61 @@ def test_notebook_blocks_hide_answers_and_the_book_folds_them():
     folded = cell.outputs[0]["data"]["text/markdown"]
     assert folded.count('<details class="exercise-answer">') == len(sheets.exercises("04", params={"c_nominal": 0.7}))
     assert "c/m = 0.7/1 = 0.7 rad/s" in folded
+
+
+#: Names of libraries, tools and code a reader's text must not carry (the appendix on running the chapters may).
+TOOL_NAMES = re.compile(
+    r"scipy|numpy|numba|papermill|nbval|jupyter|sphinx|solve_ivp|python-control|matplotlib|ipywidgets|playwright"
+    r"|chromium|pytest|t_eval|dask",
+    re.I,
+)
+
+
+def _intro(markdown: str) -> str:
+    return markdown.split("\n\n**Exercise", 1)[0]
+
+
+def test_the_introductions_name_no_code_and_read_the_same_on_screen_and_on_paper():
+    """The notebook's and the book's introduction to the exercises: no code, no tool, no "above" or "In JupyterLab";
+    the way to check an answer is in the appendix on running the chapters."""
+    import nbformat
+
+    from vibration.publishing.appendices import symbols_markdown
+    from vibration.publishing.registry import chapter_schemas
+
+    for stem in sheets._modules():
+        block = sheets.exercise_section(stem)
+        md, meta = block._repr_markdown_()
+        cell = nbformat.v4.new_code_cell("exercise_section(...)")
+        cell.outputs = [
+            nbformat.v4.new_output("execute_result", data={"text/markdown": md}, metadata={"text/markdown": meta})
+        ]
+        nb = nbformat.v4.new_notebook(cells=[cell])
+        assert sheets.fold_answers(nb) == 1
+        for intro in (_intro(md), _intro(cell.outputs[0]["data"]["text/markdown"])):
+            assert "`" not in intro and "check(" not in intro and not TOOL_NAMES.search(intro), (stem, intro)
+            assert "above" not in intro and "below follows" in intro, (stem, intro)
+            assert "appendix on running the chapters" in intro, (stem, intro)
+    sheets._RUN_PARAMS.clear()
+    appendix = symbols_markdown(chapter_schemas())
+    assert 'vibration.check("04.2"' in appendix and "quantity=" in appendix
+
+
+def test_the_sheets_name_no_library_or_tool():
+    """Every chapter's questions, worked answers and sheets at the defaults: no library, tool or code name."""
+    for stem in sheets._modules():
+        exs = sheets.exercises(stem)
+        md, _ = sheets.exercise_section(stem)._repr_markdown_()
+        texts = {
+            "notebook": md,
+            "text": repr(sheets.exercise_section(stem)),
+            "sheet": sheets._sheet_html("run", {}, [(stem, exs)], key=True),
+            "book": sheets.section_markdown(exs),
+        }
+        for where, text in texts.items():
+            found = [text[max(0, m.start() - 40) : m.end() + 20] for m in TOOL_NAMES.finditer(text)]
+            assert found == [], (stem, where, found)
+    sheets._RUN_PARAMS.clear()
 
 
 def _csv(path):

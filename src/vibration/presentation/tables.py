@@ -206,6 +206,30 @@ _ROLE_OR_SUB = re.compile(r"(?P<role>\{(?:numref|ref|eq)\}`[^`]+`)|_(?P<sub>[\wâ
 _ROLE = re.compile(r"\{(?:numref|ref|eq)\}`([^`]+)`")
 
 
+#: The words a cross-reference in a Markdown output shows where nothing numbers it (JupyterLab):
+#: "the table", "the figure", "the next figure", "the previous table".
+REFERENCE_WORDS = r"the (?:next |previous )?(?:figure|table)"
+
+
+def cross_reference(label: str, words: str | None = None) -> str:
+    """A cross-reference for a sentence a chapter shows as a Markdown output: ``{numref}`the table <tab-x>```.
+
+    JupyterLab renders each output on its own, with no figure or table to number, and shows ``words``
+    ("the figure" or "the table" by the label's prefix unless given); the book drops the words, so Sphinx
+    numbers and links the reference ("Table 3.1"), as it does the Markdown cells'
+    (:mod:`vibration.publishing.crossrefs`).
+
+    Examples
+    --------
+    >>> cross_reference("tab-energy"), cross_reference("fig-zoom", "the next figure")
+    ('{numref}`the table <tab-energy>`', '{numref}`the next figure <fig-zoom>`')
+    """
+    words = words or ("the figure" if label.startswith("fig") else "the table")
+    if not re.fullmatch(REFERENCE_WORDS, words):
+        raise ValueError(f"words = {words!r}: allowed {REFERENCE_WORDS}")
+    return f"{{numref}}`{words} <{label}>`"
+
+
 def _sub_html(text: str) -> str:
     """Header or caption as HTML, ``_sub`` as ``<sub>``.
 

@@ -86,6 +86,13 @@ def symbols_markdown(schemas: dict) -> str:
         "answers for the same values). A symbol used by several chapters with one meaning is listed once; "
         "the {doc}`glossary` defines the physical symbols.",
         "",
+        'In a chapter\'s notebook, `vibration.check("04.2", 0.8, quantity="bandwidth")` says whether 0.8 answers '
+        "the bandwidth asked by exercise 04.2 within its stated tolerance, for the parameters the notebook's "
+        "exercises were shown with, and gives a hint if not, without showing the answer. An exercise that asks for "
+        'several quantities takes them together as a mapping (`{"bandwidth": 0.8, "Q": 5.6}`) or one at a '
+        'time with `quantity=`; a multiple-choice exercise takes the letter of an option (`"b"`). The worked '
+        "answers are in {doc}`answers`.",
+        "",
         "```{list-table} The book's parameters.",
         ":header-rows: 1",
         ":name: tab-symbols",

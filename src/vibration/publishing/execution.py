@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..presentation.tables import TABLES_ENV
+from .crossrefs import number_references
 from .engine import announce, cluster
 
 if TYPE_CHECKING:
@@ -168,12 +169,16 @@ def execute_notebooks(
 def execute_in_place(chapters: list[Chapter], log=print) -> None:
     """Re-execute the source notebooks and store their outputs (the nbval references).
 
-    Uses nbclient directly, so no papermill timestamps enter the committed files.
+    Uses nbclient directly, so no papermill timestamps enter the committed files. The Markdown cells'
+    cross-references get the numbers of the figures and tables they name (:mod:`.crossrefs`).
     """
     import nbformat
     from nbclient import NotebookClient
 
+    from .registry import read_contents
+
     kernel = kernel_name()
+    front = read_contents(chapters[0].path.parent.parent).front if chapters else ""
     for ch in chapters:
         start = time.perf_counter()
         nb = nbformat.read(ch.path, as_version=4)
@@ -188,5 +193,7 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
         nb.metadata.pop("widgets", None)
         for cell in nb.cells:
             cell.metadata.pop("execution", None)
+        # the Markdown's cross-references carry the numbers of the figures and tables, for JupyterLab
+        number_references(nb, None if ch.name == front else int(ch.name.split("_", 1)[0]))
         nbformat.write(nb, ch.path)
         log(f"{ch.name} re-executed in {time.perf_counter() - start:.1f} s")

@@ -10,6 +10,7 @@ import re
 
 import nbformat
 
+from .crossrefs import book_references
 from .pages import ChapterPage, Parameter
 
 __all__ = ["DETAILS", "WIDGET_VIEW", "banner_html", "fold_details", "parameters_table", "prepare", "run_changes"]
@@ -101,6 +102,7 @@ def prepare(page: ChapterPage, changes: list[Parameter] = ()) -> nbformat.Notebo
     nb = copy.deepcopy(page.notebook)
     nb.metadata.pop("widgets", None)
     nb.metadata.pop("papermill", None)
+    book_references(nb)  # the book numbers and links each cross-reference itself
     cells = []
     params_done = False
     for cell in nb.cells:

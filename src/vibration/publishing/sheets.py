@@ -213,16 +213,17 @@ def objectives(chapter: str) -> _Block:
 
 
 _INTRO = "Every number below follows this run's parameters. "
-#: In the notebook the reader can call the checker; the book's page names no code and no tool.
-_INTRO_NOTEBOOK = (
-    _INTRO
-    + 'In JupyterLab, `check("{first}", answer)` says whether an answer is right within the stated tolerance and '
-    "gives a hint if not, without giving the answer away. The worked answers are in the book, folded under each "
-    "exercise, and in its appendix."
+#: Both introductions name no code and no tool, and read the same on screen and on paper: how to call the
+#: checker is in the appendix on running the chapters (:func:`vibration.publishing.appendices.symbols_markdown`).
+_CHECKED = (
+    "The chapter's notebook checks an answer: it says whether the answer is right within the stated tolerance "
+    "and gives a hint if not, without giving the answer away (the appendix on running the chapters shows how)."
 )
+_INTRO_NOTEBOOK = _INTRO + _CHECKED + " The worked answers are in the book's appendix of answers."
 _INTRO_BOOK = (
-    _INTRO + "The worked answers are folded under each exercise; the chapter's notebook, downloaded above, checks "
-    "an answer within its tolerance and gives a hint without showing the answer."
+    _INTRO
+    + _CHECKED
+    + " The worked answers are in the appendix of answers, and on the web page also under each exercise."
 )
 
 #: Key of the exercise section's output metadata: the chapter and the parameters it was shown with.
@@ -239,7 +240,7 @@ def exercise_section(chapter: str, params=None) -> _Block:
     record = _params(stem, params)
     _RUN_PARAMS[stem] = record
     exs = exercises(stem, params=record)
-    md = _INTRO_NOTEBOOK.format(first=exs[0].id) + "\n\n" + section_markdown(exs, folded=False)
+    md = _INTRO_NOTEBOOK + "\n\n" + section_markdown(exs, folded=False)
     meta = {SECTION_KEY: {"chapter": stem, "params": record.as_dict()}}
     return _Block(md, "Exercises\n" + section_text(exs), meta)
 
@@ -257,7 +258,7 @@ def fold_answers(nb) -> int:
             if not info:
                 continue
             exs = exercises(info["chapter"], params=dict(info["params"]))
-            out["data"]["text/markdown"] = _INTRO_BOOK.format(first=exs[0].id) + "\n\n" + section_markdown(exs)
+            out["data"]["text/markdown"] = _INTRO_BOOK + "\n\n" + section_markdown(exs)
             done += 1
     return done
 

@@ -135,7 +135,7 @@ def test_sentences_state_what_the_study_says(study):
     ladder = text.ladder_text(study)
     assert f"**{reach.cheapest}** gets there with the fewest evaluations" in ladder
     takeaways = text.takeaways(study)
-    assert ("defaults are good enough" in takeaways) == (study.paper.rel_err_x < text.SMALL)
+    assert ("default tolerances are good enough" in takeaways) == (study.paper.rel_err_x < text.SMALL)
     steps = text.steps_text(study)
     assert ("the shortfall drops" in steps) == (study.steps[-1].shortfall < study.steps[0].shortfall)
     assert ("decides how faithfully" in steps) == (study.paper.rel_err_x < study.steps[0].shortfall)

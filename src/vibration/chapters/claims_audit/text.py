@@ -329,7 +329,7 @@ def audit_summary(st: ClaimsAuditStudy) -> str:
         bullets.append(text + ".")
     for c in st.with_verdict("name differs"):
         bullets.append(
-            f'{c.claim_id} names the solver "{c.paper_value}"; SciPy\'s RK45 is in fact "{c.exact_value}". A wrong '
+            f'{c.claim_id} names the solver "{c.paper_value}"; the paper\'s RK45 is in fact "{c.exact_value}". A wrong '
             "name changes none of the numbers above."
         )
     held = st.with_verdict("reproduced")

@@ -20,6 +20,7 @@ from vibration.physics.control import force_floor
 from vibration.presentation.captions import Captioned, panel_words
 from vibration.presentation.numbers import integer
 from vibration.presentation.style import OKABE_ITO, case_style, figure, place_legend
+from vibration.presentation.tables import cross_reference
 
 #: Two curves whose largest difference is below this fraction of their largest value coincide.
 COINCIDE = 0.05
@@ -145,7 +146,8 @@ def active_figure(study: ControlStudy) -> Captioned:
     )
     remark = (
         f"The largest steady controlled displacement is {num(ratio)} times smaller than the passive one; "
-        "{numref}`fig-control-active-zoom` shows the last forcing periods, where the loops can be told apart." + same
+        f"{cross_reference('fig-control-active-zoom', 'the next figure')} shows the last forcing periods, where the "
+        "loops can be told apart." + same
     )
     alt = (
         "Displacement and control force against time for the passive plant and the PD, LQR and PID loops: the "

@@ -182,8 +182,11 @@ def checks_table(study: ControlStudy) -> Table:
     a = study.active
     checks = (
         ("PD loop simulated (DOP853) against the exact closed-loop oscillator, max |Δx| (m)", bound(a.pd_error, 1e-9)),
-        ("LQR gains: python-control against scipy's Riccati solver, relative", bound(a.lqr_check["scipy"], 1e-12)),
-        ("LQR gains: python-control against the closed form, relative", bound(a.lqr_check["closed form"], 1e-12)),
+        (
+            "LQR gains: the design routine against a general Riccati solver, relative",
+            bound(a.lqr_check["scipy"], 1e-12),
+        ),
+        ("LQR gains: the design routine against the closed form, relative", bound(a.lqr_check["closed form"], 1e-12)),
         ("Riccati residual of the returned P, relative", bound(a.lqr_check["residual"], 1e-12)),
     )
     caption = "Self-checks of the active designs (rounding level, printed as bounds)."

@@ -17,6 +17,7 @@ from vibration.chapters.control.study import (
     ActiveStudy,
     ControlStudy,
 )
+from vibration.presentation.tables import cross_reference
 
 #: The chapter's three active designs (the PD with the PID's gains is a comparison, not a design).
 ACTIVE = ("PD", "LQR", "PID")
@@ -196,10 +197,10 @@ def comparison_sentence(study: ControlStudy) -> str:
     worst, ratio = force_excess(a)
     force = (
         f" No design wastes force: each uses at most {pct(ratio - 1.0, 2)} more than the least RMS force that can "
-        "hold its amplitude ({numref}`tab-control-costs`)."
+        f"hold its amplitude ({cross_reference('tab-control-costs')})."
         if ratio < 1.0 + WASTE
         else f" The {LABELS[worst]} spends {num(ratio)} times the least RMS force that could hold its amplitude "
-        "({numref}`tab-control-costs`): force the disturbance does not require."
+        f"({cross_reference('tab-control-costs')}): force the disturbance does not require."
     )
     return poles + integ + cost + force
 

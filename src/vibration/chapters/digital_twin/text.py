@@ -15,6 +15,7 @@ from vibration.chapters.digital_twin.study import HALFWIDTH_TARGET, MIN_ALARMS, 
 from vibration.chapters.digital_twin.tables import flag_halfwidth
 from vibration.physics.twin import cusum_variance_ratio
 from vibration.presentation.numbers import integer, pm, sig
+from vibration.presentation.tables import cross_reference
 
 NAMES = ("m", "c", "k")
 
@@ -117,7 +118,7 @@ def frf_sentence(st: DigitalTwinStudy) -> str:
         "The frequency-domain estimates need a resolved resonance peak, so they read a record "
         f"{st.frf_record / (fit.n * fit.dt):.0f} times longer than the test. Even so the better of them, the "
         f"{best} estimate, is {sig(100 * fd[best], 2)} % off in k, {verdict} than the time-domain fit's "
-        f"{sig(100 * ls, 2)} % on the short record ({{numref}}`tab-twin-identified`)."
+        f"{sig(100 * ls, 2)} % on the short record ({cross_reference('tab-twin-identified')})."
     )
 
 
@@ -320,7 +321,7 @@ def run_length_sentence(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> s
         f"Where the healthy records raise at least {min_alarms} false alarms ({int(np.count_nonzero(rows))} "
         f"thresholds) and for both faults' delays at h = {st.params.threshold:g}, the Markov chain of Brook and "
         f"Evans (1972) predicts the Monte Carlo to within {sig(worst, 2)} standard errors "
-        f"({{numref}}`tab-twin-arl`, {{numref}}`fig-twin-tradeoff`)." + tail
+        f"({cross_reference('tab-twin-arl')}, {cross_reference('fig-twin-tradeoff')})." + tail
     )
 
 

@@ -273,9 +273,9 @@ def takeaways(study: FrequencyStudy) -> str:
             "narrows in proportion as the damping falls."
         )
     bullets.append(
-        "Audit energy on the closed form or at tight tolerances, never on a simulation at SciPy's default tolerances: "
-        "its integration error shows up as energy that comes from nowhere."
+        "Audit energy on the closed form or at tight tolerances, never on a simulation at the integrator's default "
+        "tolerances: its integration error shows up as energy that comes from nowhere."
         if study.energy_residual(1) >= AUDIT
-        else "Even a simulation at SciPy's default tolerances is good enough for an energy audit here."
+        else "Even a simulation at the integrator's default tolerances is good enough for an energy audit here."
     )
     return "\n".join("- " + b for b in bullets)

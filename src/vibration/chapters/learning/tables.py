@@ -321,7 +321,7 @@ def robustness_table(st: LearningStudy) -> Table:
 
 
 CHECK_LABELS = {
-    "lqr_vs_control": ("LQR gains", "python-control dlqr"),
+    "lqr_vs_control": ("LQR gains", "a second discrete LQR design routine"),
     "riccati": ("Riccati equation residual", "substitution, relative to |P|"),
     "cost_vs_cubature": ("exact expected cost J*", "Gauss–Legendre cubature of episode costs"),
     "env_vs_loop": ("episode of the environment's step map", "compiled batched loop, relative to the initial box"),

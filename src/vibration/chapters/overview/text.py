@@ -78,8 +78,8 @@ def part1_findings(st: OverviewStudy | None = None, **values) -> list[str]:
     )
     if st.solver_gap < SMALL_GAP:
         out.append(
-            "None of the gaps comes from the paper's numerical method: each audited number that RK45 at SciPy's "
-            f"default tolerances gives lies within {g(100 * st.solver_gap, 2)} % of its exact value (chapter 1 "
+            "None of the gaps comes from the paper's numerical method: each audited number that the paper's RK45 "
+            f"at its default tolerances gives lies within {g(100 * st.solver_gap, 2)} % of its exact value (chapter 1 "
             "measures the whole trajectory instead, against its largest displacement; chapter 3 says why)."
         )
     else:

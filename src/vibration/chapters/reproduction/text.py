@@ -379,7 +379,7 @@ def methods_table(st: ReproductionStudy) -> Table:
             """
         ),
         caption=(
-            "The paper's method (RK45 at SciPy's default tolerances) beside the exact solution: velocity amplitude "
+            "The paper's method (RK45 at its default tolerances) beside the exact solution: velocity amplitude "
             "v_ss = ω x_ss, peaks in the window, RK45's worst displacement error, and the time constant τ of the "
             "slowest free mode."
         ),

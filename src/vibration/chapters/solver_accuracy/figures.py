@@ -95,7 +95,7 @@ def own_steps_figure(study: SolverStudy) -> Captioned:
         ls="-",
         lw=0.9,
         ms=3.5,
-        label="RK45 at SciPy's defaults, its own steps only",
+        label="RK45 at its default tolerances, its own steps only",
         **style,
     )
     ax.set_xlabel(r"time $t$ (s)")
@@ -108,7 +108,7 @@ def own_steps_figure(study: SolverStudy) -> Captioned:
     caption = (
         f"The last {num(n_periods, 2)} forcing periods of the resonance case (t from {num(t0, 3)} to {num(t1, 3)} s): "
         "the exact displacement on the output grid (black, dashed) and straight lines through the "
-        f"{integer(n_steps)} steps RK45 takes there at SciPy's defaults (blue dots)."
+        f"{integer(n_steps)} steps RK45 takes there at its default tolerances (blue dots)."
     )
     remark = (
         f"The peaks of the line through RK45's steps fall short of the exact ones, by {num(100 * s.shortfall, 2)} % "

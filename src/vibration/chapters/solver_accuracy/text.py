@@ -19,7 +19,7 @@ from vibration.chapters.solver_accuracy.study import LATE, SolverStudy
 from vibration.presentation.narrative import g
 from vibration.presentation.numbers import integer
 from vibration.presentation.numbers import sig as num
-from vibration.presentation.tables import Approx, Column, Table, columns
+from vibration.presentation.tables import Approx, Column, Table, columns, cross_reference
 
 #: The paper's method's worst error, relative to the peak displacement, below which it is called small.
 SMALL = 0.01
@@ -149,13 +149,13 @@ def steps_table(study: SolverStudy) -> Table:
 
 
 def pair_table(study: SolverStudy) -> Table:
-    """The nodes c_i of SciPy's RK45 beside those of the two candidate pairs."""
-    rows = [{"pair": "SciPy's RK45", "nodes": ", ".join(str(c) for c in study.nodes)}]
+    """The nodes c_i of the paper's RK45 beside those of the two candidate pairs."""
+    rows = [{"pair": "the paper's RK45", "nodes": ", ".join(str(c) for c in study.nodes)}]
     rows += [{"pair": name.replace("-", "–"), "nodes": ", ".join(str(c) for c in ref)} for name, ref in study.pairs]
     return Table(
         rows=rows,
         columns=[Column(key="pair", header="Runge–Kutta pair"), Column(key="nodes", header="nodes c_i")],
-        caption="The nodes of SciPy's RK45 tableau beside those of the Dormand–Prince and Fehlberg pairs.",
+        caption="The nodes of the paper's RK45 tableau beside those of the Dormand–Prince and Fehlberg pairs.",
         name="tab-solvers-pair",
     )
 
@@ -177,12 +177,12 @@ def key_results(study: SolverStudy) -> str:
     )
     named = "the Fehlberg pair the paper names" if study.pair == PAPER_PAIR else "not the Fehlberg pair the paper names"
     bullets = [
-        f"The paper's method, RK45 at SciPy's default tolerances, stays within {num(paper.err_x, 3)} m of the exact "
+        f"The paper's method, RK45 at its default tolerances, stays within {num(paper.err_x, 3)} m of the exact "
         f"displacement over the whole window: {num(100 * paper.rel_err_x, 2)} % of the {num(study.peak)} m peak.",
         f"Accuracy costs work: to bring the error below {num(reach.target, 2)} m, {cost}.",
         f"A line through RK45's own steps undershoots the late peaks by {num(100 * s.shortfall, 2)} % on average, "
         f"because it takes only {num(s.per_period, 3)} steps per forcing period.",
-        f"SciPy's RK45 is the {_pair_name(study.pair)} pair, {named}.",
+        f"The paper's RK45 is the {_pair_name(study.pair)} pair, {named}.",
     ]
     return "\n".join(["> **Key results**", ">", *(f"> * {b}" for b in bullets)])
 
@@ -208,8 +208,8 @@ def ladder_text(study: SolverStudy) -> str:
     others = ", ".join(f"{m} {_count(study, m, n)}" for m, n in reach.cost if m != cheapest)
     missed = [m for m in study.methods if reach.evaluations(m) is None]
     text = (
-        f"At SciPy's default tolerances (relative {num(paper.rtol)}, absolute {num(paper.atol)}) the paper's RK45 "
-        "misses the exact displacement "
+        f"At the integrator's default tolerances (relative {num(paper.rtol)}, absolute {num(paper.atol)}) "
+        "the paper's RK45 misses the exact displacement "
         f"by at most {num(paper.err_x, 3)} m and the exact velocity by at most {num(paper.err_v, 3)} m/s, with "
         f"{integer(paper.nfev)} evaluations of the right-hand side.\n\n"
         f"The smallest error that every method of the ladder reaches is {num(reach.target, 2)} m. **{cheapest}** "
@@ -227,11 +227,11 @@ def steps_text(study: SolverStudy) -> str:
     change = "drops" if tight.shortfall < s.shortfall else "does not drop"
     grid = (
         f"On the output grid the same loose solver is off by only {num(100 * paper.rel_err_x, 2)} % of the peak "
-        "({numref}`tab-solvers-ladder`): the grid a curve is drawn on, not the solver, decides how faithfully its "
-        "peaks show."
+        f"({cross_reference('tab-solvers-ladder')}): the grid a curve is drawn on, not the solver, decides how "
+        "faithfully its peaks show."
         if paper.rel_err_x < s.shortfall
         else f"On the output grid the solver's own error, {num(100 * paper.rel_err_x, 2)} % of the peak "
-        "({numref}`tab-solvers-ladder`), is as large: here the solver, not only the grid, limits the peaks."
+        f"({cross_reference('tab-solvers-ladder')}), is as large: here the solver, not only the grid, limits the peaks."
     )
     return (
         f"At the paper's tolerance RK45 takes {integer(s.steps)} steps, {num(s.per_period, 3)} per forcing period, the "
@@ -244,13 +244,13 @@ def steps_text(study: SolverStudy) -> str:
 
 
 def pair_text(study: SolverStudy) -> str:
-    """Which pair SciPy's RK45 is, from its nodes."""
+    """Which pair the paper's RK45 is, from its nodes."""
     others = [name for name, nodes in study.pairs if nodes != study.nodes]
     differ = f"; the {listing([_pair_name(o) for o in others])} nodes differ" if others else ""
     return (
-        f"SciPy's nodes $c_i$ are those of the **{_pair_name(study.pair)}** pair{differ}. The pair decides which "
-        "formula estimates the error and which one advances the solution, so the paper's method is a "
-        f"{_pair_name(study.pair)} integrator whatever its name."
+        f"The nodes $c_i$ of the paper's RK45 are those of the **{_pair_name(study.pair)}** pair{differ}. "
+        "The pair decides which formula estimates the error and which one advances the solution, so the paper's "
+        f"method is a {_pair_name(study.pair)} integrator whatever its name."
     )
 
 
@@ -260,12 +260,12 @@ def takeaways(study: SolverStudy) -> str:
     cheapest = reach.cheapest
     if paper.rel_err_x < SMALL:
         trust = (
-            f"For this oscillator SciPy's defaults are good enough to read amplitudes: "
+            f"For this oscillator the default tolerances are good enough to read amplitudes: "
             f"the error is below {num(100 * SMALL)} % of the peak, so discrepancies in the paper have other causes."
         )
     else:
         trust = (
-            f"With these parameters SciPy's defaults are not good enough to read amplitudes: the error exceeds "
+            f"With these parameters the default tolerances are not good enough to read amplitudes: the error exceeds "
             f"{num(100 * SMALL)} % of the peak, so tighten the tolerance before trusting a number."
         )
     rk45 = reach.evaluations("RK45")
@@ -289,7 +289,6 @@ def takeaways(study: SolverStudy) -> str:
         trust,
         switch,
         implicit,
-        "Draw and measure peaks on a dense output grid (SciPy's `t_eval`) or the solver's dense output, never through "
-        "the steps alone.",
+        "Draw and measure peaks on a dense output grid or the solver's dense output, never through the steps alone.",
     ]
     return "\n".join("- " + b for b in bullets)

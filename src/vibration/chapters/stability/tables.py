@@ -400,7 +400,7 @@ def checks_table(st: StabilityStudy) -> Table:
     band = max(band, abs(abs(float(step_response(st.osc(st.c_star), st.star_step.settling_time)) - 1.0) - BAND))
     checks = (
         (f"|T(√2 {WN_CELL}) − 1| over 200 ζ from 10⁻⁴ to 100", bound(cross, 1e-13)),
-        (f"poles against numpy.roots, relative to max({WN_CELL}, |c|/m)", bound(roots, 1e-12)),
+        (f"poles against a polynomial root finder, relative to max({WN_CELL}, |c|/m)", bound(roots, 1e-12)),
         ("|x| above its closed-form envelope, relative", bound(max(env, 0.0), 1e-9)),
         ("| |y(tₛ) − 1| − 0.02 | at the settling times", bound(band, 1e-12)),
     )

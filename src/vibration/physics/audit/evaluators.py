@@ -28,7 +28,7 @@ def _eval_rk45_pair(q: str, run: _Run | None, runs: dict[str, _Run]):
         "",
         name,
         (
-            f"SciPy's RK45 has nodes c = ({nodes}), the Dormand-Prince pair "
+            f"The paper's RK45 has nodes c = ({nodes}), the Dormand-Prince pair "
             "(Fehlberg's are 0, 1/4, 3/8, 12/13, 1, 1/2), and advances with its 5th-order solution."
         ),
     )

@@ -17,7 +17,7 @@ def readings(q: str, sid: str, runs: dict[str, _Run]) -> list[tuple[str, object,
     ``value`` is a float (in ``unit``), a word, or None when it does not exist in this run.
     """
     if q == "rk45_pair":
-        return [("the pair whose nodes equal SciPy's RK45 nodes", rk45_pair(), "")]
+        return [("the pair whose nodes equal those of the paper's RK45", rk45_pair(), "")]
     run = runs[sid]
     osc, force, ss, t_end = run.sc.oscillator, run.sc.force, run.ss, run.sc.t_end
     amp = ss.amplitude if run.has_steady else None

@@ -323,11 +323,11 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
             float(np.max(np.abs(ours.x - exact.x))),
             bound_sine,
         ),
-        "scipy cont2discrete FOH + dlsim (relative to max |x|)": (
+        "first-order-hold discretisation of the state space, simulated (relative to max |x|)": (
             float(np.max(np.abs(ours.x - yd[:, 0]))) / scale,
             1e-10,
         ),
-        "SciPy's integrator, force linear between samples (relative)": (
+        "an adaptive integrator, force linear between samples (relative)": (
             float(np.max(np.abs(ours.x[:m_] - np.array(ref)))) / scale,
             1e-8,
         ),
