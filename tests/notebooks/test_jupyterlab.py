@@ -36,6 +36,7 @@ SCREENSHOTS = ROOT / "build" / "screenshots"
 KERNEL_DISPLAY_NAME = "Python 3 (vibration)"
 USES_WIDGETS = re.compile(
     r"vibration\.chapters\.explore\.widget\b|from\s+vibration\.chapters\.explore\s+import\s+[^\n]*\bwidget\b"
+    r"|from\s+vibration\.chapters\.explore\.panel\s+import\s+[^\n]*\bpanel\b"  # panel(study): the live explorer
 )
 
 #: JupyterLab settings for a quiet, deterministic session.
@@ -54,7 +55,8 @@ UPDATE_S = 20  # until a widget reflects a slider move
 
 
 def widget_notebooks(folder: Path) -> list[str]:
-    """Names of the notebooks in ``folder`` whose code cells use ``vibration.chapters.explore.widget``."""
+    """Names of the notebooks in ``folder`` whose code cells use ``vibration.chapters.explore.widget`` (directly or
+    through the chapter's ``panel``)."""
     names = []
     for path in sorted(folder.glob("*.ipynb")):
         cells = json.loads(path.read_text(encoding="utf-8"))["cells"]

@@ -261,7 +261,7 @@ def test_every_caption_is_at_most_sixty_words(default, figs):
 def test_the_panel_is_shown_once_and_figures_are_single_calls():
     nb = json.loads(NOTEBOOK.read_text(encoding="utf-8"))
     code = ["".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code"]
-    assert sum("control_panel(" in src for src in code) == 1
+    assert sum("panel(study)" in src for src in code) == 1
     assert not any("fig =" in src or "print(" in src and "version" not in src for src in code)
     assert not any("mystnb" in c["metadata"] for c in nb["cells"])
     assert not any("Using the module" in md for md in _notebook_markdown())
