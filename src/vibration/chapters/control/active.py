@@ -184,7 +184,7 @@ def _tradeoff(osc: Oscillator, force: SineForce, p: Params, design: LQRResult, p
     rs = np.geomspace(1e-7, 1e2, n_r) * p.r_lqr / 1e-3
     amp, frc = [], []
     for ri in rs:
-        des = lqr(osc, p.q_x, p.q_v, float(ri))
+        des = lqr(osc, p.q_x, p.q_v, r=float(ri))
         X = steady_state(des.closed_loop, force).amplitude
         amp.append(X)
         frc.append(X * abs(des.K[0] + 1j * force.omega * des.K[1]) / math.sqrt(2.0))
@@ -242,7 +242,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     ex = exact_response(osc, force, t)
     xs["passive"], us["passive"], vs["passive"] = ex.x, np.zeros_like(t), ex.v
 
-    design = lqr(osc, p.q_x, p.q_v, p.r_lqr)
+    design = lqr(osc, p.q_x, p.q_v, r=p.r_lqr)
     loops = {
         "PD": _closed_loop("PD", osc, p.kp, p.kd, force),
         "LQR": _closed_loop("LQR", osc, float(design.K[0]), float(design.K[1]), force),

@@ -347,7 +347,7 @@ class Explorer(widgets.VBox):
             top, step = omega_range(vals["omega_n"], force.omega)
             grid = omega_grid(vals["omega_n"], osc.damping_ratio, top)
             curve = magnification(osc, grid)
-            paper = simulate(osc, force, t_end, self.n_points) if rk45 else None
+            paper = simulate(osc, force, t_end, n_points=self.n_points) if rk45 else None
         if paper is not None:
             vals["rk45_max_error"] = float(np.max(np.abs(paper.x - resp.x)))
             vals["rk45_nfev"] = paper.nfev

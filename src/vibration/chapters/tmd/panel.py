@@ -233,10 +233,10 @@ class TMDExplorer(KitExplorer):
             "f": f,
             "zeta_a": za,
             "zeta_p": zp,
-            "peak": tmd_peak(mu, f, za, zp),
+            "peak": tmd_peak(mu, f, za, zeta_p=zp),
             "fixed": (rp, hp),
             "rules": rules,
-            "rule_peaks": {n: tmd_peak(mu, t.f, t.zeta_a, zp) for n, t in rules.items()},
+            "rule_peaks": {n: tmd_peak(mu, t.f, t.zeta_a, zeta_p=zp) for n, t in rules.items()},
         }
 
     def figure(self, v: dict):
@@ -250,10 +250,10 @@ class TMDExplorer(KitExplorer):
             bare = 1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * zp * r)
         opt = v["rules"]["H∞"]
         ax.plot(r, np.minimum(bare, 2 * top), color=OKABE_ITO["grey"], lw=1.0, label="without absorber")
-        ax.plot(r, tmd_magnification(mu, f, za, r, zp), color=OKABE_ITO["blue"], lw=1.8,
+        ax.plot(r, tmd_magnification(mu, f, za, r=r, zeta_p=zp), color=OKABE_ITO["blue"], lw=1.8,
                 label="with the sliders' absorber")  # fmt: skip
-        ax.plot(r, tmd_magnification(mu, opt.f, opt.zeta_a, r, zp), lw=1.2, label=r"H$\infty$ tuning for this $\mu$",
-                **case_style("exact"))  # fmt: skip
+        ax.plot(r, tmd_magnification(mu, opt.f, opt.zeta_a, r=r, zeta_p=zp), lw=1.2,
+                label=r"H$\infty$ tuning for this $\mu$", **case_style("exact"))  # fmt: skip
         ax.plot(rp, hp, "o", color="k", ms=5, label=r"fixed points P, Q ($\zeta_p = 0$)")
         ax.set_xlim(*R_RANGE)
         ax.set_ylim(0.0, top)
