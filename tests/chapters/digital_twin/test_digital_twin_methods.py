@@ -28,7 +28,7 @@ def test_batch_fit_reproduces_identify_under_model_error():
     """A cubic spring biases k by tens of per cent: the batch must still land on identify()'s optimum."""
     t, force, linear = montecarlo.design(OSC, 30.0, 0.02, 5, (0.1, 2.0), 2.0)
     k3 = 0.05 * OSC.k / float(np.mean(linear**2))
-    clean = cubic_response(OSC, k3, t, force)
+    clean = cubic_response(OSC, k3, t, force=force)
     sd = 0.05 * float(np.sqrt(np.mean(clean**2)))
     ex = montecarlo.experiment(OSC, t, force, clean, noise_sd=sd, runs=3, seed=5, stream=9, noise=0.05)
     for i in range(3):

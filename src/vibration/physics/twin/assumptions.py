@@ -110,11 +110,11 @@ def assumption_study(
     truth = np.array([osc.m, osc.c, osc.k])
     lags = WHITENESS_LAGS
     experiments = {"as assumed": reference}
-    predicted = {"as assumed": predicted_coverage(osc, t, force, 0.0)}
+    predicted = {"as assumed": predicted_coverage(osc, t, force, colour=0.0)}
     clean_cubic = None
     for j, (label, (uf, uy, uc, uk)) in enumerate(ASSUMPTION_CASES.items()):
         if uk:
-            clean_cubic = cubic_response(osc, k3, t, force) if clean_cubic is None else clean_cubic
+            clean_cubic = cubic_response(osc, k3, t, force=force) if clean_cubic is None else clean_cubic
             clean = clean_cubic
         else:
             clean = linear
@@ -136,7 +136,7 @@ def assumption_study(
             colour=uc * colour,
             case=label,
         )
-        predicted[label] = predicted_coverage(osc, t, force, colour) if uc else None
+        predicted[label] = predicted_coverage(osc, t, force, colour=colour) if uc else None
     return AssumptionStudy(
         experiments=experiments,
         predicted=predicted,
