@@ -150,7 +150,7 @@ class ActiveStudy:
         return self.force.omega / self.osc.natural_frequency
 
 
-def loop_amplitude(osc: Oscillator, force: SineForce, kp: float, ki: float, kd: float) -> float:
+def loop_amplitude(osc: Oscillator, force: SineForce, kp: float, *, ki: float, kd: float) -> float:
     """Steady amplitude (m) of the unlimited loop ``kp + ki/s + kd s`` at the forcing: ``F0 |P / (1 + P C)|``."""
     w = force.omega
     C = kp + 1j * kd * w + (ki / (1j * w) if ki > 0.0 else 0.0)
@@ -270,7 +270,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     designs = {}
     for name in DESIGNS:
         kx, ki, kv = gains[name]
-        X = loop_amplitude(osc, force, kx, ki, kv)
+        X = loop_amplitude(osc, force, kx, ki=ki, kd=kv)
         designs[name] = Design(
             name=name,
             kx=kx,

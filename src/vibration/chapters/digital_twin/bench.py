@@ -65,9 +65,9 @@ def run(quick: bool) -> None:
         ],
     )
     runs, det = (100, 20) if quick else (500, 100)
-    tt, force, clean = montecarlo.design(osc, 60.0, 0.02, 13, (0.1, 2.0), 2.0)
+    tt, force, clean = montecarlo.design(osc, 60.0, 0.02, seed=13, band=(0.1, 2.0), rms=2.0)
     sd = 0.05 * float(np.sqrt(np.mean(clean**2)))
-    t_batch = _once(lambda: montecarlo.experiment(osc, tt, force, clean, noise_sd=sd, runs=runs, seed=13,
+    t_batch = _once(lambda: montecarlo.experiment(osc, tt, force, clean=clean, noise_sd=sd, runs=runs, seed=13,
                                                   stream=0, noise=0.05))  # fmt: skip
     t_one = _once(lambda: [identify(tt, force, x=clean + sd * np.random.default_rng([13, 0, i]).standard_normal(
         tt.size), search="local") for i in range(20)]) * runs / 20  # fmt: skip

@@ -135,15 +135,23 @@ def _noise_sd(clean: np.ndarray, level: float) -> float:
 
 
 def _coverage(asset, p: Params, band, duration, noise, runs, stream) -> CoverageExperiment:
-    t, force, clean = montecarlo.design(asset, duration, p.dt, p.seed, band, p.F_rms)
+    t, force, clean = montecarlo.design(asset, duration, p.dt, seed=p.seed, band=band, rms=p.F_rms)
     return montecarlo.experiment(
-        asset, t, force, clean, noise_sd=_noise_sd(clean, noise), runs=runs, seed=p.seed, stream=stream, noise=noise
+        asset,
+        t,
+        force,
+        clean=clean,
+        noise_sd=_noise_sd(clean, noise),
+        runs=runs,
+        seed=p.seed,
+        stream=stream,
+        noise=noise,
     )
 
 
 def _assumptions(asset, p: Params, band, reference: CoverageExperiment) -> tuple[AssumptionStudy, float]:
     """The as-assumed experiment and one per broken assumption (own noise stream each); and the batch agreement."""
-    t, force, linear = montecarlo.design(asset, p.t_record, p.dt, p.seed, band, p.F_rms)
+    t, force, linear = montecarlo.design(asset, p.t_record, p.dt, seed=p.seed, band=band, rms=p.F_rms)
     x_rms = float(np.sqrt(np.mean(linear**2)))
     k3 = p.cubic * asset.k / x_rms**2
     f_rms = float(np.sqrt(np.mean(force**2)))
@@ -158,7 +166,7 @@ def _assumptions(asset, p: Params, band, reference: CoverageExperiment) -> tuple
             asset,
             t,
             force,
-            clean,
+            clean=clean,
             noise_sd=uy * _noise_sd(clean, p.noise),
             runs=p.assumption_runs,
             seed=p.seed,
@@ -169,7 +177,9 @@ def _assumptions(asset, p: Params, band, reference: CoverageExperiment) -> tuple
             case=label,
         )
         predicted[label] = predicted_coverage(asset, t, force, colour=p.colour) if uc else None
-    agree = montecarlo.agreement(asset, t, force, linear, _noise_sd(linear, p.noise), p.seed, 0, AGREEMENT_RUNS)
+    agree = montecarlo.agreement(
+        asset, t, force, clean=linear, noise_sd=_noise_sd(linear, p.noise), seed=p.seed, stream=0, runs=AGREEMENT_RUNS
+    )
     study = AssumptionStudy(
         experiments=experiments,
         predicted=predicted,

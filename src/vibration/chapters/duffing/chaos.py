@@ -198,7 +198,7 @@ def chaos_study(params: Params | None = None, **values) -> ChaosStudy:
     return ChaosStudy(params=p, lyap_runs=runs, pooled=pooled)
 
 
-def chaos_map(p: Params, omegas=MAP_OMEGAS, forces=MAP_FORCES, n_periods: int = MAP_PERIODS) -> ChaosMap:
+def chaos_map(p: Params, omegas=MAP_OMEGAS, forces=MAP_FORCES, *, n_periods: int = MAP_PERIODS) -> ChaosMap:
     """Ueda's chaos map: :func:`chaos_study` (the sweep's study) at every forcing frequency and amplitude.
 
     ``p`` gives the damping ``c_ueda``; every point runs ``n_periods`` periods (at most 40 000 points).

@@ -342,7 +342,7 @@ class Explorer(widgets.VBox):
         t = np.linspace(0.0, t_end, self.n_points)
         with np.errstate(over="ignore", invalid="ignore", under="ignore", divide="ignore"):
             resp = exact_response(osc, force, t)
-            vals = readout(osc, force, t_end, self.n_points, response=resp).as_dict()
+            vals = readout(osc, force, t_end, n_points=self.n_points, response=resp).as_dict()
             ss = steady_state(osc, force)
             top, step = omega_range(vals["omega_n"], force.omega)
             grid = omega_grid(vals["omega_n"], osc.damping_ratio, top)

@@ -350,7 +350,17 @@ def frequency_response_study(params: Params | None = None, **values) -> Frequenc
     vibration.physics.model.ParameterError: c_min = 0.0 N s/m is out of range: allowed c_min >= 0.001 N s/m, ...
     """
     p = params if params is not None else Params.from_values(values)
-    scenarios = scenarios_from(p.m, p.k, p.F0, p.t_end, p.omega_ref, p.omega_res, p.c_low, p.c_nominal, p.c_high)
+    scenarios = scenarios_from(
+        p.m,
+        p.k,
+        p.F0,
+        t_end=p.t_end,
+        omega_ref=p.omega_ref,
+        omega_res=p.omega_res,
+        c_low=p.c_low,
+        c_nominal=p.c_nominal,
+        c_high=p.c_high,
+    )
     wn = scenarios["resonance"].oscillator.natural_frequency
     omegas = np.geomspace(wn / SPAN, wn * SPAN, N_CURVE)
     cases, checks = [], []

@@ -70,7 +70,7 @@ def _slider_values(mu, f, zeta_a, zeta_p) -> tuple[float, float, float, float]:
     return mu, f, zeta_a, zeta_p
 
 
-def tmd_panel_html(mu=0.05, f=None, zeta_a=None, zeta_p=0.0, *, panel_id: str | None = None) -> str:
+def tmd_panel_html(mu=0.05, f=None, zeta_a=None, *, zeta_p=0.0, panel_id: str | None = None) -> str:
     """Self-contained HTML + JavaScript panel: μ, f, ζ_a and ζ_p sliders over the magnification curve.
 
     Draws |X_p|/(F0/k_p) against r = ω/ω_p for the slider values, the H∞ tuning of the
@@ -279,8 +279,8 @@ class TMDExplorer(KitExplorer):
         )
 
     def panel_html(self) -> str:
-        sliders = (self.mu_slider, self.f_slider, self.zeta_a_slider, self.zeta_p_slider)
-        return tmd_panel_html(*(float(s.value) for s in sliders))
+        return tmd_panel_html(float(self.mu_slider.value), float(self.f_slider.value),
+                              float(self.zeta_a_slider.value), zeta_p=float(self.zeta_p_slider.value))  # fmt: skip
 
     def summary(self) -> str:
         return (
@@ -289,7 +289,7 @@ class TMDExplorer(KitExplorer):
         )
 
 
-def tmd_explorer(mu=0.05, f=None, zeta_a=None, zeta_p=0.0) -> TMDExplorer:
+def tmd_explorer(mu=0.05, f=None, zeta_a=None, *, zeta_p=0.0) -> TMDExplorer:
     """The chapter's sliders: :class:`TMDExplorer` (ipywidgets in JupyterLab, HTML panel in the book).
 
     Starts at mass ratio mu, tuning f and absorber damping zeta_a (default: the H∞
