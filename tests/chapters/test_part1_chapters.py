@@ -301,7 +301,7 @@ def test_audit_sentences_state_what_the_numbers_say(chapters):
         if n:
             assert f"{n} {audit_text.VERDICT_PHRASE[v][0 if n == 1 else 1]}" in key
     judged = [c for c in st.claims if c.paper_method_value not in ("", None) and c.exact_value is not None]
-    same = sum(verdict(c.kind, c.paper_value, c.paper_method_value, c.quantity.split(" [")[0]) == c.verdict
+    same = sum(verdict(c.kind, c.paper_value, c.paper_method_value, quantity=c.quantity.split(" [")[0]) == c.verdict
                for c in judged)  # fmt: skip
     assert (f"all {len(judged)} claims" in key) == (same == len(judged))
     # each claim's verdict in its paragraph, each quote once in the chapter, none in the summary

@@ -213,7 +213,7 @@ def test_discontinuous_controller_hits_the_budget_in_seconds():
 @pytest.mark.parametrize("bad", BAD_SCALARS)
 def test_scalar_arguments_refused(bad):
     refused(ctl.pd_oscillator, OSC, bad, 1.0)
-    refused(ctl.lqr, OSC, bad, 1.0, 1.0)
+    refused(ctl.lqr, OSC, bad, 1.0, r=1.0)
     refused(ctl.lqr_closed_form, OSC, 1.0, 1.0, r=bad)
     refused(ctl.pid_response, OSC, None, 1.0, ki=bad, kd=1.0, t_end=1.0, n_points=11)
     refused(ctl.pid_linear_response, OSC, None, bad, ki=1.0, kd=1.0, t=[0.0, 1.0])
@@ -331,7 +331,7 @@ def test_simulate_controlled_fuzz(osc, gain, u_max, t_end):
 @settings(max_examples=30, deadline=None)
 @given(osc=scalar_osc, q_x=extreme, q_v=extreme, r=extreme)
 def test_lqr_fuzz(osc, q_x, q_v, r):
-    guarded(ctl.lqr, osc, q_x, q_v, r)
+    guarded(ctl.lqr, osc, q_x, q_v, r=r)
     guarded(ctl.lqr_closed_form, osc, q_x, q_v, r=r)
 
 

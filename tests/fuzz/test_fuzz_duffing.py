@@ -106,7 +106,7 @@ def test_closed_forms_refuse_wrong_records():
 @settings(max_examples=25, deadline=None)
 @given(bad=st.sampled_from(BAD_ARRAYS + [[0.0], [-1.0], [math.inf]]))
 def test_sweep_refuses_bad_omegas(bad):
-    refused(sweep, PAPER, 5.0, bad, "up", name="omegas")
+    refused(sweep, PAPER, 5.0, bad, direction="up", name="omegas")
 
 
 @settings(max_examples=30, deadline=None)
@@ -120,37 +120,37 @@ def test_frequency_sweep_refuses_bad_arguments(which, bad):
     direction = kwargs.pop("direction", "up")
     if which in ("x0", "v0") and any(bad is v for v in (-1.0, 0, 1e9)):
         return  # valid states
-    refused_or(frequency_sweep, PAPER, F0, [5.0], direction, **kwargs)
+    refused_or(frequency_sweep, PAPER, F0, [5.0], direction=direction, **kwargs)
 
 
 def test_sweep_stiff_damping_stops_within_seconds():
     """c = 1e6 used to run for minutes inside the compiled kernel; its budget now stops it inside the loop."""
-    msg = refused(frequency_sweep, Duffing(m=1.0, c=1e6, k=20.0, k3=2.0), 5.0, [4.0, 5.0], "up")
+    msg = refused(frequency_sweep, Duffing(m=1.0, c=1e6, k=20.0, k3=2.0), 5.0, [4.0, 5.0], direction="up")
     assert "max_steps" in msg
     # a small budget: stopped inside the loop, and the frequency named
-    msg = refused(frequency_sweep, PAPER, 5.0, np.linspace(3.0, 6.0, 20), "up", max_steps=1000)
+    msg = refused(frequency_sweep, PAPER, 5.0, np.linspace(3.0, 6.0, 20), direction="up", max_steps=1000)
     assert "omega =" in msg and "max_steps = 1000" in msg
-    refused(frequency_sweep, PAPER, 5.0, [3.0], "up", integrator="scipy", max_steps=50)
+    refused(frequency_sweep, PAPER, 5.0, [3.0], direction="up", integrator="scipy", max_steps=50)
 
 
 @settings(max_examples=10, deadline=None)
 @given(omega=st.sampled_from([1e-300, 1e-12, 1e-6]), c=st.sampled_from([0.5, 1e9, 1e12]))
 def test_sweep_tiny_omega_or_huge_damping_refused_up_front(omega, c):
     t0 = time.perf_counter()
-    msg = refused(sweep, Duffing(m=1.0, c=c, k=20.0, k3=2.0), 5.0, [omega], "up")
+    msg = refused(sweep, Duffing(m=1.0, c=c, k=20.0, k3=2.0), 5.0, [omega], direction="up")
     assert "max_steps" in msg
     assert time.perf_counter() - t0 < 0.5
 
 
 def test_sweep_escaping_softening_spring_is_flagged():
-    res = refused_or(frequency_sweep, SOFT, 50.0, [3.0, 4.0], "up", check=lambda r: True)
+    res = refused_or(frequency_sweep, SOFT, 50.0, [3.0, 4.0], direction="up", check=lambda r: True)
     assert res.escaped.all() and np.isnan(res.amplitude).all()
-    res = frequency_sweep(PAPER, 5.0, [4.6, 5.0], "up")
+    res = frequency_sweep(PAPER, 5.0, [4.6, 5.0], direction="up")
     assert not res.escaped.any() and finite(res.amplitude)
 
 
 def test_locate_jump_bad_inputs_and_budget():
-    up = frequency_sweep(PAPER, 5.0, np.linspace(4.6, 5.4, 9), "up")
+    up = frequency_sweep(PAPER, 5.0, np.linspace(4.6, 5.4, 9), direction="up")
     refused(locate_jump, PAPER, 5.0, "result", name="result")
     refused(locate_jump, PAPER, "5", up, name="F0")
     refused(locate_jump, PAPER, 5.0, up, which=3, name="which")
@@ -172,21 +172,21 @@ def test_locate_jump_bad_inputs_and_budget():
     F0=st.sampled_from([0.0, 5.0, 50.0]),
 )
 def test_duffing_response_extreme(c, omega, t_end, k3, F0):
-    out = refused_or(duffing_response, Duffing(m=1.0, c=c, k=20.0, k3=k3), F0, omega, [0.0, t_end])
+    out = refused_or(duffing_response, Duffing(m=1.0, c=c, k=20.0, k3=k3), F0, omega, t=[0.0, t_end])
     if out is not None:
         assert out[0].shape == (2,)
 
 
 def test_duffing_response_refusals():
-    msg = refused(duffing_response, Duffing(m=1.0, c=1e6, k=20.0, k3=2.0), 5.0, 4.0, [0.0, 50.0])
+    msg = refused(duffing_response, Duffing(m=1.0, c=1e6, k=20.0, k3=2.0), 5.0, 4.0, t=[0.0, 50.0])
     assert "right-hand-side evaluations" in msg
-    refused(duffing_response, PAPER, 5.0, 1e-6, [0.0, 2 * np.pi / 1e-6], name="t")
-    msg = refused(duffing_response, SOFT, 50.0, 1e-6, np.linspace(0.0, 50.0, 11))
+    refused(duffing_response, PAPER, 5.0, 1e-6, t=[0.0, 2 * np.pi / 1e-6], name="t")
+    msg = refused(duffing_response, SOFT, 50.0, 1e-6, t=np.linspace(0.0, 50.0, 11))
     assert "escaped" in msg
     for bad in BAD_ARRAYS + [[1.0, 0.5], [-1.0, 1.0]]:
-        refused(duffing_response, PAPER, 5.0, 4.0, bad, name="t")
-    refused(duffing_response, PAPER, 5.0, 4.0, [0.0, 1.0], sine="yes", name="sine")
-    refused(duffing_response, PAPER, 5.0, 4.0, [0.0, 1.0], rtol=1.0, name="rtol")
+        refused(duffing_response, PAPER, 5.0, 4.0, t=bad, name="t")
+    refused(duffing_response, PAPER, 5.0, 4.0, t=[0.0, 1.0], sine="yes", name="sine")
+    refused(duffing_response, PAPER, 5.0, 4.0, t=[0.0, 1.0], rtol=1.0, name="rtol")
 
 
 @settings(max_examples=15, deadline=None)
@@ -196,7 +196,7 @@ def test_duffing_response_refusals():
     guess=st.sampled_from([None, 0.0, 1.0, 1e150]),
 )
 def test_periodic_orbit_extreme(c, omega, guess):
-    refused_or(periodic_orbit, Duffing(m=1.0, c=c, k=20.0, k3=2.0), 5.0, omega, guess)
+    refused_or(periodic_orbit, Duffing(m=1.0, c=c, k=20.0, k3=2.0), 5.0, omega, amplitude_guess=guess)
 
 
 def test_periodic_orbit_refusals():
@@ -224,7 +224,7 @@ CHAOS = [poincare_section, lyapunov_qr, lyapunov_benettin]
     x0=st.sampled_from([0.0, 3.0, 1e10]),
 )
 def test_chaos_tools_extreme(fn, c, k3, F0, omega, x0):
-    out = refused_or(fn, Duffing(m=1.0, c=c, k=20.0, k3=k3), F0, omega, x0, 0.0, n_periods=50, n_transient=10)
+    out = refused_or(fn, Duffing(m=1.0, c=c, k=20.0, k3=k3), F0, omega, x0=x0, v0=0.0, n_periods=50, n_transient=10)
     if out is not None and fn is not poincare_section:
         assert finite(out.exponents) and finite(out.running)
 

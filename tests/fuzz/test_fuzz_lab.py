@@ -19,7 +19,7 @@ from vibration.physics.lab import (
 )
 
 T = np.arange(0.0, 10.0, 0.05)
-Y = free_decay_response(T, 4.5, 0.01, 0.02, theta0=1.0)
+Y = free_decay_response(T, 4.5, 0.01, friction=0.02, theta0=1.0)
 BAD_ARRAYS = [
     ("nan", np.where(np.arange(T.size) == 7, np.nan, Y)),
     ("inf", np.where(np.arange(T.size) == 7, np.inf, Y)),

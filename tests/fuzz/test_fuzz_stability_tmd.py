@@ -132,7 +132,7 @@ def test_monte_carlo_fuzz(osc, S0, n, dur):
 @pytest.mark.parametrize("bad", BAD, ids=ids)
 def test_tmd_array_arguments_refused(bad):
     model = tmd.MDOF(M=[[1.0]], C=[[0.5]], K=[[20.0]])
-    refused(tmd.tmd_magnification, 0.05, 1.0, 0.1, bad)
+    refused(tmd.tmd_magnification, 0.05, 1.0, 0.1, r=bad)
     refused(tmd.mistuned_peak, tmd.den_hartog(0.05), bad)
     refused(model.frf, bad, [1.0])
     refused(model.frf, [1.0], bad)
@@ -147,15 +147,15 @@ def test_tmd_array_arguments_refused(bad):
 
 @pytest.mark.parametrize("bad", BAD_SCALARS, ids=ids)
 def test_tmd_scalar_arguments_refused(bad):
-    refused(tmd.tmd_magnification, bad, 1.0, 0.1, 1.0)
+    refused(tmd.tmd_magnification, bad, 1.0, 0.1, r=1.0)
     refused(tmd.tmd_peak, 0.05, bad, 0.1)
     refused(tmd.h2_norm, 0.05, 1.0, bad)
     refused(tmd.den_hartog, bad)
     refused(tmd.hinf_tuning, 0.05, bad)
     refused(tmd.h2_tuning, bad)
     refused(tmd.tmd_fixed_points, 0.05, bad)
-    refused(tmd.tmd_system, bad, 0.5, 20.0, tmd.den_hartog(0.05))
-    refused(tmd.add_absorber, tmd.MDOF(M=[[1.0]], C=[[0.0]], K=[[20.0]]), 0, bad, 1.0, 0.1)
+    refused(tmd.tmd_system, bad, 0.5, 20.0, tuning=tmd.den_hartog(0.05))
+    refused(tmd.add_absorber, tmd.MDOF(M=[[1.0]], C=[[0.0]], K=[[20.0]]), 0, bad, k_a=1.0, c_a=0.1)
     refused(tmd.first_mode_absorber, tmd.MDOF(M=[[1.0]], C=[[0.5]], K=[[20.0]]), bad)
     refused(lambda m: tmd.MDOF(M=m, C=[[0.0]], K=[[1.0]]), bad)
 
@@ -172,11 +172,11 @@ def test_tmd_work_is_bounded():
 @settings(max_examples=25, deadline=None)
 @given(mu=extreme, f=extreme, za=extreme, zp=extreme, r=st.one_of(extreme, st.lists(extreme, min_size=1, max_size=4)))
 def test_tmd_curves_fuzz(mu, f, za, zp, r):
-    out = guarded(tmd.tmd_magnification, mu, f, za, r, zp, finite=False)
+    out = guarded(tmd.tmd_magnification, mu, f, za, r=r, zeta_p=zp, finite=False)
     if not isinstance(out, ParameterError):
         _ok_or_documented_inf(out)
-    guarded(tmd.tmd_peak, mu, f, za, zp, finite=False)
-    guarded(tmd.h2_norm, mu, f, za, zp, finite=False)
+    guarded(tmd.tmd_peak, mu, f, za, zeta_p=zp, finite=False)
+    guarded(tmd.h2_norm, mu, f, za, zeta_p=zp, finite=False)
     guarded(tmd.tmd_fixed_points, mu, f)
 
 
@@ -204,7 +204,7 @@ def test_tmd_tunings_fuzz(mu, zp, method):
     w=extreme,
 )
 def test_mdof_fuzz(m, c, k, t, w):
-    model = guarded(tmd.tmd_system, m, c, k, tmd.den_hartog(0.05), finite=False)
+    model = guarded(tmd.tmd_system, m, c, k, tuning=tmd.den_hartog(0.05), finite=False)
     if isinstance(model, ParameterError):
         return
     out = guarded(model.frf, [w], [1.0, 0.0], finite=False)

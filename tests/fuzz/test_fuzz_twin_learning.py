@@ -35,13 +35,15 @@ BAD_ARRAYS = [[], ["a", "b"], [True, False], np.array([1j, 2.0]), [[1.0, 2.0], [
 SEEDED = {
     "random_force": lambda s: T.random_force(T40, seed=s),
     "synthetic_measurements": lambda s: T.synthetic_measurements(OSC, T40, F40, noise=1e-3, seed=s),
-    "simulated_test": lambda s: T.simulated_test(OSC, 10.0, 0.02, 0.1, seed=s),
+    "simulated_test": lambda s: T.simulated_test(OSC, 10.0, 0.02, noise=0.1, seed=s),
     "estimate_grid": lambda s: T.estimate_grid(OSC, noises=(0.1,), durations=(10.0,), seed=s),
     "identification_experiment": lambda s: T.identification_experiment(OSC, duration=10.0, runs=2, seed=s),
     "detection_experiment": lambda s: T.detection_experiment(
-        OSC, T40, F40, np.full(T40.size, 20.0), 20.0, noise=1e-3, runs=2, seed=s, reference=OSC
+        OSC, T40, F40, stiffness=np.full(T40.size, 20.0), change_time=20.0, noise=1e-3, runs=2, seed=s, reference=OSC
     ),
-    "detection_study": lambda s: T.detection_study(OSC, OSC, 20.0, 0.02, 0.01, 0.001, 0.05, runs=2, seed=s),
+    "detection_study": lambda s: T.detection_study(
+        OSC, OSC, 20.0, dt=0.02, noise=0.01, decline_rate=0.001, drop=0.05, runs=2, seed=s
+    ),
     "sample_initial_states": lambda s: L.sample_initial_states(None, 3, seed=s),
     "train": lambda s: L.train(seed=s, iterations=1),
     "compare_controllers": lambda s: L.compare_controllers(L.OscillatorTask(), {"a": [0.0, 0.0]}, 2, seed=s),
@@ -62,7 +64,7 @@ def test_bad_seeds_arerefused(fn, seed):
 
 ARRAY_TAKERS = {
     "random_force": lambda a: T.random_force(a),
-    "stiffness_profile": lambda a: T.stiffness_profile(a, 20.0, 0.0, 0.0),
+    "stiffness_profile": lambda a: T.stiffness_profile(a, 20.0, 0.0, decline_rate=0.0),
     "sampled_response": lambda a: T.sampled_response(OSC, a, a),
     "synthetic_measurements": lambda a: T.synthetic_measurements(OSC, a, a),
     "identify": lambda a: T.identify(a, F40, x=X40),
@@ -73,7 +75,9 @@ ARRAY_TAKERS = {
     "expm_batch": lambda a: T.expm_batch(a),
     "estimate_grid": lambda a: T.estimate_grid(OSC, noises=a, durations=(10.0,)),
     "identification_sweep": lambda a: T.identification_sweep(OSC, noises=a, durations=(10.0,), runs=2),
-    "detection_experiment": lambda a: T.detection_experiment(OSC, T40, F40, a, 20.0, noise=1e-3, runs=2),
+    "detection_experiment": lambda a: T.detection_experiment(
+        OSC, T40, F40, stiffness=a, change_time=20.0, noise=1e-3, runs=2
+    ),
     "episode_costs gains": lambda a: L.episode_costs(None, a, [1.0, 0.0]),
     "episode_costs x0": lambda a: L.episode_costs(None, [1.0, 1.0], a),
     "rollout": lambda a: L.rollout(None, a, [1.0, 0.0]),
@@ -107,14 +111,14 @@ def test_bad_arrays_arerefused(fn, bad):
 
 def test_sizes_are_refused_before_allocating():
     cases = [
-        (lambda: T.simulated_test(OSC, 1e6, 1e-3, 0.1), "duration"),
-        (lambda: T.fault_scenario(20.0, 1e7, 0.01, 0.001, 0.1), "t_monitor"),
-        (lambda: T.discretisation_checks(OSC, 5.0, 4.47, 50.0, int(1e8)), "n"),
-        (lambda: T.discretisation_checks(OSC, 5.0, 4.47, 50.0, 1e8), "n"),
+        (lambda: T.simulated_test(OSC, 1e6, 1e-3, noise=0.1), "duration"),
+        (lambda: T.fault_scenario(20.0, 1e7, 0.01, decline_rate=0.001, drop=0.1), "t_monitor"),
+        (lambda: T.discretisation_checks(OSC, 5.0, 4.47, t_end=50.0, n=int(1e8)), "n"),
+        (lambda: T.discretisation_checks(OSC, 5.0, 4.47, t_end=50.0, n=1e8), "n"),
         (lambda: T.random_force(np.arange(0.0, 100.0, 1e-4), band=(0.1, 1000.0)), "band"),
         (lambda: T.identification_experiment(OSC, duration=1e4, dt=0.01, runs=100), "runs"),
         (lambda: T.estimate_grid(OSC, durations=(1e6,)), "durations"),
-        (lambda: T.detection_study(OSC, OSC, 1e7, 0.01, 0.01, 0.001, 0.05), "t_monitor"),
+        (lambda: T.detection_study(OSC, OSC, 1e7, dt=0.01, noise=0.01, decline_rate=0.001, drop=0.05), "t_monitor"),
         (lambda: T.track_stiffness(np.arange(2e6) * 0.01, np.sin(np.arange(2e6)), x=np.cos(np.arange(2e6))), "t"),
         (lambda: L.sample_initial_states(None, 10**8), "n"),
         (lambda: L.episode_costs(None, np.ones((1000, 2)), np.ones((1000, 2))), "simulated steps"),
@@ -134,7 +138,7 @@ def test_sizes_are_refused_before_allocating():
     n=st.sampled_from([2, 5001]),
 )
 def test_discretisation_checks_stiff_or_fast(c, k, t_end, n):
-    refused_or(T.discretisation_checks, Oscillator(m=1.0, c=c, k=k), 5.0, 4.47, t_end, n)
+    refused_or(T.discretisation_checks, Oscillator(m=1.0, c=c, k=k), 5.0, 4.47, t_end=t_end, n=n)
 
 
 @settings(max_examples=20, deadline=None)
@@ -163,14 +167,14 @@ def test_expm_batch_extreme(scale, n):
 @given(band=st.sampled_from([(0.1,), "ab", (2.0, 1.0), (0.0, 1.0), (math.nan, 1.0), (1.0, math.inf), 3.0, ("a", 1)]))
 def test_bad_bands_arerefused(band):
     refused(T.random_force, T40, band=band, name="band")
-    refused(T.simulated_test, OSC, 10.0, 0.02, 0.1, band=band, name="band")
+    refused(T.simulated_test, OSC, 10.0, 0.02, noise=0.1, band=band, name="band")
 
 
 @settings(max_examples=30, deadline=None)
 @given(which=st.sampled_from(["osc", "sensor", "noise", "duration", "dt"]), bad=st.sampled_from(BAD_SCALARS + [-1.0]))
 def test_simulated_test_bad_arguments(which, bad):
     args = {"osc": OSC, "duration": 10.0, "dt": 0.02, "noise": 0.1, "sensor": "x", which: bad}
-    refused(T.simulated_test, args.pop("osc"), args.pop("duration"), args.pop("dt"), args.pop("noise"), **args)
+    refused(T.simulated_test, args.pop("osc"), args.pop("duration"), args.pop("dt"), noise=args.pop("noise"), **args)
 
 
 def test_frequency_estimates_and_csv_refuse_wrong_types():

@@ -253,7 +253,7 @@ def test_design_map_uses_the_block_path_and_matches_exact_response():
     omegas = [0.5, 3.0, math.sqrt(20.0), 4.47, 9.0]
     dampings = [-12.0, -0.2, 0.0, 0.5, 2.0 * math.sqrt(20.0), 15.0, 200.0]
     t = np.linspace(0.0, 20.0, 2001)
-    pk = peak_displacement_map(1.0, 20.0, 5.0, omegas, dampings, 20.0, 2001)
+    pk = peak_displacement_map(1.0, 20.0, 5.0, omegas=omegas, dampings=dampings, t_end=20.0, n_points=2001)
     for i, c in enumerate(dampings):
         for j, w in enumerate(omegas):
             ref = np.max(np.abs(pointwise_path(Oscillator(m=1.0, c=c, k=20.0), SineForce(F0=5.0, omega=w), t).x))

@@ -147,7 +147,9 @@ def test_log_decrement_of_exact_free_decay(zeta):
 @pytest.mark.parametrize("zeta", [0.01, 0.056, 0.2])
 def test_log_decrement_of_simulated_free_decay(zeta):
     osc = Oscillator(m=1.0, c=2.0 * zeta * SQRT20, k=20.0)
-    r = simulate(osc, SineForce(F0=0.0, omega=0.0), 20.0, 20001, 0.0, 1.0, method="DOP853", rtol=1e-10, atol=1e-12)
+    r = simulate(
+        osc, SineForce(F0=0.0, omega=0.0), 20.0, n_points=20001, x0=0.0, v0=1.0, method="DOP853", rtol=1e-10, atol=1e-12
+    )
     _, z = log_decrement(r.t, r.x)
     assert z == pytest.approx(osc.damping_ratio, rel=1e-4)  # measured <= 4e-8
 
@@ -307,7 +309,7 @@ def _brute_force_map(m, k, F0, omegas, dampings, t_end, n_points):
 
 @pytest.mark.parametrize(("t_end", "n_points"), [(20.0, 2001), (50.0, 5001)])
 def test_peak_map_equals_max_of_exact_response(t_end, n_points):
-    pk = peak_displacement_map(M, K, F0, MAP_OMEGAS, MAP_DAMPINGS, t_end, n_points)
+    pk = peak_displacement_map(M, K, F0, omegas=MAP_OMEGAS, dampings=MAP_DAMPINGS, t_end=t_end, n_points=n_points)
     assert pk.shape == (len(MAP_DAMPINGS), len(MAP_OMEGAS))
     expected = _brute_force_map(M, K, F0, MAP_OMEGAS, MAP_DAMPINGS, t_end, n_points)
     np.testing.assert_allclose(pk, expected, rtol=1e-12, atol=0)
@@ -316,7 +318,7 @@ def test_peak_map_equals_max_of_exact_response(t_end, n_points):
 
 def test_peak_map_shape_is_dampings_by_omegas():
     omegas, dampings = [2.0, 3.0, 4.0], [0.5, 15.0]
-    pk = peak_displacement_map(3.0, 7.0, 2.0, omegas, dampings, 10.0, 501)
+    pk = peak_displacement_map(3.0, 7.0, 2.0, omegas=omegas, dampings=dampings, t_end=10.0, n_points=501)
     assert pk.shape == (2, 3)
     expected = _brute_force_map(3.0, 7.0, 2.0, omegas, dampings, 10.0, 501)
     np.testing.assert_allclose(pk, expected, rtol=1e-12, atol=0)
@@ -324,7 +326,7 @@ def test_peak_map_shape_is_dampings_by_omegas():
 
 def test_peak_map_doc_example_against_steady_amplitude():
     """Paper's map corners: at 50 s the lightly damped resonance has reached its steady amplitude."""
-    pk = peak_displacement_map(1.0, 20.0, 5.0, [3.0, 4.47], [0.5, 15.0])
+    pk = peak_displacement_map(1.0, 20.0, 5.0, omegas=[3.0, 4.47], dampings=[0.5, 15.0])
     amp = steady_state(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)).amplitude
     assert pk[0, 1] == pytest.approx(amp, rel=1e-3)
 
@@ -338,7 +340,7 @@ def test_peak_map_near_undamped_resonance():
     detunings = np.array([1e-4, -1e-5, 1e-6, -1e-6, 1e-7, 1e-8, -1e-8, 3e-9])
     omegas = WN * (1.0 + detunings)
     dampings = [0.0, 1e-9]
-    pk = peak_displacement_map(M, K, F0, omegas, dampings, 20.0, 2001)
+    pk = peak_displacement_map(M, K, F0, omegas=omegas, dampings=dampings, t_end=20.0, n_points=2001)
     expected = _brute_force_map(M, K, F0, omegas, dampings, 20.0, 2001)
     np.testing.assert_allclose(pk, expected, rtol=1e-12, atol=0)
 

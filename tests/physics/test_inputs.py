@@ -206,7 +206,7 @@ def test_simulate_refuses_stiff_windows_for_explicit_methods():
 
 def test_simulate_refuses_windows_that_overflow():
     with pytest.raises(ParameterError, match=r"t_end = 1.0 s is out of range: the unstable free mode grows"):
-        simulate(Oscillator(m=1.0, c=-1e4, k=1.0), SineForce(F0=1.0, omega=1.0), 1.0, 11, x0=1.0)
+        simulate(Oscillator(m=1.0, c=-1e4, k=1.0), SineForce(F0=1.0, omega=1.0), 1.0, n_points=11, x0=1.0)
 
 
 def test_simulate_work_budget(monkeypatch):
@@ -219,7 +219,7 @@ def test_simulate_without_t_eval_is_capped_by_n_points():
     r = simulate(OSC, FORCE, 50.0, t_eval=False)
     assert r.t.size <= 5001
     with pytest.raises(ParameterError, match=r"n_points = 100 is out of range: the solver took .* steps"):
-        simulate(OSC, FORCE, 50.0, 100, t_eval=False)
+        simulate(OSC, FORCE, 50.0, n_points=100, t_eval=False)
 
 
 # --- every public function, random junk ---
@@ -282,13 +282,18 @@ CALLS = {
     "exact_response": lambda d: exact_response(d(oscillators()), d(forces()), d(junk_array), x0=d(junk), v0=d(junk)),
     "steady_state": lambda d: steady_state(d(oscillators()), d(forces())),
     "simulate": lambda d: simulate(
-        d(oscillators()), d(forces()), d(junk_scalar), d(st.one_of(junk_scalar, st.integers(2, 200))), d(junk), d(junk)
+        d(oscillators()),
+        d(forces()),
+        d(junk_scalar),
+        n_points=d(st.one_of(junk_scalar, st.integers(2, 200))),
+        x0=d(junk),
+        v0=d(junk),
     ),
     "simulate_kw": lambda d: simulate(
         d(oscillators()),
         d(forces()),
         d(st.floats(0.01, 5.0)),
-        21,
+        n_points=21,
         method=d(st.sampled_from(["RK45", "Radau", "LSODA", "rk4", None])),
         rtol=d(junk_scalar),
         atol=d(junk_scalar),
@@ -305,7 +310,13 @@ CALLS = {
         d(st.one_of(junk, st.just(exact_response(OSC, FORCE, np.linspace(0.0, 2.0, 21))))),
     ),
     "peak_displacement_map": lambda d: peak_displacement_map(
-        d(junk_scalar), d(junk_scalar), d(junk_scalar), d(junk_array), d(junk_array), d(junk_scalar), d(junk_scalar)
+        d(junk_scalar),
+        d(junk_scalar),
+        d(junk_scalar),
+        omegas=d(junk_array),
+        dampings=d(junk_array),
+        t_end=d(junk_scalar),
+        n_points=d(junk_scalar),
     ),
     "Oscillator": lambda d: Oscillator(m=d(junk_scalar), c=d(junk_scalar), k=d(junk_scalar)),
     "SineForce": lambda d: SineForce(F0=d(junk_scalar), omega=d(junk_scalar)),

@@ -64,7 +64,7 @@ def _errors(osc, force, r, x0, v0):
 def test_tight_tolerance_meets_proportional_bound(method, rtol, atol, m, c, k, F0, w):
     osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)
     x0, v0 = 0.3, -0.2
-    r = simulate(osc, force, 20.0, 2001, x0, v0, method=method, rtol=rtol, atol=atol)
+    r = simulate(osc, force, 20.0, n_points=2001, x0=x0, v0=v0, method=method, rtol=rtol, atol=atol)
     assert r.method == method and r.status == 0 and r.success and r.nfev > 0
     assert (r.rtol, r.atol) == (rtol, atol)
     err_x, err_v, max_x, max_v = _errors(osc, force, r, x0, v0)
@@ -78,7 +78,7 @@ def test_error_scales_with_the_tolerance_asked():
     errors = []
     for rtol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10]:
         atol = rtol * 1e-2
-        r = simulate(osc, force, 20.0, 2001, method="RK45", rtol=rtol, atol=atol)
+        r = simulate(osc, force, 20.0, n_points=2001, method="RK45", rtol=rtol, atol=atol)
         err_x, _, max_x, _ = _errors(osc, force, r, 0.0, 0.0)
         assert err_x <= ERR_FACTOR * (rtol * max_x + atol)
         errors.append(err_x)
@@ -121,7 +121,7 @@ def test_defaults_reproduce_a_plain_solve_ivp_call():
 
 @pytest.mark.parametrize(("t_end", "n_points"), [(50.0, 5001), (1.0, 2), (7.3, 1234)])
 def test_output_grid_is_linspace(t_end, n_points):
-    r = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), t_end, n_points)
+    r = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), t_end, n_points=n_points)
     np.testing.assert_array_equal(r.t, np.linspace(0.0, t_end, n_points))
     assert r.x.shape == r.v.shape == (n_points,)
     assert r.nfev > 0 and r.status == 0 and r.method == "RK45"
@@ -135,7 +135,9 @@ def test_default_number_of_points_is_the_papers_sampling():
 
 @pytest.mark.parametrize("method", ["RK45", "RK23", "DOP853", "Radau", "BDF", "LSODA"])
 def test_every_method_runs_and_reports(method):
-    r = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), 5.0, 101, 0.1, 0.0, method=method)
+    r = simulate(
+        Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), 5.0, n_points=101, x0=0.1, v0=0.0, method=method
+    )
     assert r.method == method and r.status == 0 and r.nfev > 0
     if method in ("Radau", "BDF"):
         assert r.njev > 0 and r.nlu > 0
@@ -145,7 +147,9 @@ def test_every_method_runs_and_reports(method):
 
 def test_without_t_eval_returns_the_solver_steps():
     osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)
-    r = simulate(osc, force, 20.0, 2001, 0.3, -0.2, method="DOP853", rtol=1e-10, atol=1e-12, t_eval=False)
+    r = simulate(
+        osc, force, 20.0, n_points=2001, x0=0.3, v0=-0.2, method="DOP853", rtol=1e-10, atol=1e-12, t_eval=False
+    )
     assert r.t[0] == 0.0 and r.t[-1] == 20.0
     assert np.all(np.diff(r.t) > 0)
     assert r.t.size != 2001
@@ -159,7 +163,9 @@ def test_without_t_eval_returns_the_solver_steps():
 def test_overflowing_window_is_refused_before_integrating():
     """c = -1e4 N s/m overflows within 0.1 s: refused up front (it used to fail inside RK45)."""
     with pytest.raises(ParameterError, match=r"t_end = 1.0 s is out of range: the unstable free mode grows"):
-        simulate(Oscillator(m=1.0, c=-1e4, k=1.0), SineForce(F0=1.0, omega=1.0), 1.0, 11, x0=1.0, method="RK45")
+        simulate(
+            Oscillator(m=1.0, c=-1e4, k=1.0), SineForce(F0=1.0, omega=1.0), 1.0, n_points=11, x0=1.0, method="RK45"
+        )
 
 
 def test_failed_solver_result_raises_runtime_error(monkeypatch):
@@ -174,7 +180,7 @@ def test_failed_solver_result_raises_runtime_error(monkeypatch):
 
     monkeypatch.setattr(vibration.physics.numerics, "solve_ivp", failing_solve_ivp)
     with pytest.raises(RuntimeError, match=r"LSODA.*Required step size"):
-        simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), 1.0, 11, method="LSODA")
+        simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0), 1.0, n_points=11, method="LSODA")
 
 
 # --- validation ---
@@ -208,7 +214,7 @@ def test_huge_n_points_is_refused_before_allocating(n_points):
     tracemalloc.start()
     try:
         with pytest.raises(ParameterError, match="n_points"):
-            simulate(OSC, FORCE, 50.0, n_points)
+            simulate(OSC, FORCE, 50.0, n_points=n_points)
         _, peak = tracemalloc.get_traced_memory()
     finally:
         tracemalloc.stop()
@@ -216,5 +222,5 @@ def test_huge_n_points_is_refused_before_allocating(n_points):
 
 
 def test_largest_allowed_n_points_is_accepted():
-    r = simulate(OSC, FORCE, 1.0, N_POINTS_MAX)
+    r = simulate(OSC, FORCE, 1.0, n_points=N_POINTS_MAX)
     assert r.t.size == N_POINTS_MAX

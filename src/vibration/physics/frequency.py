@@ -375,6 +375,7 @@ def peak_displacement_map(
     m: float,
     k: float,
     F0: float,
+    *,
     omegas,
     dampings,
     t_end: float = 50.0,
@@ -411,7 +412,7 @@ def peak_displacement_map(
 
     Examples
     --------
-    >>> pk = peak_displacement_map(1.0, 20.0, 5.0, [3.0, 4.47], [0.5, 15.0])
+    >>> pk = peak_displacement_map(1.0, 20.0, 5.0, omegas=[3.0, 4.47], dampings=[0.5, 15.0])
     >>> np.round(pk, 3)     # m
     array([[0.613, 2.237],
            [0.135, 0.105]])

@@ -44,6 +44,7 @@ def simulate(
     osc: Oscillator,
     force: SineForce,
     t_end: float,
+    *,
     n_points: int = DEFAULT_N_POINTS,
     x0: float = 0.0,
     v0: float = 0.0,

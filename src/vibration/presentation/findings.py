@@ -7,7 +7,8 @@ same run (c_nominal at omega_res): :data:`SAME_RUN` names that pair.
 
 Examples
 --------
->>> sc = scenarios_from(1.0, 20.0, 5.0, 50.0, 3.0, 4.47, 0.1, 0.5, 15.0)
+>>> sc = scenarios_from(1.0, 20.0, 5.0, t_end=50.0, omega_ref=3.0, omega_res=4.47, c_low=0.1,
+...                     c_nominal=0.5, c_high=15.0)
 >>> [case_name(s) for s in sc]
 ['reference', 'resonance', 'low damping', 'nominal damping', 'high damping']
 >>> sc["resonance"] == sc["damping_nominal"]
@@ -52,6 +53,7 @@ def scenarios_from(
     m: float,
     k: float,
     F0: float,
+    *,
     t_end: float,
     omega_ref: float,
     omega_res: float,
@@ -74,7 +76,8 @@ def scenarios_from(
 
     Examples
     --------
-    >>> sc = scenarios_from(1.0, 20.0, 5.0, 50.0, 3.0, 4.47, 0.1, 0.5, 15.0)
+    >>> sc = scenarios_from(1.0, 20.0, 5.0, t_end=50.0, omega_ref=3.0, omega_res=4.47, c_low=0.1,
+    ...                     c_nominal=0.5, c_high=15.0)
     >>> [s.oscillator.c for s in sc.values()]
     [0.5, 0.5, 0.1, 0.5, 15.0]
     """
@@ -104,7 +107,17 @@ def scenarios_from(
 def scenarios_of(params) -> dict[str, Scenario]:
     """:func:`scenarios_from` for a chapter's ``Params`` record (any object with the nine attributes)."""
     p = params
-    return scenarios_from(p.m, p.k, p.F0, p.t_end, p.omega_ref, p.omega_res, p.c_low, p.c_nominal, p.c_high)
+    return scenarios_from(
+        p.m,
+        p.k,
+        p.F0,
+        t_end=p.t_end,
+        omega_ref=p.omega_ref,
+        omega_res=p.omega_res,
+        c_low=p.c_low,
+        c_nominal=p.c_nominal,
+        c_high=p.c_high,
+    )
 
 
 def at_least(value: float, floor: float):

@@ -255,10 +255,10 @@ def _bound(name: str, relation: str, bound: float, unit: str, why: str) -> Calla
     return rule
 
 
-def above(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
+def above(name: str, bound: float, unit: str, *, why: str) -> Callable[[dict], None]:
     """A rule: parameter ``name`` must exceed ``bound`` in this chapter (its shared range allows more).
 
-    >>> above("c", 0.0, "N s/m", "damped")({"c": 0.0})
+    >>> above("c", 0.0, "N s/m", why="damped")({"c": 0.0})
     Traceback (most recent call last):
     ...
     vibration.physics.model.ParameterError: c = 0.0 N s/m is out of range for this chapter: allowed c > 0 N s/m (damped)
@@ -266,12 +266,12 @@ def above(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None
     return _bound(name, ">", bound, unit, why)
 
 
-def below(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
+def below(name: str, bound: float, unit: str, *, why: str) -> Callable[[dict], None]:
     """A rule: parameter ``name`` must stay below ``bound`` in this chapter."""
     return _bound(name, "<", bound, unit, why)
 
 
-def at_least(name: str, bound: float, unit: str, why: str) -> Callable[[dict], None]:
+def at_least(name: str, bound: float, unit: str, *, why: str) -> Callable[[dict], None]:
     """A rule: parameter ``name`` must be at least ``bound`` in this chapter."""
     return _bound(name, ">=", bound, unit, why)
 

@@ -145,10 +145,10 @@ def case_style(name: str, marker: bool = False) -> dict:
     return out
 
 
-def damping_case(c: float, c_low: float, c_nominal: float, c_high: float) -> str:
+def damping_case(c: float, c_low: float, c_nominal: float, *, c_high: float) -> str:
     """Which of the paper's damping cases ``c`` is (``"c_low"``, ``"c_nominal"``, ``"c_high"``); nominal first.
 
-    >>> damping_case(15.0, 0.1, 0.5, 15.0)
+    >>> damping_case(15.0, 0.1, 0.5, c_high=15.0)
     'c_high'
     """
     for name, value in (("c_nominal", c_nominal), ("c_low", c_low), ("c_high", c_high)):

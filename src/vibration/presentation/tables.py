@@ -539,7 +539,7 @@ def _csv_cell(value) -> str:
     return fmt(value, 10)
 
 
-def table(rows: Iterable[dict], columns: Sequence[Column | tuple], caption: str, name: str, notes=()) -> Table:
+def table(rows: Iterable[dict], columns: Sequence[Column | tuple], caption: str, *, name: str, notes=()) -> Table:
     """Shorthand: columns may be ``(key, header, digits)`` tuples."""
     cols = [
         c if isinstance(c, Column) else Column(**dict(zip(("key", "header", "digits"), c, strict=False)))

@@ -51,9 +51,11 @@ def bench_exact(quick: bool) -> None:
     t_exact = median_time(lambda: exact_response(osc, force, t), 200 * k)
     t_floor = median_time(lambda: np.exp(t), 200 * k)
     t_general = median_time(lambda: exact_response(osc, force, t_general), 50 * k)
-    t_rk = median_time(lambda: simulate(osc, force, 50.0, 5001), 7 * k)
-    t_rk9 = median_time(lambda: simulate(osc, force, 50.0, 5001, rtol=1e-9, atol=1e-12), 3 * k)
-    t_dop = median_time(lambda: simulate(osc, force, 50.0, 5001, method="DOP853", rtol=1e-9, atol=1e-12), 3 * k)
+    t_rk = median_time(lambda: simulate(osc, force, 50.0, n_points=5001), 7 * k)
+    t_rk9 = median_time(lambda: simulate(osc, force, 50.0, n_points=5001, rtol=1e-9, atol=1e-12), 3 * k)
+    t_dop = median_time(
+        lambda: simulate(osc, force, 50.0, n_points=5001, method="DOP853", rtol=1e-9, atol=1e-12), 3 * k
+    )
     table(
         "exact_response on 5001 uniform points (block products of exact anchors) vs solve_ivp",
         [
@@ -77,14 +79,14 @@ def bench_map(quick: bool) -> None:
     m, k, F0 = 1.0, 20.0, 5.0
     omegas = np.linspace(0.05, 10.0, 200)
     dampings = np.geomspace(0.01, 20.0, 200)
-    t_map = median_time(lambda: peak_displacement_map(m, k, F0, omegas, dampings), 3 if quick else 5)
+    t_map = median_time(lambda: peak_displacement_map(m, k, F0, omegas=omegas, dampings=dampings), 3 if quick else 5)
     rng = np.random.default_rng(0)
     cells = [(dampings[i], omegas[j]) for i, j in rng.integers(0, 200, size=(20 if quick else 60, 2))]
     t = np.linspace(0.0, 50.0, 5001)
 
     def loop_ivp():
         for c, w in cells:
-            np.max(np.abs(simulate(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), 50.0, 5001).x))
+            np.max(np.abs(simulate(Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w), 50.0, n_points=5001).x))
 
     def loop_exact():
         for c, w in cells:

@@ -237,7 +237,7 @@ class ChapterCache:
             for path in tables.iterdir():
                 shutil.copy2(path, tables_to / path.name)
 
-    def store(self, name: str, current: dict[str, str], executed: Path, tables: Path, elapsed_s: float) -> None:
+    def store(self, name: str, current: dict[str, str], executed: Path, *, tables: Path, elapsed_s: float) -> None:
         """Keep a successful run; the record is written last, so a half-written entry is never a hit."""
         self.folder.mkdir(parents=True, exist_ok=True)
         meta, nb, cached_tables = self._paths(name)

@@ -245,7 +245,7 @@ def _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, 
                 for name, data in res["tables"].items():
                     (tables / name).write_bytes(data)
                     (work / "tables" / name).write_bytes(data)
-                store.store(ch.name, manifests[ch.name], executed, tables, res["elapsed_s"])
+                store.store(ch.name, manifests[ch.name], executed, tables=tables, elapsed_s=res["elapsed_s"])
                 results[ch.name] = {"executed": executed, "elapsed_s": res["elapsed_s"]}
                 log(f"[{len(results)}/{total}] {ch.name} done in {res['elapsed_s']:.1f} s")
 

@@ -64,7 +64,7 @@ def test_panel_javascript_matches_python(browser, tmp_path: Path):
             osc = Oscillator(m=m, c=c, k=k)
             js = page.evaluate(f"window.vibrationControl.lqrGains({m}, {c}, {k}, {qx}, {qv}, {r})")
             np.testing.assert_allclose(js, lqr_closed_form(osc, qx, qv, r=r), rtol=RTOL)
-            np.testing.assert_allclose(js, vibration.lqr(osc, qx, qv, r).K, rtol=1e-8)
+            np.testing.assert_allclose(js, vibration.lqr(osc, qx, qv, r=r).K, rtol=1e-8)
             ws = [float(v) for v in rng.uniform(0.1, 30, 7)]
             csky = float(rng.uniform(0, 40))
             js = page.evaluate(f"window.vibrationControl.skyhook({m}, {c}, {k}, {csky}, {ws})")

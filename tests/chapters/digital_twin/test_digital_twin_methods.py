@@ -18,21 +18,21 @@ SMALL = dict(t_record=30.0, runs=20, sweep_runs=5, assumption_runs=20, t_monitor
 
 
 def test_batch_fit_reproduces_identify_run_by_run():
-    t, force, clean = montecarlo.design(OSC, 30.0, 0.02, 3, (0.1, 2.0), 2.0)
+    t, force, clean = montecarlo.design(OSC, 30.0, 0.02, seed=3, band=(0.1, 2.0), rms=2.0)
     sd = 0.05 * float(np.sqrt(np.mean(clean**2)))
     # white noise as assumed: estimates and standard errors to 1e-6 relative
-    assert montecarlo.agreement(OSC, t, force, clean, sd, 3, 0, runs=4) < 1e-6
+    assert montecarlo.agreement(OSC, t, force, clean=clean, noise_sd=sd, seed=3, stream=0, runs=4) < 1e-6
 
 
 def test_batch_fit_reproduces_identify_under_model_error():
     """A cubic spring biases k by tens of per cent: the batch must still land on identify()'s optimum."""
-    t, force, linear = montecarlo.design(OSC, 30.0, 0.02, 5, (0.1, 2.0), 2.0)
+    t, force, linear = montecarlo.design(OSC, 30.0, 0.02, seed=5, band=(0.1, 2.0), rms=2.0)
     k3 = 0.05 * OSC.k / float(np.mean(linear**2))
-    clean = cubic_response(OSC, k3, t, force)
+    clean = cubic_response(OSC, k3, t, force=force)
     sd = 0.05 * float(np.sqrt(np.mean(clean**2)))
-    ex = montecarlo.experiment(OSC, t, force, clean, noise_sd=sd, runs=3, seed=5, stream=9, noise=0.05)
+    ex = montecarlo.experiment(OSC, t, force, clean=clean, noise_sd=sd, runs=3, seed=5, stream=9, noise=0.05)
     for i in range(3):
-        y = clean + sd * montecarlo.ar1(1, t.size, 0.0, [np.random.default_rng([5, 9, i])])[0]
+        y = clean + sd * montecarlo.ar1(1, t.size, 0.0, rngs=[np.random.default_rng([5, 9, i])])[0]
         ref = identify(t, force, x=y, search="local")
         np.testing.assert_allclose(ex.estimates[i], [ref.m, ref.c, ref.k], rtol=1e-6)
         np.testing.assert_allclose(ex.stderr[i], ref.stderr, rtol=1e-4)

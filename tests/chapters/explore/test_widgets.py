@@ -180,7 +180,7 @@ def test_extreme_stiffness_keeps_the_forcing_frequency(ex):
 def test_rk45_overlay_is_the_papers_simulation(ex):
     ex.rk45_checkbox.value = True
     assert ex.error is None and ex._art["x_rk45"].get_visible()
-    paper = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), 50.0, 5001)
+    paper = simulate(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), 50.0, n_points=5001)
     assert_allclose(ex._art["x_rk45"].get_ydata(), paper.x, rtol=0, atol=0)
     assert ex.values["rk45_nfev"] == paper.nfev
     assert ex.values["rk45_max_error"] == pytest.approx(np.max(np.abs(paper.x - ex._art["x"].get_ydata())))

@@ -45,7 +45,7 @@ def test_js_decay_matches_python(browser, tmp_path: Path, study):
             wn, zeta, fr = rng.uniform(1.0, 10.0), rng.uniform(0.0, 0.3), rng.uniform(0.0, 0.3)
             off, th0, t0 = rng.uniform(-0.5, 0.5), rng.uniform(-5.0, 5.0), rng.uniform(0.0, 2.0)
             t = np.sort(rng.uniform(0.0, 20.0, 400))
-            py = free_decay_response(t, wn, zeta, fr, off, th0, t0)
+            py = free_decay_response(t, wn, zeta, friction=fr, offset=off, theta0=th0, t0=t0)
             js = np.array(
                 page.evaluate(
                     "a => window.vibrationRealDecay.response(a[0], a[1], a[2], a[3], a[4], a[5], a[6])",

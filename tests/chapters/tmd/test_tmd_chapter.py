@@ -158,7 +158,7 @@ def test_every_caption_passes_its_check_and_says_true_coincidences(chapter):
         assert "nan" not in f.caption and "inf" not in f.caption.replace("infty", "")
     by_name = {f.name: f for f in figs}
     r = np.linspace(0.6, 1.4, 4001)
-    curves = {n: figures.tmd_magnification(st.mu, s.tuning.f, s.tuning.zeta_a, r, st.zeta_p)
+    curves = {n: figures.tmd_magnification(st.mu, s.tuning.f, s.tuning.zeta_a, r=r, zeta_p=st.zeta_p)
               for n, s in st.scores.items()}  # fmt: skip
     for fig_name, data in (("fig-tmd-magnification", curves), ("fig-tmd-robustness", st.robust)):
         shown = f"{by_name[fig_name].caption} {by_name[fig_name].remark}".lower()  # the findings are in the remark

@@ -98,7 +98,7 @@ def test_explorer_bundle_widget_panel_and_values():
     assert v["f"] == pytest.approx(dh.f, abs=1e-12) and v["zeta_a"] == pytest.approx(dh.zeta_a, abs=1e-12)
     assert v["peak"] == pytest.approx(dh.peak, rel=1e-9) and ex.rule_buttons.value is None
     ex.zeta_p_slider.value = 0.0559
-    assert ex.values()["peak"] == pytest.approx(tmd_peak(0.05, dh.f, dh.zeta_a, 0.0559), rel=1e-12)
+    assert ex.values()["peak"] == pytest.approx(tmd_peak(0.05, dh.f, dh.zeta_a, zeta_p=0.0559), rel=1e-12)
     assert "0.0559" in ex._repr_mimebundle_()["text/plain"]
     # out-of-range starts are moved into the sliders' ranges; bad values are named
     far = pres.tmd_explorer(2.0, f=3.0, zeta_a=5.0, zeta_p=0.6).values()
@@ -140,7 +140,7 @@ def test_js_matches_python_on_random_points(browser, tmp_path):
         r = np.array(rs)
         for p, out in zip(points, js, strict=True):
             mu, f, za, zp = p["mu"], p["f"], p["zeta_a"], p["zeta_p"]
-            np.testing.assert_allclose(out["h"], tmd_magnification(mu, f, za, r, zp), rtol=RTOL_CLOSED)
+            np.testing.assert_allclose(out["h"], tmd_magnification(mu, f, za, r=r, zeta_p=zp), rtol=RTOL_CLOSED)
             with np.errstate(divide="ignore"):
                 bare = 1.0 / np.abs(1.0 - r * r + 2j * zp * r)
             got_bare = np.array([math.inf if b is None else b for b in out["bare"]])
@@ -148,7 +148,7 @@ def test_js_matches_python_on_random_points(browser, tmp_path):
             fr, fh = tmd_fixed_points(mu, f)
             np.testing.assert_allclose(out["fixed"]["r"], fr, rtol=RTOL_CLOSED)
             np.testing.assert_allclose(out["fixed"]["h"], fh, rtol=1e-10)  # 1/(1-(1+μ)r²) amplifies r's rounding
-            assert out["peak"]["peak"] == pytest.approx(tmd_peak(mu, f, za, zp), rel=RTOL_PEAK)
+            assert out["peak"]["peak"] == pytest.approx(tmd_peak(mu, f, za, zeta_p=zp), rel=RTOL_PEAK)
             for key, rule in (("dh", den_hartog), ("hinf", hinf_tuning), ("h2", h2_tuning)):
                 t = rule(mu)
                 assert out[key]["f"] == pytest.approx(t.f, rel=RTOL_CLOSED)
@@ -158,14 +158,16 @@ def test_js_matches_python_on_random_points(browser, tmp_path):
             for name, rule in (("Den Hartog", den_hartog), ("H∞", hinf_tuning), ("H2", h2_tuning)):
                 t = rule(mu)
                 assert res["rules"][name]["peak0"] == pytest.approx(t.peak, rel=RTOL_PEAK)
-                assert res["rules"][name]["peak"] == pytest.approx(tmd_peak(mu, t.f, t.zeta_a, zp), rel=RTOL_PEAK)
+                assert res["rules"][name]["peak"] == pytest.approx(
+                    tmd_peak(mu, t.f, t.zeta_a, zeta_p=zp), rel=RTOL_PEAK
+                )
             if zp == 0.0:
                 assert _inf(res["bare_peak"])
             else:  # ζ_p <= 0.3 < 1/√2: the bare primary peaks at 1/(2 ζ_p sqrt(1 - ζ_p²))
                 assert res["bare_peak"] == pytest.approx(1.0 / (2 * zp * math.sqrt(1 - zp * zp)), rel=RTOL_CLOSED)
         # both dampings zero: no finite peak, in both languages
         inf = page.evaluate("() => window.vibrationTMD.peak(0.05, 1, 0, 0).peak")
-        assert _inf(inf) and math.isinf(tmd_peak(0.05, 1.0, 0.0, 0.0))
+        assert _inf(inf) and math.isinf(tmd_peak(0.05, 1.0, 0.0, zeta_p=0.0))
         assert outside == [] and errors == []
     finally:
         page.close()
@@ -216,7 +218,9 @@ def test_panel_sliders_and_buttons_move_the_curve_offline(browser, tmp_path):
         h2 = h2_tuning(0.05)
         clicked = state()
         assert clicked["f"] == f"{h2.f:.4f}".rstrip("0")
-        assert float(clicked["peak"].split()[0]) == pytest.approx(tmd_peak(0.05, h2.f, h2.zeta_a, 0.0559), rel=1e-3)
+        assert float(clicked["peak"].split()[0]) == pytest.approx(
+            tmd_peak(0.05, h2.f, h2.zeta_a, zeta_p=0.0559), rel=1e-3
+        )
         move("mu", math.log10(0.1))  # a heavier absorber: the rules' tunings are for the new μ
         heavy = state()
         assert heavy["dh_f"] == f"{den_hartog(0.1).f:.4f}" and heavy["opt"] != clicked["opt"]

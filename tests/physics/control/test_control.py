@@ -50,7 +50,7 @@ WN = OSC.natural_frequency
 def test_public_api_at_top_level():
     for name in ("lqr", "zv_shaper", "zvd_shaper", "skyhook_transmissibility", "simulate_controlled"):
         assert callable(getattr(vibration, name))
-    res = vibration.lqr(OSC, 1.0, 0.0, 1e-3)
+    res = vibration.lqr(OSC, 1.0, 0.0, r=1e-3)
     assert res.K.shape == (2,) and res.P.shape == (2, 2) and res.poles.shape == (2,)
     s = vibration.zv_shaper(OSC)
     assert math.isclose(float(np.sum(s.amplitudes)), 1.0, rel_tol=0, abs_tol=1e-15)
@@ -102,7 +102,7 @@ def test_lqr_matches_scipy_riccati_and_the_closed_form(seed):
     rng = np.random.default_rng(100 + seed)
     osc = Oscillator(m=rng.uniform(0.2, 5.0), c=rng.uniform(-3.0, 20.0), k=rng.uniform(1.0, 200.0))
     q_x, q_v, r = 10 ** rng.uniform(-2, 4), 10 ** rng.uniform(-3, 2), 10 ** rng.uniform(-6, 1)
-    res = vibration.lqr(osc, q_x, q_v, r)
+    res = vibration.lqr(osc, q_x, q_v, r=r)
     A, B = _ab(osc)
     Q = np.diag([q_x, q_v])
     P = solve_continuous_are(A, B, Q, np.array([[r]]))
@@ -127,7 +127,7 @@ def test_lqr_closed_form_without_cancellation_at_tiny_weights():
 
 
 def test_lqr_gain_falls_as_control_gets_expensive():
-    gains = [vibration.lqr(OSC, 1.0, 0.0, r).K for r in (1e-6, 1e-4, 1e-2, 1.0)]
+    gains = [vibration.lqr(OSC, 1.0, 0.0, r=r).K for r in (1e-6, 1e-4, 1e-2, 1.0)]
     assert all(a[0] > b[0] and a[1] > b[1] for a, b in zip(gains, gains[1:], strict=False))
 
 

@@ -93,12 +93,12 @@ def test_noise_bandwidth_pd_closed_form():
 
 
 def test_loop_amplitude_matches_pd_oscillator_and_pid_simulation():
-    assert loop_amplitude(OSC, FORCE, 133.6, 0.0, 18.7) == pytest.approx(
+    assert loop_amplitude(OSC, FORCE, 133.6, ki=0.0, kd=18.7) == pytest.approx(
         steady_state(pd_oscillator(OSC, 133.6, 18.7), FORCE).amplitude, rel=1e-12
     )
     t = np.linspace(40.0, 40.0 + 2 * math.pi / FORCE.omega, 4001)
     x, _, _ = pid_linear_response(OSC, FORCE, 133.6, ki=512.0, kd=18.7, t=t)
-    assert float(np.max(np.abs(x))) == pytest.approx(loop_amplitude(OSC, FORCE, 133.6, 512.0, 18.7), rel=1e-6)
+    assert float(np.max(np.abs(x))) == pytest.approx(loop_amplitude(OSC, FORCE, 133.6, ki=512.0, kd=18.7), rel=1e-6)
 
 
 def test_force_floor_is_met_by_direct_minimisation():

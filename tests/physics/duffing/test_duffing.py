@@ -100,16 +100,17 @@ def test_bad_records_are_named(raises_parameter_error, args, name, bad):
     ("call", "name"),
     [(lambda: hb_amplitudes(HARD, -1.0, 5.0), "F0"), (lambda: hb_amplitudes(HARD, 5.0, 0.0), "omega"),
      (lambda: hb_amplitudes("HARD", 5.0, 5.0), "duffing"), (lambda: folds(Duffing(m=1, c=0, k=20, k3=1), 5.0), "c"),
-     (lambda: folds(HARD, 0.0), "F0"), (lambda: sweep(HARD, 5.0, [5.0], "sideways"), "direction"),
-     (lambda: sweep(HARD, 5.0, [5.0, -1.0], "up"), "omegas"), (lambda: sweep(HARD, 5.0, [], "up"), "omegas"),
-     (lambda: sweep(Duffing(m=1, c=0, k=20, k3=1), 5.0, [5.0], "up"), "c"),
-     (lambda: frequency_sweep(HARD, 5.0, [5.0], "up", rtol=1.0), "rtol"),
-     (lambda: frequency_sweep(HARD, 5.0, [5.0], "up", integrator="euler"), "integrator"),
+     (lambda: folds(HARD, 0.0), "F0"), (lambda: sweep(HARD, 5.0, [5.0], direction="sideways"), "direction"),
+     (lambda: sweep(HARD, 5.0, [5.0, -1.0], direction="up"), "omegas"),
+     (lambda: sweep(HARD, 5.0, [], direction="up"), "omegas"),
+     (lambda: sweep(Duffing(m=1, c=0, k=20, k3=1), 5.0, [5.0], direction="up"), "c"),
+     (lambda: frequency_sweep(HARD, 5.0, [5.0], direction="up", rtol=1.0), "rtol"),
+     (lambda: frequency_sweep(HARD, 5.0, [5.0], direction="up", integrator="euler"), "integrator"),
      (lambda: backbone(HARD, -1.0), "amplitude"), (lambda: lyapunov_qr(UEDA, 7.5, 1.0, n_periods=0), "n_periods"),
      (lambda: lyapunov_benettin(UEDA, 7.5, 1.0, d0=1.0), "d0"),
      (lambda: poincare_section(UEDA, 7.5, 1.0, steps_per_period=2), "steps_per_period"),
      (lambda: linear_trust_amplitude(UEDA), "k"), (lambda: response_curve(HARD, 5.0, 8.0, n=3), "n"),
-     (lambda: duffing_response(HARD, 5.0, 4.0, [1.0, 0.5]), "t")],
+     (lambda: duffing_response(HARD, 5.0, 4.0, t=[1.0, 0.5]), "t")],
 )  # fmt: skip
 def test_bad_inputs_raise_parameter_error_naming_the_parameter(call, name):
     with pytest.raises(ParameterError, match=rf"\b{name}\b") as info:
@@ -254,7 +255,7 @@ def test_slow_flow_stability_agrees_with_floquet_multipliers(d, w):
     for a, stable in roots:
         if d is SOFT and a > 0.8 * d.barrier:
             continue
-        orbit = periodic_orbit(d, 5.0, w, a)
+        orbit = periodic_orbit(d, 5.0, w, amplitude_guess=a)
         assert orbit.stable == stable, (w, a, orbit.multipliers)
         assert orbit.amplitude == pytest.approx(a, rel=0.03)  # one harmonic is a few per cent off here
         # Liouville: the product of the multipliers is exp(-c T / m)
@@ -269,8 +270,8 @@ def test_slow_flow_stability_agrees_with_floquet_multipliers(d, w):
 
 def test_compiled_sweep_matches_scipy_rk45_step_for_step():
     w = np.array([4.9, 5.0, 5.08])
-    ours = frequency_sweep(HARD, 5.0, w, "up", steady_tol=1e-4)
-    ref = frequency_sweep(HARD, 5.0, w, "up", steady_tol=1e-4, integrator="scipy")
+    ours = frequency_sweep(HARD, 5.0, w, direction="up", steady_tol=1e-4)
+    ref = frequency_sweep(HARD, 5.0, w, direction="up", steady_tol=1e-4, integrator="scipy")
     np.testing.assert_allclose(ours.amplitude, ref.amplitude, rtol=1e-7)
     np.testing.assert_array_equal(ours.periods, ref.periods)
 
@@ -278,7 +279,7 @@ def test_compiled_sweep_matches_scipy_rk45_step_for_step():
 def test_sweep_amplitudes_are_the_shooting_orbits():
     w = np.linspace(4.8, 5.3, 11)
     for direction in ("up", "down"):
-        res = frequency_sweep(HARD, 5.0, w, direction)
+        res = frequency_sweep(HARD, 5.0, w, direction=direction)
         assert res.steady.all()
         for wi, a, x, v in zip(w, res.amplitude, res.x_end, res.v_end, strict=True):
             orbit = periodic_orbit(HARD, 5.0, wi, x0=x, v0=v)
@@ -289,7 +290,7 @@ def test_sweep_amplitudes_are_the_shooting_orbits():
 
 def test_sweep_output_is_aligned_with_the_input_order():
     w = np.array([5.3, 4.8, 5.08, 5.0])
-    up, up_sorted = sweep(HARD, 5.0, w, "up"), sweep(HARD, 5.0, np.sort(w), "up")
+    up, up_sorted = sweep(HARD, 5.0, w, direction="up"), sweep(HARD, 5.0, np.sort(w), direction="up")
     np.testing.assert_allclose(up, up_sorted[np.argsort(np.argsort(w))], rtol=1e-12)
 
 
@@ -298,7 +299,7 @@ def test_hysteresis_jumps_sit_at_the_harmonic_balance_folds(d):
     f = folds(d, 5.0)
     w = np.linspace(3.5, 6.5, 200)
     step = w[1] - w[0]
-    up, down = frequency_sweep(d, 5.0, w, "up"), frequency_sweep(d, 5.0, w, "down")
+    up, down = frequency_sweep(d, 5.0, w, direction="up"), frequency_sweep(d, 5.0, w, direction="down")
     assert up.steady.all() and down.steady.all()
     [(a_up, b_up, *_)] = up.jumps()
     [(a_dn, b_dn, *_)] = down.jumps()
@@ -320,20 +321,20 @@ def test_hysteresis_jumps_sit_at_the_harmonic_balance_folds(d):
 def test_linear_sweep_is_part_one_steady_state():
     d = Duffing(m=1.0, c=0.5, k=20.0, k3=0.0)
     w = np.linspace(3.0, 6.0, 13)
-    amps = sweep(d, 5.0, w, "down")
+    amps = sweep(d, 5.0, w, direction="down")
     ref = [steady_state(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=wi)).amplitude for wi in w]
     np.testing.assert_allclose(amps, ref, rtol=1e-5)
 
 
 def test_softening_spring_escapes_and_the_sweep_goes_on():
     d = Duffing(m=1.0, c=0.1, k=1.0, k3=-1.0)  # barrier at 1 m
-    res = frequency_sweep(d, 0.5, [0.5, 0.6], "up")
+    res = frequency_sweep(d, 0.5, [0.5, 0.6], direction="up")
     assert np.isnan(res.amplitude).any() and not res.steady[np.isnan(res.amplitude)].any()
 
 
 def test_paper_forcing_linear_limit_matches_the_closed_form():
     t = np.linspace(0.0, 50.0, 2001)
-    x, _ = duffing_response(Duffing(m=1.0, c=0.5, k=20.0, k3=0.0), 5.0, 4.47, t, sine=True)
+    x, _ = duffing_response(Duffing(m=1.0, c=0.5, k=20.0, k3=0.0), 5.0, 4.47, t=t, sine=True)
     ref = exact_response(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47), t).x
     assert np.max(np.abs(x - ref)) < 1e-7 * np.max(np.abs(ref))
 
@@ -346,10 +347,10 @@ def ueda():
     """Two methods and two initial conditions on Ueda's attractor."""
     kw = {"n_periods": 2500, "n_transient": 300}
     return {
-        "qr_a": lyapunov_qr(UEDA, 7.5, 1.0, 3.0, 0.0, **kw),
-        "ben_a": lyapunov_benettin(UEDA, 7.5, 1.0, 3.0, 0.0, **kw),
-        "qr_b": lyapunov_qr(UEDA, 7.5, 1.0, 0.0, 0.0, **kw),
-        "ben_b": lyapunov_benettin(UEDA, 7.5, 1.0, 0.0, 0.0, **kw),
+        "qr_a": lyapunov_qr(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, **kw),
+        "ben_a": lyapunov_benettin(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, **kw),
+        "qr_b": lyapunov_qr(UEDA, 7.5, 1.0, x0=0.0, v0=0.0, **kw),
+        "ben_b": lyapunov_benettin(UEDA, 7.5, 1.0, x0=0.0, v0=0.0, **kw),
     }
 
 
@@ -377,17 +378,17 @@ def test_periodic_case_exponent_is_negative_and_floquet():
     orbit = periodic_orbit(HARD, 5.0, 4.47)
     T = 2 * math.pi / 4.47
     floquet = math.log(max(abs(mu) for mu in orbit.multipliers)) / T
-    qr = lyapunov_qr(HARD, 5.0, 4.47, orbit.x0, orbit.v0, n_periods=600, n_transient=0)
-    ben = lyapunov_benettin(HARD, 5.0, 4.47, orbit.x0, orbit.v0, n_periods=600, n_transient=0)
+    qr = lyapunov_qr(HARD, 5.0, 4.47, x0=orbit.x0, v0=orbit.v0, n_periods=600, n_transient=0)
+    ben = lyapunov_benettin(HARD, 5.0, 4.47, x0=orbit.x0, v0=orbit.v0, n_periods=600, n_transient=0)
     assert qr.exponents[0] <= 0 and ben.exponents[0] <= 0
     assert qr.exponents[0] == pytest.approx(floquet, abs=0.005)
     assert ben.exponents[0] == pytest.approx(floquet, abs=0.005)
     # Poincare section of a period-1 orbit: one point, the shooting orbit's
-    pts = poincare_section(HARD, 5.0, 4.47, orbit.x0, orbit.v0, n_periods=5, n_transient=0)
+    pts = poincare_section(HARD, 5.0, 4.47, x0=orbit.x0, v0=orbit.v0, n_periods=5, n_transient=0)
     assert np.max(np.abs(pts[:, 0] - orbit.x0)) < 1e-7 and np.max(np.abs(pts[:, 1] - orbit.v0)) < 1e-6
 
 
 def test_ueda_section_is_not_periodic():
-    pts = poincare_section(UEDA, 7.5, 1.0, 3.0, 0.0, n_periods=300, n_transient=100)
+    pts = poincare_section(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=300, n_transient=100)
     assert len({(round(x, 6), round(v, 6)) for x, v in pts}) == 300
     assert np.all(np.abs(pts[:, 0]) < 5.0) and np.all(np.abs(pts[:, 1]) < 10.0)  # bounded attractor

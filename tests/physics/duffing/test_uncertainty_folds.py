@@ -42,7 +42,7 @@ STARTS = [(3.0, 0.0), (0.0, 0.0), (1.0, 1.0), (-2.0, 3.0), (2.0, -1.0), (-1.0, -
 @pytest.fixture(scope="module")
 def short_runs():
     """Twelve independent runs of 2000 periods on Ueda's attractor (20 blocks of 100 periods each)."""
-    return [lyapunov_estimate(UEDA, 7.5, 1.0, x, v, n_periods=2000, n_blocks=20) for x, v in STARTS]
+    return [lyapunov_estimate(UEDA, 7.5, 1.0, x0=x, v0=v, n_periods=2000, n_blocks=20) for x, v in STARTS]
 
 
 def test_batch_means_error_matches_the_scatter_of_independent_runs(short_runs):
@@ -74,9 +74,9 @@ def test_pooled_exponent_is_the_inverse_variance_mean(short_runs):
 
 
 def test_increments_reproduce_a_separate_shorter_run():
-    e = lyapunov_estimate(UEDA, 7.5, 1.0, 3.0, 0.0, n_periods=3000, n_blocks=10)
+    e = lyapunov_estimate(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=3000, n_blocks=10)
     assert e.increments.sum() / (e.n_periods * e.period) == pytest.approx(e.exponent, rel=1e-12)
-    short = lyapunov_qr(UEDA, 7.5, 1.0, 3.0, 0.0, n_periods=1000, n_transient=300)
+    short = lyapunov_qr(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=1000, n_transient=300)
     assert e.at(1000, 10)[0] == pytest.approx(short.exponents[0], rel=1e-10)
     assert e.block_means.size == 10 and e.block_periods == 300
     assert e.second == pytest.approx(-0.05 - e.exponent, abs=1e-6)  # the trace, by construction
@@ -87,7 +87,7 @@ def test_periodic_orbit_exponent_is_the_floquet_exponent_with_a_small_error():
     T = 2 * math.pi / 4.47
     floquet = math.log(max(abs(mu) for mu in orbit.multipliers)) / T
     for method in ("qr", "benettin"):
-        e = lyapunov_estimate(HARD, 5.0, 4.47, orbit.x0, orbit.v0, n_periods=2000, n_transient=0, method=method)
+        e = lyapunov_estimate(HARD, 5.0, 4.47, x0=orbit.x0, v0=orbit.v0, n_periods=2000, n_transient=0, method=method)
         assert e.exponent == pytest.approx(floquet, abs=2e-3)
         assert e.standard_error < 0.01
 
@@ -109,7 +109,7 @@ def test_estimate_refuses_bad_arguments():
 def test_long_runs_give_the_long_run_exponent():
     """Four runs of 25,000 periods: the pooled exponent within a few standard errors of 0.1034 1/s
     (the value of 4 x 100,000 periods at 100 to 800 steps per period, standard error 0.0002)."""
-    runs = [lyapunov_estimate(UEDA, 7.5, 1.0, x, v, n_periods=25_000) for x, v in STARTS[:4]]
+    runs = [lyapunov_estimate(UEDA, 7.5, 1.0, x0=x, v0=v, n_periods=25_000) for x, v in STARTS[:4]]
     mean, se, chi2, dof = pooled_exponent(runs)
     assert abs(mean - 0.1034) < 4 * math.hypot(se, 0.0002)
     assert 0.0003 < se < 0.0008
@@ -124,7 +124,7 @@ def branches():
     for name, d in (("hard", HARD), ("soft", SOFT)):
         f = folds(d, 5.0)
         width = f.omega_high - f.omega_low
-        out[name] = (d, f, continue_orbits(d, 5.0, f.omega_low - 0.5 * width, f.omega_high + 0.5 * width))
+        out[name] = (d, f, continue_orbits(d, 5.0, f.omega_low - 0.5 * width, omega_end=f.omega_high + 0.5 * width))
     return out
 
 
@@ -152,7 +152,7 @@ def test_sweep_jumps_bracket_the_continued_folds(branches):
     for d, _, b in branches.values():
         lo, hi = sorted(x.omega for x in b.folds)
         w = np.linspace(lo - 0.05, hi + 0.05, 41)
-        up, down = frequency_sweep(d, 5.0, w, "up"), frequency_sweep(d, 5.0, w, "down")
+        up, down = frequency_sweep(d, 5.0, w, direction="up"), frequency_sweep(d, 5.0, w, direction="down")
         j_up, j_down = locate_jump(d, 5.0, up), locate_jump(d, 5.0, down)
         assert min(j_up) - 1e-6 <= hi <= max(j_up) + 1e-6, (j_up, hi)
         assert min(j_down) - 1e-6 <= lo <= max(j_down) + 1e-6, (j_down, lo)
@@ -183,17 +183,17 @@ def test_one_harmonic_folds_converge_to_the_true_ones_as_the_amplitude_falls(bra
     f = folds(d, 0.5)
     assert f.bistable and f.peak_amplitude < 0.6 * f5.peak_amplitude
     width = f.omega_high - f.omega_low
-    b = continue_orbits(d, 0.5, f.omega_low - 0.5 * width, f.omega_high + 0.5 * width)
+    b = continue_orbits(d, 0.5, f.omega_low - 0.5 * width, omega_end=f.omega_high + 0.5 * width)
     err = abs(f.omega_high - max(x.omega for x in b.folds))
     assert err < err5 / 3, (err, err5)
 
 
 def test_continuation_refuses_bad_arguments():
     with pytest.raises(ParameterError, match="omega_end"):
-        continue_orbits(HARD, 5.0, 5.0, 5.0)
+        continue_orbits(HARD, 5.0, 5.0, omega_end=5.0)
     with pytest.raises(ParameterError, match="c = 0"):
-        continue_orbits(Duffing(m=1.0, c=0.0, k=20.0, k3=2.0), 5.0, 4.9, 5.2)
+        continue_orbits(Duffing(m=1.0, c=0.0, k=20.0, k3=2.0), 5.0, 4.9, omega_end=5.2)
     with pytest.raises(ParameterError, match="step"):
-        continue_orbits(HARD, 5.0, 4.9, 5.2, step=2.0)
+        continue_orbits(HARD, 5.0, 4.9, omega_end=5.2, step=2.0)
     with pytest.raises(ParameterError, match="F0"):
-        continue_orbits(HARD, -1.0, 4.9, 5.2)
+        continue_orbits(HARD, -1.0, 4.9, omega_end=5.2)

@@ -57,13 +57,13 @@ def _ivp_decay(t, omega_n, zeta, friction, offset, theta0):
 def test_exact_response_matches_event_driven_integration(omega_n, zeta, friction, offset, theta0):
     t = np.linspace(0.0, 12.0, 2401)
     ref = _ivp_decay(t, omega_n, zeta, friction, offset, theta0)
-    got = free_decay_response(t, omega_n, zeta, friction, offset, theta0, 0.0)
+    got = free_decay_response(t, omega_n, zeta, friction=friction, offset=offset, theta0=theta0, t0=0.0)
     assert np.max(np.abs(got - ref)) < 1e-7
 
 
 def test_pure_coulomb_loses_two_delta_per_half_period_and_stops_in_the_dead_band():
     t = np.arange(0.0, 8.0, 0.002)
-    y = free_decay_response(t, 4.5, 0.0, 0.05, offset=0.1, theta0=1.1)
+    y = free_decay_response(t, 4.5, 0.0, friction=0.05, offset=0.1, theta0=1.1)
     p = free_decay_peaks(t, y)
     assert np.allclose(np.diff(p.t[:-1]), np.pi / 4.5, atol=2e-4)  # the last one is where it sticks
     a, loss = half_period_losses(p, 0.1)
@@ -78,13 +78,15 @@ def _synthetic(seed, zeta, friction, *, n=400, omega_n=4.5):
     t[0] = 0.0
     amp = rng.uniform(0.8, 1.2) * rng.choice([-1.0, 1.0])
     offset = rng.uniform(-0.05, 0.05)
-    y = free_decay_response(t, omega_n, zeta, friction, offset, offset + amp, rng.uniform(0.2, 0.6))
+    y = free_decay_response(
+        t, omega_n, zeta, friction=friction, offset=offset, theta0=offset + amp, t0=rng.uniform(0.2, 0.6)
+    )
     return t, np.round(y / STEP) * STEP, offset
 
 
 def test_noiseless_fit_is_exact():
     t = np.sort(np.random.default_rng(3).uniform(0.0, 12.0, 300))
-    y = free_decay_response(t, 4.5, 0.03, 0.015, 0.02, -0.9, 0.4)
+    y = free_decay_response(t, 4.5, 0.03, friction=0.015, offset=0.02, theta0=-0.9, t0=0.4)
     f = fit_free_decay(t, y, "combined")
     assert f.converged
     for key, true in {"omega_n": 4.5, "zeta": 0.03, "friction": 0.015, "offset": 0.02}.items():
@@ -125,7 +127,7 @@ def test_bic_picks_the_true_law(zeta, friction, law):
 
 def test_peak_estimator_on_noiseless_decay():
     t = np.arange(0.0, 12.0, 0.01)
-    y = free_decay_response(t, 4.5, 0.02, 0.03, offset=0.1, theta0=1.0)
+    y = free_decay_response(t, 4.5, 0.02, friction=0.03, offset=0.1, theta0=1.0)
     f = peak_decay_fit(t, y)
     assert f.omega_n == pytest.approx(4.5, abs=2e-3)
     assert f.zeta == pytest.approx(0.02, abs=2e-4)

@@ -40,7 +40,7 @@ def test_exact_agrees_with_the_linear_solver_with_small_friction():
 
 def _simulated_amplitude(r, zeta, delta, periods=150, per_period=256):
     t = np.linspace(0.0, periods * 2 * np.pi / r, periods * per_period + 1)
-    th, _ = simulate_friction_oscillator(t, np.cos(r * t), 1.0, zeta, delta, 1.0, substeps=2)
+    th, _ = simulate_friction_oscillator(t, np.cos(r * t), 1.0, zeta=zeta, friction=delta, gain=1.0, substeps=2)
     last = t > t[-1] - 10 * 2 * np.pi / r
     return 0.5 * (th[last].max() - th[last].min())
 
@@ -72,7 +72,7 @@ def test_simulator_linear_exact_solution():
     # the simulator integrates the linearly interpolated drive: on a 0.5 ms grid that differs from
     # the sine by (om dt)^2 / 8 = 4e-7 of its amplitude, so the comparison is good to about 1e-6
     t = np.linspace(0.0, 5.0, 10_001)
-    th, _ = simulate_friction_oscillator(t, np.sin(om * t), w, z, 0.0, 1.0, substeps=1)
+    th, _ = simulate_friction_oscillator(t, np.sin(om * t), w, zeta=z, friction=0.0, gain=1.0, substeps=1)
     H = 1 / (1 - r**2 + 2j * z * r)
     wd = w * np.sqrt(1 - z**2)
     # particular: Im(H e^{i om t}); homogeneous fixes x(0) = 0, v(0) = 0
@@ -85,8 +85,10 @@ def test_simulator_linear_exact_solution():
 
 def test_simulator_free_decay_closed_form():
     t = np.linspace(0.0, 12.0, 241)
-    th, v = simulate_friction_oscillator(t, np.zeros_like(t), 4.5, 0.02, 0.05, 1.0, theta0=1.1, offset=0.1)
-    exact = free_decay_response(t, 4.5, 0.02, 0.05, offset=0.1, theta0=1.1)
+    th, v = simulate_friction_oscillator(
+        t, np.zeros_like(t), 4.5, zeta=0.02, friction=0.05, gain=1.0, theta0=1.1, offset=0.1
+    )
+    exact = free_decay_response(t, 4.5, 0.02, friction=0.05, offset=0.1, theta0=1.1)
     assert np.max(np.abs(th - exact)) < 1e-6
     assert v[-1] == 0.0  # stuck in the dead band
 
@@ -94,11 +96,13 @@ def test_simulator_free_decay_closed_form():
 def test_simulator_validation():
     t = np.linspace(0.0, 1.0, 11)
     with pytest.raises(ParameterError, match="drive has 5 samples"):
-        simulate_friction_oscillator(t, np.zeros(5), 4.5, 0.0, 0.0, 1.0)
+        simulate_friction_oscillator(t, np.zeros(5), 4.5, zeta=0.0, friction=0.0, gain=1.0)
     with pytest.raises(ParameterError, match="zeta"):
-        simulate_friction_oscillator(t, np.zeros(11), 4.5, -0.1, 0.0, 1.0)
+        simulate_friction_oscillator(t, np.zeros(11), 4.5, zeta=-0.1, friction=0.0, gain=1.0)
     with pytest.raises(ParameterError, match="steps"):
-        simulate_friction_oscillator(np.linspace(0, 1, 300_000), np.zeros(300_000), 4.5, 0.0, 0.0, 1.0, substeps=20)
+        simulate_friction_oscillator(
+            np.linspace(0, 1, 300_000), np.zeros(300_000), 4.5, zeta=0.0, friction=0.0, gain=1.0, substeps=20
+        )
     with pytest.raises(ParameterError, match="friction_ratio"):
         friction_forced_amplitude(1.0, 0.1, -0.1)
     with pytest.raises(ParameterError, match=r"r\[1\]"):

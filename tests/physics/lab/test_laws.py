@@ -60,7 +60,7 @@ def test_fits_recover_a_law_integrated_by_scipy(law, kw, expect):
 
 def test_law_strings():
     t = np.arange(0.0, 10.0, 0.05)
-    y = free_decay_response(t, W, 0.01, 0.02, theta0=1.0)
+    y = free_decay_response(t, W, 0.01, friction=0.02, theta0=1.0)
     assert fit_free_decay(t, y, "combined").law == fit_free_decay(t, y, "viscous+coulomb").law == "coulomb+viscous"
     with pytest.raises(ParameterError, match="quadratic\\+power"):
         fit_free_decay(t, y, "coulomb+quadratic+power")
@@ -71,10 +71,10 @@ def test_law_strings():
 def test_coulomb_energy_balance_and_viscous_ratio():
     """Coulomb: the half-period amplitude drops by 2 Delta per half period; viscous: zeta_eq is zeta."""
     t = np.arange(0.0, 12.0, 0.005)
-    c = damping_vs_amplitude(t, free_decay_response(t, W, 0.0, 0.07, theta0=3.0))
+    c = damping_vs_amplitude(t, free_decay_response(t, W, 0.0, friction=0.07, theta0=3.0))
     assert c.n > 10
     np.testing.assert_allclose(c.loss, 2 * 0.07, atol=2e-3)
-    v = damping_vs_amplitude(t, free_decay_response(t, W, 0.03, 0.0, theta0=3.0))
+    v = damping_vs_amplitude(t, free_decay_response(t, W, 0.03, friction=0.0, theta0=3.0))
     np.testing.assert_allclose(v.zeta_eq, 0.03, atol=5e-4)
     assert v.amplitude.size == v.zeta_eq.size == v.loss.size == v.t.size
     # quadratic law: loss per half period (4/3) b X^2 to first order (energy balance), from the direct integration
@@ -85,7 +85,7 @@ def test_coulomb_energy_balance_and_viscous_ratio():
 
 
 def test_pooled_errors_are_the_run_to_run_scatter():
-    runs = [(T, free_decay_response(T, W, z, 0.05, theta0=2.0)) for z in (0.004, 0.006, 0.008, 0.01)]
+    runs = [(T, free_decay_response(T, W, z, friction=0.05, theta0=2.0)) for z in (0.004, 0.006, 0.008, 0.01)]
     p = fit_free_decays(runs, "coulomb+viscous")
     zs = np.array([f.zeta for f in p.fits])
     assert p.stderr["zeta"] == pytest.approx(zs.std(ddof=1) / 2.0, rel=1e-9)
@@ -95,8 +95,8 @@ def test_pooled_errors_are_the_run_to_run_scatter():
 
 
 def test_compare_damping_methods():
-    a = [(T, free_decay_response(T, W, 0.01, 0.0, theta0=x)) for x in (3.0, 3.3, 3.6)]
-    b = [(T, free_decay_response(T, W, 0.015, 0.0, theta0=x)) for x in (3.0, 3.3, 3.6)]
+    a = [(T, free_decay_response(T, W, 0.01, friction=0.0, theta0=x)) for x in (3.0, 3.3, 3.6)]
+    b = [(T, free_decay_response(T, W, 0.015, friction=0.0, theta0=x)) for x in (3.0, 3.3, 3.6)]
     d = compare_damping(a, b, (0.5, 2.5))
     assert d.delta_zeta == pytest.approx(0.005, abs=2e-4) and d.method == "bootstrap over runs"
     assert d.n_a == d.n_b == 3

@@ -56,7 +56,7 @@ def _grid_worst(mu, f, za, zp, band, n_eps=21):
     out = 0.0
     for e in np.linspace(-band, band, n_eps):
         g = math.sqrt(1.0 + e)
-        out = max(out, float(np.max(tmd_magnification(mu, f / g, za, r, zp / g))) / (1.0 + e))
+        out = max(out, float(np.max(tmd_magnification(mu, f / g, za, r=r, zeta_p=zp / g))) / (1.0 + e))
     return out
 
 
@@ -139,7 +139,7 @@ def test_worst_peak_finds_an_interior_maximum():
 # ----------------------------------------------------------------------------- stroke
 def test_stroke_against_a_time_simulation_at_the_paper_load_case():
     h = hinf_tuning(0.05, ZP)
-    s = tmd_system(1.0, 0.5, 20.0, h)
+    s = tmd_system(1.0, 0.5, 20.0, tuning=h)
     Minv = np.linalg.inv(s.M)
 
     def rhs(t, z):
@@ -150,19 +150,19 @@ def test_stroke_against_a_time_simulation_at_the_paper_load_case():
     t_eval = np.linspace(300.0, 300.0 + 3 * period, 3001)
     sol = solve_ivp(rhs, (0.0, t_eval[-1]), np.zeros(4), method="DOP853", rtol=1e-11, atol=1e-12, t_eval=t_eval)
     stroke_sim = float(np.max(np.abs(sol.y[1] - sol.y[0])))
-    stroke = 0.25 * float(tmd_stroke(0.05, h.f, h.zeta_a, R_FORCE, ZP))  # F0/k = 0.25 m
+    stroke = 0.25 * float(tmd_stroke(0.05, h.f, h.zeta_a, r=R_FORCE, zeta_p=ZP))  # F0/k = 0.25 m
     assert stroke == pytest.approx(stroke_sim, rel=2e-6)  # the sampled maximum is within 1e-6 of the crest
     assert round(stroke, 1) == 3.2  # the "about 3.2 m at 4.47 rad/s"
 
 
 @pytest.mark.parametrize("mu, f, za, zp", [(0.05, 0.9331, 0.142, ZP), (0.01, 1.0, 0.02, 0.0), (0.5, 0.7, 0.4, 0.3)])
 def test_stroke_peak_against_a_bounded_search(mu, f, za, zp):
-    z, r = stroke_peak(mu, f, za, zp)
+    z, r = stroke_peak(mu, f, za, zeta_p=zp)
     grid = np.linspace(0.0, 3.0, 30001)
-    zs = tmd_stroke(mu, f, za, grid, zp)
+    zs = tmd_stroke(mu, f, za, r=grid, zeta_p=zp)
     i = int(np.argmax(zs))
-    res = minimize_scalar(lambda x: -float(tmd_stroke(mu, f, za, x, zp)), bounds=(grid[max(i - 1, 0)], grid[i + 1]),
-                          method="bounded", options={"xatol": 1e-12})  # fmt: skip
+    res = minimize_scalar(lambda x: -float(tmd_stroke(mu, f, za, r=x, zeta_p=zp)), bounds=(grid[max(i - 1, 0)],
+                          grid[i + 1]), method="bounded", options={"xatol": 1e-12})  # fmt: skip
     assert z == pytest.approx(-res.fun, rel=1e-9)
     assert r == pytest.approx(res.x, rel=1e-5)
     assert z >= float(zs.max()) * (1 - 1e-12)
@@ -170,28 +170,30 @@ def test_stroke_peak_against_a_bounded_search(mu, f, za, zp):
 
 def test_stroke_agrees_with_the_two_mass_complex_solve():
     h = hinf_tuning(0.05, ZP)
-    X = tmd_system(1.0, 0.5, 20.0, h).frf(np.linspace(0.1, 10.0, 50), [1.0, 0.0])
+    X = tmd_system(1.0, 0.5, 20.0, tuning=h).frf(np.linspace(0.1, 10.0, 50), [1.0, 0.0])
     r = np.linspace(0.1, 10.0, 50) / math.sqrt(20.0)
-    np.testing.assert_allclose(tmd_stroke(0.05, h.f, h.zeta_a, r, ZP), 20.0 * np.abs(X[:, 1] - X[:, 0]), rtol=1e-10)
+    np.testing.assert_allclose(
+        tmd_stroke(0.05, h.f, h.zeta_a, r=r, zeta_p=ZP), 20.0 * np.abs(X[:, 1] - X[:, 0]), rtol=1e-10
+    )
 
 
 # ----------------------------------------------------------------------------- the H2 column and the scores
 def test_score_against_quadrature_and_its_own_definitions():
     for t in (hinf_tuning(0.05, ZP), h2_tuning(0.05, ZP), robust_tuning(0.05, ZP, 0.1), den_hartog(0.05)):
-        s = score_design(t, ZP, 0.1, R_FORCE)
-        h2 = quad(lambda r, t=t: float(tmd_magnification(0.05, t.f, t.zeta_a, r, ZP)) ** 2, 0, np.inf,
+        s = score_design(t, ZP, 0.1, r_force=R_FORCE)
+        h2 = quad(lambda r, t=t: float(tmd_magnification(0.05, t.f, t.zeta_a, r=r, zeta_p=ZP)) ** 2, 0, np.inf,
                   limit=400, epsabs=0, epsrel=1e-11)[0]  # fmt: skip
         bare = quad(lambda r: 1.0 / ((1 - r * r) ** 2 + (2 * ZP * r) ** 2), 0, np.inf, limit=400, epsrel=1e-11)[0]
         assert s.h2 == pytest.approx(h2, rel=1e-8)
         assert s.rms_ratio == pytest.approx(math.sqrt(h2 / bare), rel=1e-8)
-        assert s.nominal_peak == pytest.approx(tmd_peak(0.05, t.f, t.zeta_a, ZP), rel=1e-12)
+        assert s.nominal_peak == pytest.approx(tmd_peak(0.05, t.f, t.zeta_a, zeta_p=ZP), rel=1e-12)
         b = bare_peak(ZP, [-0.1, 0.0, 0.1])
         lo, hi = mistuned_peak(t, [-0.1, 0.1], ZP)
         assert s.kept_low == pytest.approx((b[0] - lo) / (b[1] - s.nominal_peak), rel=1e-12)
         assert s.kept_high == pytest.approx((b[2] - hi) / (b[1] - s.nominal_peak), rel=1e-12)
     # each optimum wins its own criterion
     designs = {"hinf": hinf_tuning(0.05, ZP), "h2": h2_tuning(0.05, ZP), "rob": robust_tuning(0.05, ZP, 0.1)}
-    scores = {n: score_design(t, ZP, 0.1, R_FORCE) for n, t in designs.items()}
+    scores = {n: score_design(t, ZP, 0.1, r_force=R_FORCE) for n, t in designs.items()}
     assert min(scores, key=lambda n: scores[n].nominal_peak) == "hinf"
     assert min(scores, key=lambda n: scores[n].rms_ratio) == "h2"
     assert min(scores, key=lambda n: scores[n].worst_peak) == "rob"
@@ -208,7 +210,7 @@ def test_bare_peak_against_a_dense_grid():
 
 
 def test_score_on_an_undamped_primary_leaves_the_shares_undefined():
-    s = score_design(hinf_tuning(0.05), 0.0, 0.1, 1.0)
+    s = score_design(hinf_tuning(0.05), 0.0, 0.1, r_force=1.0)
     assert math.isnan(s.kept_low) and math.isnan(s.kept_high) and math.isnan(s.rms_ratio)
     assert math.isfinite(s.worst_peak) and math.isfinite(s.stroke_peak)
 
@@ -233,16 +235,16 @@ def test_ground_acceleration_against_absolute_coordinates_and_modal_superpositio
 def test_frf_peak_against_a_fine_search():
     b = shear_building([1.0, 1.0, 1.0], [100.0, 100.0, 100.0], 0.02)
     p = ground_acceleration_load(b)
-    x, w = frf_peak(b, p, -1, 0.0, 6.0)
+    x, w = frf_peak(b, p, -1, omega_min=0.0, omega_max=6.0)
     w1 = b.natural_frequencies[0]
     dense = np.linspace(0.9 * w1, 1.1 * w1, 40001)  # the first resonance (mode 1 dominates the roof)
     a = np.abs(b.frf(dense, p)[:, -1])
     assert x >= a.max() * (1 - 1e-12)
     assert x == pytest.approx(a.max(), rel=1e-8)
     assert w == pytest.approx(dense[np.argmax(a)], abs=1e-5)
-    for bad in ((-1.0, 6.0), (3.0, 2.0)):
+    for lo, hi in ((-1.0, 6.0), (3.0, 2.0)):
         with pytest.raises(ParameterError, match="omega"):
-            frf_peak(b, p, -1, *bad)
+            frf_peak(b, p, -1, omega_min=lo, omega_max=hi)
     with pytest.raises(ParameterError, match="model"):
         ground_acceleration_load(np.eye(2))
     assert isinstance(b, MDOF)

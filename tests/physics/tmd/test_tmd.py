@@ -42,14 +42,14 @@ from vibration.physics.tmd import DampingNotClassical, h2_norm, modal_damping_ma
 def brute_peak(mu, f, za, zp=0.0, r_max=4.0, r_min=0.0):
     """Largest |H| by a dense grid and a bounded Brent refinement around the best sample."""
     r = np.linspace(r_min, r_max, 40001)
-    h = tmd_magnification(mu, f, za, r, zp)
+    h = tmd_magnification(mu, f, za, r=r, zeta_p=zp)
     i = int(np.argmax(h))
     r = np.linspace(r[max(i - 2, 0)], r[min(i + 2, r.size - 1)], 20001)  # a finer grid around the best sample
-    h = tmd_magnification(mu, f, za, r, zp)
+    h = tmd_magnification(mu, f, za, r=r, zeta_p=zp)
     i = int(np.argmax(h))
     lo, hi = r[max(i - 1, 0)], r[min(i + 1, r.size - 1)]
     res = minimize_scalar(
-        lambda x: -float(tmd_magnification(mu, f, za, x, zp)), bounds=(lo, hi), method="bounded",
+        lambda x: -float(tmd_magnification(mu, f, za, r=x, zeta_p=zp)), bounds=(lo, hi), method="bounded",
         options={"xatol": 1e-12},
     )  # fmt: skip
     return max(-res.fun, float(h[i]))
@@ -66,16 +66,16 @@ def test_magnification_matches_the_two_dof_model_and_scipy_signal():
         m,
         2 * zp * math.sqrt(k * m),
         k,
-        vibration.TMDTuning(rule="x", mu=mu, f=f, zeta_a=za, zeta_p=zp, peak=0.0, r_peak=0.0),
+        tuning=vibration.TMDTuning(rule="x", mu=mu, f=f, zeta_a=za, zeta_p=zp, peak=0.0, r_peak=0.0),
     )
     r = np.linspace(0.0, 3.0, 301)
     x = np.abs(model.frf(r * wp, [1.0, 0.0])[:, 0]) * k
-    np.testing.assert_allclose(tmd_magnification(mu, f, za, r, zp), x, rtol=1e-12)
+    np.testing.assert_allclose(tmd_magnification(mu, f, za, r=r, zeta_p=zp), x, rtol=1e-12)
     A = model.state_matrix
     B = np.concatenate([np.zeros(2), np.linalg.solve(model.M, [1.0, 0.0])])[:, None]
     sys = control.ss(A, B, np.eye(1, 4), np.zeros((1, 1)))
     h = np.array([complex(sys(1j * w)) for w in r[1:] * wp])
-    np.testing.assert_allclose(tmd_magnification(mu, f, za, r[1:], zp), np.abs(h) * k, rtol=1e-10)
+    np.testing.assert_allclose(tmd_magnification(mu, f, za, r=r[1:], zeta_p=zp), np.abs(h) * k, rtol=1e-10)
 
 
 @given(
@@ -85,7 +85,7 @@ def test_magnification_matches_the_two_dof_model_and_scipy_signal():
     zp=st.sampled_from([0.0, 0.02, 0.0559, 0.2]),
 )
 def test_exact_peak_matches_a_dense_grid(mu, f, za, zp):
-    exact = tmd_peak(mu, f, za, zp)
+    exact = tmd_peak(mu, f, za, zeta_p=zp)
     brute = brute_peak(mu, f, za, zp)
     # |H| near a peak of height H is computed with a relative rounding error of about eps H² (small denominator)
     rel = 1e-9 + 1e-14 * exact**2
@@ -95,7 +95,7 @@ def test_exact_peak_matches_a_dense_grid(mu, f, za, zp):
 
 def test_undamped_peak_is_infinite_and_static_value_is_one():
     assert tmd_peak(0.05, 1.0, 0.0) == math.inf
-    assert float(tmd_magnification(0.05, 1.0, 0.2, 0.0, 0.1)) == 1.0
+    assert float(tmd_magnification(0.05, 1.0, 0.2, r=0.0, zeta_p=0.1)) == 1.0
 
 
 # ----------------------------------------------------------------------------- Den Hartog
@@ -107,10 +107,10 @@ def test_fixed_points_are_common_to_every_damping_and_equal_at_den_hartog_tuning
     r, h = tmd_fixed_points(mu, f)
     np.testing.assert_allclose(h, math.sqrt(1.0 + 2.0 / mu), rtol=1e-12)
     for za in (0.01, 0.1, 0.5, 3.0):
-        np.testing.assert_allclose(tmd_magnification(mu, f, za, r), h, rtol=1e-10)
+        np.testing.assert_allclose(tmd_magnification(mu, f, za, r=r), h, rtol=1e-10)
     r2, h2 = tmd_fixed_points(mu, 0.9)  # other tuning: still common to every damping
     for za in (0.02, 0.3):
-        np.testing.assert_allclose(tmd_magnification(mu, 0.9, za, r2), h2, rtol=1e-10)
+        np.testing.assert_allclose(tmd_magnification(mu, 0.9, za, r=r2), h2, rtol=1e-10)
 
 
 @pytest.mark.parametrize("mu", [0.01, 0.05, 0.1, 0.5])
@@ -122,7 +122,7 @@ def test_den_hartog_damping_is_brocks_average_in_the_absorbers_own_frequency(mu)
 
     def slope(za, rr):
         h = 1e-6
-        return float(tmd_magnification(mu, f, za, rr + h) - tmd_magnification(mu, f, za, rr - h)) / (2 * h)
+        return float(tmd_magnification(mu, f, za, r=rr + h) - tmd_magnification(mu, f, za, r=rr - h)) / (2 * h)
 
     z2 = [brentq(slope, 1e-3, 2.0, args=(rr,), xtol=1e-14) ** 2 for rr in r]
     assert t.zeta_a == pytest.approx(math.sqrt(np.mean(z2)), rel=1e-5)
@@ -164,7 +164,7 @@ def test_hinf_beats_den_hartog_and_h2_and_the_damped_primary_optimum_is_local():
     assert t.zeta_p == 0.0559 and t.rule == "H∞ numerical"
     assert t.peak == pytest.approx(brute_peak(0.05, t.f, t.zeta_a, 0.0559), rel=1e-10)
     for df, dz in ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, -1)):
-        assert tmd_peak(0.05, t.f * (1 + 1e-4 * df), t.zeta_a * (1 + 1e-3 * dz), 0.0559) > t.peak
+        assert tmd_peak(0.05, t.f * (1 + 1e-4 * df), t.zeta_a * (1 + 1e-3 * dz), zeta_p=0.0559) > t.peak
     assert den_hartog(0.05, zeta_p=0.0559).peak > t.peak
 
 
@@ -177,15 +177,19 @@ def squared_integral(mu, f, za, zp):
     edges = [0.0, *sorted({*r_fixed.tolist(), f}), 3.0]
     total = 0.0
     for a, b in zip(edges[:-1], edges[1:], strict=True):
-        total += quad(lambda r: float(tmd_magnification(mu, f, za, r, zp)) ** 2, a, b, limit=200, epsrel=1e-13)[0]
-    return total + quad(lambda r: float(tmd_magnification(mu, f, za, r, zp)) ** 2, 3.0, np.inf, epsrel=1e-13)[0]
+        total += quad(
+            lambda r: float(tmd_magnification(mu, f, za, r=r, zeta_p=zp)) ** 2, a, b, limit=200, epsrel=1e-13
+        )[0]
+    return (
+        total + quad(lambda r: float(tmd_magnification(mu, f, za, r=r, zeta_p=zp)) ** 2, 3.0, np.inf, epsrel=1e-13)[0]
+    )
 
 
 @pytest.mark.parametrize(
     ("mu", "f", "za", "zp"), [(0.02, 0.98, 0.07, 0.0), (0.1, 0.9, 0.2, 0.0559), (0.5, 1.1, 0.05, 0.01)]
 )
 def test_h2_norm_equals_the_integral_of_the_squared_magnification(mu, f, za, zp):
-    assert h2_norm(mu, f, za, zp) == pytest.approx(squared_integral(mu, f, za, zp), rel=1e-9)
+    assert h2_norm(mu, f, za, zeta_p=zp) == pytest.approx(squared_integral(mu, f, za, zp), rel=1e-9)
 
 
 @pytest.mark.parametrize("mu", [0.02, 0.1])
@@ -206,7 +210,7 @@ def test_warburton_is_the_minimum_of_the_integral(mu):
 def test_h2_numerical_for_a_damped_primary_is_a_minimum():
     t = h2_tuning(0.05, zeta_p=0.0559)
     for df, dz in ((1, 0), (-1, 0), (0, 1), (0, -1)):
-        assert h2_norm(0.05, t.f * (1 + 1e-4 * df), t.zeta_a * (1 + 1e-3 * dz), 0.0559) > t.h2
+        assert h2_norm(0.05, t.f * (1 + 1e-4 * df), t.zeta_a * (1 + 1e-3 * dz), zeta_p=0.0559) > t.h2
 
 
 # ----------------------------------------------------------------------------- conventions and mistuning
@@ -226,7 +230,9 @@ def test_mistuned_peak_matches_the_two_dof_model():
     m, k = 1.0, 20.0
     m_a, k_a, c_a = t.absorber(m, k)
     for eps in (-0.1, 0.0, 0.1):
-        model = add_absorber(MDOF(M=[[m]], C=[[2 * 0.0559 * math.sqrt(k * m)]], K=[[k * (1 + eps)]]), 0, m_a, k_a, c_a)
+        model = add_absorber(
+            MDOF(M=[[m]], C=[[2 * 0.0559 * math.sqrt(k * m)]], K=[[k * (1 + eps)]]), 0, m_a, k_a=k_a, c_a=c_a
+        )
         w = np.linspace(3.0, 6.0, 3001)
         i = int(np.argmax(np.abs(model.frf(w, [1.0, 0.0])[:, 0])))
         res = minimize_scalar(
@@ -278,7 +284,7 @@ def test_rayleigh_damping_ratios_and_repeated_frequencies():
 
 
 def test_non_classical_damping_is_said_and_poles_exist():
-    s = tmd_system(1.0, 0.5, 20.0, den_hartog(0.05))
+    s = tmd_system(1.0, 0.5, 20.0, tuning=den_hartog(0.05))
     assert not s.is_classically_damped
     assert "not classical" in s.damping_note
     with pytest.raises(DampingNotClassical, match="not classical"):
@@ -297,7 +303,7 @@ def test_frf_against_modal_superposition_and_direct_solve():
     phi, wn, z = b.modes, b.natural_frequencies, b.modal_damping_ratios
     modal = np.array([(phi * ((phi.T @ load) / (wn**2 - om**2 + 2j * z * wn * om))) @ np.ones(5) for om in w])
     np.testing.assert_allclose(X, modal, rtol=1e-9, atol=1e-12 * np.max(np.abs(modal)))
-    s = tmd_system(1.0, 0.5, 20.0, hinf_tuning(0.05))
+    s = tmd_system(1.0, 0.5, 20.0, tuning=hinf_tuning(0.05))
     direct = [np.linalg.solve(s.K - om**2 * s.M + 1j * om * s.C, [5.0, 0.0]) for om in (3.0, 4.47)]
     np.testing.assert_allclose(s.frf([3.0, 4.47], [5.0, 0.0]), direct, rtol=1e-13)
 
@@ -319,9 +325,9 @@ def augmented_expm(model, t, load, omega, x0, v0):
 @pytest.mark.parametrize("case", ["tmd", "building", "undamped resonance"])
 def test_response_against_augmented_expm(case):
     if case == "tmd":
-        model, load, omega = tmd_system(1.0, 0.5, 20.0, hinf_tuning(0.05, 0.0559)), np.array([5.0, 0.0]), 4.47
+        model, load, omega = tmd_system(1.0, 0.5, 20.0, tuning=hinf_tuning(0.05, 0.0559)), np.array([5.0, 0.0]), 4.47
     elif case == "building":
-        model = add_absorber(chopra_frame()[0], -1, 0.02 * 5 * 45359.237, 1e5, 2e3)
+        model = add_absorber(chopra_frame()[0], -1, 0.02 * 5 * 45359.237, k_a=1e5, c_a=2e3)
         load, omega = np.r_[np.zeros(4), 1e4, 0.0], 3.1
     else:
         model, omega = MDOF(M=np.eye(2), C=np.zeros((2, 2)), K=[[2.0, -1.0], [-1.0, 2.0]]), 1.0
@@ -330,12 +336,12 @@ def test_response_against_augmented_expm(case):
     x0, v0 = rng.normal(size=model.n) * 0.1, rng.normal(size=model.n) * 0.1
     t = np.array([0.0, 0.37, 3.0, 11.2, 50.0])
     ref = augmented_expm(model, t, load, omega, x0, v0)
-    got = model.response(t, load, omega, x0, v0)
+    got = model.response(t, load, omega, x0=x0, v0=v0)
     scale = np.max(np.abs(ref[:, : model.n]))
     np.testing.assert_allclose(got.x, ref[:, : model.n], atol=1e-9 * scale)
     np.testing.assert_allclose(got.v, ref[:, model.n : 2 * model.n], atol=1e-9 * np.max(np.abs(ref[:, model.n :])))
     if case != "undamped resonance":
-        other = model.response(t, load, omega, x0, v0, method="expm")
+        other = model.response(t, load, omega, x0=x0, v0=v0, method="expm")
         np.testing.assert_allclose(got.x, other.x, atol=1e-10 * scale)
 
 
@@ -347,7 +353,7 @@ def test_response_of_one_dof_is_the_papers_closed_form_and_tmd_matches_dop853():
     )
     np.testing.assert_allclose(one.x[:, 0], exact.x, atol=1e-11)
     np.testing.assert_allclose(one.v[:, 0], exact.v, atol=1e-10)
-    s = tmd_system(1.0, 0.5, 20.0, den_hartog(0.05))
+    s = tmd_system(1.0, 0.5, 20.0, tuning=den_hartog(0.05))
     got = s.response(t, [5.0, 0.0], 4.47, x0=[0.01, -0.02], v0=[0.0, 0.3])
     A = s.state_matrix
     b = np.concatenate([np.zeros(2), np.linalg.solve(s.M, [5.0, 0.0])])
@@ -368,9 +374,9 @@ def test_response_of_one_dof_is_the_papers_closed_form_and_tmd_matches_dop853():
         (lambda: hinf_tuning(0.05, zeta_p=0.6), "zeta_p", 0.6),
         (lambda: h2_tuning(0.05, zeta_p=-0.01), "zeta_p", -0.01),
         (lambda: h2_tuning(True), "mu", True),
-        (lambda: tmd_magnification(0.05, 0.0, 0.1, 1.0), "f", 0.0),
-        (lambda: tmd_magnification(0.05, 1.0, -0.1, 1.0), "zeta_a", -0.1),
-        (lambda: tmd_magnification(0.05, 1.0, 0.1, [1.0, -2.0]), "r", -2.0),
+        (lambda: tmd_magnification(0.05, 0.0, 0.1, r=1.0), "f", 0.0),
+        (lambda: tmd_magnification(0.05, 1.0, -0.1, r=1.0), "zeta_a", -0.1),
+        (lambda: tmd_magnification(0.05, 1.0, 0.1, r=[1.0, -2.0]), "r", -2.0),
         (lambda: tmd_peak(0.05, 1.0, float("nan")), "zeta_a", float("nan")),
         (lambda: mistuned_peak(den_hartog(0.05), -0.95), "stiffness_error", -0.95),
     ],
@@ -416,7 +422,7 @@ def test_bad_mdof_calls_are_named():
     with pytest.raises(ParameterError, match="x0"):
         s.response([0.0], [1.0, 0.0], 2.0, x0=[1.0])
     with pytest.raises(ParameterError, match="dof"):
-        add_absorber(s, 2, 1.0, 1.0, 0.0)
+        add_absorber(s, 2, 1.0, k_a=1.0, c_a=0.0)
     with pytest.raises(ParameterError, match="masses"):
         shear_building([1.0, 1.0], [1.0], 0.05)
     with pytest.raises(ParameterError, match="zeta"):

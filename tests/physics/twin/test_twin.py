@@ -99,7 +99,7 @@ def test_sampled_response_is_exact_for_piecewise_linear_force(params):
     t = np.arange(120) * h
     f = np.random.default_rng(3).standard_normal(t.size)
     x0, v0 = 0.2, -0.1
-    ours = sampled_response(osc, t, f, x0, v0)
+    ours = sampled_response(osc, t, f, x0=x0, v0=v0)
     z = np.array([x0, v0])
     ref = [z]
     for i in range(t.size - 1):
@@ -153,11 +153,11 @@ def test_synthetic_stiffness_history_matches_piecewise_solve():
     osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 20.0, 0.02)
     f = random_force(t, seed=5)
-    ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=10.0, drop=0.3)
+    ks = stiffness_profile(t, 20.0, 1e9, decline_rate=0.0, drop_time=10.0, drop=0.3)
     ours = synthetic_measurements(osc, t, f, stiffness=ks)
     before = sampled_response(osc, t[t < 10.0 + 1e-9], f[t < 10.0 + 1e-9])
     i = int(np.searchsorted(t, 10.0 - 1e-9))
-    after = sampled_response(Oscillator(m=1.0, c=0.5, k=14.0), t[i:], f[i:], before.x[i], before.v[i])
+    after = sampled_response(Oscillator(m=1.0, c=0.5, k=14.0), t[i:], f[i:], x0=before.x[i], v0=before.v[i])
     np.testing.assert_allclose(ours.x[: i + 1], before.x[: i + 1], rtol=0, atol=1e-13)
     np.testing.assert_allclose(ours.x[i:], after.x, rtol=0, atol=1e-10)
 
@@ -335,7 +335,7 @@ def test_identify_equals_curve_fit_on_the_full_model():
     fit = identify(**meas)
 
     def model(_, m, c, k, x0, v0):
-        return sampled_response(Oscillator(m=m, c=c, k=k), t, f, x0, v0).x
+        return sampled_response(Oscillator(m=m, c=c, k=k), t, f, x0=x0, v0=v0).x
 
     p, pcov = curve_fit(model, t, meas.x, p0=[1.1, 0.4, 21.0, 0.0, 0.0], xtol=1e-13, ftol=1e-13)
     np.testing.assert_allclose([fit.m, fit.c, fit.k, fit.x0, fit.v0], p, rtol=1e-6, atol=1e-8)
@@ -442,7 +442,7 @@ def _fault_record(noise=2e-3, seed=12, sensor="x"):
     osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 240.0, 0.02)
     f = random_force(t, seed=13)
-    ks = stiffness_profile(t, 20.0, 100.0, 0.0005, drop_time=170.0, drop=0.1)
+    ks = stiffness_profile(t, 20.0, 100.0, decline_rate=0.0005, drop_time=170.0, drop=0.1)
     return osc, t, ks, synthetic_measurements(osc, t, f, noise=noise, seed=seed, stiffness=ks, sensor=sensor)
 
 
@@ -489,9 +489,11 @@ def test_detection_experiment_tradeoff_is_monotone():
     osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 120.0, 0.02)
     f = random_force(t, seed=15)
-    ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=70.0, drop=0.03)
+    ks = stiffness_profile(t, 20.0, 1e9, decline_rate=0.0, drop_time=70.0, drop=0.03)
     thr = np.geomspace(3.0, 300.0, 9)
-    ex = detection_experiment(osc, t, f, ks, 70.0, noise=3e-3, runs=30, reference=osc, thresholds=thr)
+    ex = detection_experiment(
+        osc, t, f, stiffness=ks, change_time=70.0, noise=3e-3, runs=30, reference=osc, thresholds=thr
+    )
     fa, pd, delay = ex.false_alarm_probability, ex.detection_probability, ex.mean_delay
     assert np.all(np.diff(fa) <= 0) and fa[0] > 0.5 and fa[-1] == 0.0
     ok = np.isfinite(delay)

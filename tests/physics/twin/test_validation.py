@@ -72,7 +72,7 @@ def test_cubic_response_matches_solve_ivp():
     t = np.arange(0.0, 20.0, 0.02)
     force = twin.random_force(t, seed=2)
     k3 = 40.0
-    x = twin.cubic_response(OSC, k3, t, force)
+    x = twin.cubic_response(OSC, k3, t, force=force)
 
     def rhs(tt, z):
         f = np.interp(tt, t, force)
@@ -102,8 +102,8 @@ def test_predicted_coverage_is_the_dense_sandwich():
     true = np.diag(inv @ jac.T @ sigma @ jac @ inv)[:3]
     q = student_t.ppf(0.975, t.size - 5)
     expected = 2 * norm.cdf(q * np.sqrt(np.diag(inv)[:3] / true)) - 1
-    np.testing.assert_allclose(twin.predicted_coverage(OSC, t, force, colour), expected, rtol=1e-8)
-    np.testing.assert_allclose(twin.predicted_coverage(OSC, t, force, 0.0), 2 * norm.cdf(q) - 1, rtol=1e-10)
+    np.testing.assert_allclose(twin.predicted_coverage(OSC, t, force, colour=colour), expected, rtol=1e-8)
+    np.testing.assert_allclose(twin.predicted_coverage(OSC, t, force, colour=0.0), 2 * norm.cdf(q) - 1, rtol=1e-10)
 
 
 def test_response_jacobian_matches_identify_covariance():
@@ -195,8 +195,10 @@ def test_false_alarm_upper_bound_is_the_exact_poisson_bound():
 
     t = np.arange(0.0, 120.0, 0.02)
     force = twin.random_force(t, seed=3)
-    ks = twin.stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=60.0, drop=0.1)
-    ex = twin.detection_experiment(OSC, t, force, ks, 60.0, noise=2e-3, runs=4, reference=OSC, thresholds=[1.0, 40])
+    ks = twin.stiffness_profile(t, 20.0, 1e9, decline_rate=0.0, drop_time=60.0, drop=0.1)
+    ex = twin.detection_experiment(
+        OSC, t, force, stiffness=ks, change_time=60.0, noise=2e-3, runs=4, reference=OSC, thresholds=[1.0, 40]
+    )
     hours = ex.monitored_hours
     alarms = np.round(ex.false_alarm_rate * hours).astype(int)
     for k, upper in zip(alarms, ex.false_alarm_rate_upper, strict=True):

@@ -245,7 +245,7 @@ def count_sentence(st: ClaimsAuditStudy) -> str:
 def solver_sentence(st: ClaimsAuditStudy) -> str:
     """Whether any verdict depends on the solver: each claim judged on RK45's value instead of the exact one."""
     judged = [c for c in st.claims if c.paper_method_value not in ("", None) and c.exact_value is not None]
-    same = [c for c in judged if verdict(c.kind, c.paper_value, c.paper_method_value, _q(c)) == c.verdict]
+    same = [c for c in judged if verdict(c.kind, c.paper_value, c.paper_method_value, quantity=_q(c)) == c.verdict]
     numeric = [c for c in judged if isinstance(c.exact_value, float | int) and c.exact_value != 0]
     worst = max((abs(float(c.paper_method_value) / float(c.exact_value) - 1) for c in numeric), default=0.0)
     share = f"all {len(judged)}" if len(same) == len(judged) else f"{len(same)} of the {len(judged)}"

@@ -150,7 +150,7 @@ class ActiveStudy:
         return self.force.omega / self.osc.natural_frequency
 
 
-def loop_amplitude(osc: Oscillator, force: SineForce, kp: float, ki: float, kd: float) -> float:
+def loop_amplitude(osc: Oscillator, force: SineForce, kp: float, *, ki: float, kd: float) -> float:
     """Steady amplitude (m) of the unlimited loop ``kp + ki/s + kd s`` at the forcing: ``F0 |P / (1 + P C)|``."""
     w = force.omega
     C = kp + 1j * kd * w + (ki / (1j * w) if ki > 0.0 else 0.0)
@@ -184,7 +184,7 @@ def _tradeoff(osc: Oscillator, force: SineForce, p: Params, design: LQRResult, p
     rs = np.geomspace(1e-7, 1e2, n_r) * p.r_lqr / 1e-3
     amp, frc = [], []
     for ri in rs:
-        des = lqr(osc, p.q_x, p.q_v, float(ri))
+        des = lqr(osc, p.q_x, p.q_v, r=float(ri))
         X = steady_state(des.closed_loop, force).amplitude
         amp.append(X)
         frc.append(X * abs(des.K[0] + 1j * force.omega * des.K[1]) / math.sqrt(2.0))
@@ -242,7 +242,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     ex = exact_response(osc, force, t)
     xs["passive"], us["passive"], vs["passive"] = ex.x, np.zeros_like(t), ex.v
 
-    design = lqr(osc, p.q_x, p.q_v, p.r_lqr)
+    design = lqr(osc, p.q_x, p.q_v, r=p.r_lqr)
     loops = {
         "PD": _closed_loop("PD", osc, p.kp, p.kd, force),
         "LQR": _closed_loop("LQR", osc, float(design.K[0]), float(design.K[1]), force),
@@ -270,7 +270,7 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     designs = {}
     for name in DESIGNS:
         kx, ki, kv = gains[name]
-        X = loop_amplitude(osc, force, kx, ki, kv)
+        X = loop_amplitude(osc, force, kx, ki=ki, kd=kv)
         designs[name] = Design(
             name=name,
             kx=kx,

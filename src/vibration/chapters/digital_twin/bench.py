@@ -35,7 +35,7 @@ def _once(fn) -> float:
 
 def run(quick: bool) -> None:
     osc = Oscillator(m=1.0, c=0.5, k=20.0)
-    rec = simulated_test(osc, 60.0, 0.02, 0.05, seed=13)
+    rec = simulated_test(osc, 60.0, 0.02, noise=0.05, seed=13)
     t, f = rec.t, rec.force
     d = discretize(osc, 0.02)
 
@@ -51,7 +51,7 @@ def run(quick: bool) -> None:
     t_local = median_time(lambda: identify(t, f, x=rec.x, search="local"), reps)
 
     def full(_, m, c, k, x0, v0):
-        return sampled_response(Oscillator(m=m, c=c, k=k), t, f, x0, v0).x
+        return sampled_response(Oscillator(m=m, c=c, k=k), t, f, x0=x0, v0=v0).x
 
     t_cf = median_time(lambda: curve_fit(full, t, rec.x, p0=[1.2, 0.4, 22.0, 0.0, 0.0]), reps)
     table(
@@ -65,13 +65,15 @@ def run(quick: bool) -> None:
         ],
     )
     runs, det = (100, 20) if quick else (500, 100)
-    tt, force, clean = montecarlo.design(osc, 60.0, 0.02, 13, (0.1, 2.0), 2.0)
+    tt, force, clean = montecarlo.design(osc, 60.0, 0.02, seed=13, band=(0.1, 2.0), rms=2.0)
     sd = 0.05 * float(np.sqrt(np.mean(clean**2)))
-    t_batch = _once(lambda: montecarlo.experiment(osc, tt, force, clean, noise_sd=sd, runs=runs, seed=13,
+    t_batch = _once(lambda: montecarlo.experiment(osc, tt, force, clean=clean, noise_sd=sd, runs=runs, seed=13,
                                                   stream=0, noise=0.05))  # fmt: skip
     t_one = _once(lambda: [identify(tt, force, x=clean + sd * np.random.default_rng([13, 0, i]).standard_normal(
         tt.size), search="local") for i in range(20)]) * runs / 20  # fmt: skip
-    t_det = _once(lambda: detection_study(osc, osc, 240.0, 0.02, 0.05, 0.0005, 0.1, runs=det, seed=17))
+    t_det = _once(
+        lambda: detection_study(osc, osc, 240.0, dt=0.02, noise=0.05, decline_rate=0.0005, drop=0.1, runs=det, seed=17)
+    )
     t_grid = _once(lambda: estimate_grid(osc, seed=13))
     table(
         "twin: the chapter's Monte Carlo parts (single runs, wall time)",

@@ -71,7 +71,7 @@ def _grid(h: float, cells: int) -> float:
     return h / (cells - 0.5)
 
 
-def arl_markov(h: float, drift: float, mu: float = 0.0, cells: int = CELLS, scale: float = 1.0) -> float:
+def arl_markov(h: float, drift: float, mu: float = 0.0, *, cells: int = CELLS, scale: float = 1.0) -> float:
     """Average run length (samples) of the zero-start CUSUM for i.i.d. increments, Brook-Evans with ``cells`` cells.
 
     State j stands for g in [(j - 1/2) D, (j + 1/2) D) (state 0 holds the reset g = 0), D = h / (cells - 1/2).
@@ -94,16 +94,18 @@ def arl_markov(h: float, drift: float, mu: float = 0.0, cells: int = CELLS, scal
     return float(arl[0])
 
 
-def arl_theory(h: float, drift: float, mu: float = 0.0, cells: int = CELLS, scale: float = 1.0) -> tuple[float, float]:
+def arl_theory(
+    h: float, drift: float, mu: float = 0.0, *, cells: int = CELLS, scale: float = 1.0
+) -> tuple[float, float]:
     """ARL (samples) extrapolated from ``cells`` and ``2 cells`` cells (error ~ 1/N^2), and its discretisation error."""
-    a, b = arl_markov(h, drift, mu, cells, scale), arl_markov(h, drift, mu, 2 * cells, scale)
+    a, b = arl_markov(h, drift, mu, cells=cells, scale=scale), arl_markov(h, drift, mu, cells=2 * cells, scale=scale)
     arl, err = b + (b - a) / 3.0, abs(b - a) / 3.0
     if not (arl > 0 and err < 0.05 * arl and math.isfinite(arl)):
         return math.nan, math.nan  # beyond the chain's numerical reach (an astronomically long ARL)
     return arl, err
 
 
-def arl_estimated_sigma(h: float, drift: float, n_cal: int, nodes: int = 7) -> tuple[float, float]:
+def arl_estimated_sigma(h: float, drift: float, n_cal: int, *, nodes: int = 7) -> tuple[float, float]:
     """ARL (samples) when each record divides by its own noise variance estimated from ``n_cal`` samples.
 
     The calibration estimate is ``s^2 = sigma^2 chi2_(n_cal - 2) / (n_cal - 5)`` (two initial-state values fitted),
@@ -130,7 +132,7 @@ def arl_estimated_sigma(h: float, drift: float, n_cal: int, nodes: int = 7) -> t
     return 1.0 / rate, float(np.dot(w, errs)) / rate**2
 
 
-def alarm_distribution(mu, h: float, drift: float, cells: int = CELLS, scale: float = 1.0) -> np.ndarray:
+def alarm_distribution(mu, h: float, drift: float, *, cells: int = CELLS, scale: float = 1.0) -> np.ndarray:
     """P(first alarm at sample n) of the zero-start CUSUM driven by ``u_n = scale (Z_n + mu_n)^2``.
 
     ``mu`` (n,) is the response difference over the noise's standard deviation at each monitored sample.

@@ -134,7 +134,7 @@ class BatchFit:
     iterations: int  # Gauss-Newton iterations taken by the slowest run
 
 
-def fit_batch(t, forces, ys, start) -> BatchFit:
+def fit_batch(t, forces, ys, *, start) -> BatchFit:
     """Output-error least squares of each record (``forces[i]``, ``ys[i]``), all runs together.
 
     Gauss-Newton on (m, c, k, x0, v0) from ``start`` (an Oscillator, started from rest, or the five values),
@@ -202,7 +202,7 @@ def fit_batch(t, forces, ys, start) -> BatchFit:
     return BatchFit(params=p, stderr=se, ci95=ci, residual=res, iterations=it)
 
 
-def ar1(runs: int, n: int, colour: float, rngs) -> np.ndarray:
+def ar1(runs: int, n: int, colour: float, *, rngs) -> np.ndarray:
     """(runs, n) stationary AR(1) noise of unit variance and lag-one correlation ``colour``, one generator per run."""
     w = np.stack([g.standard_normal(n + 1) for g in rngs]) if runs else np.empty((0, n + 1))
     if colour == 0.0:
@@ -215,8 +215,8 @@ def experiment(
     osc: Oscillator,
     t,
     force,
-    clean,
     *,
+    clean,
     noise_sd: float,
     runs: int,
     seed: int,
@@ -238,13 +238,13 @@ def experiment(
     est, se, ci = np.empty((runs, 3)), np.empty((runs, 3)), np.empty((runs, 3, 2))
     white, inp = np.empty(runs), np.empty(runs)
     # every run starts from the fit of the noise-free record: a few steps from its own optimum
-    start = fit_batch(t, force, clean, osc).params[0]
+    start = fit_batch(t, force, clean, start=osc).params[0]
     for lo in range(0, runs, BATCH):
         hi = min(runs, lo + BATCH)
         rngs = [np.random.default_rng([seed, stream, i]) for i in range(lo, hi)]
-        ys = clean + noise_sd * ar1(hi - lo, n, colour, rngs)
+        ys = clean + noise_sd * ar1(hi - lo, n, colour, rngs=rngs)
         forces = force + force_sd * np.stack([g.standard_normal(n) for g in rngs]) if force_sd > 0.0 else force
-        fit = fit_batch(t, forces, ys, start)
+        fit = fit_batch(t, forces, ys, start=start)
         est[lo:hi], se[lo:hi], ci[lo:hi] = fit.params[:, :3], fit.stderr, fit.ci95
         fmat = np.broadcast_to(forces, (hi - lo, n))
         for i in range(hi - lo):
@@ -265,7 +265,7 @@ def experiment(
     )
 
 
-def design(osc: Oscillator, duration: float, dt: float, seed: int, band, rms: float):
+def design(osc: Oscillator, duration: float, dt: float, *, seed: int, band, rms: float):
     """The experiments' shared design: times (s), force (N) and noise-free displacement (m)."""
     n = int(round(duration / dt)) + 1
     t = np.arange(n) * dt
@@ -273,7 +273,7 @@ def design(osc: Oscillator, duration: float, dt: float, seed: int, band, rms: fl
     return t, force, synthetic_measurements(osc, t, force).x
 
 
-def agreement(osc: Oscillator, t, force, clean, noise_sd: float, seed: int, stream: int, runs: int = 3) -> float:
+def agreement(osc: Oscillator, t, force, *, clean, noise_sd: float, seed: int, stream: int, runs: int = 3) -> float:
     """Largest relative difference of m, c, k and their standard errors between the batch and :func:`identify`.
 
     Over the first ``runs`` runs of an experiment (same draws as :func:`experiment`).
@@ -281,8 +281,8 @@ def agreement(osc: Oscillator, t, force, clean, noise_sd: float, seed: int, stre
     if runs < 1:
         raise ParameterError(f"runs = {runs!r}: allowed at least 1")
     rngs = [np.random.default_rng([seed, stream, i]) for i in range(runs)]
-    ys = clean + noise_sd * ar1(runs, t.size, 0.0, rngs)
-    fit = fit_batch(t, force, ys, osc)
+    ys = clean + noise_sd * ar1(runs, t.size, 0.0, rngs=rngs)
+    fit = fit_batch(t, force, ys, start=osc)
     worst = 0.0
     for i in range(runs):
         ref = identify(t, force, x=ys[i], search="local")

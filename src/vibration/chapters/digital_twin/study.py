@@ -134,26 +134,34 @@ def _noise_sd(clean: np.ndarray, level: float) -> float:
 
 
 def _coverage(asset, p: Params, band, duration, noise, runs, stream) -> CoverageExperiment:
-    t, force, clean = montecarlo.design(asset, duration, p.dt, p.seed, band, p.F_rms)
+    t, force, clean = montecarlo.design(asset, duration, p.dt, seed=p.seed, band=band, rms=p.F_rms)
     return montecarlo.experiment(
-        asset, t, force, clean, noise_sd=_noise_sd(clean, noise), runs=runs, seed=p.seed, stream=stream, noise=noise
+        asset,
+        t,
+        force,
+        clean=clean,
+        noise_sd=_noise_sd(clean, noise),
+        runs=runs,
+        seed=p.seed,
+        stream=stream,
+        noise=noise,
     )
 
 
 def _assumptions(asset, p: Params, band, reference: CoverageExperiment) -> tuple[AssumptionStudy, float]:
     """The as-assumed experiment and one per broken assumption (own noise stream each); and the batch agreement."""
-    t, force, linear = montecarlo.design(asset, p.t_record, p.dt, p.seed, band, p.F_rms)
+    t, force, linear = montecarlo.design(asset, p.t_record, p.dt, seed=p.seed, band=band, rms=p.F_rms)
     x_rms = float(np.sqrt(np.mean(linear**2)))
     k3 = p.cubic * asset.k / x_rms**2
     f_rms = float(np.sqrt(np.mean(force**2)))
     experiments = {"as assumed": reference}
-    predicted = {"as assumed": predicted_coverage(asset, t, force, 0.0)}
-    for j, label, (uf, uy, uc, _uk), clean in assumption_records(asset, k3, t, force, linear):
+    predicted = {"as assumed": predicted_coverage(asset, t, force, colour=0.0)}
+    for j, label, (uf, uy, uc, _uk), clean in assumption_records(asset, k3, t, force=force, linear=linear):
         experiments[label] = montecarlo.experiment(
             asset,
             t,
             force,
-            clean,
+            clean=clean,
             noise_sd=uy * _noise_sd(clean, p.noise),
             runs=p.assumption_runs,
             seed=p.seed,
@@ -163,8 +171,10 @@ def _assumptions(asset, p: Params, band, reference: CoverageExperiment) -> tuple
             noise=uy * p.noise,
             case=label,
         )
-        predicted[label] = predicted_coverage(asset, t, force, p.colour) if uc else None
-    agree = montecarlo.agreement(asset, t, force, linear, _noise_sd(linear, p.noise), p.seed, 0, AGREEMENT_RUNS)
+        predicted[label] = predicted_coverage(asset, t, force, colour=p.colour) if uc else None
+    agree = montecarlo.agreement(
+        asset, t, force, clean=linear, noise_sd=_noise_sd(linear, p.noise), seed=p.seed, stream=0, runs=AGREEMENT_RUNS
+    )
     study = AssumptionStudy(
         experiments=experiments,
         predicted=predicted,
@@ -257,8 +267,8 @@ def _delay_theory(asset, p, fit, t, force, sd, threshold, drift) -> dict:
     """Markov-chain alarm-time distribution on each fault's noise-free residual (the faulty records' mean)."""
     start = 0.4 * p.t_monitor
     profiles = {
-        "sudden drop": stiffness_profile(t, asset.k, start, 0.0, drop_time=start, drop=p.drop),
-        "slow decline": stiffness_profile(t, asset.k, start, p.decline_rate),
+        "sudden drop": stiffness_profile(t, asset.k, start, decline_rate=0.0, drop_time=start, drop=p.drop),
+        "slow decline": stiffness_profile(t, asset.k, start, decline_rate=p.decline_rate),
     }
     out = {}
     for label, ks in profiles.items():
@@ -293,13 +303,17 @@ def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStu
     band = (F_LOW, p.f_max)
     # the sine check: rms F_rms at the band's upper edge, sampled at dt over 50 s
     n_check = int(round(CHECK_WINDOW / p.dt)) + 1
-    checks_raw = discretisation_checks(asset, math.sqrt(2.0) * p.F_rms, 2.0 * math.pi * p.f_max, CHECK_WINDOW, n_check)
+    checks_raw = discretisation_checks(
+        asset, math.sqrt(2.0) * p.F_rms, 2.0 * math.pi * p.f_max, t_end=CHECK_WINDOW, n=n_check
+    )
     checks = {name: (value, bound, value < ROUNDING) for name, (value, bound) in checks_raw.items()}
 
-    test = simulated_test(asset, p.t_record, p.dt, p.noise, seed=p.seed, band=band, rms=p.F_rms)
+    test = simulated_test(asset, p.t_record, p.dt, noise=p.noise, seed=p.seed, band=band, rms=p.F_rms)
     fit = identify(test.t, test.force, x=test.x)
     frf = frf_estimate(test.t, test.force, x=test.x)
-    long_test = simulated_test(asset, FRF_FACTOR * p.t_record, p.dt, p.noise, seed=p.seed + 5, band=band, rms=p.F_rms)
+    long_test = simulated_test(
+        asset, FRF_FACTOR * p.t_record, p.dt, noise=p.noise, seed=p.seed + 5, band=band, rms=p.F_rms
+    )
     half_power, circle = frequency_estimates(frf_estimate(long_test.t, long_test.force, x=long_test.x))
 
     coverage = _coverage(asset, p, band, p.t_record, p.noise, p.runs, 0)
@@ -310,7 +324,7 @@ def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStu
     )
     assumptions, agree = _assumptions(asset, p, band, coverage)
 
-    scenario = fault_scenario(p.k, p.t_monitor, p.dt, p.decline_rate, p.drop)
+    scenario = fault_scenario(p.k, p.t_monitor, p.dt, decline_rate=p.decline_rate, drop=p.drop)
     monitored = synthetic_measurements(
         asset,
         scenario.t,
@@ -327,10 +341,10 @@ def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStu
         asset,
         fit,
         p.t_monitor,
-        p.dt,
-        p.noise,
-        p.decline_rate,
-        p.drop,
+        dt=p.dt,
+        noise=p.noise,
+        decline_rate=p.decline_rate,
+        drop=p.drop,
         runs=p.detect_runs,
         seed=p.seed + 4,
         band=band,

@@ -27,11 +27,11 @@ def run(quick: bool, median_time: Callable, table: Callable) -> None:
     w = np.linspace(p["omega_sweep_min"], p["omega_sweep_max"], n_w)  # rad/s
 
     def both():
-        frequency_sweep(d, F0, w, "up")
-        frequency_sweep(d, F0, w, "down")
+        frequency_sweep(d, F0, w, direction="up")
+        frequency_sweep(d, F0, w, direction="down")
 
     t_compiled = median_time(both, 3 if quick else 7)
-    ref_up, ref_down = frequency_sweep(d, F0, w, "up"), frequency_sweep(d, F0, w, "down")
+    ref_up, ref_down = frequency_sweep(d, F0, w, direction="up"), frequency_sweep(d, F0, w, direction="down")
     rng = np.random.default_rng(0)
     n = 4 if quick else 16
     picks = rng.choice(np.arange(1, n_w), size=n, replace=False)
@@ -41,7 +41,7 @@ def run(quick: bool, median_time: Callable, table: Callable) -> None:
             order = np.argsort(w) if ref.direction == "up" else np.argsort(w)[::-1]
             for i in picks:  # the i-th step of the sweep, from the state the step before ended in
                 prev, cur = order[i - 1], order[i]
-                frequency_sweep(d, F0, [w[cur]], ref.direction, x0=float(ref.x_end[prev]),
+                frequency_sweep(d, F0, [w[cur]], direction=ref.direction, x0=float(ref.x_end[prev]),
                                 v0=float(ref.v_end[prev]), integrator="scipy")  # fmt: skip
 
     scale = n_w / n

@@ -162,8 +162,10 @@ def _lyapunov_runs(p: Params, ueda: Duffing) -> tuple[tuple[LyapunovEstimate, ..
         min(p.n_lyapunov, N_OTHER_RUNS, MAX_RK4_STEPS // spp - 300) for _, spp in LYAPUNOV_RUNS[1:]
     ]
     runs = tuple(
-        lyapunov_estimate(ueda, p.F0_ueda, p.omega_ueda, *start, n_periods=n, n_blocks=n_blocks, steps_per_period=spp)
-        for (start, spp), n in zip(LYAPUNOV_RUNS, lengths, strict=True)
+        lyapunov_estimate(
+            ueda, p.F0_ueda, p.omega_ueda, x0=x0, v0=v0, n_periods=n, n_blocks=n_blocks, steps_per_period=spp
+        )
+        for ((x0, v0), spp), n in zip(LYAPUNOV_RUNS, lengths, strict=True)
     )
     return runs, Pooled(**dict(zip(("mean", "standard_error", "chi2", "dof"), pooled_exponent(runs), strict=True)))
 
@@ -196,7 +198,7 @@ def chaos_study(params: Params | None = None, **values) -> ChaosStudy:
     return ChaosStudy(params=p, lyap_runs=runs, pooled=pooled)
 
 
-def chaos_map(p: Params, omegas=MAP_OMEGAS, forces=MAP_FORCES, n_periods: int = MAP_PERIODS) -> ChaosMap:
+def chaos_map(p: Params, omegas=MAP_OMEGAS, forces=MAP_FORCES, *, n_periods: int = MAP_PERIODS) -> ChaosMap:
     """Ueda's chaos map: :func:`chaos_study` (the sweep's study) at every forcing frequency and amplitude.
 
     ``p`` gives the damping ``c_ueda``; every point runs ``n_periods`` periods (at most 40 000 points).
@@ -226,15 +228,16 @@ def ueda_chaos(p: Params) -> dict:
     """
     ueda = Duffing(m=1.0, c=p.c_ueda, k=0.0, k3=1.0)
     w_u = p.omega_ueda
-    section_chaos = poincare_section(ueda, p.F0_ueda, w_u, *UEDA_START, n_periods=N_SECTION, n_transient=300)
-    section_periodic = poincare_section(ueda, p.F0_ueda_periodic, w_u, *UEDA_START, n_periods=200, n_transient=1000)
+    (x_u, v_u), (x_main, v_main) = UEDA_START, LYAPUNOV_RUNS[0][0]
+    section_chaos = poincare_section(ueda, p.F0_ueda, w_u, x0=x_u, v0=v_u, n_periods=N_SECTION, n_transient=300)
+    section_periodic = poincare_section(ueda, p.F0_ueda_periodic, w_u, x0=x_u, v0=v_u, n_periods=200, n_transient=1000)
     n_blocks = min(20, p.n_lyapunov // 10)
     runs, pooled = _lyapunov_runs(p, ueda)
-    partner = lyapunov_estimate(ueda, p.F0_ueda, w_u, *LYAPUNOV_RUNS[0][0], n_periods=p.n_lyapunov, n_blocks=n_blocks,
-                                method="benettin")  # fmt: skip
+    partner = lyapunov_estimate(ueda, p.F0_ueda, w_u, x0=x_main, v0=v_main, n_periods=p.n_lyapunov,
+                                n_blocks=n_blocks, method="benettin")  # fmt: skip
     kw = {"n_periods": min(p.n_lyapunov, N_PERIODIC), "n_transient": 300}
-    per_qr = lyapunov_qr(ueda, p.F0_ueda_periodic, p.omega_ueda, *UEDA_START, **kw)
-    per_ben = lyapunov_benettin(ueda, p.F0_ueda_periodic, p.omega_ueda, *UEDA_START, **kw)
+    per_qr = lyapunov_qr(ueda, p.F0_ueda_periodic, p.omega_ueda, x0=x_u, v0=v_u, **kw)
+    per_ben = lyapunov_benettin(ueda, p.F0_ueda_periodic, p.omega_ueda, x0=x_u, v0=v_u, **kw)
     floq = math.nan
     if np.ptp(section_periodic, axis=0).max() < 1e-6:  # period 1: its Floquet multipliers give the exponent
         orb = periodic_orbit(

@@ -34,7 +34,7 @@ def _k3(case: SpringCase) -> str:
     return k3_text(case.duffing.k3)
 
 
-def plot_curve(ax, omega, amplitude, stable, color, label) -> bool:
+def plot_curve(ax, omega, amplitude, *, stable, color, label) -> bool:
     """Response curve, stable parts solid and unstable parts dashed; returns whether a dashed part was drawn."""
     breaks = np.flatnonzero(np.diff(stable.astype(int))) + 1
     first = {True: True, False: True}
@@ -80,8 +80,8 @@ def frequency_response_figure(study: DuffingStudy) -> Captioned:
         ax.plot(study.linear_omega, study.linear_amplitude_curve, color=lin["color"], ls=lin["linestyle"], lw=0.9,
                 label="linear spring")  # fmt: skip
         drew_unstable[case.label] = plot_curve(
-            ax, case.curve_omega, case.curve_amplitude, case.curve_stable, case_style(case.label)["color"],
-            minus(f"$k_3$ = {case.duffing.k3:g} N/m$^3$"),
+            ax, case.curve_omega, case.curve_amplitude, stable=case.curve_stable, color=case_style(case.label)["color"],
+            label=minus(f"$k_3$ = {case.duffing.k3:g} N/m$^3$"),
         )  # fmt: skip
         a_bb = np.linspace(0.0, 1.1 * np.nanmax(case.curve_amplitude), 200)
         ax.plot(backbone(case.duffing, a_bb), a_bb, color="k", lw=0.8, ls=":", label="backbone")
@@ -132,8 +132,8 @@ def sweep_figure(study: DuffingStudy) -> Captioned:
     any_dashed, any_branch = False, False
     for ax, case in zip(axes, study.cases, strict=True):
         col = case_style(case.label)["color"]
-        any_dashed |= plot_curve(ax, case.curve_omega, case.curve_amplitude, case.curve_stable, CURVE_GREY,
-                                 "one harmonic")  # fmt: skip
+        any_dashed |= plot_curve(ax, case.curve_omega, case.curve_amplitude, stable=case.curve_stable, color=CURVE_GREY,
+                                 label="one harmonic")  # fmt: skip
         if case.branch is not None:
             any_branch = True
             b = case.branch

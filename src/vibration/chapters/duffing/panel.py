@@ -68,6 +68,7 @@ def hb_panel_html(
     m: float = 1.0,
     c: float = 0.5,
     k: float = 20.0,
+    *,
     k3: float = 2.0,
     F0: float = 5.0,
     omega_max: float | None = None,
@@ -171,7 +172,12 @@ class HBExplorer:
         ax.clear()
         w, a, st = response_curve(d, F0, p["omega_max"], n=801)
         plot_curve(
-            ax, w, a, st, _colors()["hardening" if d.k3 >= 0 else "softening"], minus(f"$k_3$ = {d.k3:.3g} N/m$^3$")
+            ax,
+            w,
+            a,
+            stable=st,
+            color=_colors()["hardening" if d.k3 >= 0 else "softening"],
+            label=minus(f"$k_3$ = {d.k3:.3g} N/m$^3$"),
         )
         a_bb = np.linspace(0.0, 1.1 * np.nanmax(a), 200)
         ax.plot(backbone(d, a_bb), a_bb, "k:", lw=0.8, label="backbone")
@@ -193,7 +199,7 @@ class HBExplorer:
         return data
 
 
-def hb_explorer(m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=None, k3_range=None, F0_max=None) -> HBExplorer:
+def hb_explorer(m=1.0, c=0.5, k=20.0, *, k3=2.0, F0=5.0, omega_max=None, k3_range=None, F0_max=None) -> HBExplorer:
     """JupyterLab explorer of the harmonic-balance curve (k3 in N/m^3 and F0 in N sliders).
 
     Parameters are those of :func:`hb_panel_html` (kg, N s/m, N/m, N/m^3, N, rad/s).

@@ -15,8 +15,8 @@ SCHEMA = declared(
     together=(
         paper_window,
         ordered("omega_sweep_min", "omega_sweep_max", "rad/s"),
-        above("c_nominal", 0.0, "N s/m", "the slow flow and its folds need damping"),
-        below("k3_soft", 0.0, "N/m³", "a softening spring softens"),
+        above("c_nominal", 0.0, "N s/m", why="the slow flow and its folds need damping"),
+        below("k3_soft", 0.0, "N/m³", why="a softening spring softens"),
     ),
 )
 

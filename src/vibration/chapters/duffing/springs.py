@@ -225,7 +225,7 @@ def _spring(label: str, d: Duffing, F0: float, ws: np.ndarray, omega_max: float)
     with np.errstate(invalid="ignore"):
         res = np.abs(a_c * a_c * (s_ * s_ + (d.c * w_c) ** 2) - F0 * F0) / (F0 * F0)
     amp_res = float(np.nanmax(res)) if res.size else 0.0
-    up, down = frequency_sweep(d, F0, ws, "up"), frequency_sweep(d, F0, ws, "down")
+    up, down = frequency_sweep(d, F0, ws, direction="up"), frequency_sweep(d, F0, ws, direction="down")
     jump_up, jump_down = _fold_jump(d, F0, f, up), _fold_jump(d, F0, f, down)
     checks, liou, branch = [], 0.0, None
     if f.bistable:
@@ -238,7 +238,7 @@ def _spring(label: str, d: Duffing, F0: float, ws: np.ndarray, omega_max: float)
                 if a > f.peak_amplitude * (1 + 1e-9):
                     continue
                 try:
-                    orb = periodic_orbit(d, F0, w, a)
+                    orb = periodic_orbit(d, F0, w, amplitude_guess=a)
                 except ParameterError:
                     checks.append(_stability_check(w, a, st, None))
                     continue
@@ -246,7 +246,9 @@ def _spring(label: str, d: Duffing, F0: float, ws: np.ndarray, omega_max: float)
                 liou = max(liou, abs(abs(np.prod(orb.multipliers)) / math.exp(-d.c * T / d.m) - 1))
                 checks.append(_stability_check(w, a, st, orb))
         width = f.omega_high - f.omega_low  # continue the periodic orbit from below the band to above it
-        branch = continue_orbits(d, F0, f.omega_low - 0.5 * width, f.omega_high + 0.5 * width, step=CONTINUATION_STEP)
+        branch = continue_orbits(
+            d, F0, f.omega_low - 0.5 * width, omega_end=f.omega_high + 0.5 * width, step=CONTINUATION_STEP
+        )
     case = SpringCase(
         label=label,
         duffing=d,
@@ -281,7 +283,7 @@ def _fold_rows(cases) -> tuple[FoldRow, ...]:
 
 def _sweep_to(d: Duffing, F0: float, w_from: float, w_to: float, direction: str) -> float:
     """Amplitude at ``w_to`` after a sweep from ``w_from`` (60 steps), m."""
-    return float(frequency_sweep(d, F0, np.linspace(w_from, w_to, 60), direction).amplitude[-1])
+    return float(frequency_sweep(d, F0, np.linspace(w_from, w_to, 60), direction=direction).amplitude[-1])
 
 
 def _history(p: Params, hard: SpringCase) -> tuple[HistoryRow, ...]:
@@ -300,7 +302,7 @@ def _history(p: Params, hard: SpringCase) -> tuple[HistoryRow, ...]:
                 linear=hb_amplitudes(lin, F0, w)[0][0],
                 hb_low=min(stable),
                 hb_high=max(stable) if len(stable) > 1 else math.nan,
-                rest=float(frequency_sweep(d, F0, [w], "up").amplitude[0]),
+                rest=float(frequency_sweep(d, F0, [w], direction="up").amplitude[0]),
                 up=_sweep_to(d, F0, min(p.omega_sweep_min, 0.8 * w), w, "up"),
                 down=_sweep_to(d, F0, max(p.omega_sweep_max, 1.2 * w), w, "down"),
             )

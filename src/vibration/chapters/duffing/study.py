@@ -202,7 +202,7 @@ def duffing_study(params: Params | None = None, **values) -> DuffingStudy:
     x_lin = exact_response(
         Oscillator(m=p.m, c=p.c_nominal, k=p.k), SineForce(F0=p.F0, omega=p.omega_res), t
     ).x  # Part I's form
-    x_duf, _ = duffing_response(hard.duffing, p.F0, p.omega_res, t, sine=True)
+    x_duf, _ = duffing_response(hard.duffing, p.F0, p.omega_res, t=t, sine=True)
 
     chaos = ueda_chaos(p)
     fold_mu = [abs(f.multiplier - 1.0) for c in cases if c.branch for f in c.branch.folds]

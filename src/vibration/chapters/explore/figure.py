@@ -66,7 +66,7 @@ def omega_range(omega_n: float, omega: float) -> tuple[float, float]:
     return top, step
 
 
-def omega_grid(omega_n: float, zeta: float, omega_max: float, n: int = 1201) -> np.ndarray:
+def omega_grid(omega_n: float, zeta: float, omega_max: float, *, n: int = 1201) -> np.ndarray:
     """Frequencies (rad/s) at which the magnification curve is drawn (display sampling only).
 
     A uniform grid on ``[0, omega_max]`` plus points clustered within a few

@@ -124,11 +124,11 @@ def slider_panel_html(
     m: float = 1.0,
     k: float = 20.0,
     F0: float = 5.0,
+    *,
     c: float = 0.5,
     omega: float = 4.47,
     t_end: float = 50.0,
     n_points: int = 2001,
-    *,
     panel_id: str | None = None,
 ) -> str:
     """Self-contained HTML fragment with forcing-frequency and damping sliders.

@@ -61,7 +61,7 @@ class Readout:
         return dataclasses.asdict(self)
 
 
-def readout(osc: Oscillator, force: SineForce, t_end: float, n_points: int = N_POINTS, response=None) -> Readout:
+def readout(osc: Oscillator, force: SineForce, t_end: float, *, n_points: int = N_POINTS, response=None) -> Readout:
     """The explorer's readout for ``osc`` forced by ``force`` from rest over ``[0, t_end]`` s.
 
     ``response`` may pass the exact response already computed on ``linspace(0, t_end, n_points)``.

@@ -342,12 +342,12 @@ class Explorer(widgets.VBox):
         t = np.linspace(0.0, t_end, self.n_points)
         with np.errstate(over="ignore", invalid="ignore", under="ignore", divide="ignore"):
             resp = exact_response(osc, force, t)
-            vals = readout(osc, force, t_end, self.n_points, response=resp).as_dict()
+            vals = readout(osc, force, t_end, n_points=self.n_points, response=resp).as_dict()
             ss = steady_state(osc, force)
             top, step = omega_range(vals["omega_n"], force.omega)
             grid = omega_grid(vals["omega_n"], osc.damping_ratio, top)
             curve = magnification(osc, grid)
-            paper = simulate(osc, force, t_end, self.n_points) if rk45 else None
+            paper = simulate(osc, force, t_end, n_points=self.n_points) if rk45 else None
         if paper is not None:
             vals["rk45_max_error"] = float(np.max(np.abs(paper.x - resp.x)))
             vals["rk45_nfev"] = paper.nfev

@@ -269,7 +269,7 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
     if 0.0 < z < ZETA_DECREMENT_MAX:
         t_free = 6 * 2 * np.pi / osc.damped_natural_frequency
         decay = simulate(
-            osc, SineForce(F0=0.0, omega=0.0), t_free, 20001, x0=1.0, method="DOP853", rtol=1e-10, atol=1e-13
+            osc, SineForce(F0=0.0, omega=0.0), t_free, n_points=20001, x0=1.0, method="DOP853", rtol=1e-10, atol=1e-13
         )
         zeta_ld = log_decrement(decay.t, decay.x)[1]
     name = case_name(sc.scenario_id)
@@ -311,9 +311,9 @@ def _design(p: Params, study_t: np.ndarray, cases: tuple[DampingCase, ...]) -> t
     omegas = np.linspace(p.omega_max / p.n_omega, p.omega_max, p.n_omega)
     dampings = np.geomspace(p.c_min, p.c_max, p.n_damping)
     n = study_t.size
-    peaks = peak_displacement_map(p.m, p.k, p.F0, omegas, dampings, p.t_end, n)
+    peaks = peak_displacement_map(p.m, p.k, p.F0, omegas=omegas, dampings=dampings, t_end=p.t_end, n_points=n)
     cs = [c.c for c in cases]
-    at = peak_displacement_map(p.m, p.k, p.F0, [p.omega_res], cs, p.t_end, n)[:, 0]
+    at = peak_displacement_map(p.m, p.k, p.F0, omegas=[p.omega_res], dampings=cs, t_end=p.t_end, n_points=n)[:, 0]
     force = SineForce(F0=p.F0, omega=p.omega_res)
     direct = [float(np.max(np.abs(exact_response(Oscillator(m=p.m, c=c, k=p.k), force, study_t).x))) for c in cs]
     checks = [
@@ -350,7 +350,17 @@ def frequency_response_study(params: Params | None = None, **values) -> Frequenc
     vibration.physics.model.ParameterError: c_min = 0.0 N s/m is out of range: allowed c_min >= 0.001 N s/m, ...
     """
     p = params if params is not None else Params.from_values(values)
-    scenarios = scenarios_from(p.m, p.k, p.F0, p.t_end, p.omega_ref, p.omega_res, p.c_low, p.c_nominal, p.c_high)
+    scenarios = scenarios_from(
+        p.m,
+        p.k,
+        p.F0,
+        t_end=p.t_end,
+        omega_ref=p.omega_ref,
+        omega_res=p.omega_res,
+        c_low=p.c_low,
+        c_nominal=p.c_nominal,
+        c_high=p.c_high,
+    )
     wn = scenarios["resonance"].oscillator.natural_frequency
     omegas = np.geomspace(wn / SPAN, wn * SPAN, N_CURVE)
     cases, checks = [], []
@@ -379,7 +389,7 @@ def frequency_response_study(params: Params | None = None, **values) -> Frequenc
     )
     fine = np.linspace(0.0, p.t_end, 5 * (p.n_points - 1) + 1)
     eb_exact = energy_balance(osc, force, exact_response(osc, force, fine))
-    eb_paper = energy_balance(osc, force, simulate(osc, force, p.t_end, fine.size))
+    eb_paper = energy_balance(osc, force, simulate(osc, force, p.t_end, n_points=fine.size))
     checks.append(
         Check(
             check="energy balance W − D − ΔE on the exact response, resonance case (relative to max W)",

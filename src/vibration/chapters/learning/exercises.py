@@ -19,7 +19,7 @@ def values(params: Params) -> dict[str, object]:
     p = params
     plant = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
     wn = plant.natural_frequency
-    gains = lqr(plant, 1.0, 1.0, p.r_weight).K  # q_x = q_v = 1
+    gains = lqr(plant, 1.0, 1.0, r=p.r_weight).K  # q_x = q_v = 1
     return {
         **p.as_dict(),
         "wn": wn,

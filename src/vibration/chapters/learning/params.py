@@ -38,7 +38,7 @@ SCHEMA = declared(
     __package__,
     together=(
         ordered("c_semi_min", "c_semi_max", "N s/m"),
-        at_least("c_nominal", 0.0, "N s/m", "a learner needs a passive plant"),
+        at_least("c_nominal", 0.0, "N s/m", why="a learner needs a passive plant"),
         sampling,
         sampling_step,
     ),

@@ -247,10 +247,10 @@ def learning_study(params: Params | None = None, **values) -> LearningStudy:
         id_design.fixed_gains,
     )
     semi_gains = ([0.0, p.c_nominal], [0.0, passive_semi.c], [0.0, ref.gains[1]], ref.gains, learned_semi.gains)
-    active = compare_controllers(res_task, dict(zip(ACTIVE, active_gains, strict=True)), p.n_eval, p.seed)
-    semi = compare_controllers(semi_task, dict(zip(SEMI, semi_gains, strict=True)), p.n_eval, p.seed)
+    active = compare_controllers(res_task, dict(zip(ACTIVE, active_gains, strict=True)), p.n_eval, seed=p.seed)
+    semi = compare_controllers(semi_task, dict(zip(SEMI, semi_gains, strict=True)), p.n_eval, seed=p.seed)
     laws = dict(zip(ROBUST, (ref.gains, learned_res.gains, fixed.gains), strict=True))
-    robust = robustness_study(res_task, laws, ROBUST_EPISODES, p.seed)
+    robust = robustness_study(res_task, laws, ROBUST_EPISODES, seed=p.seed)
     return LearningStudy(
         params=p,
         task=task,

@@ -172,7 +172,7 @@ def _realised(cmp: Comparison, i: int) -> str:
     return f"K = [{num(g[0], 3)}, {num(g[1], 3)}]"
 
 
-def comparison_table(cmp: Comparison, caption: str, name: str, reference: int) -> Table:
+def comparison_table(cmp: Comparison, caption: str, name: str, *, reference: int) -> Table:
     """Cost, peak and RMS displacement and control effort of each controller on the same episodes."""
     rows = []
     for i, run in enumerate(cmp.runs):

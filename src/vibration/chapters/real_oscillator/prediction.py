@@ -131,7 +131,7 @@ def _late_amplitudes(t, sims, omega, periods) -> np.ndarray:
     return np.hypot(coef[0], coef[1])
 
 
-def simulated_amplitudes(pooled: PooledDecayFit, runs, gains, periods: int) -> np.ndarray:
+def simulated_amplitudes(pooled: PooledDecayFit, runs, gains, *, periods: int) -> np.ndarray:
     """Late one-harmonic amplitude (rad) of each driven run simulated with a pooled law at each gain.
 
     Each run starts from its own measured angle and velocity about the centre of its first drive period and
@@ -181,7 +181,7 @@ def _simulate(pooled, cal, rest, gain, params: Params) -> dict:
     runs = list(dict.fromkeys([*cal, *rest]))
     factors = np.array(GAIN_FACTORS, dtype=float)
     try:
-        amp = simulated_amplitudes(pooled, runs, gain * factors, params.periods)
+        amp = simulated_amplitudes(pooled, runs, gain * factors, periods=params.periods)
     except ParameterError:
         return {}
     meas = np.array([d.steady.amplitude for d in runs])
@@ -199,7 +199,7 @@ def _simulate(pooled, cal, rest, gain, params: Params) -> dict:
             best = float(np.clip(-c1 / (2.0 * c2), lf[j - 1], lf[j + 1]))
     g_sim = float(gain * math.exp(best))
     try:
-        final = simulated_amplitudes(pooled, [runs[i] for i in ir], [g_sim], params.periods)[:, 0]
+        final = simulated_amplitudes(pooled, [runs[i] for i in ir], [g_sim], periods=params.periods)[:, 0]
     except ParameterError:
         return {}
     rel = final / meas[ir] - 1.0

@@ -143,7 +143,7 @@ def reproduce(scenarios: dict[str, Scenario], n_points: int, params: Params) -> 
     for sid, sc in scenarios.items():
         twin = next((run for run in runs if same_run(scenarios[run[0]], sc)), None)
         if twin is None:
-            p = simulate(sc.oscillator, sc.force, sc.t_end, n_points, sc.x0, sc.v0)
+            p = simulate(sc.oscillator, sc.force, sc.t_end, n_points=n_points, x0=sc.x0, v0=sc.v0)
             paper[sid], exact[sid] = p, exact_response(sc.oscillator, sc.force, p.t, x0=sc.x0, v0=sc.v0)
             runs.append((sid,))
         else:

@@ -186,7 +186,7 @@ class SolverStudy:
 def _ladder_run(osc: Oscillator, force: SineForce, t_end: float, n: int, exact: Response, method: str, rtol: float):
     peak = float(np.max(np.abs(exact.x)))
     start = time.perf_counter()
-    r = simulate(osc, force, t_end, n, method=method, rtol=rtol, atol=atol_for(rtol))
+    r = simulate(osc, force, t_end, n_points=n, method=method, rtol=rtol, atol=atol_for(rtol))
     elapsed = time.perf_counter() - start
     err_x = float(np.max(np.abs(r.x - exact.x)))
     return LadderRun(
@@ -251,7 +251,8 @@ def solver_accuracy_study(params: Params | None = None, **values) -> SolverStudy
     late_exact = float(np.max(np.abs(exact.x[t >= (1 - LATE) * p.t_end])))
     period = 2.0 * math.pi / p.omega_res
     own = [
-        simulate(osc, force, p.t_end, N_POINTS_MAX, rtol=rtol, atol=atol_for(rtol), t_eval=False) for rtol in STEP_RTOLS
+        simulate(osc, force, p.t_end, n_points=N_POINTS_MAX, rtol=rtol, atol=atol_for(rtol), t_eval=False)
+        for rtol in STEP_RTOLS
     ]
     steps = tuple(_own_steps(r, rtol, p.t_end, period, late_exact) for r, rtol in zip(own, STEP_RTOLS, strict=True))
     return SolverStudy(

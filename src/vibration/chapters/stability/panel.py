@@ -45,7 +45,7 @@ STYLES = {
 
 
 def stability_panel_html(
-    m: float = 1.0, k: float = 20.0, zeta: float = 0.0559, omega: float = 4.47, *, panel_id: str | None = None
+    m: float = 1.0, k: float = 20.0, zeta: float = 0.0559, *, omega: float = 4.47, panel_id: str | None = None
 ) -> str:
     """Self-contained HTML + JavaScript panel: damping-ratio (log) and frequency sliders.
 
@@ -127,7 +127,7 @@ class StabilityExplorer(KitExplorer):
     def __init__(self, m: float = 1.0, k: float = 20.0, zeta: float = 0.0559, omega: float = 4.47) -> None:
         import ipywidgets as widgets
 
-        stability_panel_html(m, k, zeta, omega, panel_id="check")  # validates the inputs
+        stability_panel_html(m, k, zeta, omega=omega, panel_id="check")  # validates the inputs
         self.m, self.k = float(m), float(k)
         wn = math.sqrt(k / m)
         self.zeta_slider = widgets.FloatLogSlider(
@@ -192,7 +192,7 @@ class StabilityExplorer(KitExplorer):
         )
 
     def panel_html(self) -> str:
-        return stability_panel_html(self.m, self.k, float(self.zeta_slider.value), float(self.omega_slider.value))
+        return stability_panel_html(self.m, self.k, float(self.zeta_slider.value), omega=float(self.omega_slider.value))
 
     def summary(self) -> str:
         return (

@@ -39,7 +39,7 @@ R_GRID = np.linspace(0.0, 3.0, 20001)
 
 
 def _grid_peak(mu: float, f: float, za: float, zp: float) -> float:
-    return float(np.max(tmd_magnification(mu, f, za, R_GRID, zp)))
+    return float(np.max(tmd_magnification(mu, f, za, r=R_GRID, zeta_p=zp)))
 
 
 def _naive_hinf(mu: float, zp: float) -> tuple[float, float]:
@@ -59,8 +59,8 @@ def _naive_hinf(mu: float, zp: float) -> tuple[float, float]:
 def _bench_peak(quick: bool) -> None:
     t = hinf_tuning(MU, ZETA_P)
     f, za = t.f * 1.01, t.zeta_a
-    exact = tmd_peak(MU, f, za, ZETA_P)
-    t_exact = median_time(lambda: tmd_peak(MU, f, za, ZETA_P), 100 if quick else 400)
+    exact = tmd_peak(MU, f, za, zeta_p=ZETA_P)
+    t_exact = median_time(lambda: tmd_peak(MU, f, za, zeta_p=ZETA_P), 100 if quick else 400)
     t_grid = median_time(lambda: _grid_peak(MU, f, za, ZETA_P), 20 if quick else 80)
     err = abs(_grid_peak(MU, f, za, ZETA_P) / exact - 1.0)
     table(
@@ -78,7 +78,7 @@ def _bench_hinf(quick: bool) -> None:
     t_opt = median_time(lambda: hinf_tuning(MU, ZETA_P), k)
     t_naive = median_time(lambda: _naive_hinf(MU, ZETA_P), k)
     f, za = _naive_hinf(MU, ZETA_P)
-    excess = tmd_peak(MU, f, za, ZETA_P) / t.peak - 1.0
+    excess = tmd_peak(MU, f, za, zeta_p=ZETA_P) / t.peak - 1.0
     table(
         "numerical H-inf optimum for the paper's damped primary (mu 0.05)",
         [
@@ -92,7 +92,7 @@ def _bench_frf(quick: bool) -> None:
     kips, inch, g = 4448.2216152605, 0.0254, 9.80665
     b = shear_building([100 * kips / g] * 5, [31.54 * kips / inch] * 5, 0.05)
     a = first_mode_absorber(b, 0.02)
-    bt = add_absorber(b, -1, a.m_a, a.k_a, a.c_a)
+    bt = add_absorber(b, -1, a.m_a, k_a=a.k_a, c_a=a.c_a)
     w1 = float(b.natural_frequencies[0])
     w = np.linspace(0.3 * w1, 1.8 * w1, 3001)
     load = np.r_[np.zeros(b.n - 1), 1.0, 0.0]
@@ -123,7 +123,7 @@ def _bench_frf(quick: bool) -> None:
 
 def _bench_response(quick: bool) -> None:
     m, c, k, F0, w = 1.0, 0.5, 20.0, 5.0, 4.47
-    model = tmd_system(m, c, k, hinf_tuning(MU, ZETA_P))
+    model = tmd_system(m, c, k, tuning=hinf_tuning(MU, ZETA_P))
     t = np.linspace(0.0, 50.0, 5001)
     p = np.array([F0, 0.0])
     A = model.state_matrix

@@ -100,7 +100,7 @@ def fixed_points_figure(st: TMDStudy) -> Captioned:
     def draw(ax, y, **kw):
         ax.plot(r, np.where(y > top, np.nan, y), **kw)
 
-    draw(left, tmd_magnification(mu, t.f, 0.0, r), color=GREY, linestyle="--", label=r"$\zeta_a = 0$")
+    draw(left, tmd_magnification(mu, t.f, 0.0, r=r), color=GREY, linestyle="--", label=r"$\zeta_a = 0$")
     locked = np.abs(1.0 / (1.0 - (1.0 + mu) * r * r))
     draw(left, locked, color="black", linestyle=":", label=r"$\zeta_a \to \infty$")
     dampings = {"low": t.zeta_a / 3, "Den Hartog": t.zeta_a, "high": 3 * t.zeta_a}
@@ -108,8 +108,8 @@ def fixed_points_figure(st: TMDStudy) -> Captioned:
               "high": dict(color=GREY, linestyle="--")}  # fmt: skip
     through = True
     for key, za in dampings.items():
-        draw(right, tmd_magnification(mu, t.f, za, r), label=rf"$\zeta_a$ = {sig(za)}", **styles[key])
-        through &= bool(np.allclose(tmd_magnification(mu, t.f, za, rp), hp, rtol=1e-9))
+        draw(right, tmd_magnification(mu, t.f, za, r=r), label=rf"$\zeta_a$ = {sig(za)}", **styles[key])
+        through &= bool(np.allclose(tmd_magnification(mu, t.f, za, r=rp), hp, rtol=1e-9))
     for ax in (left, right):
         ax.plot(rp, hp, "o", color="black", ms=5, label="fixed points P, Q", zorder=5)
         ax.set_xlim(*R_WINDOW)
@@ -155,7 +155,7 @@ def magnification_figure(st: TMDStudy) -> Captioned:
     tun = _actual_tunings(st)
     with np.errstate(divide="ignore"):
         bare = 1.0 / np.hypot((1 - r) * (1 + r), 2 * st.zeta_p * r)
-    curves = {n: tmd_magnification(st.mu, tun[n].f, tun[n].zeta_a, r, st.zeta_p) for n in TUNINGS}
+    curves = {n: tmd_magnification(st.mu, tun[n].f, tun[n].zeta_a, r=r, zeta_p=st.zeta_p) for n in TUNINGS}
     peak = max(float(np.max(c)) for c in curves.values())
     top = 1.75 * min(float(np.max(bare)), 2.5 * peak)  # room above the curves for the legends
     fig, axes = figure(1, 2, height=3.4, sharey=True)

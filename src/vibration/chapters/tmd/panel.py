@@ -70,7 +70,7 @@ def _slider_values(mu, f, zeta_a, zeta_p) -> tuple[float, float, float, float]:
     return mu, f, zeta_a, zeta_p
 
 
-def tmd_panel_html(mu=0.05, f=None, zeta_a=None, zeta_p=0.0, *, panel_id: str | None = None) -> str:
+def tmd_panel_html(mu=0.05, f=None, zeta_a=None, *, zeta_p=0.0, panel_id: str | None = None) -> str:
     """Self-contained HTML + JavaScript panel: μ, f, ζ_a and ζ_p sliders over the magnification curve.
 
     Draws |X_p|/(F0/k_p) against r = ω/ω_p for the slider values, the H∞ tuning of the
@@ -233,10 +233,10 @@ class TMDExplorer(KitExplorer):
             "f": f,
             "zeta_a": za,
             "zeta_p": zp,
-            "peak": tmd_peak(mu, f, za, zp),
+            "peak": tmd_peak(mu, f, za, zeta_p=zp),
             "fixed": (rp, hp),
             "rules": rules,
-            "rule_peaks": {n: tmd_peak(mu, t.f, t.zeta_a, zp) for n, t in rules.items()},
+            "rule_peaks": {n: tmd_peak(mu, t.f, t.zeta_a, zeta_p=zp) for n, t in rules.items()},
         }
 
     def figure(self, v: dict):
@@ -250,10 +250,10 @@ class TMDExplorer(KitExplorer):
             bare = 1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * zp * r)
         opt = v["rules"]["H∞"]
         ax.plot(r, np.minimum(bare, 2 * top), color=OKABE_ITO["grey"], lw=1.0, label="without absorber")
-        ax.plot(r, tmd_magnification(mu, f, za, r, zp), color=OKABE_ITO["blue"], lw=1.8,
+        ax.plot(r, tmd_magnification(mu, f, za, r=r, zeta_p=zp), color=OKABE_ITO["blue"], lw=1.8,
                 label="with the sliders' absorber")  # fmt: skip
-        ax.plot(r, tmd_magnification(mu, opt.f, opt.zeta_a, r, zp), lw=1.2, label=r"H$\infty$ tuning for this $\mu$",
-                **case_style("exact"))  # fmt: skip
+        ax.plot(r, tmd_magnification(mu, opt.f, opt.zeta_a, r=r, zeta_p=zp), lw=1.2,
+                label=r"H$\infty$ tuning for this $\mu$", **case_style("exact"))  # fmt: skip
         ax.plot(rp, hp, "o", color="k", ms=5, label=r"fixed points P, Q ($\zeta_p = 0$)")
         ax.set_xlim(*R_RANGE)
         ax.set_ylim(0.0, top)
@@ -279,8 +279,8 @@ class TMDExplorer(KitExplorer):
         )
 
     def panel_html(self) -> str:
-        sliders = (self.mu_slider, self.f_slider, self.zeta_a_slider, self.zeta_p_slider)
-        return tmd_panel_html(*(float(s.value) for s in sliders))
+        return tmd_panel_html(float(self.mu_slider.value), float(self.f_slider.value),
+                              float(self.zeta_a_slider.value), zeta_p=float(self.zeta_p_slider.value))  # fmt: skip
 
     def summary(self) -> str:
         return (
@@ -289,7 +289,7 @@ class TMDExplorer(KitExplorer):
         )
 
 
-def tmd_explorer(mu=0.05, f=None, zeta_a=None, zeta_p=0.0) -> TMDExplorer:
+def tmd_explorer(mu=0.05, f=None, zeta_a=None, *, zeta_p=0.0) -> TMDExplorer:
     """The chapter's sliders: :class:`TMDExplorer` (ipywidgets in JupyterLab, HTML panel in the book).
 
     Starts at mass ratio mu, tuning f and absorber damping zeta_a (default: the H∞

@@ -230,18 +230,18 @@ def tmd_study(params: Params | None = None, **values) -> TMDStudy:
     t = np.linspace(0.0, p.t_end, p.n_points)
     force = SineForce(F0=p.F0, omega=p.omega_res)
     x_without = exact_response(osc, force, t).x
-    model = tmd_system(p.m, p.c_nominal, p.k, chosen)
+    model = tmd_system(p.m, p.c_nominal, p.k, tuning=chosen)
     resp = model.response(t, [p.F0, 0.0], p.omega_res)
     X = model.frf([p.omega_res], [p.F0, 0.0])[0]
     r_force = p.omega_res / math.sqrt(p.k / p.m)
     robust_design = robust_tuning(mu, zeta_p, band)
     all_tunings = {**tunings[mu], H2: h2_tuning(mu, zeta_p), ROBUST: robust_design}
-    scores = {name: score_design(all_tunings[name], zeta_p, band, r_force) for name in TUNINGS}
+    scores = {name: score_design(all_tunings[name], zeta_p, band, r_force=r_force) for name in TUNINGS}
     eps = np.linspace(-band, band, N_EPS)
     robust = {name: mistuned_peak(all_tunings[name], eps, zeta_p) for name in TUNINGS}
     building = shear_building([p.storey_mass] * p.n_storeys, [p.storey_stiffness] * p.n_storeys, p.zeta_building)
     absorber = first_mode_absorber(building, p.mu_building)
-    building_tmd = add_absorber(building, -1, absorber.m_a, absorber.k_a, absorber.c_a)
+    building_tmd = add_absorber(building, -1, absorber.m_a, k_a=absorber.k_a, c_a=absorber.c_a)
     load_cases = _load_cases(building, building_tmd)
     optimisations = [*(tn for x in mus for tn in tunings[x].values()), *all_tunings.values()]
     checks = _checks(p, osc, zeta_p, model, t, x_without, resp.x[:, 0], chosen, robust_design, building,
@@ -295,8 +295,8 @@ def _load_cases(b: MDOF, bt: MDOF) -> tuple[LoadCase, LoadCase]:
         ("roof force", "mm/kN", 1e6, roof, np.r_[roof, 0.0]),
         ("ground acceleration", "mm/(m/s²)", 1e3, ground_acceleration_load(b), ground_acceleration_load(bt)),
     ):
-        h0, w0 = frf_peak(b, p0, b.n - 1, 0.0, top)
-        h1, w1 = frf_peak(bt, p1, b.n - 1, 0.0, top)  # the roof is still degree of freedom n - 1
+        h0, w0 = frf_peak(b, p0, b.n - 1, omega_min=0.0, omega_max=top)
+        h1, w1 = frf_peak(bt, p1, b.n - 1, omega_min=0.0, omega_max=top)  # the roof is still degree of freedom n - 1
         out.append(
             LoadCase(
                 name=name,
@@ -320,7 +320,7 @@ def _checks(p, osc, zeta_p, model, t, x_without, x_with, chosen, robust_design, 
     step = max(1, p.n_points // 50)
     expm_x = model.response(t[::step], [p.F0, 0.0], p.omega_res, method="expm").x[:, 0]
     r_force = p.omega_res / math.sqrt(p.k / p.m)
-    stroke = float(tmd_stroke(p.mu, chosen.f, chosen.zeta_a, r_force, zeta_p))
+    stroke = float(tmd_stroke(p.mu, chosen.f, chosen.zeta_a, r=r_force, zeta_p=zeta_p))
     return (
         Check(name="H∞ closed form against the numerical min-max at ζₚ = 0: tuning ratio f (relative)",
               value=abs(numerical.f / closed.f - 1), tolerance=1e-6),

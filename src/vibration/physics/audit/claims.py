@@ -80,7 +80,7 @@ def audit_claims(
     for cl in claims:
         q, sid, kind = cl["quantity"], cl["scenario_id"], cl["kind"]
         pm, ex, reason = _evaluate(q, sid, runs)
-        reads = [(d, v, u, verdict(kind, cl["paper_value"], v, q)) for d, v, u in readings(q, sid, runs)]
+        reads = [(d, v, u, verdict(kind, cl["paper_value"], v, quantity=q)) for d, v, u in readings(q, sid, runs)]
         best = min(reads, key=lambda r: _closeness(kind, cl["paper_value"], r[1]))
         rows.append(
             {
@@ -93,7 +93,7 @@ def audit_claims(
                 "paper_value": cl["paper_value"],
                 "paper_method_value": pm,
                 "exact_value": ex,
-                "verdict": verdict(kind, cl["paper_value"], ex, q),
+                "verdict": verdict(kind, cl["paper_value"], ex, quantity=q),
                 "reason": reason,
                 "best_reading": best[0],
                 "best_reading_value": best[1],

@@ -35,7 +35,7 @@ class _Run:
         self.sc = sc
         key = (sc.oscillator, sc.force, sc.t_end, sc.x0, sc.v0)
         if key not in cache:
-            paper = simulate(sc.oscillator, sc.force, sc.t_end, n_points, sc.x0, sc.v0)
+            paper = simulate(sc.oscillator, sc.force, sc.t_end, n_points=n_points, x0=sc.x0, v0=sc.v0)
             cache[key] = (paper, exact_response(sc.oscillator, sc.force, paper.t, x0=sc.x0, v0=sc.v0))
         self.paper, self.exact = cache[key]
         self.ss = steady_state(sc.oscillator, sc.force)

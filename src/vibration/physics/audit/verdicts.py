@@ -29,7 +29,7 @@ def half_unit(text: str) -> float:
     return 0.5 * 10.0**exponent
 
 
-def verdict(kind: str, paper_value: str, exact_value, quantity: str = "") -> str:
+def verdict(kind: str, paper_value: str, exact_value, *, quantity: str = "") -> str:
     """The verdict of one claim by the module's rule (one of :data:`VERDICTS`).
 
     ``exact_value`` None means the quantity does not exist in this run.
@@ -38,9 +38,9 @@ def verdict(kind: str, paper_value: str, exact_value, quantity: str = "") -> str
     --------
     >>> verdict("approx", "0.5", 0.4504), verdict("approx", "1.5", 1.351), verdict("approx", "5.0", 2.237)
     ('reproduced', 'partly reproduced', 'number differs')
-    >>> verdict("greater", "10.0", 10.26), verdict("category", "unstable", "stable", "stability")
+    >>> verdict("greater", "10.0", 10.26), verdict("category", "unstable", "stable", quantity="stability")
     ('reproduced', 'physics contradicts')
-    >>> verdict("category", "Runge-Kutta-Fehlberg 4(5)", "Dormand-Prince 5(4)", "rk45_pair")
+    >>> verdict("category", "Runge-Kutta-Fehlberg 4(5)", "Dormand-Prince 5(4)", quantity="rk45_pair")
     'name differs'
     """
     if exact_value is None:

@@ -94,7 +94,7 @@ def _lqr_args(osc, q_x, q_v, r):
     return q_x, q_v, r
 
 
-def lqr(osc: Oscillator, q_x: float, q_v: float, r: float) -> LQRResult:
+def lqr(osc: Oscillator, q_x: float, q_v: float, *, r: float) -> LQRResult:
     """LQR gains for the oscillator driven by a force ``u`` (python-control's ``lqr``).
 
     Minimises ``J = int_0^inf (q_x x^2 + q_v v^2 + r u^2) dt`` over ``u = -K [x, v]``

@@ -236,6 +236,7 @@ def poincare_section(
     duffing: Duffing,
     F0: float,
     omega: float,
+    *,
     x0: float = 0.0,
     v0: float = 0.0,
     n_periods: int = 2000,
@@ -282,6 +283,7 @@ def lyapunov_qr(
     duffing: Duffing,
     F0: float,
     omega: float,
+    *,
     x0: float = 0.0,
     v0: float = 0.0,
     n_periods: int = 2000,
@@ -326,6 +328,7 @@ def lyapunov_benettin(
     duffing: Duffing,
     F0: float,
     omega: float,
+    *,
     x0: float = 0.0,
     v0: float = 0.0,
     n_periods: int = 2000,
@@ -415,6 +418,7 @@ def lyapunov_estimate(
     duffing: Duffing,
     F0: float,
     omega: float,
+    *,
     x0: float = 0.0,
     v0: float = 0.0,
     n_periods: int = 20_000,
@@ -455,7 +459,7 @@ def lyapunov_estimate(
     Examples
     --------
     >>> u = Duffing(m=1.0, c=0.05, k=0.0, k3=1.0)                   # Ueda's oscillator
-    >>> e = lyapunov_estimate(u, 7.5, 1.0, 3.0, 0.0, n_periods=4000)
+    >>> e = lyapunov_estimate(u, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=4000)
     >>> 0.09 < e.exponent < 0.115 and 0.0005 < e.standard_error < 0.004   # 1/s
     True
     """
@@ -464,7 +468,16 @@ def lyapunov_estimate(
     if not isinstance(method, str) or method not in ("qr", "benettin"):
         raise ParameterError(f"method = {method!r:.60} is not valid: allowed 'qr' or 'benettin'")
     run = lyapunov_qr if method == "qr" else lyapunov_benettin
-    r = run(duffing, F0, omega, x0, v0, n_periods=n_periods, n_transient=n_transient, steps_per_period=steps_per_period)
+    r = run(
+        duffing,
+        F0,
+        omega,
+        x0=x0,
+        v0=v0,
+        n_periods=n_periods,
+        n_transient=n_transient,
+        steps_per_period=steps_per_period,
+    )
     T = r.time / n_periods
     sums = r.running * (np.arange(1, r.running.size + 1) * T)  # cumulative log growth after each period
     increments = np.diff(sums, prepend=0.0)

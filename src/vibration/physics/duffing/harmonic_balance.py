@@ -335,7 +335,7 @@ def folds(duffing: Duffing, F0: float) -> Folds:
 
 
 @_overflow_is_error
-def response_curve(duffing: Duffing, F0: float, omega_max: float, n: int = 801, amplitude_max: float | None = None):
+def response_curve(duffing: Duffing, F0: float, omega_max: float, *, n: int = 801, amplitude_max: float | None = None):
     """The whole one-harmonic response curve, parametrised by the amplitude.
 
     For each ``A`` the frequencies of the curve solve ``m^2 W^2 - (2 m (k + (3/4) k3 A^2) -

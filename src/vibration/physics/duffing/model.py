@@ -226,8 +226,8 @@ def duffing_response(
     duffing: Duffing,
     F0: float,
     omega: float,
-    t,
     *,
+    t,
     sine: bool = False,
     x0: float = 0.0,
     v0: float = 0.0,
@@ -262,7 +262,7 @@ def duffing_response(
 
     Examples
     --------
-    >>> x, v = duffing_response(Duffing(m=1.0, c=0.5, k=20.0, k3=0.0), 5.0, 4.47, [0.0, 50.0], sine=True)
+    >>> x, v = duffing_response(Duffing(m=1.0, c=0.5, k=20.0, k3=0.0), 5.0, 4.47, t=[0.0, 50.0], sine=True)
     >>> round(float(x[-1]), 4)          # m, as the linear closed form of Part I
     2.009
     """

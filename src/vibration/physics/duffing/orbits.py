@@ -75,8 +75,8 @@ def periodic_orbit(
     duffing: Duffing,
     F0: float,
     omega: float,
-    amplitude_guess: float | None = None,
     *,
+    amplitude_guess: float | None = None,
     x0: float | None = None,
     v0: float | None = None,
     rtol: float = 1e-11,
@@ -122,7 +122,7 @@ def periodic_orbit(
     >>> hb = hb_amplitudes(d, 5.0, 5.07)
     >>> [(round(a, 3), s) for a, s in hb]          # m, slow-flow stability
     [(1.041, True), (1.625, False), (1.97, True)]
-    >>> [(round(o.amplitude, 3), o.stable) for o in (periodic_orbit(d, 5.0, 5.07, a) for a, _ in hb)]
+    >>> [(round(o.amplitude, 3), o.stable) for o in (periodic_orbit(d, 5.0, 5.07, amplitude_guess=a) for a, _ in hb)]
     [(1.046, True), (1.62, False), (1.986, True)]
     """
     d = _check_duffing(duffing)
@@ -283,9 +283,9 @@ def continue_orbits(
     duffing: Duffing,
     F0: float,
     omega_start: float,
+    *,
     omega_end: float,
     amplitude_guess: float | None = None,
-    *,
     step: float = 0.05,
     max_points: int = 400,
     rtol: float = 1e-10,
@@ -326,7 +326,7 @@ def continue_orbits(
     Examples
     --------
     >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
-    >>> b = continue_orbits(d, 5.0, 4.9, 5.25)
+    >>> b = continue_orbits(d, 5.0, 4.9, omega_end=5.25)
     >>> [round(f.omega, 4) for f in b.folds]           # rad/s: the branch turns twice
     [5.1079, 5.0447]
     """
@@ -341,7 +341,7 @@ def continue_orbits(
     step = check_real("step", step, low=1e-4, high=0.5)
     max_points = check_int("max_points", max_points, low=10, high=5000)
     rtol = check_real("rtol", rtol, low=1e-12, high=1e-7)
-    orb = periodic_orbit(d, F0, w0, amplitude_guess, rtol=rtol)
+    orb = periodic_orbit(d, F0, w0, amplitude_guess=amplitude_guess, rtol=rtol)
     budget = _Counted(None, 400 * MAX_RHS_EVALUATIONS)
     a = max(orb.amplitude, 1e-300)
     scale = np.array([a, a * w0, abs(w1 - w0)])  # physical = scale * scaled

@@ -104,8 +104,8 @@ def frequency_sweep(
     duffing: Duffing,
     F0: float,
     omegas,
-    direction: str,
     *,
+    direction: str,
     x0: float = 0.0,
     v0: float = 0.0,
     rtol: float = 1e-8,
@@ -170,7 +170,7 @@ def frequency_sweep(
     --------
     >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
     >>> w = np.linspace(4.6, 5.4, 9)
-    >>> up, down = frequency_sweep(d, 5.0, w, "up"), frequency_sweep(d, 5.0, w, "down")
+    >>> up, down = frequency_sweep(d, 5.0, w, direction="up"), frequency_sweep(d, 5.0, w, direction="down")
     >>> np.round(up.amplitude, 2)       # m
     array([1.53, 1.65, 1.76, 1.86, 1.95, 1.97, 0.74, 0.63, 0.55])
     >>> np.round(down.amplitude, 2)     # m
@@ -238,7 +238,7 @@ def frequency_sweep(
     )
 
 
-def sweep(duffing: Duffing, F0: float, omegas, direction: str) -> np.ndarray:
+def sweep(duffing: Duffing, F0: float, omegas, *, direction: str) -> np.ndarray:
     """Steady amplitudes of a stepped frequency sweep by time integration, m.
 
     :func:`frequency_sweep` with its defaults (see there for the steady criterion);
@@ -263,18 +263,19 @@ def sweep(duffing: Duffing, F0: float, omegas, direction: str) -> np.ndarray:
     Examples
     --------
     >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
-    >>> np.round(sweep(d, 5.0, [5.0, 5.1], "up"), 3)      # m: on the upper branch at 5.1 rad/s
+    >>> np.round(sweep(d, 5.0, [5.0, 5.1], direction="up"), 3)      # m: on the upper branch at 5.1 rad/s
     array([1.951, 1.968])
-    >>> np.round(sweep(d, 5.0, [5.0, 5.1], "down"), 3)    # m: from rest onto the lower one, then up at 5.0
+    >>> np.round(sweep(d, 5.0, [5.0, 5.1], direction="down"), 3)    # m: from rest onto the lower one, then up at 5.0
     array([1.951, 0.938])
     """
-    return frequency_sweep(duffing, F0, omegas, direction).amplitude
+    return frequency_sweep(duffing, F0, omegas, direction=direction).amplitude
 
 
 def locate_jump(
     duffing: Duffing,
     F0: float,
     result: SweepResult,
+    *,
     which: int = 0,
     levels: int = 2,
     n: int = 10,
@@ -312,7 +313,7 @@ def locate_jump(
     Examples
     --------
     >>> d = Duffing(m=1.0, c=0.5, k=20.0, k3=2.0)
-    >>> up = frequency_sweep(d, 5.0, np.linspace(4.6, 5.4, 9), "up")
+    >>> up = frequency_sweep(d, 5.0, np.linspace(4.6, 5.4, 9), direction="up")
     >>> lo, hi = locate_jump(d, 5.0, up)
     >>> round(lo, 3), round(hi - lo, 6)       # rad/s, rad/s
     (5.107, 0.001)
@@ -340,7 +341,9 @@ def locate_jump(
                 f"locate_jump spent its budget of {MAX_SWEEP_STEPS} integrator steps with levels = {levels}, "
                 f"n = {n}: allowed fewer levels or steps per level"
             )
-        res = frequency_sweep(d, F0, ws, result.direction, x0=x, v0=v, max_periods=max_periods, max_steps=budget)
+        res = frequency_sweep(
+            d, F0, ws, direction=result.direction, x0=x, v0=v, max_periods=max_periods, max_steps=budget
+        )
         budget -= int(res.n_steps.sum())
         order = np.argsort(ws) if result.direction == "up" else np.argsort(ws)[::-1]
         amps = res.amplitude[order]

@@ -104,7 +104,7 @@ def damping_vs_amplitude(t, theta) -> DampingCurve:
     >>> import numpy as np
     >>> from vibration.physics.lab.decay import free_decay_response
     >>> t = np.arange(0.0, 8.0, 0.01)
-    >>> c = damping_vs_amplitude(t, free_decay_response(t, 4.5, 0.0, 0.05, theta0=2.0))
+    >>> c = damping_vs_amplitude(t, free_decay_response(t, 4.5, 0.0, friction=0.05, theta0=2.0))
     >>> bool(np.allclose(c.loss, 0.1, atol=2e-3))  # Coulomb: 2 Delta per half period
     True
     """
@@ -218,8 +218,8 @@ def compare_damping(runs_a, runs_b, band) -> DampingDifference:
     >>> import numpy as np
     >>> from vibration.physics.lab.decay import free_decay_response
     >>> t = np.arange(0.0, 20.0, 0.01)
-    >>> a = [(t, free_decay_response(t, 4.5, 0.01, 0.0, theta0=x)) for x in (3.0, 3.5, 4.0)]
-    >>> b = [(t, free_decay_response(t, 4.5, 0.02, 0.0, theta0=x)) for x in (3.0, 3.5, 4.0)]
+    >>> a = [(t, free_decay_response(t, 4.5, 0.01, friction=0.0, theta0=x)) for x in (3.0, 3.5, 4.0)]
+    >>> b = [(t, free_decay_response(t, 4.5, 0.02, friction=0.0, theta0=x)) for x in (3.0, 3.5, 4.0)]
     >>> round(compare_damping(a, b, (0.5, 3.0)).delta_zeta, 4)
     0.01
     """
@@ -331,8 +331,8 @@ def joint_brake_fit(runs_a, runs_b) -> JointBrakeFit:
     >>> import numpy as np
     >>> from vibration.physics.lab.decay import free_decay_response
     >>> t = np.arange(0.0, 20.0, 0.01)
-    >>> a = [(t, free_decay_response(t, 4.5, 0.005, 0.05, theta0=x)) for x in (3.0, 3.5, 4.0)]
-    >>> b = [(t, free_decay_response(t, 4.5, 0.015, 0.05, theta0=x)) for x in (3.0, 3.5, 4.0)]
+    >>> a = [(t, free_decay_response(t, 4.5, 0.005, friction=0.05, theta0=x)) for x in (3.0, 3.5, 4.0)]
+    >>> b = [(t, free_decay_response(t, 4.5, 0.015, friction=0.05, theta0=x)) for x in (3.0, 3.5, 4.0)]
     >>> round(joint_brake_fit(a, b).delta_zeta, 3)
     0.01
     """

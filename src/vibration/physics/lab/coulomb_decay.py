@@ -89,7 +89,7 @@ def _response(t, omega_n, zeta, friction, offset, theta0, t0):
     return out
 
 
-def free_decay_response(t, omega_n, zeta, friction, offset=0.0, theta0=1.0, t0=0.0) -> np.ndarray:
+def free_decay_response(t, omega_n, zeta, *, friction, offset=0.0, theta0=1.0, t0=0.0) -> np.ndarray:
     r"""Exact free decay with viscous and Coulomb friction, starting at rest from an extremum.
 
     Parameters
@@ -119,7 +119,7 @@ def free_decay_response(t, omega_n, zeta, friction, offset=0.0, theta0=1.0, t0=0
     --------
     >>> import numpy as np
     >>> t = np.array([0.0, np.pi / 4.0, np.pi / 2.0])
-    >>> free_decay_response(t, 2.0, 0.0, 0.1, theta0=1.0).round(12).tolist()  # 1 -> -(1 - 2*0.1) in pi/2 s
+    >>> free_decay_response(t, 2.0, 0.0, friction=0.1, theta0=1.0).round(12).tolist()  # 1 -> -(1 - 2*0.1) in pi/2 s
     [1.0, 0.1, -0.8]
     """
     ta = as_series("t", t, unit="s", min_size=1)

@@ -170,7 +170,7 @@ def _standard_errors(misfit, phys: dict, free, base: dict, r: np.ndarray, lags: 
     def resid_phys(v):
         return misfit({**base, **dict(zip(free, v, strict=True))})
 
-    J = central_jacobian(resid_phys, xp0, r.size, [k in base for k in free])
+    J = central_jacobian(resid_phys, xp0, r.size, nonnegative=[k in base for k in free])
     naive, hac = standard_errors(J, r, lags)
     se_n = {k: 0.0 for k in _ALL}
     se_h = {k: 0.0 for k in _ALL}
@@ -249,7 +249,7 @@ def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
     >>> import numpy as np
     >>> from vibration.physics.lab.coulomb_decay import free_decay_response
     >>> t = np.arange(0.0, 10.0, 0.05)
-    >>> y = free_decay_response(t, 4.5, 0.01, 0.02, offset=0.05, theta0=1.0)
+    >>> y = free_decay_response(t, 4.5, 0.01, friction=0.02, offset=0.05, theta0=1.0)
     >>> f = fit_free_decay(t, y)
     >>> round(f.omega_n, 6), round(f.zeta, 6), round(f.friction, 6), round(f.offset, 6)
     (4.5, 0.01, 0.02, 0.05)

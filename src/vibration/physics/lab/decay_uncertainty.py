@@ -27,7 +27,7 @@ def whiteness(r: np.ndarray) -> tuple[float, float]:
     return dw, float(stats.chi2.sf(q, h))
 
 
-def hac_cov(J: np.ndarray, r: np.ndarray, lags: int, bread: np.ndarray) -> np.ndarray:
+def hac_cov(J: np.ndarray, r: np.ndarray, lags: int, *, bread: np.ndarray) -> np.ndarray:
     """Newey-West sandwich covariance (Bartlett kernel, ``lags`` lags) of the parameters, ``bread = (J^T J)^-1``."""
     g = J * r[:, None]
     meat = g.T @ g
@@ -38,7 +38,7 @@ def hac_cov(J: np.ndarray, r: np.ndarray, lags: int, bread: np.ndarray) -> np.nd
     return bread @ meat @ bread
 
 
-def central_jacobian(resid, x0: np.ndarray, n_rows: int, nonnegative) -> np.ndarray:
+def central_jacobian(resid, x0: np.ndarray, n_rows: int, *, nonnegative) -> np.ndarray:
     """Central-difference Jacobian of ``resid`` at ``x0`` (``n_rows`` residuals).
 
     A parameter flagged in ``nonnegative`` steps down no further than 0.
@@ -61,7 +61,7 @@ def standard_errors(J: np.ndarray, r: np.ndarray, lags: int) -> tuple[list[float
     s2 = rss / max(1, n - p_free)
     bread = np.linalg.pinv(J.T @ J)
     cov_naive = s2 * bread
-    cov_hac = hac_cov(J, r, lags, bread) * n / max(1, n - p_free)
+    cov_hac = hac_cov(J, r, lags, bread=bread) * n / max(1, n - p_free)
     naive = [float(math.sqrt(max(cov_naive[j, j], 0.0))) for j in range(p_free)]
     hac = [float(math.sqrt(max(cov_hac[j, j], 0.0))) for j in range(p_free)]
     return naive, hac

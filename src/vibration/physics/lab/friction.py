@@ -227,7 +227,7 @@ def friction_forced_amplitude_hb(r, zeta, friction_ratio):
 
 
 def simulate_friction_oscillator(
-    t, drive, omega_n, zeta, friction, gain, theta0=0.0, omega0=0.0, offset=0.0, substeps=20
+    t, drive, omega_n, *, zeta, friction, gain, theta0=0.0, omega0=0.0, offset=0.0, substeps=20
 ) -> tuple[np.ndarray, np.ndarray]:
     r"""Integrate the oscillator with viscous + Coulomb friction (stick-slip) under a measured drive.
 
@@ -276,7 +276,7 @@ def simulate_friction_oscillator(
     --------
     >>> import numpy as np
     >>> t = np.linspace(0.0, 2 * np.pi / 4.5, 41)
-    >>> th, _ = simulate_friction_oscillator(t, np.zeros_like(t), 4.5, 0.0, 0.0, 1.0, theta0=1.0)
+    >>> th, _ = simulate_friction_oscillator(t, np.zeros_like(t), 4.5, zeta=0.0, friction=0.0, gain=1.0, theta0=1.0)
     >>> round(float(th[-1]), 8)  # one undamped period later
     1.0
     """

@@ -246,7 +246,7 @@ def peak_decay_fit(t, theta, law: str = "combined") -> PeakDecayFit:
     >>> import numpy as np
     >>> from vibration.physics.lab.decay import free_decay_response
     >>> t = np.arange(0.0, 12.0, 0.01)
-    >>> y = free_decay_response(t, 4.5, 0.02, 0.03, offset=0.1, theta0=1.0)
+    >>> y = free_decay_response(t, 4.5, 0.02, friction=0.03, offset=0.1, theta0=1.0)
     >>> f = peak_decay_fit(t, y)
     >>> round(f.omega_n, 3), round(f.zeta, 4), round(f.friction, 4), round(f.offset, 4)
     (4.5, 0.02, 0.03, 0.1)
@@ -340,7 +340,7 @@ def half_period_losses(peaks: DecayPeaks, offset: float) -> tuple[np.ndarray, np
     >>> import numpy as np
     >>> from vibration.physics.lab.decay import free_decay_response
     >>> t = np.arange(0.0, 6.0, 0.01)
-    >>> p = free_decay_peaks(t, free_decay_response(t, 4.5, 0.0, 0.05, theta0=1.0))
+    >>> p = free_decay_peaks(t, free_decay_response(t, 4.5, 0.0, friction=0.05, theta0=1.0))
     >>> a, loss = half_period_losses(p, 0.0)
     >>> bool(np.allclose(loss, 0.1, atol=2e-3))
     True

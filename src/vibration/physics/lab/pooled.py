@@ -88,7 +88,7 @@ def fit_free_decays(runs, law: str = "coulomb+viscous") -> PooledDecayFit:
     >>> import numpy as np
     >>> from vibration.physics.lab.decay import free_decay_response
     >>> t = np.arange(0.0, 10.0, 0.05)
-    >>> runs = [(t, free_decay_response(t, 4.5, 0.0, d, theta0=2.0)) for d in (0.04, 0.05, 0.06)]
+    >>> runs = [(t, free_decay_response(t, 4.5, 0.0, friction=d, theta0=2.0)) for d in (0.04, 0.05, 0.06)]
     >>> p = fit_free_decays(runs, "coulomb")
     >>> round(p.coefficients["coulomb"], 6), round(p.stderr["friction"], 6)
     (0.05, 0.005774)

@@ -37,7 +37,9 @@ class Comparison:
         return float(diff.mean()), float(diff.std(ddof=1) / math.sqrt(diff.size)) if diff.size > 1 else 0.0
 
 
-def compare_controllers(task: OscillatorTask, controllers: dict, n_episodes: int = 1000, seed: int = 0) -> Comparison:
+def compare_controllers(
+    task: OscillatorTask, controllers: dict, n_episodes: int = 1000, *, seed: int = 0
+) -> Comparison:
     """Roll every controller (name -> gains) out on the same ``n_episodes`` seeded initial states.
 
     Examples

@@ -138,7 +138,7 @@ VARIATIONS = (
 )
 
 
-def robustness_study(task: OscillatorTask, laws: dict, n_episodes: int = 400, seed: int = 0) -> Robustness:
+def robustness_study(task: OscillatorTask, laws: dict, n_episodes: int = 400, *, seed: int = 0) -> Robustness:
     """Run each law (name -> gains) on the task with each plant change of ``VARIATIONS`` (same episodes).
 
     Examples
@@ -193,7 +193,7 @@ class IdentifyDesign:
 
 
 def identify_then_design(
-    task: OscillatorTask, duration: float = 10.0, noise: float = 0.01, seed: int = 0
+    task: OscillatorTask, duration: float = 10.0, noise: float = 0.01, *, seed: int = 0
 ) -> IdentifyDesign:
     """Chapter 10's identification on a ``duration``-long broadband record of the plant, then LQR and the best
     fixed gain designed on the fitted model (the task's weights, horizon and disturbance).
@@ -213,7 +213,7 @@ def identify_then_design(
     task = _check_task(task)
     duration = check_real("duration", duration, low=1.0, high=1e4, unit="s")
     noise = check_real("noise", noise, low=0.0, high=1.0)
-    rec = simulated_test(Oscillator(m=task.m, c=task.c, k=task.k), duration, task.dt, noise, seed=seed)
+    rec = simulated_test(Oscillator(m=task.m, c=task.c, k=task.k), duration, task.dt, noise=noise, seed=seed)
     fit = identify(rec.t, rec.force, x=rec.x)
     model = replace(task, m=fit.m, c=max(fit.c, 0.0), k=fit.k)
     return IdentifyDesign(

@@ -15,7 +15,7 @@ from ._limits import _f, _mu, _no_nan, _ratios, _zeta
 
 
 @_no_nan
-def tmd_magnification(mu, f, zeta_a, r, zeta_p=0.0) -> np.ndarray:
+def tmd_magnification(mu, f, zeta_a, *, r, zeta_p=0.0) -> np.ndarray:
     """Primary's steady magnification |X_p| / (F0 / k_p) with a TMD, at ratios r = ω/ω_p.
 
     Parameters
@@ -38,9 +38,9 @@ def tmd_magnification(mu, f, zeta_a, r, zeta_p=0.0) -> np.ndarray:
 
     Examples
     --------
-    >>> float(tmd_magnification(0.05, 1.0, 0.1, 0.0))       # static: 1
+    >>> float(tmd_magnification(0.05, 1.0, 0.1, r=0.0))       # static: 1
     1.0
-    >>> float(tmd_magnification(0.05, 1.0, 0.0, 1.0))       # undamped absorber tuned to r: 0
+    >>> float(tmd_magnification(0.05, 1.0, 0.0, r=1.0))       # undamped absorber tuned to r: 0
     0.0
     """
     mu, f = _mu(mu), _f(f)
@@ -107,7 +107,7 @@ def _outer_peaks(mu: float, f: float, za: float, zp: float) -> tuple[float, floa
 
 
 @_no_nan
-def tmd_peak(mu, f, zeta_a, zeta_p=0.0) -> float:
+def tmd_peak(mu, f, zeta_a, *, zeta_p=0.0) -> float:
     """Largest magnification max_r |X_p| / (F0 / k_p) of the primary with a TMD, 1.
 
     Exact up to rounding: |H|² is a ratio of polynomials in s = r², so the
@@ -133,7 +133,7 @@ def tmd_peak(mu, f, zeta_a, zeta_p=0.0) -> float:
 
 
 @_no_nan
-def h2_norm(mu, f, zeta_a, zeta_p=0.0) -> float:
+def h2_norm(mu, f, zeta_a, *, zeta_p=0.0) -> float:
     """Integral of |H(r)|² over 0 <= r < ∞, 1 (the H2 criterion of Warburton 1982).
 
     Computed exactly from the Lyapunov equation of the state-space model in
@@ -233,7 +233,7 @@ def _stroke2(mu, f, za, zp, r):
 
 
 @_no_nan
-def tmd_stroke(mu, f, zeta_a, r, zeta_p=0.0) -> np.ndarray:
+def tmd_stroke(mu, f, zeta_a, *, r, zeta_p=0.0) -> np.ndarray:
     """Absorber stroke (its displacement relative to the primary) |X_a − X_p| / (F0 / k_p) at ratios r = ω/ω_p.
 
     From the absorber's equation, (X_a − X_p) / X_p = r² / (f² − r² + 2i ζ_a f r), so the stroke
@@ -251,9 +251,9 @@ def tmd_stroke(mu, f, zeta_a, r, zeta_p=0.0) -> np.ndarray:
 
     Examples
     --------
-    >>> float(tmd_stroke(0.05, 1.0, 0.1, 0.0))                      # static: the absorber moves with the primary
+    >>> float(tmd_stroke(0.05, 1.0, 0.1, r=0.0))                      # static: the absorber moves with the primary
     0.0
-    >>> round(float(tmd_stroke(0.05, 1.0, 0.0, 1.0)), 6)            # undamped, tuned: k_a Z = F0, Z k_p/F0 = 1/(μ f²)
+    >>> round(float(tmd_stroke(0.05, 1.0, 0.0, r=1.0)), 6)            # undamped, tuned: k_a Z = F0, Z k_p/F0 = 1/(μ f²)
     20.0
     """
     mu, f = _mu(mu), _f(f)
@@ -266,7 +266,7 @@ def tmd_stroke(mu, f, zeta_a, r, zeta_p=0.0) -> np.ndarray:
 
 
 @_no_nan
-def stroke_peak(mu, f, zeta_a, zeta_p=0.0) -> tuple[float, float]:
+def stroke_peak(mu, f, zeta_a, *, zeta_p=0.0) -> tuple[float, float]:
     """Largest stroke max_r |X_a − X_p| / (F0 / k_p) and the ratio r = ω/ω_p where it is reached.
 
     Exact up to rounding: |Z|² = s² / Q(s) with s = r², so the maximum is at a real positive root

@@ -257,7 +257,7 @@ class MDOF:
                 out[i] = np.inf
         return out
 
-    def response(self, t, load, omega, x0=None, v0=None, method="auto") -> MDOFResponse:
+    def response(self, t, load, omega, *, x0=None, v0=None, method="auto") -> MDOFResponse:
         """Exact response to ``load * sin(omega t)`` from x(0) = x0, v(0) = v0.
 
         "modal": steady state from the complex solve (:meth:`frf`) plus the free

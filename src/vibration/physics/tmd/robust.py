@@ -132,7 +132,7 @@ def worst_peak(tuning: TMDTuning, band, zeta_p=None) -> tuple[float, float]:
 
 
 @_no_nan
-def robust_tuning(mu, zeta_p=0.0, band=0.1, maxiter=None) -> TMDTuning:
+def robust_tuning(mu, zeta_p=0.0, band=0.1, *, maxiter=None) -> TMDTuning:
     """The min-max design: (f, ζ_a) minimising the worst peak over a ±band error of the primary's stiffness.
 
     Exchange method from the H∞ optimum of the nominal primary (see the module docstring); the
@@ -233,7 +233,7 @@ class DesignScore:
     stroke_force: float  # |X_a − X_p| / (F0/k_p) at r_force, 1
 
 
-def score_design(tuning: TMDTuning, zeta_p, band, r_force) -> DesignScore:
+def score_design(tuning: TMDTuning, zeta_p, band, *, r_force) -> DesignScore:
     """Score one design on the nominal peak, the worst peak over ±band, the benefit kept, H2 and stroke.
 
     The benefit at ε is the bare primary's peak minus the design's (both over the nominal F0/k_p);
@@ -256,7 +256,7 @@ def score_design(tuning: TMDTuning, zeta_p, band, r_force) -> DesignScore:
 
     Examples
     --------
-    >>> s = score_design(hinf_tuning(0.05, 0.0559), 0.0559, 0.1, 0.9995)
+    >>> s = score_design(hinf_tuning(0.05, 0.0559), 0.0559, 0.1, r_force=0.9995)
     >>> round(s.kept_low, 3), round(s.kept_high, 3), round(s.stroke_force, 2)
     (0.874, 0.856, 12.79)
     """
@@ -274,7 +274,7 @@ def score_design(tuning: TMDTuning, zeta_p, band, r_force) -> DesignScore:
         kept = (bare - np.array([lo, nominal, hi])) / (bare[1] - nominal)
     if not np.isfinite(bare[1]):
         kept = np.full(3, math.nan)
-    h2 = h2_norm(mu, f, za, zp)
+    h2 = h2_norm(mu, f, za, zeta_p=zp)
     rms = math.sqrt(4.0 * zp * h2 / math.pi) if zp > 0.0 else math.nan
     return DesignScore(
         tuning=tuning,
@@ -290,6 +290,6 @@ def score_design(tuning: TMDTuning, zeta_p, band, r_force) -> DesignScore:
         kept_high=float(kept[2]),
         h2=h2,
         rms_ratio=rms,
-        stroke_peak=stroke_peak(mu, f, za, zp)[0],
-        stroke_force=float(tmd_stroke(mu, f, za, r_force, zp)),
+        stroke_peak=stroke_peak(mu, f, za, zeta_p=zp)[0],
+        stroke_force=float(tmd_stroke(mu, f, za, r=r_force, zeta_p=zp)),
     )

@@ -105,7 +105,7 @@ def shear_building(masses, stiffnesses, zeta=0.05) -> MDOF:
     return MDOF(M=M, C=modal_damping_matrix(M, K, zeta), K=K)
 
 
-def add_absorber(model: MDOF, dof: int, m_a, k_a, c_a) -> MDOF:
+def add_absorber(model: MDOF, dof: int, m_a, *, k_a, c_a) -> MDOF:
     """The model with an absorber (mass, spring, dashpot) attached to degree of freedom ``dof``.
 
     The absorber is the new last degree of freedom.
@@ -124,7 +124,7 @@ def add_absorber(model: MDOF, dof: int, m_a, k_a, c_a) -> MDOF:
 
     Examples
     --------
-    >>> s = add_absorber(MDOF(M=[[1.0]], C=[[0.0]], K=[[20.0]]), 0, 0.05, 0.9, 0.01)
+    >>> s = add_absorber(MDOF(M=[[1.0]], C=[[0.0]], K=[[20.0]]), 0, 0.05, k_a=0.9, c_a=0.01)
     >>> s.n, s.is_classically_damped
     (2, False)
     """
@@ -150,14 +150,14 @@ def add_absorber(model: MDOF, dof: int, m_a, k_a, c_a) -> MDOF:
     return MDOF(M=M, C=C, K=K)
 
 
-def tmd_system(m, c, k, tuning: TMDTuning) -> MDOF:
+def tmd_system(m, c, k, *, tuning: TMDTuning) -> MDOF:
     """Two-degree-of-freedom model: the primary (m kg, c N s/m, k N/m) and the absorber of ``tuning``.
 
     Degree of freedom 0 is the primary, 1 the absorber.
 
     Examples
     --------
-    >>> s = tmd_system(1.0, 0.5, 20.0, den_hartog(0.05))
+    >>> s = tmd_system(1.0, 0.5, 20.0, tuning=den_hartog(0.05))
     >>> s.n, round(float(s.M[1, 1]), 3)
     (2, 0.05)
     """
@@ -176,7 +176,7 @@ def tmd_system(m, c, k, tuning: TMDTuning) -> MDOF:
                 f"{tuning.zeta_a!r}) give the absorber's {name} = {value:.3g} {unit}: allowed {ENTRY_MIN:g} to "
                 f"{ENTRY_MAX:g} {unit}"
             )
-    return add_absorber(MDOF(M=[[m]], C=[[c]], K=[[k]]), 0, m_a, k_a, c_a)
+    return add_absorber(MDOF(M=[[m]], C=[[c]], K=[[k]]), 0, m_a, k_a=k_a, c_a=c_a)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -192,7 +192,7 @@ class ModeAbsorber:
     c_a: float  # absorber damping, N s/m
 
 
-def first_mode_absorber(model: MDOF, mu, dof: int = -1, rule: str = "H∞") -> ModeAbsorber:
+def first_mode_absorber(model: MDOF, mu, dof: int = -1, *, rule: str = "H∞") -> ModeAbsorber:
     """Absorber at ``dof`` tuned to the first mode (equivalent SDOF: modal mass, frequency, damping).
 
     The first mode φ is scaled to 1 at ``dof``; the equivalent primary has mass
@@ -263,7 +263,7 @@ ZETA_MIN = 1e-50
 N_FRF_GRID = 2001
 
 
-def frf_peak(model: MDOF, load, dof: int, omega_min, omega_max) -> tuple[float, float]:
+def frf_peak(model: MDOF, load, dof: int, *, omega_min, omega_max) -> tuple[float, float]:
     """Largest steady amplitude of one degree of freedom over a frequency band, and where it is reached.
 
     |X_dof(ω)| of :meth:`MDOF.frf` on a grid of 2001 frequencies, then each interior local maximum of
@@ -287,7 +287,7 @@ def frf_peak(model: MDOF, load, dof: int, omega_min, omega_max) -> tuple[float, 
     Examples
     --------
     >>> s = MDOF(M=[[1.0]], C=[[0.5]], K=[[20.0]])
-    >>> x, w = frf_peak(s, [5.0], 0, 3.0, 6.0)
+    >>> x, w = frf_peak(s, [5.0], 0, omega_min=3.0, omega_max=6.0)
     >>> round(x, 4), round(w, 4)        # F0/k / (2ζ sqrt(1 − ζ²)) at ω_n sqrt(1 − 2ζ²)
     (2.2396, 4.4581)
     """

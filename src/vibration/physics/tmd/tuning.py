@@ -59,7 +59,7 @@ class TMDTuning:
     @property
     def h2(self) -> float:
         """∫_0^∞ |H(r)|² dr on the primary of :attr:`zeta_p`, 1 (see :func:`h2_norm`)."""
-        return h2_norm(self.mu, self.f, self.zeta_a, self.zeta_p)
+        return h2_norm(self.mu, self.f, self.zeta_a, zeta_p=self.zeta_p)
 
     def absorber(self, m_p: float, k_p: float) -> tuple[float, float, float]:
         """Absorber (m_a kg, k_a N/m, c_a N s/m) for a primary of mass m_p (kg) and stiffness k_p (N/m).
@@ -194,7 +194,7 @@ def _closed_form(method, zp: float) -> bool:
 
 
 @_no_nan
-def hinf_tuning(mu, zeta_p=0.0, method="auto", maxiter=None) -> TMDTuning:
+def hinf_tuning(mu, zeta_p=0.0, method="auto", *, maxiter=None) -> TMDTuning:
     """The H∞ optimum: (f, ζ_a) minimising the primary's largest magnification.
 
     For an undamped primary the closed form of Nishihara and Asami (2002,
@@ -241,7 +241,7 @@ def hinf_tuning(mu, zeta_p=0.0, method="auto", maxiter=None) -> TMDTuning:
 
 
 @_no_nan
-def h2_tuning(mu, zeta_p=0.0, method="auto", maxiter=None) -> TMDTuning:
+def h2_tuning(mu, zeta_p=0.0, method="auto", *, maxiter=None) -> TMDTuning:
     """The H2 optimum: (f, ζ_a) minimising ∫_0^∞ |H(r)|² dr (white-noise force).
 
     For an undamped primary Warburton's closed form (1982, Earthquake Eng.
@@ -283,7 +283,7 @@ def h2_tuning(mu, zeta_p=0.0, method="auto", maxiter=None) -> TMDTuning:
         ff, lz = x
         if not (0.0 < ff <= F_MAX and lz < math.log(ZETA_MAX)):
             return math.inf
-        return math.log(h2_norm(mu, ff, math.exp(lz), zp))
+        return math.log(h2_norm(mu, ff, math.exp(lz), zeta_p=zp))
 
     res = minimize(
         cost, [f, math.log(za)], method="Nelder-Mead", options={"xatol": 1e-9, "fatol": 1e-14, "maxiter": maxiter}

@@ -39,7 +39,7 @@ class AssumptionStudy:
     lags: int  # lags of the residual tests, samples
 
 
-def assumption_records(osc: Oscillator, k3: float, t, force, linear):
+def assumption_records(osc: Oscillator, k3: float, t, *, force, linear):
     """Each case of :data:`ASSUMPTION_CASES` with the noise-free displacement its records are made from.
 
     Parameters
@@ -64,13 +64,13 @@ def assumption_records(osc: Oscillator, k3: float, t, force, linear):
     >>> t = np.arange(0.0, 2.0, 0.01)
     >>> f = np.sin(3.0 * t)
     >>> x = synthetic_measurements(osc, t, f).x
-    >>> [(j, uk, clean is x) for j, _, (_, _, _, uk), clean in assumption_records(osc, 5.0, t, f, x)]
+    >>> [(j, uk, clean is x) for j, _, (_, _, _, uk), clean in assumption_records(osc, 5.0, t, force=f, linear=x)]
     [(0, 0.0, True), (1, 0.0, True), (2, 0.0, True), (3, 1.0, False)]
     """
     cubic = None
     for j, (label, multipliers) in enumerate(ASSUMPTION_CASES.items()):
         if multipliers[3] and cubic is None:
-            cubic = cubic_response(osc, k3, t, force)
+            cubic = cubic_response(osc, k3, t, force=force)
         yield j, label, multipliers, cubic if multipliers[3] else linear
 
 
@@ -145,8 +145,8 @@ def assumption_study(
     truth = np.array([osc.m, osc.c, osc.k])
     lags = WHITENESS_LAGS
     experiments = {"as assumed": reference}
-    predicted = {"as assumed": predicted_coverage(osc, t, force, 0.0)}
-    for j, label, (uf, uy, uc, _uk), clean in assumption_records(osc, k3, t, force, linear):
+    predicted = {"as assumed": predicted_coverage(osc, t, force, colour=0.0)}
+    for j, label, (uf, uy, uc, _uk), clean in assumption_records(osc, k3, t, force=force, linear=linear):
         sd = uy * reference.noise * float(np.sqrt(np.mean(clean**2)))
         experiments[label] = _monte_carlo(
             truth,
@@ -165,7 +165,7 @@ def assumption_study(
             colour=uc * colour,
             case=label,
         )
-        predicted[label] = predicted_coverage(osc, t, force, colour) if uc else None
+        predicted[label] = predicted_coverage(osc, t, force, colour=colour) if uc else None
     return AssumptionStudy(
         experiments=experiments,
         predicted=predicted,

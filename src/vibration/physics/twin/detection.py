@@ -95,9 +95,9 @@ def detection_experiment(
     osc: Oscillator,
     t,
     force,
+    *,
     stiffness,
     change_time: float,
-    *,
     noise: float,
     runs: int = 200,
     seed: int = 0,
@@ -138,8 +138,9 @@ def detection_experiment(
     --------
     >>> t = np.arange(0.0, 120.0, 0.02)
     >>> osc, f = Oscillator(m=1.0, c=0.5, k=20.0), random_force(t)
-    >>> ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=60.0, drop=0.05)
-    >>> ex = detection_experiment(osc, t, f, ks, 60.0, noise=2e-3, runs=5, reference=osc, thresholds=[40, 80])
+    >>> ks = stiffness_profile(t, 20.0, 1e9, decline_rate=0.0, drop_time=60.0, drop=0.05)
+    >>> ex = detection_experiment(osc, t, f, stiffness=ks, change_time=60.0, noise=2e-3, runs=5, reference=osc,
+    ...                           thresholds=[40, 80])
     >>> ex.detection_probability.tolist(), ex.false_alarm_probability.tolist()
     ([1.0, 1.0], [0.0, 0.0])
     """
@@ -229,7 +230,7 @@ def _check_window(t_monitor, dt) -> tuple[float, float]:
     return t_monitor, dt
 
 
-def fault_scenario(k: float, t_monitor: float, dt: float, decline_rate: float, drop: float) -> FaultScenario:
+def fault_scenario(k: float, t_monitor: float, dt: float, *, decline_rate: float, drop: float) -> FaultScenario:
     """Healthy for the first 40 % of the window, then a slow decline, and a sudden drop at 70 %.
 
     Parameters
@@ -245,7 +246,7 @@ def fault_scenario(k: float, t_monitor: float, dt: float, decline_rate: float, d
 
     Examples
     --------
-    >>> sc = fault_scenario(20.0, 100.0, 0.5, 0.001, 0.1)
+    >>> sc = fault_scenario(20.0, 100.0, 0.5, decline_rate=0.001, drop=0.1)
     >>> sc.decline_start, sc.drop_time, round(float(sc.k[-1]), 3)
     (40.0, 70.0, 16.92)
     """
@@ -254,7 +255,7 @@ def fault_scenario(k: float, t_monitor: float, dt: float, decline_rate: float, d
     start, when = 0.4 * t_monitor, 0.7 * t_monitor
     return FaultScenario(
         t=t,
-        k=stiffness_profile(t, k, start, decline_rate, drop_time=when, drop=drop),
+        k=stiffness_profile(t, k, start, decline_rate=decline_rate, drop_time=when, drop=drop),
         decline_start=start,
         drop_time=when,
     )
@@ -264,11 +265,11 @@ def detection_study(
     osc: Oscillator,
     reference,
     t_monitor: float,
+    *,
     dt: float,
     noise: float,
     decline_rate: float,
     drop: float,
-    *,
     runs: int = 100,
     seed: int = 0,
     thresholds=THRESHOLDS,
@@ -284,7 +285,8 @@ def detection_study(
     Examples
     --------
     >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
-    >>> st = detection_study(osc, osc, 100.0, 0.02, 0.01, 0.001, 0.05, runs=3, thresholds=(40.0,))
+    >>> st = detection_study(osc, osc, 100.0, dt=0.02, noise=0.01, decline_rate=0.001, drop=0.05, runs=3,
+    ...                      thresholds=(40.0,))
     >>> sorted(st), [float(e.detection_probability[0]) for e in st.values()]
     (['slow decline', 'sudden drop'], [1.0, 1.0])
     """
@@ -303,16 +305,16 @@ def detection_study(
     clean = synthetic_measurements(osc, t, force).x
     sd = noise * float(np.sqrt(np.mean(clean**2)))
     profiles = {
-        "sudden drop": stiffness_profile(t, osc.k, start, 0.0, drop_time=start, drop=drop),
-        "slow decline": stiffness_profile(t, osc.k, start, decline_rate),
+        "sudden drop": stiffness_profile(t, osc.k, start, decline_rate=0.0, drop_time=start, drop=drop),
+        "slow decline": stiffness_profile(t, osc.k, start, decline_rate=decline_rate),
     }
     return {
         label: detection_experiment(
             osc,
             t,
             force,
-            ks,
-            start,
+            stiffness=ks,
+            change_time=start,
             noise=sd,
             runs=runs,
             seed=seed + 1 + 7919 * j,

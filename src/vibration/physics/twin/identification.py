@@ -185,7 +185,7 @@ def _frf(force, y, h, sensor, nperseg=None):
     return w[ok], hh[ok], coh[ok], pff[ok]
 
 
-def identify(t, force, x=None, a=None, *, search: str = "global") -> Identification:
+def identify(t, force, x=None, *, a=None, search: str = "global") -> Identification:
     """Estimate m, c, k from a broadband test, with standard errors and 95 % confidence intervals.
 
     Output-error nonlinear least squares on the exact first-order-hold model
@@ -380,7 +380,7 @@ class FrequencyEstimate:
     reason: str = ""
 
 
-def frf_estimate(t, force, x=None, a=None, nperseg: int | None = None) -> FrequencyResponse:
+def frf_estimate(t, force, x=None, *, a=None, nperseg: int | None = None) -> FrequencyResponse:
     """Receptance estimate ``H1 = S_Fy / S_FF`` (Welch, Hann window, 50 % overlap).
 
     Parameters

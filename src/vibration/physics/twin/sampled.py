@@ -192,7 +192,7 @@ class SampledResponse:
     a: np.ndarray
 
 
-def sampled_response(osc: Oscillator, t, force, x0: float = 0.0, v0: float = 0.0) -> SampledResponse:
+def sampled_response(osc: Oscillator, t, force, *, x0: float = 0.0, v0: float = 0.0) -> SampledResponse:
     """Exact response to a sampled force held linear between samples (first-order hold).
 
     Parameters
@@ -242,7 +242,7 @@ def sampled_response(osc: Oscillator, t, force, x0: float = 0.0, v0: float = 0.0
     return SampledResponse(t=t, x=x, v=v, a=acc)
 
 
-def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float, n: int) -> dict:
+def discretisation_checks(osc: Oscillator, F0: float, omega: float, *, t_end: float, n: int) -> dict:
     """Differences of :func:`sampled_response` from three independent references, with their bounds.
 
     Returns ``{name: (difference, bound)}`` (both in m):
@@ -257,7 +257,7 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, t_end: float
 
     Examples
     --------
-    >>> ch = discretisation_checks(Oscillator(m=1.0, c=0.5, k=20.0), 5.0, 4.47, 50.0, 5001)
+    >>> ch = discretisation_checks(Oscillator(m=1.0, c=0.5, k=20.0), 5.0, 4.47, t_end=50.0, n=5001)
     >>> all(v < b for v, b in ch.values())
     True
     """

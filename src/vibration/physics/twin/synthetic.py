@@ -35,7 +35,7 @@ __all__ = [
 MAX_MULTISINE_TERMS = 100_000_000
 
 
-def random_force(t, band: tuple[float, float] = (0.1, 2.0), rms: float = 2.0, seed: int = 0) -> np.ndarray:
+def random_force(t, band: tuple[float, float] = (0.1, 2.0), rms: float = 2.0, *, seed: int = 0) -> np.ndarray:
     """Band-limited random force: a multisine with a flat spectrum in ``band`` and random phases.
 
     Parameters
@@ -99,7 +99,7 @@ def random_force(t, band: tuple[float, float] = (0.1, 2.0), rms: float = 2.0, se
 
 
 def stiffness_profile(
-    t, k0: float, decline_start: float, decline_rate: float, drop_time: float | None = None, drop: float = 0.0
+    t, k0: float, decline_start: float, *, decline_rate: float, drop_time: float | None = None, drop: float = 0.0
 ) -> np.ndarray:
     """A fatigue-like stiffness history: constant, then a linear decline, optionally a sudden drop.
 
@@ -120,7 +120,7 @@ def stiffness_profile(
 
     Examples
     --------
-    >>> stiffness_profile([0.0, 10.0, 20.0, 30.0], 20.0, 10.0, 0.001, drop_time=25.0, drop=0.1)
+    >>> stiffness_profile([0.0, 10.0, 20.0, 30.0], 20.0, 10.0, decline_rate=0.001, drop_time=25.0, drop=0.1)
     array([20.  , 20.  , 19.8 , 17.64])
     """
     t = _signal("t", t)
@@ -191,7 +191,7 @@ def synthetic_measurements(
         raise ParameterError(f"t has {t.size} samples: allowed at least 2")
     force = _signal("force", force, t.size)
     if stiffness is None:
-        r = sampled_response(osc, t, force, x0, v0)
+        r = sampled_response(osc, t, force, x0=x0, v0=v0)
         y = r.x if sensor == "x" else r.a
     else:
         ks = _signal("stiffness", stiffness, t.size)
@@ -243,8 +243,8 @@ def simulated_test(
     osc: Oscillator,
     duration: float,
     dt: float,
-    noise: float,
     *,
+    noise: float,
     seed: int = 0,
     band: tuple[float, float] = (0.1, 2.0),
     rms: float = 2.0,
@@ -268,7 +268,7 @@ def simulated_test(
 
     Examples
     --------
-    >>> rec = simulated_test(Oscillator(m=1.0, c=0.5, k=20.0), 10.0, 0.02, 0.1)
+    >>> rec = simulated_test(Oscillator(m=1.0, c=0.5, k=20.0), 10.0, 0.02, noise=0.1)
     >>> len(rec), rec.sensor
     (501, 'x')
     """

@@ -100,7 +100,7 @@ class StiffnessTrack:
 
 
 def track_stiffness(
-    t, force, x=None, a=None, reference=None, *, walk: float = 0.02, calibration: float = CALIBRATION
+    t, force, x=None, *, a=None, reference=None, walk: float = 0.02, calibration: float = CALIBRATION
 ) -> StiffnessTrack:
     """Track the stiffness online with an extended Kalman filter on the augmented state ``(x, v, k)``.
 
@@ -128,7 +128,7 @@ def track_stiffness(
     --------
     >>> from vibration.physics.twin import random_force, stiffness_profile, synthetic_measurements
     >>> t = np.arange(0.0, 120.0, 0.02)
-    >>> ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=60.0, drop=0.2)
+    >>> ks = stiffness_profile(t, 20.0, 1e9, decline_rate=0.0, drop_time=60.0, drop=0.2)
     >>> meas = synthetic_measurements(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t), noise=2e-3, stiffness=ks)
     >>> tr = track_stiffness(**meas, reference=(1.0, 0.5, 20.0))
     >>> round(float(tr.k[t < 60][-1])), round(float(tr.k[-1]))          # N/m
@@ -248,9 +248,9 @@ def detect_change(
     t,
     force,
     x=None,
+    *,
     a=None,
     reference=None,
-    *,
     threshold: float = CUSUM_THRESHOLD,
     drift: float = CUSUM_DRIFT,
     calibration: float = CALIBRATION,
@@ -292,7 +292,7 @@ def detect_change(
     >>> from vibration.physics.twin import random_force, stiffness_profile, synthetic_measurements
     >>> t = np.arange(0.0, 200.0, 0.02)
     >>> osc, f = Oscillator(m=1.0, c=0.5, k=20.0), random_force(t, seed=4)
-    >>> ks = stiffness_profile(t, 20.0, 1e9, 0.0, drop_time=120.0, drop=0.05)
+    >>> ks = stiffness_profile(t, 20.0, 1e9, decline_rate=0.0, drop_time=120.0, drop=0.05)
     >>> healthy = detect_change(**synthetic_measurements(osc, t, f, noise=2e-3, seed=5))
     >>> faulty = detect_change(**synthetic_measurements(osc, t, f, noise=2e-3, seed=5, stiffness=ks))
     >>> healthy.alarm_time is None, 120.0 < faulty.alarm_time < 125.0         # s

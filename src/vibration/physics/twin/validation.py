@@ -147,7 +147,7 @@ def input_correlation(residual, force, lags: int = WHITENESS_LAGS) -> tuple[floa
     return zeta, float(chi2.sf(zeta, dof)), dof
 
 
-def cubic_response(osc: Oscillator, k3: float, t, force, substeps: int = 8) -> np.ndarray:
+def cubic_response(osc: Oscillator, k3: float, t, *, force, substeps: int = 8) -> np.ndarray:
     """Displacement (m) of ``m x'' + c x' + k x + k3 x^3 = F`` from rest, F linear between samples.
 
     Classical Runge-Kutta with ``substeps`` steps per sampling interval (the force is linear inside each
@@ -159,7 +159,7 @@ def cubic_response(osc: Oscillator, k3: float, t, force, substeps: int = 8) -> n
     >>> from vibration.physics.twin import random_force
     >>> t = np.arange(0.0, 10.0, 0.02)
     >>> f = random_force(t, seed=1)
-    >>> bool(np.max(np.abs(cubic_response(Oscillator(m=1, c=0.5, k=20), 0.0, t, f) - sampled_response(
+    >>> bool(np.max(np.abs(cubic_response(Oscillator(m=1, c=0.5, k=20), 0.0, t, force=f) - sampled_response(
     ...     Oscillator(m=1, c=0.5, k=20), t, f).x)) < 1e-8)
     True
     """
@@ -222,12 +222,12 @@ def _response_jacobian(osc: Oscillator, t, force) -> np.ndarray:
             / (2.0 * step)
         )
     zero = np.zeros_like(force)
-    cols.append(sampled_response(osc, t, zero, 1.0, 0.0).x)
-    cols.append(sampled_response(osc, t, zero, 0.0, 1.0).x)
+    cols.append(sampled_response(osc, t, zero, x0=1.0, v0=0.0).x)
+    cols.append(sampled_response(osc, t, zero, x0=0.0, v0=1.0).x)
     return np.column_stack(cols)
 
 
-def predicted_coverage(osc: Oscillator, t, force, colour: float = 0.0) -> np.ndarray:
+def predicted_coverage(osc: Oscillator, t, force, *, colour: float = 0.0) -> np.ndarray:
     """First-order coverage of the Student-t 95 % intervals of m, c, k under Gaussian AR(1) sensor noise.
 
     The intervals use ``s^2 (J^T J)^-1`` with ``s^2`` the residual variance (to first order the noise's
@@ -249,7 +249,7 @@ def predicted_coverage(osc: Oscillator, t, force, colour: float = 0.0) -> np.nda
     --------
     >>> from vibration.physics.twin import random_force
     >>> t = np.arange(0.0, 30.0, 0.02)
-    >>> p = predicted_coverage(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t), 0.0)
+    >>> p = predicted_coverage(Oscillator(m=1.0, c=0.5, k=20.0), t, random_force(t), colour=0.0)
     >>> [round(float(v), 3) for v in p]
     [0.95, 0.95, 0.95]
     """
