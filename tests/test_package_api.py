@@ -134,3 +134,14 @@ def test_public_functions_take_parameters_after_the_third_keyword_only():
     for rel, name in POSITIONAL_ALLOWED:  # the allow-list names only what is still there
         tree = ast.parse((root / rel).read_text(encoding="utf-8"))
         assert any(isinstance(n, ast.FunctionDef) and n.name == name for n in tree.body), (rel, name)
+
+
+#: The longest module the package may hold, in lines: past it, a module holds more than one idea.
+MODULE_LINES = 600
+
+
+def test_no_module_is_longer_than_six_hundred_lines():
+    root = INIT.parent
+    lengths = {p.relative_to(root).as_posix(): p.read_text(encoding="utf-8").count("\n") for p in root.rglob("*.py")}
+    assert len(lengths) > 100  # the whole package was read
+    assert {name: n for name, n in lengths.items() if n > MODULE_LINES} == {}
