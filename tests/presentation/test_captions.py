@@ -84,3 +84,51 @@ def test_dash_dotted_is_not_dotted():
     with pytest.raises(ValueError, match="dotted"):
         check_caption(fig, "One dotted line.")
     plt.close(fig)
+
+
+def _dense_figure():
+    """A sparse line with labelled axes beside a Poincaré-like cloud of 30,000 points and a long time series."""
+    fig, (left, right) = figure(1, 2)
+    rng = np.random.default_rng(1)
+    t = np.linspace(0.0, 50.0, 20_000)
+    left.plot(t, np.sin(t), color="0.5")
+    left.plot([0.0, 50.0], [0.0, 0.5], **case_style("exact"))
+    left.set_xlabel("time t (s)")
+    right.scatter(rng.random(30_000), rng.random(30_000), s=1)
+    right.set_ylabel("velocity v (m/s)")
+    return fig
+
+
+def test_figures_carry_no_svg_unless_asked(monkeypatch):
+    """The committed notebooks (nbval's references) keep the PNG alone: an SVG only where the runner asks."""
+    from vibration.presentation.captions import FORMATS_ENV
+
+    monkeypatch.delenv(FORMATS_ENV, raising=False)
+    cap = Captioned(_dense_figure(), "Left: a line. Right: dots.", "fig-d", "A cloud of dots.")
+    data, meta = cap._repr_mimebundle_()
+    assert sorted(data) == ["image/png", "text/plain"] and "image/svg+xml" not in meta
+
+
+def test_svg_when_asked_keeps_text_and_lines_vector_and_dense_parts_as_images(monkeypatch):
+    import re
+
+    from vibration.presentation.captions import FORMATS_ENV
+
+    monkeypatch.setenv(FORMATS_ENV, "svg")
+    fig = _dense_figure()
+    caption = "Left: a grey line under the exact one (black, dashed). Right: dots."
+    cap = Captioned(fig, caption, "fig-d", "A cloud of dots.")
+    data, meta = cap._repr_mimebundle_()
+    svg = data["image/svg+xml"]
+    assert meta["image/svg+xml"] == meta["image/png"], "shown at the PNG's size"
+    assert data["image/png"], "the screen's pages keep the PNG"
+    # text stays text (selectable in the PDF), the axes' labels among it
+    texts = re.findall(r"<text\b[^>]*>([^<]*)</text>", svg)
+    assert "time t (s)" in texts and "velocity v (m/s)" in texts, texts
+    # the dense cloud and the long series are images inside the SVG; the short dashed line stays a path
+    assert svg.count("<image") == 2, svg.count("<image")
+    assert 'id="line2d_' in svg and "stroke-dasharray" in svg
+    assert len(svg) < 400_000, len(svg)  # 30,000 markers as paths would be several MB
+    assert [a.get_rasterized() for a in fig.axes[0].lines] == [False, False], "the figure itself is left as it was"
+    again = Captioned(_dense_figure(), cap.caption, "fig-d", "A cloud of dots.")._repr_mimebundle_()[0]
+    assert again["image/svg+xml"] == svg, "a figure drawn again gives the same bytes (no date, fixed element ids)"

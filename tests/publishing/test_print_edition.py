@@ -1,14 +1,23 @@
 """The print edition on a small single-page book: title page with its edition, lists of figures and tables,
-bookmarks to section level, and no page marks left in the PDF's text layer."""
+bookmarks to section level, and no page marks left in the PDF's text layer; the runner's print edition draws
+its figures as vectors."""
 
 from __future__ import annotations
 
+import html
+import os
 import re
+import subprocess
+import sys
+from pathlib import Path
 
 import pytest
-from conftest import open_offline
+from conftest import CHROMIUM, open_offline
 
+from vibration.presentation.captions import METADATA_KEY
 from vibration.publishing.print_edition import commit_date, edition_text, print_book
+
+ROOT = Path(__file__).resolve().parents[2]
 
 _PAGE = """<!doctype html><html><head><meta charset="utf-8"><title>t</title></head><body><article>
 <section><h1>The book</h1><p>Front page.</p></section>
@@ -102,3 +111,70 @@ def test_print_keeps_each_folds_summary_on_the_page_of_what_it_opens(browser, tm
     for n in range(1, 25):
         summary = next(i for i, t in enumerate(texts) if f"Details: fold {n}" in t)
         assert f"Figure of fold {n}." in texts[summary], f"fold {n}: its summary is on page {summary + 1} alone"
+
+
+@pytest.fixture(scope="module")
+def run_printed(tmp_path_factory) -> Path:
+    """Chapter 1 run by the report runner (papermill, then the book and its print edition: about a minute)."""
+    if not os.path.exists(CHROMIUM):
+        pytest.skip(f"{CHROMIUM} is missing: make browser installs it")
+    out = tmp_path_factory.mktemp("run-printed")
+    proc = subprocess.run(
+        [sys.executable, "-m", "vibration.report", "01", "--out", str(out)],
+        capture_output=True,
+        text=True,
+        timeout=900,
+        cwd=ROOT,
+    )
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    return out
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+def test_the_runners_print_edition_draws_its_figures_as_vectors(run_printed):
+    """No image in the PDF has the printed size of a whole figure (a dense part of a figure, drawn as an image
+    inside it, is smaller), and the words a figure draws (legends, titles) are in the PDF's text layer."""
+    import nbformat
+    import pypdfium2
+
+    nb = nbformat.read(run_printed / "notebooks" / "01_reproduction.ipynb", as_version=4)
+    figures = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs if METADATA_KEY in o.get("metadata", {})]
+    assert len(figures) >= 3, len(figures)
+    # printed size in pt of each figure: its CSS size (96 px per inch) at 72 pt per inch
+    sizes = [(0.75 * o.metadata["image/png"]["width"], 0.75 * o.metadata["image/png"]["height"]) for o in figures]
+    doc = pypdfium2.PdfDocument(str(run_printed / "report" / "report.pdf"))
+    images, text = [], []
+    try:
+        for i in range(len(doc)):
+            page = doc[i]
+            for obj in page.get_objects(max_depth=8):
+                if obj.type == pypdfium2.raw.FPDF_PAGEOBJ_IMAGE:
+                    left, bottom, right, top = obj.get_bounds()
+                    images.append((i + 1, right - left, top - bottom))
+            text.append(page.get_textpage().get_text_range())
+    finally:
+        doc.close()
+    whole = [(n, round(w), round(h)) for n, w, h in images
+             if any(abs(w - fw) < 0.02 * fw and abs(h - fh) < 0.02 * fh for fw, fh in sizes)]  # fmt: skip
+    assert not whole, f"{len(whole)} of {len(figures)} figures printed whole as images (page, w, h in pt): {whole}"
+    flat = "".join("".join(text).split())
+    words = [html.unescape(w) for o in figures for w in re.findall(r"<text\b[^>]*>([^<]+)</text>",
+             o.data.get("image/svg+xml", "")) if len(w) > 3 and re.search(r"[A-Za-z]", w)]  # fmt: skip
+    assert words, "the figures carry no SVG with text"
+    missing = [w for w in words if "".join(w.split()) not in flat]
+    assert not missing, f"words the figures draw are not in the PDF's text: {missing}"
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+def test_the_screens_pages_and_downloads_keep_the_png(run_printed):
+    """The SVG is the print edition's: the chapter's HTML page shows PNGs and its download carries no SVG."""
+    import nbformat
+
+    page = (run_printed / "report" / "01_reproduction.html").read_text(encoding="utf-8")
+    sources = re.findall(r'<img\b[^>]*\bsrc="([^"]+)"', page)
+    assert sources and all(s.endswith(".png") for s in sources), sources
+    nb = nbformat.read(run_printed / "report" / "_static" / "downloads" / "01_reproduction.ipynb", as_version=4)
+    kinds = {k for c in nb.cells if c.cell_type == "code" for o in c.outputs for k in o.get("data", {})}
+    assert "image/png" in kinds and "image/svg+xml" not in kinds, kinds

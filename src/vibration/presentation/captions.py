@@ -8,6 +8,14 @@ styles, colours or logarithmic axes that are not drawn. The figure shows as a Hi
 book's column width; the caption, label and alt text travel in the output's metadata, where
 the book build picks them up (:data:`METADATA_KEY`), and as the text a regression test compares.
 
+The print edition's figures are vector: a kernel whose environment names ``svg`` in
+:data:`FORMATS_ENV` (the report runner sets it; JupyterLab, nbval and the committed notebooks
+do not) adds an SVG beside the PNG (:meth:`Captioned.svg`), with text as text, so the PDF
+keeps it selectable, and each dense artist (more than :data:`DENSE_POINTS` points: a Poincaré
+section, a long time series, a mesh) drawn as an image inside the vector figure, so the file
+stays small. The screen's pages keep the PNG; the single page the PDF is printed from takes the
+SVG (the book's mime priorities, :mod:`vibration.publishing.sphinx_source`).
+
 Examples
 --------
 >>> from vibration.presentation.style import figure
@@ -30,7 +38,9 @@ ValueError: caption says 'dotted' but no dotted line is drawn
 from __future__ import annotations
 
 import base64
+import contextlib
 import io
+import os
 import re
 
 import numpy as np
@@ -43,6 +53,17 @@ METADATA_KEY = "vibration/figure"
 
 #: PNG pixels per CSS pixel (a HiDPI image shown at the column width stays sharp).
 PIXEL_RATIO = 2
+
+#: Environment variable naming the figure formats a kernel's figures carry beside the PNG (comma-separated;
+#: ``svg`` is the one known). The report runner sets it to ``svg`` for its executed copies.
+FORMATS_ENV = "VIBRATION_FIGURE_FORMATS"
+
+#: An artist with more points than this (a line's vertices, a scatter's markers, a mesh's corners) is drawn as
+#: an image inside the SVG: as vector paths it would make the file large and slow to print.
+DENSE_POINTS = 2000
+
+#: Resolution of those images inside the SVG, dots per inch (print quality at the figure's printed size).
+RASTER_DPI = 200
 
 _POSITION = ("left", "middle", "right", "top", "bottom", "centre", "center", "above", "below", "upper", "lower")
 _LINESTYLE = {"dashed": "--", "dotted": ":", "dash-dotted": "-."}
@@ -204,7 +225,7 @@ def caption_words(text: str) -> int:
 
 
 class Captioned:
-    """A figure with its caption, label and alt text (shown as a HiDPI PNG; see the module's notes).
+    """A figure with its caption, label and alt text (a HiDPI PNG, and an SVG for print; see the module's notes).
 
     The caption says what is drawn, in at most :data:`CAPTION_WORDS` words; ``remark``, when given, is
     what the figure shows (its computed findings), set as a paragraph of text under the figure.
@@ -229,16 +250,27 @@ class Captioned:
         self.fig.savefig(buf, format="png", dpi=style.DPI * PIXEL_RATIO)
         return buf.getvalue()
 
+    def svg(self) -> str:
+        """The figure as SVG: text as text (in the style's fonts), each dense artist (:func:`dense_artists`) an
+        image at :data:`RASTER_DPI` inside it; element ids and the file depend on the figure only (no date)."""
+        import matplotlib as mpl
+
+        buf = io.StringIO()
+        with _rasterized(dense_artists(self.fig)), mpl.rc_context({"svg.fonttype": "none", "svg.hashsalt": self.name}):
+            self.fig.savefig(buf, format="svg", dpi=RASTER_DPI, metadata={"Date": None})
+        return buf.getvalue()
+
     def _repr_mimebundle_(self, include=None, exclude=None):
         width, height = self.fig.get_size_inches() * style.DPI
+        size = {"width": int(round(width)), "height": int(round(height))}
         data = {
             "image/png": base64.b64encode(self.png()).decode("ascii"),
             "text/plain": f"Figure {self.name}: {self.caption}",
         }
-        meta = {
-            "image/png": {"width": int(round(width)), "height": int(round(height))},
-            METADATA_KEY: {"caption": self.caption, "name": self.name, "alt": self.alt},
-        }
+        meta = {"image/png": size, METADATA_KEY: {"caption": self.caption, "name": self.name, "alt": self.alt}}
+        if "svg" in figure_formats() or "image/svg+xml" in (include or ()):
+            data["image/svg+xml"] = self.svg()
+            meta["image/svg+xml"] = dict(size)  # shown at the PNG's CSS size
         return data, meta
 
     def _ipython_display_(self) -> None:
@@ -252,6 +284,54 @@ class Captioned:
 
     def __repr__(self) -> str:
         return f"Figure {self.name}: {self.caption}" + (f"\n{self.remark}" if self.remark else "")
+
+
+def figure_formats() -> set[str]:
+    """The formats named in :data:`FORMATS_ENV` (lower case), beside the PNG every figure carries."""
+    return {f.strip().lower() for f in os.environ.get(FORMATS_ENV, "").split(",") if f.strip()}
+
+
+def _points(artist) -> int:
+    """How many points ``artist`` draws: a line's vertices, a collection's markers or path vertices, a mesh's
+    corners (0 for anything else)."""
+    from matplotlib.collections import Collection, QuadMesh
+    from matplotlib.lines import Line2D
+
+    if isinstance(artist, Line2D):
+        return len(artist.get_xydata())
+    if isinstance(artist, QuadMesh):
+        return int(np.prod(artist.get_coordinates().shape[:2]))
+    if isinstance(artist, Collection):
+        offsets = len(artist.get_offsets())
+        vertices = sum(len(path.vertices) for path in artist.get_paths())
+        return max(offsets, vertices)
+    return 0
+
+
+def dense_artists(fig) -> list:
+    """The artists of ``fig`` with more than :data:`DENSE_POINTS` points, which the SVG draws as images.
+
+    >>> from vibration.presentation.style import figure
+    >>> fig, ax = figure()
+    >>> line, = ax.plot(np.arange(3000.0)); dots = ax.scatter([0, 1], [0, 1])
+    >>> dense_artists(fig) == [line]
+    True
+    >>> import matplotlib.pyplot as plt; plt.close(fig)
+    """
+    return [a for ax in fig.axes for a in (*ax.lines, *ax.collections) if _points(a) > DENSE_POINTS]
+
+
+@contextlib.contextmanager
+def _rasterized(artists: list):
+    """``artists`` rasterized inside the block, their own setting restored after it."""
+    before = [a.get_rasterized() for a in artists]
+    for a in artists:
+        a.set_rasterized(True)
+    try:
+        yield
+    finally:
+        for a, was in zip(artists, before, strict=True):
+            a.set_rasterized(was)
 
 
 def web_only(text: str, print_text: str = "") -> str:

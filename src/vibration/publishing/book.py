@@ -13,6 +13,10 @@ copies of the executed notebooks and builds them:
 * live widget views give way to the HTML the same output carries (the kernel-free
   panels); no widget manager or require.js is loaded;
 * equations are MathML (:mod:`vibration.publishing.sphinx_ext`), search is Sphinx's own;
+* a figure shows as its PNG on the screen's pages and, where the executed copy carries one (the runner's
+  copies do: :data:`vibration.presentation.captions.FORMATS_ENV`), as its SVG in the PDF, vector with
+  selectable text; a book from the committed notebooks (:func:`~vibration.publishing.report.book_from_sources`)
+  prints their PNGs;
 * one PDF of the whole book, printed by Chromium from Sphinx's single-page build.
 
 The pages are :mod:`~vibration.publishing.pages`, their edits :mod:`~vibration.publishing.page_edits`, the

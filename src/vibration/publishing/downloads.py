@@ -11,7 +11,7 @@ from pathlib import Path
 from ..physics.model import ParameterError
 from .registry import project_root
 
-__all__ = ["build_wheel", "download_cell", "wheel_name", "write_downloads"]
+__all__ = ["build_wheel", "download_cell", "drop_print_figures", "wheel_name", "write_downloads"]
 
 
 def wheel_name() -> str:
@@ -73,6 +73,24 @@ def build_wheel(folder: Path) -> Path:
     return wheel
 
 
+def drop_print_figures(nb) -> None:
+    """The SVG copy of each figure that also carries a PNG (the print edition's, see
+    :data:`vibration.presentation.captions.FORMATS_ENV`) removed from ``nb``: a download shows the PNG.
+
+    >>> import nbformat
+    >>> out = nbformat.v4.new_output("display_data", {"image/png": "AA==", "image/svg+xml": "<svg/>"},
+    ...                              metadata={"image/svg+xml": {"width": 672}})
+    >>> nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("f", outputs=[out])])
+    >>> drop_print_figures(nb); sorted(out.data), dict(out.metadata)
+    (['image/png'], {})
+    """
+    for cell in nb.cells:
+        for out in cell.get("outputs", []) if cell.cell_type == "code" else []:
+            data = out.get("data", {})
+            if "image/png" in data and data.pop("image/svg+xml", None) is not None:
+                out.get("metadata", {}).pop("image/svg+xml", None)
+
+
 def write_downloads(pages, folder: Path) -> list[Path]:
     """Each chapter's executed notebook and the package's wheel in ``folder`` (copied into the book)."""
 
@@ -83,6 +101,7 @@ def write_downloads(pages, folder: Path) -> list[Path]:
     for p in pages:
         nb = nbformat.from_dict(p.notebook)
         nb.metadata.pop("papermill", None)
+        drop_print_figures(nb)
         path = folder / f"{p.name}.ipynb"
         nbformat.write(nb, path)
         written.append(path)

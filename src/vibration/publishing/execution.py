@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..presentation.captions import FORMATS_ENV
 from ..presentation.tables import TABLES_ENV
 from .crossrefs import number_references
 from .engine import announce, cluster
@@ -65,6 +66,7 @@ class ChapterTask:
     params: dict
     cell_timeout: float = CELL_TIMEOUT_S
     tables: bool = True  # collect the tables the notebook writes
+    vector_figures: bool = True  # figures also as SVG, for the print edition (captions.FORMATS_ENV)
     kernel: str | None = None  # the kernel to start; None: the project's when the worker has it, else python3
 
 
@@ -97,6 +99,10 @@ def run_chapter(task: ChapterTask) -> dict:
             os.environ[TABLES_ENV] = str(tables)
         else:
             os.environ.pop(TABLES_ENV, None)
+        if task.vector_figures:  # the kernel inherits the worker's environment
+            os.environ[FORMATS_ENV] = "svg"
+        else:
+            os.environ.pop(FORMATS_ENV, None)
         start = time.perf_counter()
         try:
             papermill.execute_notebook(
@@ -116,6 +122,7 @@ def run_chapter(task: ChapterTask) -> dict:
             ) from None
         finally:
             os.environ.pop(TABLES_ENV, None)
+            os.environ.pop(FORMATS_ENV, None)
         elapsed = time.perf_counter() - start
         return {
             "notebook": output.read_bytes(),
@@ -156,7 +163,7 @@ def execute_notebooks(
     with cluster(jobs, scheduler) as client:
         tasks = [
             ChapterTask(name=f"{Path(src).stem}#{i}", source=str(Path(src).resolve()), notebook=Path(src).read_bytes(),
-                        params=dict(params), tables=False, kernel=kernel)
+                        params=dict(params), tables=False, vector_figures=False, kernel=kernel)
             for i, (src, _, params) in enumerate(runs)
         ]  # fmt: skip
         futures = [client.submit(run_chapter, task, key=f"chapter-{task.name}", pure=False) for task in tasks]

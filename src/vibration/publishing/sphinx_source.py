@@ -70,6 +70,8 @@ nb_mime_priority_overrides = [
     ("*", "application/vnd.jupyter.widget-view+json", None),
     ("html", "text/markdown", 5),
     ("singlehtml", "text/markdown", 5),
+    ("html", "image/svg+xml", 55),  # a figure's PNG (50) on the screen's pages
+    ("singlehtml", "image/svg+xml", 40),  # its SVG on the single page the PDF is printed from (PNG: 50)
 ]
 nb_number_source_lines = False
 nb_scroll_outputs = False
