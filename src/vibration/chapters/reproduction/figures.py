@@ -2,7 +2,8 @@
 
 Colours and line styles come from the book's visual language (:func:`vibration.presentation.style.case_style`):
 the reference run orange, the nominal damping (the paper's resonance run) blue, the low damping
-vermillion, the high damping green; the exact solution black and dashed. Captions are built from
+vermillion, the high damping green; the exact solution black and dashed, drawn as its envelope over the dense
+oscillations of the paper's figures. Captions are built from
 the drawn figure (its panel layout) and the study's numbers; each figure's remark says whether the
 paper's method and the exact solution coincide, and by how much they differ.
 """
@@ -40,14 +41,32 @@ def _legend_above(ax, handles, ncol: int):
     )  # fmt: skip
 
 
+def envelope(t: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The curves through the successive maxima and through the successive minima of ``y(t)``, each starting at
+    ``t[0]``: what a dense oscillation looks like from afar, drawn without the moiré of a dashed line over it.
+
+    >>> t = np.linspace(0.0, 10.0, 2001)
+    >>> tu, yu, tl, yl = envelope(t, np.sin(2 * np.pi * t))
+    >>> len(tu), round(float(yu[1:].min()), 6), round(float(yl[1:].max()), 6)
+    (11, 1.0, -1.0)
+    """
+    inner = np.arange(1, len(y) - 1)
+    top = inner[(y[inner] >= y[inner - 1]) & (y[inner] > y[inner + 1])]
+    low = inner[(y[inner] <= y[inner - 1]) & (y[inner] < y[inner + 1])]
+    top, low = np.concatenate(([0], top)), np.concatenate(([0], low))
+    return t[top], y[top], t[low], y[low]
+
+
 def _draw_run(ax_x, ax_v, st: ReproductionStudy, sid: str) -> None:
+    """RK45's displacement and velocity (the case's colour, solid), each under the exact solution's envelope."""
     paper, exact = st.paper[sid], st.exact[sid]
     style = case_style(CASE_OF[sid])
     exact_style = case_style("exact")
-    ax_x.plot(paper.t, paper.x, lw=1.2, **style)
-    ax_x.plot(exact.t, exact.x, lw=0.8, **exact_style)
-    ax_v.plot(paper.t, paper.v, lw=1.2, **style)
-    ax_v.plot(exact.t, exact.v, lw=0.8, **exact_style)
+    for ax, y_paper, y_exact in ((ax_x, paper.x, exact.x), (ax_v, paper.v, exact.v)):
+        ax.plot(paper.t, y_paper, lw=0.6, **style)
+        t_top, top, t_low, low = envelope(exact.t, y_exact)
+        ax.plot(t_top, top, lw=0.9, **exact_style)
+        ax.plot(t_low, low, lw=0.9, **exact_style)
 
 
 def coincidence(st: ReproductionStudy, ids, where: str) -> str:
@@ -77,14 +96,14 @@ def resonance_figure(st: ReproductionStudy) -> Captioned:
     handles = [
         Line2D([], [], lw=1.2, **case_style(CASE_OF[sid]), label=rf"{sid}, $\omega$ = {g(sc.force.omega)} rad/s, RK45")
         for sid, sc in (("resonance", res), ("reference", ref))
-    ] + [Line2D([], [], lw=0.8, **case_style("exact"), label="exact closed form")]
+    ] + [Line2D([], [], lw=0.9, **case_style("exact"), label="exact closed form, envelope")]
     _legend_above(ax_x, handles, ncol=2)
     top, bottom = panel_words(fig)
     c = res.oscillator.c
     caption = (
         f"The resonance run (ω = {g(res.force.omega)} rad/s, {COLOUR_WORD[CASE_OF['resonance']]}) and the reference "
         f"run (ω = {g(ref.force.omega)} rad/s, {COLOUR_WORD[CASE_OF['reference']]}), both at c = {g(c)} N s/m and "
-        f"from rest, by the paper's method (RK45, solid) with the exact solution drawn over them (black, dashed). "
+        f"from rest, by the paper's method (RK45, solid) within the exact solution's envelope (black, dashed). "
         f"{top.capitalize()}: displacement x(t); {bottom}: velocity v(t)."
     )
     alt = (
@@ -106,7 +125,7 @@ def damping_figure(st: ReproductionStudy) -> Captioned:
     axes[1, 0].set_ylabel(r"$v$ (m/s)")
     handles = [
         Line2D([], [], lw=1.2, **case_style(CASE_OF[sid]), label=f"RK45, {case_name(sid)}") for sid in DAMPING_IDS
-    ] + [Line2D([], [], lw=0.8, **case_style("exact"), label="exact")]
+    ] + [Line2D([], [], lw=0.9, **case_style("exact"), label="exact, envelope")]
     fig.legend(handles=handles, loc="outside upper center", ncols=len(handles), frameon=False)
     words = panel_words(fig)
     cols = [words[j].split()[-1] for j in range(3)]  # left, middle, right
@@ -118,7 +137,7 @@ def damping_figure(st: ReproductionStudy) -> Captioned:
         extra = ", the resonance run above" if sid == "damping_nominal" and "resonance" in st.run_of(sid) else ""
         parts.append(f"{col}, {case_name(sid)} c = {g(c)} N s/m ({COLOUR_WORD[CASE_OF[sid]]}{extra})")
     caption = (
-        f"RK45 (solid) under the exact solution (black, dashed), forced at ω = {g(w)} rad/s from rest: "
+        f"RK45 (solid) within the exact solution's envelope (black, dashed), forced at ω = {g(w)} rad/s from rest: "
         f"{'; '.join(parts)}. {rows[0].capitalize()} row: displacement; {rows[1]} row: velocity; each panel on its "
         "own vertical scale."
     )
