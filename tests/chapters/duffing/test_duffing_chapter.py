@@ -473,3 +473,18 @@ def test_a_chaotic_run_started_one_ulp_away_stays_within_the_declared_tolerances
     far = dataclasses.replace(moved.pooled, mean=default.pooled.mean + 10 * default.pooled.standard_error)
     ref = text.lyapunov_sentence(default)
     assert mismatches(ref, text.lyapunov_sentence(dataclasses.replace(moved, pooled=far)))
+
+
+def test_every_label_of_every_figure_lies_inside_the_figure(default):
+    """What a figure draws (axis labels, tick labels, legends, colour bars) lies inside the figure: its tight
+    bounding box is within the page's (Figure 9.5's right panel once lost the end of its axis label)."""
+    cut = []
+    for make, c in _figures(default).items():
+        c.fig.draw_without_rendering()
+        drawn, page = c.fig.get_tightbbox(), c.fig.bbox_inches
+        margin = 0.01  # inch
+        if drawn.x0 < page.x0 - margin or drawn.x1 > page.x1 + margin or drawn.y1 > page.y1 + margin:
+            cut.append((make.__name__, [round(v, 3) for v in drawn.extents], [round(v, 3) for v in page.extents]))
+        if drawn.y0 < page.y0 - margin:
+            cut.append((make.__name__, "bottom", round(drawn.y0, 3)))
+    assert cut == []

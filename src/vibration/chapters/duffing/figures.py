@@ -282,8 +282,8 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
     fig.colorbar(mesh, ax=ax3, location="top", label=r"$\lambda_1$ (1/s)")
     ax3.plot([p.omega_ueda], [p.F0_ueda], "o", ms=6, mfc="none", color=chaos_col)
     ax3.plot([p.omega_ueda], [p.F0_ueda_periodic], "o", ms=6, mfc="none", color=per_col)
-    ax3.set_xlabel(r"forcing frequency $\omega_U$ (rad/s)")
-    ax3.set_ylabel(r"force amplitude $F_U$ (N)")
+    ax3.set_xlabel(r"frequency $\omega_U$ (rad/s)")
+    ax3.set_ylabel(r"amplitude $F_U$ (N)")
 
     left, middle, right = (w[:1].upper() + w[1:] for w in panel_words(fig)[:3])
     n_chaos, n_per = study.section_points("chaotic"), study.section_points("periodic")
