@@ -41,7 +41,7 @@ from vibration.physics.frequency import (
 from vibration.physics.model import Oscillator, ParameterError, SineForce
 from vibration.physics.numerics import simulate
 from vibration.physics.paper import Scenario
-from vibration.presentation.findings import case_name, scenarios_from
+from vibration.presentation.findings import case_name, scenarios_of
 
 #: The three dampings of the chapter: scenario id -> the book's case name (its colour and line style).
 DAMPINGS = {"damping_low": "c_low", "damping_nominal": "c_nominal", "damping_high": "c_high"}
@@ -350,17 +350,7 @@ def frequency_response_study(params: Params | None = None, **values) -> Frequenc
     vibration.physics.model.ParameterError: c_min = 0.0 N s/m is out of range: allowed c_min >= 0.001 N s/m, ...
     """
     p = params if params is not None else Params.from_values(values)
-    scenarios = scenarios_from(
-        p.m,
-        p.k,
-        p.F0,
-        t_end=p.t_end,
-        omega_ref=p.omega_ref,
-        omega_res=p.omega_res,
-        c_low=p.c_low,
-        c_nominal=p.c_nominal,
-        c_high=p.c_high,
-    )
+    scenarios = scenarios_of(p)
     wn = scenarios["resonance"].oscillator.natural_frequency
     omegas = np.geomspace(wn / SPAN, wn * SPAN, N_CURVE)
     cases, checks = [], []

@@ -6,7 +6,7 @@ import numpy as np
 
 from ..captions import Captioned, panel_words
 from ..style import case_style, figure, place_legend
-from .kit import TEXT, blank, coordinate, dashpot, force, ground, load, mass, rollers, spring, wall
+from .kit import TEXT, blank, coordinate, dashpot, drive, force, ground, mass, rollers, spring, wall, weight_and_support
 
 
 def duffing_spring() -> Captioned:
@@ -24,15 +24,7 @@ def duffing_spring() -> Captioned:
     left.text(1.2, 1.72, "$k$, $k_3$", ha="center", va="bottom", fontsize=TEXT)
     dashpot(left, (0.2, 0.74), (x0, 0.74))
     left.text(1.2, 0.5, "$c$", ha="center", va="top", fontsize=TEXT)
-    load(
-        left,
-        (x0 + w, 0.6),
-        (x0 + w + 0.9, 0.6),
-        label=r"$F_0\cos\omega t$",
-        at=(x0 + w + 0.05, 0.72),
-        ha="left",
-        va="bottom",
-    )
+    drive(left, (x0 + w, 0.6), 0.9, label=r"$F_0\cos\omega t$", gap=0.05)
     coordinate(left, (x0, 2.15), 0.7, label="$x$")
 
     blank(middle, "free-body diagram", "free-body diagram", xlim=(-0.1, 4.6), ylim=(-1.0, 2.6))
@@ -40,10 +32,8 @@ def duffing_spring() -> Captioned:
     mass(middle, x0, y0, w=w, h=h, label="$m$")
     force(middle, (x0, 1.3), (x0 - 1.0, 1.3), label="$kx + k_3x^3$", at=(x0 - 0.05, 1.42), ha="right", va="bottom")
     force(middle, (x0, 0.55), (x0 - 1.0, 0.55), label=r"$c\dot x$", at=(x0 - 0.5, 0.43), va="top")
-    force(middle, (x0 + w, 0.75), (x0 + w + 0.9, 0.75), label=r"$F_0\cos\omega t$", at=(x0 + w + 0.05, 0.87), ha="left",
-           va="bottom")  # fmt: skip
-    force(middle, (x0 + 0.3, y0), (x0 + 0.3, y0 - 0.85), label="$mg$", at=(x0 + 0.22, y0 - 0.55), ha="right")
-    force(middle, (x0 + w - 0.3, y0 - 0.85), (x0 + w - 0.3, y0), label="$N$", at=(x0 + w - 0.22, y0 - 0.55), ha="left")
+    drive(middle, (x0 + w, 0.75), 0.9, label=r"$F_0\cos\omega t$", gap=0.05, free_body=True)
+    weight_and_support(middle, x0, y0, w=w, inset=0.3, drop=0.85)
     coordinate(middle, (x0, 2.15), 0.7, label="$x$")
 
     right.set_label("restoring force")

@@ -24,6 +24,7 @@ __all__ = [
     "blank",
     "coordinate",
     "dashpot",
+    "drive",
     "force",
     "ground",
     "load",
@@ -32,6 +33,7 @@ __all__ = [
     "sentence_panels",
     "spring",
     "wall",
+    "weight_and_support",
 ]
 
 #: Colour of every force and torque arrow.
@@ -162,6 +164,24 @@ def load(ax, tail, head, *, label: str, at, ha: str = "center", va: str = "cente
     """An applied load drawn in a schematic (vermillion, not counted as a free-body force)."""
     arrow(ax, tail, head, color=FORCE, gid="load:" + label)
     ax.text(*at, label, color=FORCE, ha=ha, va=va, fontsize=TEXT, zorder=5)
+
+
+def drive(ax, tail, length: float, *, label: str, gap: float, free_body: bool = False) -> None:
+    """The horizontal drive of a block, pointing away from its wall, labelled above the arrow ``gap`` past its tail.
+
+    A :func:`load` in a schematic; with ``free_body``, a :func:`force` on the block in its free-body diagram.
+    """
+    x, y = tail
+    draw = force if free_body else load
+    draw(ax, (x, y), (x + length, y), label=label, at=(x + gap, y + 0.12), ha="left", va="bottom")
+
+
+def weight_and_support(ax, x0: float, y0: float, *, w: float, inset: float, drop: float) -> None:
+    """The weight ``mg`` and the rollers' normal force ``N`` on a block of width ``w`` whose bottom left is at
+    (``x0``, ``y0``): two vertical force arrows of length ``drop``, ``inset`` in from its sides."""
+    left, right, y = x0 + inset, x0 + w - inset, y0 - drop
+    force(ax, (left, y0), (left, y), label="$mg$", at=(left - 0.08, y + 0.3), ha="right")
+    force(ax, (right, y), (right, y0), label="$N$", at=(right + 0.08, y + 0.3), ha="left")
 
 
 def coordinate(ax, origin, length: float, *, label: str, vertical: bool = False, tick: float = 0.18, side: str = "end"):

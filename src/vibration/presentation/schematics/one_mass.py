@@ -5,7 +5,21 @@ from __future__ import annotations
 
 from ..captions import Captioned
 from ..style import figure
-from .kit import TEXT, blank, coordinate, dashpot, force, ground, load, mass, rollers, sentence_panels, spring, wall
+from .kit import (
+    TEXT,
+    blank,
+    coordinate,
+    dashpot,
+    drive,
+    force,
+    ground,
+    mass,
+    rollers,
+    sentence_panels,
+    spring,
+    wall,
+    weight_and_support,
+)
 
 
 def single_mass() -> Captioned:
@@ -21,15 +35,7 @@ def single_mass() -> Captioned:
     left.text(1.55, 1.72, "$k$", ha="center", va="bottom", fontsize=TEXT)
     dashpot(left, (0.3, 0.62), (x0, 0.62))
     left.text(1.55, 0.3, "$c$", ha="center", va="top", fontsize=TEXT)
-    load(
-        left,
-        (x0 + w, 1.02),
-        (x0 + w + 1.0, 1.02),
-        label=r"$F_0\sin\omega t$",
-        at=(x0 + w + 0.08, 1.14),
-        ha="left",
-        va="bottom",
-    )
+    drive(left, (x0 + w, 1.02), 1.0, label=r"$F_0\sin\omega t$", gap=0.08)
     coordinate(left, (x0, 2.1), 0.8, label="$x$")
 
     blank(right, "free-body diagram", "free-body diagram of the mass", xlim=(-0.45, 5.9), ylim=(-1.1, 2.6))
@@ -37,17 +43,8 @@ def single_mass() -> Captioned:
     mass(right, x0, y0, w=w, h=h, label="$m$")
     force(right, (x0, 1.3), (x0 - 1.1, 1.3), label="$kx$", at=(x0 - 0.55, 1.42), va="bottom")
     force(right, (x0, 0.55), (x0 - 1.1, 0.55), label=r"$c\dot x$", at=(x0 - 0.55, 0.43), va="top")
-    force(
-        right,
-        (x0 + w, 1.0),
-        (x0 + w + 1.0, 1.0),
-        label=r"$F_0\sin\omega t$",
-        at=(x0 + w + 0.08, 1.12),
-        ha="left",
-        va="bottom",
-    )
-    force(right, (x0 + 0.35, y0), (x0 + 0.35, y0 - 0.9), label="$mg$", at=(x0 + 0.27, y0 - 0.6), ha="right")
-    force(right, (x0 + w - 0.35, y0 - 0.9), (x0 + w - 0.35, y0), label="$N$", at=(x0 + w - 0.27, y0 - 0.6), ha="left")
+    drive(right, (x0 + w, 1.0), 1.0, label=r"$F_0\sin\omega t$", gap=0.08, free_body=True)
+    weight_and_support(right, x0, y0, w=w, inset=0.35, drop=0.9)
     coordinate(right, (x0, 2.1), 0.8, label="$x$")
 
     caption = r"The paper's model, $m\ddot x + c\dot x + kx = F_0\sin\omega t$. " + sentence_panels(
