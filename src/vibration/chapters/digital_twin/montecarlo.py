@@ -35,6 +35,7 @@ from vibration.physics.twin import (
     random_force,
     synthetic_measurements,
 )
+from vibration.physics.twin.experiments import _RunResults
 
 #: Gauss-Newton iterations at most, and step halvings per iteration at most (every loop is bounded).
 MAX_ITERATIONS = 40
@@ -235,8 +236,7 @@ def experiment(
     t = np.asarray(t, float)
     n = t.size
     truth = np.array([osc.m, osc.c, osc.k])
-    est, se, ci = np.empty((runs, 3)), np.empty((runs, 3)), np.empty((runs, 3, 2))
-    white, inp = np.empty(runs), np.empty(runs)
+    out = _RunResults.empty(runs)
     # every run starts from the fit of the noise-free record: a few steps from its own optimum
     start = fit_batch(t, force, clean, start=osc).params[0]
     for lo in range(0, runs, BATCH):
@@ -245,23 +245,13 @@ def experiment(
         ys = clean + noise_sd * ar1(hi - lo, n, colour, rngs=rngs)
         forces = force + force_sd * np.stack([g.standard_normal(n) for g in rngs]) if force_sd > 0.0 else force
         fit = fit_batch(t, forces, ys, start=start)
-        est[lo:hi], se[lo:hi], ci[lo:hi] = fit.params[:, :3], fit.stderr, fit.ci95
+        out.estimates[lo:hi], out.stderr[lo:hi], out.ci95[lo:hi] = fit.params[:, :3], fit.stderr, fit.ci95
         fmat = np.broadcast_to(forces, (hi - lo, n))
         for i in range(hi - lo):
-            white[lo + i] = ljung_box(fit.residual[i], lags)[1]
-            inp[lo + i] = input_correlation(fit.residual[i], fmat[i], lags)[1]
-    return CoverageExperiment(
-        truth=truth,
-        estimates=est,
-        stderr=se,
-        ci95=ci,
-        noise=noise,
-        duration=float(t[-1] - t[0]),
-        dt=float(t[1] - t[0]),
-        sensor="x",
-        whiteness_p=white,
-        input_p=inp,
-        case=case,
+            out.whiteness_p[lo + i] = ljung_box(fit.residual[i], lags)[1]
+            out.input_p[lo + i] = input_correlation(fit.residual[i], fmat[i], lags)[1]
+    return out.experiment(
+        truth, noise=noise, duration=float(t[-1] - t[0]), dt=float(t[1] - t[0]), sensor="x", case=case
     )
 
 

@@ -21,6 +21,34 @@ def _rk4_kernel():
     import numba
 
     @numba.njit(cache=True)
+    def accel(x, v, f, coef):  # pragma: no cover
+        """Acceleration (m/s^2) of the oscillator ``coef = (m, c, k, k3)`` at ``(x, v)`` under the force ``f``."""
+        m, c, k, k3 = coef
+        return (f - c * v - k * x - k3 * x**3) / m
+
+    @numba.njit(cache=True)
+    def tangent(a, b, j, coef):  # pragma: no cover
+        """Linearised acceleration of the tangent vector ``(a, b)``: ``j a - (c/m) b``, ``coef = (c/m,)``."""
+        return j * a - coef[0] * b
+
+    @numba.njit(cache=True)
+    def rk4_step(rate, x, v, h, p1, p2, p3, p4, coef):  # pragma: no cover
+        """One RK4 step of ``x' = v, v' = rate(x, v, p, coef)``, ``p`` being ``p1`` to ``p4`` at the four stages.
+
+        Returns the new ``(x, v)`` and the stages' positions ``x + h/2 k1x``, ``x + h/2 k2x``, ``x + h k3x``.
+        """
+        k1x, k1v = v, rate(x, v, p1, coef)
+        xa, va = x + 0.5 * h * k1x, v + 0.5 * h * k1v
+        k2x, k2v = va, rate(xa, va, p2, coef)
+        xb, vb = x + 0.5 * h * k2x, v + 0.5 * h * k2v
+        k3x, k3v = vb, rate(xb, vb, p3, coef)
+        xc, vc = x + h * k3x, v + h * k3v
+        k4x, k4v = vc, rate(xc, vc, p4, coef)
+        x_new = x + h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x)
+        v_new = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
+        return x_new, v_new, xa, xb, xc
+
+    @numba.njit(cache=True)
     def rk4_kernel(
         m, c, k, k3, F0, w, x0, v0, n_periods, steps_per_period, mode, d0, record, gs_every, blow_up
     ):  # pragma: no cover
@@ -35,6 +63,7 @@ def _rk4_kernel():
         """
         T = 2.0 * np.pi / w
         h = T / steps_per_period
+        coef, tangent_coef = (m, c, k, k3), (c / m,)
         x, v = x0, v0
         # tangent vectors (mode 1) or the partner trajectory (mode 2)
         q11, q21, q12, q22 = 1.0, 0.0, 0.0, 1.0
@@ -48,49 +77,15 @@ def _rk4_kernel():
                 f0 = F0 * np.cos(w * tau)
                 fh = F0 * np.cos(w * (tau + 0.5 * h))
                 f1 = F0 * np.cos(w * (tau + h))
-                # main trajectory with (optionally) the two tangent vectors
-                j1 = -(k + 3.0 * k3 * x * x) / m
-                k1x, k1v = v, (f0 - c * v - k * x - k3 * x**3) / m
-                l1a, l1b = q21, j1 * q11 - c / m * q21
-                l1c, l1d = q22, j1 * q12 - c / m * q22
-                xa, va = x + 0.5 * h * k1x, v + 0.5 * h * k1v
-                ja = -(k + 3.0 * k3 * xa * xa) / m
-                qa11, qa21 = q11 + 0.5 * h * l1a, q21 + 0.5 * h * l1b
-                qa12, qa22 = q12 + 0.5 * h * l1c, q22 + 0.5 * h * l1d
-                k2x, k2v = va, (fh - c * va - k * xa - k3 * xa**3) / m
-                l2a, l2b = qa21, ja * qa11 - c / m * qa21
-                l2c, l2d = qa22, ja * qa12 - c / m * qa22
-                xb, vb = x + 0.5 * h * k2x, v + 0.5 * h * k2v
-                jb = -(k + 3.0 * k3 * xb * xb) / m
-                qb11, qb21 = q11 + 0.5 * h * l2a, q21 + 0.5 * h * l2b
-                qb12, qb22 = q12 + 0.5 * h * l2c, q22 + 0.5 * h * l2d
-                k3x, k3v = vb, (fh - c * vb - k * xb - k3 * xb**3) / m
-                l3a, l3b = qb21, jb * qb11 - c / m * qb21
-                l3c, l3d = qb22, jb * qb12 - c / m * qb22
-                xc, vc = x + h * k3x, v + h * k3v
-                jc = -(k + 3.0 * k3 * xc * xc) / m
-                qc11, qc21 = q11 + h * l3a, q21 + h * l3b
-                qc12, qc22 = q12 + h * l3c, q22 + h * l3d
-                k4x, k4v = vc, (f1 - c * vc - k * xc - k3 * xc**3) / m
-                l4a, l4b = qc21, jc * qc11 - c / m * qc21
-                l4c, l4d = qc22, jc * qc12 - c / m * qc22
-                x += h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x)
-                v += h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
-                if mode == 1:
-                    q11 += h / 6.0 * (l1a + 2 * l2a + 2 * l3a + l4a)
-                    q21 += h / 6.0 * (l1b + 2 * l2b + 2 * l3b + l4b)
-                    q12 += h / 6.0 * (l1c + 2 * l2c + 2 * l3c + l4c)
-                    q22 += h / 6.0 * (l1d + 2 * l2d + 2 * l3d + l4d)
+                x_new, v_new, xa, xb, xc = rk4_step(accel, x, v, h, f0, fh, fh, f1, coef)
+                if mode == 1:  # the two tangent vectors along the same stages (Jacobian -(k + 3 k3 x^2)/m)
+                    j1, ja = -(k + 3.0 * k3 * x * x) / m, -(k + 3.0 * k3 * xa * xa) / m
+                    jb, jc = -(k + 3.0 * k3 * xb * xb) / m, -(k + 3.0 * k3 * xc * xc) / m
+                    q11, q21, _, _, _ = rk4_step(tangent, q11, q21, h, j1, ja, jb, jc, tangent_coef)
+                    q12, q22, _, _, _ = rk4_step(tangent, q12, q22, h, j1, ja, jb, jc, tangent_coef)
+                x, v = x_new, v_new
                 if mode == 2:  # partner trajectory, the same RK4 steps
-                    m1x, m1v = pv, (f0 - c * pv - k * px - k3 * px**3) / m
-                    ya, wa = px + 0.5 * h * m1x, pv + 0.5 * h * m1v
-                    m2x, m2v = wa, (fh - c * wa - k * ya - k3 * ya**3) / m
-                    yb, wb = px + 0.5 * h * m2x, pv + 0.5 * h * m2v
-                    m3x, m3v = wb, (fh - c * wb - k * yb - k3 * yb**3) / m
-                    yc, wc = px + h * m3x, pv + h * m3v
-                    m4x, m4v = wc, (f1 - c * wc - k * yc - k3 * yc**3) / m
-                    px += h / 6.0 * (m1x + 2 * m2x + 2 * m3x + m4x)
-                    pv += h / 6.0 * (m1v + 2 * m2v + 2 * m3v + m4v)
+                    px, pv, _, _, _ = rk4_step(accel, px, pv, h, f0, fh, fh, f1, coef)
                 renorm = i == steps_per_period - 1 or (i + 1) % gs_every == 0
                 if mode == 1 and renorm:  # Gram-Schmidt (QR) once per period (or every gs_every steps)
                     r11 = np.sqrt(q11 * q11 + q21 * q21)

@@ -29,7 +29,8 @@ import re
 
 import numpy as np
 
-from vibration.physics.lab.logger import MAX_RAGGED_END, MAX_ROWS, MIN_SAMPLES, LoggerRun, read_text_file
+from vibration.physics.files import read_text_file
+from vibration.physics.lab.logger import MAX_FILE_BYTES, MAX_RAGGED_END, MAX_ROWS, MIN_SAMPLES, LoggerRun
 from vibration.physics.model import ParameterError
 
 _HEADER = re.compile(r"(?P<quantity>.+?)\s+(?P<symbol>\S+)\s*/\s*(?P<unit>\S.*)")
@@ -91,7 +92,7 @@ def load_cassy_runs(path) -> list[LoggerRun]:
     >>> runs[0].n, float(runs[0].t[-1]), runs[0].drive_unit
     (25, 2.4, 'V')
     """
-    name, text = read_text_file(path, "CASSY Lab 2 CSV file")
+    name, text = read_text_file(path, "CASSY Lab 2 CSV file", max_bytes=MAX_FILE_BYTES)
     first = text.split("\n", 1)[0]
     sep = ";" if ";" in first else ("\t" if "\t" in first else ",")
     rows = list(csv.reader(io.StringIO(text, newline=""), delimiter=sep))

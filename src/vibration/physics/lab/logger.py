@@ -32,13 +32,12 @@ from __future__ import annotations
 import csv
 import io
 import math
-import os
 import re
 from dataclasses import dataclass
-from pathlib import Path
 
 import numpy as np
 
+from vibration.physics.files import read_text_file
 from vibration.physics.model import ParameterError
 
 #: Largest file the reader accepts (bytes).
@@ -136,30 +135,6 @@ def _parse_number(cell: str, file: str, row: int, column: str) -> float:
     return v
 
 
-def read_text_file(path, kind: str) -> tuple[str, str]:
-    """``(name, text)`` of the UTF-8 file ``path`` (a BOM dropped), or :class:`ParameterError` naming ``path``
-    and what is allowed (``kind``: "logger CSV file", ...) when it is not a readable file of at most
-    :data:`MAX_FILE_BYTES`."""
-    if isinstance(path, bytes) or not isinstance(path, (str, os.PathLike)):
-        raise ParameterError(f"path = {path!r} is not a path: allowed str or os.PathLike")
-    p = Path(path)
-    name = str(p)
-    try:
-        size = p.stat().st_size
-    except OSError as exc:
-        raise ParameterError(
-            f"path = {name!r} cannot be read: {exc.strerror or exc}: allowed an existing, readable {kind}"
-        ) from None
-    if not p.is_file():
-        raise ParameterError(f"path = {name!r} is not a file: allowed a {kind}")
-    if size > MAX_FILE_BYTES:
-        raise ParameterError(f"path = {name!r} has {size} bytes: allowed at most {MAX_FILE_BYTES} bytes")
-    try:
-        return name, p.read_bytes().decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        raise ParameterError(f"file {name!r} is not UTF-8 (byte {exc.start}): allowed UTF-8 text") from None
-
-
 def load_logger_runs(path) -> list[LoggerRun]:
     """Read every run of a logger CSV export.
 
@@ -193,7 +168,7 @@ def load_logger_runs(path) -> list[LoggerRun]:
     >>> runs[0].run, runs[0].n, float(runs[0].t[-1]), runs[0].drive_angle is None
     (1, 25, 1.2, True)
     """
-    name, text = read_text_file(path, "logger CSV file")
+    name, text = read_text_file(path, "logger CSV file", max_bytes=MAX_FILE_BYTES)
     rows = list(csv.reader(io.StringIO(text, newline=""), delimiter=";"))
     if not rows:
         raise ParameterError(f"file {name!r} is empty: allowed a header row and data rows")

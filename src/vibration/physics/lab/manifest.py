@@ -26,6 +26,7 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from vibration.physics.files import read_text_file
 from vibration.physics.lab.cassy import is_cassy_header, load_cassy_runs
 from vibration.physics.lab.logger import LoggerRun, load_logger_runs
 from vibration.physics.model import ParameterError
@@ -155,16 +156,7 @@ class LabData:
 
 
 def _read_csv(path: Path, label: str) -> list[list[str]]:
-    try:
-        size = path.stat().st_size
-    except OSError as exc:
-        raise ParameterError(f"file {label!r} cannot be read: {exc.strerror or exc}") from None
-    if size > MAX_MANIFEST_BYTES:
-        raise ParameterError(f"file {label!r} has {size} bytes: allowed at most {MAX_MANIFEST_BYTES}")
-    try:
-        text = path.read_bytes().decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        raise ParameterError(f"file {label!r} is not UTF-8 (byte {exc.start}): allowed UTF-8 text") from None
+    _, text = read_text_file(path, "CSV file of a lab folder", max_bytes=MAX_MANIFEST_BYTES, label=label)
     rows = [r for r in csv.reader(io.StringIO(text, newline="")) if any(c.strip() for c in r)]
     if not rows:
         raise ParameterError(f"file {label!r} is empty: allowed a header row and data rows")

@@ -64,12 +64,8 @@ from .comparisons import (  # noqa: F401 - reachable as vibration.physics.learni
 from .references import (  # noqa: F401 - reachable as vibration.physics.learning.NAME
     LQRReference,
     PassiveOptimum,
-    _force_mode,
     _largest_damper,
-    _moment_kernel,
     _moments,
-    _moments_from,
-    _passive_cost,
     best_passive_damping,
     expected_cost,
     lqr_reference,
@@ -77,10 +73,6 @@ from .references import (  # noqa: F401 - reachable as vibration.physics.learnin
 )
 from .rollouts import (  # noqa: F401 - reachable as vibration.physics.learning.NAME
     Rollouts,
-    _check_states,
-    _check_work,
-    _kernel,
-    _run,
     episode_costs,
     rollout,
     sample_initial_states,
@@ -92,10 +84,7 @@ from .task import (  # noqa: F401 - reachable as vibration.physics.learning.NAME
     METHODS,
     MODES,
     OscillatorTask,
-    _check_gain_rows,
-    _check_gains,
     _check_task,
-    _increments,
     _particular,
     _zoh,
     disturbance_increments,
@@ -107,8 +96,6 @@ from .training import (  # noqa: F401 - reachable as vibration.physics.learning.
     DEFAULTS,
     LinearPolicy,
     TrainingResult,
-    _curve_point,
-    _finite_costs,
     train,
 )
 

@@ -7,7 +7,7 @@ the chapter's fault scenarios in :mod:`.detection`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -99,6 +99,43 @@ class CoverageExperiment:
         return np.sqrt(np.mean((self.stderr / self.truth) ** 2, axis=0))
 
 
+@dataclass(frozen=True, kw_only=True, eq=False)
+class _RunResults:
+    """Per-run results of a coverage experiment, filled in place run by run (or batch by batch)."""
+
+    estimates: np.ndarray  # (R, 3) m (kg), c (N s/m), k (N/m)
+    stderr: np.ndarray  # (R, 3) their standard errors
+    ci95: np.ndarray  # (R, 3, 2) their 95 % intervals
+    whiteness_p: np.ndarray  # (R,) Ljung-Box p-value of each residual
+    input_p: np.ndarray  # (R,) p-value of each residual's correlation with the force
+
+    @classmethod
+    def empty(cls, runs: int) -> _RunResults:
+        """Unfilled arrays for ``runs`` runs."""
+        return cls(
+            estimates=np.empty((runs, 3)),
+            stderr=np.empty((runs, 3)),
+            ci95=np.empty((runs, 3, 2)),
+            whiteness_p=np.empty(runs),
+            input_p=np.empty(runs),
+        )
+
+    def experiment(
+        self, truth, *, noise: float, duration: float, dt: float, sensor: str, case=None
+    ) -> CoverageExperiment:
+        """The :class:`CoverageExperiment` of these runs (``case`` None: as assumed); the fields keep their names."""
+        per_run = {f.name: getattr(self, f.name) for f in fields(self)}
+        return CoverageExperiment(
+            truth=truth,
+            noise=noise,
+            duration=duration,
+            dt=dt,
+            sensor=sensor,
+            **per_run,
+            **({} if case is None else {"case": case}),
+        )
+
+
 def _noise_rng(seed: int, stream: int, run: int) -> np.random.Generator:
     """Independent generator per (experiment seed, stream, run): a SeedSequence of the three integers."""
     return np.random.default_rng([seed, stream, run])
@@ -112,34 +149,18 @@ def _monte_carlo(
     Returns the experiment's record; ``noise`` (1) and ``dt`` (s) are the level and step it reports, ``case``
     the assumption the records break (None: as assumed).
     """
-    est = np.empty((runs, 3))
-    se = np.empty((runs, 3))
-    ci = np.empty((runs, 3, 2))
-    white = np.empty(runs)
-    inp = np.empty(runs)
+    out = _RunResults.empty(runs)
     for i in range(runs):
         rng = _noise_rng(seed, stream, i)
         y = clean + sd * _ar1(t.size, colour, rng)
         f = force + force_sd * rng.standard_normal(t.size) if force_sd > 0.0 else force
         fit = identify(t, f, **{sensor: y}, search="local")
-        est[i] = (fit.m, fit.c, fit.k)
-        se[i] = fit.stderr
-        ci[i] = fit.ci95
-        white[i] = ljung_box(fit.residual, lags)[1]
-        inp[i] = input_correlation(fit.residual, f, lags)[1]
-    return CoverageExperiment(
-        truth=truth,
-        estimates=est,
-        stderr=se,
-        ci95=ci,
-        noise=noise,
-        duration=float(t[-1]),
-        dt=dt,
-        sensor=sensor,
-        whiteness_p=white,
-        input_p=inp,
-        **({} if case is None else {"case": case}),
-    )
+        out.estimates[i] = (fit.m, fit.c, fit.k)
+        out.stderr[i] = fit.stderr
+        out.ci95[i] = fit.ci95
+        out.whiteness_p[i] = ljung_box(fit.residual, lags)[1]
+        out.input_p[i] = input_correlation(fit.residual, f, lags)[1]
+    return out.experiment(truth, noise=noise, duration=float(t[-1]), dt=dt, sensor=sensor, case=case)
 
 
 def identification_experiment(

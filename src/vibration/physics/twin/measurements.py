@@ -10,6 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from ..duffing import _real_array
+from ..files import read_text_file
 from ..model import N_POINTS_MAX, ParameterError, check_int, check_real
 
 __all__ = [
@@ -166,22 +167,8 @@ def load_measurements(path) -> Measurements:
     ...
     vibration.physics.model.ParameterError: column x_m, row 3002 (line 3003): 'nan' is not a finite number: ...
     """
-    if not isinstance(path, str | os.PathLike) or isinstance(path, bytes):
-        raise ParameterError(f"path = {path!r:.80} is not a file name: allowed a str or os.PathLike naming a CSV file")
-    path = Path(os.fspath(path))
-    try:
-        size = path.stat().st_size
-    except OSError as exc:
-        raise ParameterError(
-            f"path = {str(path)!r} cannot be read ({exc.strerror}): allowed an existing file"
-        ) from None
-    if size > MAX_BYTES:
-        raise ParameterError(f"path = {str(path)!r} has {size} bytes: allowed at most {MAX_BYTES} bytes")
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except UnicodeDecodeError:
-        raise ParameterError(f"path = {str(path)!r} is not UTF-8 text: allowed a UTF-8 CSV file") from None
-    return _parse(text, str(path))
+    name, text = read_text_file(path, "measurement CSV file", max_bytes=MAX_BYTES)
+    return _parse(text, name)
 
 
 def _parse(text: str, name: str) -> Measurements:
