@@ -34,6 +34,28 @@ def test_explorer_bundle_carries_the_static_panel():
     assert "application/vnd.jupyter.widget-view+json" in bundle
     assert bundle["text/html"].startswith('<div class="vib-duffing"') and "10.0" in bundle["text/html"]
     assert bundle["text/plain"] == "HBExplorer(k₃ = 2 N/m³, F₀ = 10 N)"
+    assert bundle["image/png"] and "peak A" in ex.readout.value
+
+
+def test_explorer_readout_follows_the_closed_form_folds():
+    """The readout's peak and fold frequencies are those of the harmonic balance at the sliders' values, and
+    the panel kit drives it (a slider move redraws the figure and the readout)."""
+    from vibration.physics.duffing import Duffing, folds
+    from vibration.presentation.numbers import sig
+    from vibration.presentation.panels import KitExplorer
+
+    ex = pres.hb_explorer(m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0)
+    assert isinstance(ex, KitExplorer)
+    before = ex.image.value
+    ex.k3_slider.value = -0.8
+    f = folds(Duffing(m=1.0, c=0.5, k=20.0, k3=-0.8), 5.0)
+    assert f.bistable and ex.image.value != before
+    for value in (f.peak_amplitude, f.peak_omega, f.omega_low, f.omega_high):
+        assert sig(value, 3) in ex.readout.value
+    assert ex.summary() == "HBExplorer(k₃ = −0.8 N/m³, F₀ = 5 N)"
+    ex.k3_slider.value = -1.5  # so soft that the curve never closes: one fold, no peak
+    f = folds(Duffing(m=1.0, c=0.5, k=20.0, k3=-1.5), 5.0)
+    assert not f.bistable and sig(f.omega_high, 3) in ex.readout.value and "no peak" in ex.readout.value
 
 
 def _page(tmp_path, frag):

@@ -18,9 +18,9 @@ import numpy as np
 from vibration.chapters.duffing.figures import STABLE_LS, UNSTABLE_LS, plot_curve
 from vibration.physics.duffing import Duffing, backbone, folds, response_curve
 from vibration.physics.model import check_real
-from vibration.presentation.numbers import minus
-from vibration.presentation.panels import PanelIds, line_style, panel_assets, png_bytes, screen_words
-from vibration.presentation.style import case_style, figure, place_legend
+from vibration.presentation.numbers import minus, sig
+from vibration.presentation.panels import KitExplorer, PanelIds, agg_figure, line_style, panel_assets, screen_words
+from vibration.presentation.style import case_style, place_legend
 
 if TYPE_CHECKING:  # annotations only
     from vibration.chapters.duffing.study import DuffingStudy
@@ -138,16 +138,15 @@ aria-label="amplitude in m against forcing frequency in rad/s"></svg>
 """
 
 
-class HBExplorer:
-    """JupyterLab sliders (ipywidgets) for k3 and F0 over the harmonic-balance curve.
+class HBExplorer(KitExplorer):
+    """JupyterLab sliders (ipywidgets) for k3 and F0 over the harmonic-balance curve, on the panel kit.
 
-    Displays as the live widget in JupyterLab; renderers without a kernel get the kernel-free panel of
-    :func:`hb_panel_html` at the same parameters.
+    Displays as the live widget in JupyterLab (the curve and a readout of its peak and folds); renderers
+    without a kernel get the kernel-free panel of :func:`hb_panel_html` at the same parameters.
     """
 
     def __init__(self, m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0, omega_max=None, k3_range=None, F0_max=None):
         import ipywidgets as widgets
-        import matplotlib.pyplot as plt
 
         self.params = _panel_params(m, c, k, k3, F0, omega_max, k3_range, F0_max)
         k3_range, F0_max = self.params["k3_range"], self.params["F0_max"]
@@ -156,47 +155,57 @@ class HBExplorer:
         self.F0_slider = widgets.FloatSlider(value=F0, min=F0_max / 200, max=F0_max, step=F0_max / 200,
                                              description="F₀ (N)", continuous_update=False)  # fmt: skip
         self.image = widgets.Image(format="png", layout=widgets.Layout(max_width="100%", height="auto"))
-        with plt.ioff():
-            self.fig, self.ax = figure(1, 1, height=3.4)
-        self.widget = widgets.VBox([widgets.HBox([self.k3_slider, self.F0_slider]), self.image])
-        self.k3_slider.observe(lambda _: self.update(), names="value")
-        self.F0_slider.observe(lambda _: self.update(), names="value")
+        self.readout = widgets.HTML()
+        self.widget = widgets.VBox([widgets.HBox([self.k3_slider, self.F0_slider]), self.readout, self.image])
+        self.watch(self.k3_slider, self.F0_slider)
         self.update()
 
-    def update(self) -> None:
-        """Redraw the curve for the sliders' values."""
+    def values(self) -> dict:
+        """The oscillator at the sliders' k3, the force (N), its response curve, backbone and folds."""
         p = self.params
         d = Duffing(m=p["m"], c=p["c"], k=p["k"], k3=float(self.k3_slider.value))
         F0 = float(self.F0_slider.value)
-        ax = self.ax
-        ax.clear()
-        w, a, st = response_curve(d, F0, p["omega_max"], n=801)
-        plot_curve(
-            ax,
-            w,
-            a,
-            stable=st,
-            color=_colors()["hardening" if d.k3 >= 0 else "softening"],
-            label=minus(f"$k_3$ = {d.k3:.3g} N/m$^3$"),
-        )
+        w, a, stable = response_curve(d, F0, p["omega_max"], n=801)
         a_bb = np.linspace(0.0, 1.1 * np.nanmax(a), 200)
-        ax.plot(backbone(d, a_bb), a_bb, "k:", lw=0.8, label="backbone")
-        f = folds(d, F0)
+        return {"duffing": d, "F0": F0, "curve": (w, a, stable), "backbone": (backbone(d, a_bb), a_bb),
+                "folds": folds(d, F0)}  # fmt: skip
+
+    def figure(self, v: dict):
+        fig = agg_figure(6.4, 3.4)
+        ax = fig.subplots()
+        d, (w, a, stable), f = v["duffing"], v["curve"], v["folds"]
+        plot_curve(ax, w, a, stable=stable, color=_colors()["hardening" if d.k3 >= 0 else "softening"],
+                   label=minus(f"$k_3$ = {d.k3:.3g} N/m$^3$"))  # fmt: skip
+        ax.plot(*v["backbone"], "k:", lw=0.8, label="backbone")
         if f.bistable:
             ax.plot([f.omega_low, f.omega_high], [f.amplitude_low, f.amplitude_high], "o", mfc="white", color="k",
                     label="folds")  # fmt: skip
-        ax.set_xlim(0.0, p["omega_max"])
+        ax.set_xlim(0.0, self.params["omega_max"])
         ax.set_xlabel(r"forcing frequency $\omega$ (rad/s)")
         ax.set_ylabel(r"amplitude $A$ (m)")
         place_legend(ax)
-        self.image.value = png_bytes(self.fig)
+        return fig
 
-    def _repr_mimebundle_(self, include=None, exclude=None):
-        data = self.widget._repr_mimebundle_()
-        p = dict(self.params, k3=float(self.k3_slider.value), F0=float(self.F0_slider.value))
-        data["text/html"] = hb_panel_html(**p)
-        data["text/plain"] = f"HBExplorer(k₃ = {p['k3']:g} N/m³, F₀ = {p['F0']:g} N)"
-        return data
+    def readout_html(self, v: dict) -> str:
+        f = v["folds"]
+        peak = (
+            f"peak A = {sig(f.peak_amplitude, 3)} m at ω = {sig(f.peak_omega, 3)} rad/s"
+            if math.isfinite(f.peak_amplitude)
+            else "the curve does not close (no peak)"
+        )
+        if f.bistable:
+            band = f"three amplitudes between ω = {sig(f.omega_low, 3)} and {sig(f.omega_high, 3)} rad/s"
+        elif math.isfinite(f.omega_high):
+            band = f"a fold at ω = {sig(f.omega_high, 3)} rad/s, the curve running off to low frequencies"
+        else:
+            band = "one amplitude at every frequency"
+        return f"{peak}; {band}"
+
+    def panel_html(self) -> str:
+        return hb_panel_html(**dict(self.params, k3=float(self.k3_slider.value), F0=float(self.F0_slider.value)))
+
+    def summary(self) -> str:
+        return f"HBExplorer(k₃ = {sig(float(self.k3_slider.value))} N/m³, F₀ = {sig(float(self.F0_slider.value))} N)"
 
 
 def hb_explorer(m=1.0, c=0.5, k=20.0, *, k3=2.0, F0=5.0, omega_max=None, k3_range=None, F0_max=None) -> HBExplorer:
@@ -207,9 +216,11 @@ def hb_explorer(m=1.0, c=0.5, k=20.0, *, k3=2.0, F0=5.0, omega_max=None, k3_rang
     Examples
     --------
     >>> ex = hb_explorer()
-    >>> ex.k3_slider.value = -1.0
-    >>> round(float(ex.ax.get_xlim()[1]), 4)      # rad/s: twice the natural frequency sqrt(20)
-    8.9443
+    >>> ex.k3_slider.value = -1.0                 # a softening spring: the peak leans to lower frequencies
+    >>> print(ex.readout.value)
+    peak A = 2.59 m at ω = 3.85 rad/s; three amplitudes between ω = 3.84 and 3.96 rad/s
+    >>> ex.params["omega_max"] == 2 * 20**0.5     # rad/s: the frequency axis reaches twice ω_n
+    True
     """
     return HBExplorer(m, c, k, k3, F0, omega_max, k3_range, F0_max)
 
