@@ -121,3 +121,25 @@ def test_panel_in_chromium_matches_the_grid(browser, tmp_path):
         assert outside == [] and errors == []
     finally:
         page.close()
+
+
+def test_the_explorer_is_on_the_panel_kit_and_reads_its_own_identification(small):
+    """The explorer's readout gives the identification it draws, each 95 % interval against the true value,
+    and a slider move re-identifies and redraws."""
+    from vibration.chapters.digital_twin.panel import panel
+    from vibration.presentation.numbers import sig
+    from vibration.presentation.panels import KitExplorer
+
+    ex = panel(small)
+    assert isinstance(ex, KitExplorer)
+    fit, before = ex.fit, ex.image.value
+    for est, (lo, hi) in zip((fit.m, fit.c, fit.k), fit.ci95, strict=True):
+        assert all(sig(x, 5) in ex.readout.value for x in (est, lo, hi))
+    truth = (small.asset.m, small.asset.c, small.asset.k)
+    covers = [lo <= true <= hi for true, (lo, hi) in zip(truth, fit.ci95, strict=True)]
+    assert ex.readout.value.count(">yes<") == sum(covers)
+    ex.noise_slider.value = ex.noise_slider.options[-1][1]
+    assert ex.fit is not fit and ex.image.value != before
+    bundle = ex._repr_mimebundle_()
+    assert bundle["text/html"].startswith('<div class="twin-panel"') and "data-grid" in bundle["text/html"]
+    assert bundle["text/plain"].startswith("TwinExplorer(") and bundle["image/png"]

@@ -15,7 +15,16 @@ import numpy as np
 from vibration.chapters.digital_twin.study import DigitalTwinStudy
 from vibration.physics.model import Oscillator
 from vibration.physics.twin import EstimateGrid, Identification, identify, random_force, synthetic_measurements
-from vibration.presentation.panels import PanelIds, checked_panel_id, line_style, panel_assets, range_control
+from vibration.presentation.numbers import sig
+from vibration.presentation.panels import (
+    KitExplorer,
+    PanelIds,
+    agg_figure,
+    checked_panel_id,
+    line_style,
+    panel_assets,
+    range_control,
+)
 from vibration.presentation.style import OKABE_ITO
 
 NAMES = ("m", "c", "k")
@@ -100,11 +109,12 @@ aria-label="relative error of m, c and k in percent with 95 % intervals"></svg>
 """
 
 
-class TwinExplorer:
-    """JupyterLab explorer: noise and record-length sliders re-identifying a seeded record live.
+class TwinExplorer(KitExplorer):
+    """JupyterLab explorer on the panel kit: noise and record-length sliders re-identifying a seeded record live.
 
-    Its ``_repr_mimebundle_`` returns the widget view and, for renderers without a
-    kernel (the book), :func:`twin_panel_html` over ``grid``.
+    It shows each identified parameter over its true value with its 95 % interval, and a table of the same; its
+    ``_repr_mimebundle_`` (the kit's) returns the widget view and, for renderers without a kernel (the book),
+    :func:`twin_panel_html` over ``grid``.
     """
 
     def __init__(
@@ -138,41 +148,60 @@ class TwinExplorer:
             continuous_update=False,
         )
         self.readout = widgets.HTML()
-        self.noise_slider.observe(lambda _: self.update(), "value")
-        self.length_slider.observe(lambda _: self.update(), "value")
-        self.box = widgets.VBox([self.noise_slider, self.length_slider, self.readout])
+        self.image = widgets.Image(format="png", layout=widgets.Layout(max_width="100%", height="auto"))
+        self.widget = widgets.VBox([self.noise_slider, self.length_slider, self.readout, self.image])
         self.fit: Identification | None = None
+        self.watch(self.noise_slider, self.length_slider)
         self.update()
 
-    def update(self) -> None:
-        """Identify the record at the current slider values and refresh the readout."""
+    def values(self) -> dict:
+        """The record at the sliders' noise and length, identified: the fit and the true parameters."""
         n = int(round(self.length_slider.value / self.dt)) + 1
         clean = self._clean[:n]
         y = clean + self.noise_slider.value * float(np.sqrt(np.mean(clean**2))) * self._draw[:n]
-        fit = identify(self._t[:n], self._force[:n], x=y, search="local")
-        self.fit = fit
-        truth = (self.osc.m, self.osc.c, self.osc.k)
+        self.fit = identify(self._t[:n], self._force[:n], x=y, search="local")
+        return {"fit": self.fit, "truth": (self.osc.m, self.osc.c, self.osc.k)}
+
+    def figure(self, v: dict):
+        fig = agg_figure(5.6, 2.6)
+        ax = fig.subplots()
+        fit, truth = v["fit"], v["truth"]
+        for i in range(3):
+            est, (lo, hi) = (fit.m, fit.c, fit.k)[i], fit.ci95[i]
+            ax.plot([i, i], [lo / truth[i], hi / truth[i]], lw=4, color=STYLES["interval"]["color"],
+                    label=STYLES["interval"]["label"] if i == 0 else None)  # fmt: skip
+            ax.plot([i], [est / truth[i]], "o", color=STYLES["estimate"]["color"],
+                    label=STYLES["estimate"]["label"] if i == 0 else None)  # fmt: skip
+        ax.axhline(1.0, color=STYLES["truth"]["color"], ls="--", lw=1.0, label=STYLES["truth"]["label"])
+        ax.set_xticks(range(3), [f"{name} ({unit})" for name, unit in zip(NAMES, UNITS, strict=True)])
+        ax.set_xlim(-0.6, 2.6)
+        ax.set_ylabel("estimate / true value")
+        ax.legend(loc="upper left", bbox_to_anchor=(1.0, 1.0), frameon=False)
+        return fig
+
+    def readout_html(self, v: dict) -> str:
+        fit, truth = v["fit"], v["truth"]
         cells = []
         for i, (name, unit) in enumerate(zip(NAMES, UNITS, strict=True)):
             est, (lo, hi) = (fit.m, fit.c, fit.k)[i], fit.ci95[i]
             inside = "yes" if lo <= truth[i] <= hi else "no"
             cells.append(
-                f"<tr><th>{name} ({unit})</th><td>{truth[i]:.4g}</td><td>{est:.5g}</td>"
-                f"<td>{lo:.5g}</td><td>{hi:.5g}</td><td>{inside}</td></tr>"
+                f"<tr><th>{name} ({unit})</th><td>{sig(truth[i])}</td><td>{sig(est, 5)}</td>"
+                f"<td>{sig(lo, 5)}</td><td>{sig(hi, 5)}</td><td>{inside}</td></tr>"
             )
-        self.readout.value = (
+        return (
             "<table><tr><th>parameter</th><th>true</th><th>estimate</th><th>95 % low</th><th>95 % high</th>"
             "<th>covers truth</th></tr>" + "".join(cells) + "</table>"
         )
 
-    def _repr_mimebundle_(self, **kwargs):
-        data = self.box._repr_mimebundle_(**kwargs) or {}
-        data["text/html"] = twin_panel_html(self.grid)
-        data["text/plain"] = (
+    def panel_html(self) -> str:
+        return twin_panel_html(self.grid)
+
+    def summary(self) -> str:
+        return (
             f"TwinExplorer(noise={self.noise_slider.value:g} of rms, T={self.length_slider.value:g} s, "
             f"m={self.osc.m:g} kg, c={self.osc.c:g} N s/m, k={self.osc.k:g} N/m)"
         )
-        return data
 
 
 def twin_explorer(st: DigitalTwinStudy) -> TwinExplorer:
