@@ -68,9 +68,9 @@ def platform_text(st: LearningStudy) -> str:
     t = st.task
     return (
         "The training platform is the paper's oscillator $m\\ddot x + c\\dot x + kx = u + F(t)$ as a standard "
-        f"gymnasium environment, sampled every $\\Delta t = {num(t.dt, 3)}$ s with an exact zero-order hold: the "
-        "action is held over the step and the state is carried forward by the matrix exponential, so the "
-        "environment has no integration error. The agent observes $s = [x, v]$ and applies a force $u$, bounded by "
+        f"reinforcement-learning environment, sampled every $\\Delta t = {num(t.dt, 3)}$ s with an exact "
+        "zero-order hold: the action is held over the step and the state is carried forward by the matrix "
+        "exponential, so the environment has no integration error. The agent observes $s = [x, v]$ and applies a force $u$, bounded by "
         f"$u_\\mathrm{{max}} = {num(t.u_max, 4)}$ N; each step costs $(x^2 + v^2 + r u^2)\\,\\Delta t$ with "
         f"$r = {num(t.r, 3)}$ N⁻² (the reward is its negative). An episode lasts {integer(t.n_steps)} steps "
         f"({num(t.n_steps * t.dt, 4)} s) from a state drawn uniformly in $[-{num(t.x0_max, 3)}, {num(t.x0_max, 3)}]$ "
