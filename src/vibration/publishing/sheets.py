@@ -512,12 +512,12 @@ def main(argv: list[str]) -> int:
 
 #: Weeks of a suggested one-semester course: (weeks, chapters, exercises, what).
 COURSE_PLAN = (
-    ("1-2", "1", "01.1-01.5", "the model, its exact solution and the paper's method"),
-    ("3", "2", "02.1-02.5", "reading a paper's claims against the exact solution"),
-    ("4", "3", "03.1-03.4", "what a numerical solution's error depends on"),
-    ("5-6", "4", "04.1-04.5", "frequency response, bandwidth, quality factor, energy"),
-    ("7", "5", "05.1-05.4", "exploring the response with the sliders; a sheet per student"),
-    ("8-12 (optional)", "6-8", "06.1-08.3", "advanced: stability and design, control, absorbers"),
+    ("1–2", "1", "01.1–01.5", "the model, its exact solution and the paper's method"),
+    ("3", "2", "02.1–02.5", "reading a paper's claims against the exact solution"),
+    ("4", "3", "03.1–03.4", "what a numerical solution's error depends on"),
+    ("5–6", "4", "04.1–04.5", "frequency response, bandwidth, quality factor, energy"),
+    ("7", "5", "05.1–05.4", "exploring the response with the sliders; a sheet per student"),
+    ("8–12 (optional)", "6–8", "06.1–08.3", "advanced: stability and design, control, absorbers"),
 )
 
 
@@ -534,7 +534,7 @@ def course_plan_markdown() -> str:
     lines = [
         "### A suggested course",
         "",
-        "Part I (chapters 1-5) is the core course, for second-year engineering students who know Newton's second "
+        "Part I (chapters 1–5) is the core course, for second-year engineering students who know Newton's second "
         "law and linear ordinary differential equations; Parts II and III are advanced (graduate) material. "
         "Every chapter opens with its learning objectives and ends with exercises whose answers follow the run's "
         "parameters; the runner writes each student a sheet with their own numbers and a key.",
