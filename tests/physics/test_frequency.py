@@ -373,3 +373,17 @@ def test_peak_map_refuses_bad_inputs(raises_parameter_error, name, override, bad
     args.update(override)
     with raises_parameter_error(name, bad, allowed):
         peak_displacement_map(**args)
+
+
+def test_local_maxima_are_scipys_peaks_on_random_signals():
+    """The one local-maximum rule (log decrement, the audit's cycle peaks, the chapter 1 envelope) finds what
+    scipy.signal.find_peaks finds on signals without plateaus."""
+    from scipy.signal import find_peaks
+
+    from vibration.physics.frequency import local_maxima
+
+    rng = np.random.default_rng(3)
+    for n in (3, 10, 1000):
+        y = rng.standard_normal(n)
+        np.testing.assert_array_equal(local_maxima(y), find_peaks(y)[0])
+    assert local_maxima(np.array([1.0, 2.0, 2.0, 1.0])).tolist() == [1]  # a plateau once, at its first sample

@@ -204,6 +204,17 @@ def half_power_points(omegas, mags) -> HalfPower:
     return HalfPower(peak_omega=float(w[i]), peak_magnification=float(g[i]), omega_low=float(lo), omega_high=float(hi))
 
 
+def local_maxima(y) -> np.ndarray:
+    """Indices of the samples of ``y`` above the one before and not below the one after (a plateau counts
+    once, at its first sample); the ends never count.
+
+    >>> local_maxima(np.array([0.0, 2.0, 1.0, 3.0, 3.0, 0.0, 1.0]))
+    array([1, 3])
+    """
+    y = np.asarray(y)
+    return np.nonzero((y[1:-1] > y[:-2]) & (y[1:-1] >= y[2:]))[0] + 1
+
+
 def log_decrement(t, x) -> tuple[float, float]:
     """Logarithmic decrement of a free decay and the damping ratio it implies.
 
@@ -240,7 +251,8 @@ def log_decrement(t, x) -> tuple[float, float]:
     if not np.all(np.isfinite(x)):
         raise ParameterError(f"x contains {float(x[~np.isfinite(x)][0])!r}: allowed finite displacements in m")
     t = _increasing(t, "t", "s", size=x.size, low=0.0, partner="x")
-    idx = np.nonzero((x[1:-1] > x[:-2]) & (x[1:-1] >= x[2:]) & (x[1:-1] > 0))[0] + 1
+    idx = local_maxima(x)
+    idx = idx[x[idx] > 0]
     if idx.size < 2:
         raise ParameterError("x has fewer than two positive peaks: allowed an oscillating free decay")
     ym, y0, yp = x[idx - 1], x[idx], x[idx + 1]

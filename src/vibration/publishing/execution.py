@@ -15,6 +15,7 @@ from ..presentation.captions import FORMATS_ENV
 from ..presentation.tables import TABLES_ENV
 from .crossrefs import number_references
 from .engine import announce, cluster
+from .sphinx_ext import chapter_number
 
 if TYPE_CHECKING:
     from .notebooks import Chapter
@@ -201,6 +202,6 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
         for cell in nb.cells:
             cell.metadata.pop("execution", None)
         # the Markdown's cross-references carry the numbers of the figures and tables, for JupyterLab
-        number_references(nb, None if ch.name == front else int(ch.name.split("_", 1)[0]))
+        number_references(nb, None if ch.name == front else chapter_number(ch.name))
         nbformat.write(nb, ch.path)
         log(f"{ch.name} re-executed in {time.perf_counter() - start:.1f} s")

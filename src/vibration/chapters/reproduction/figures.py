@@ -14,6 +14,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from vibration.chapters.reproduction.study import DAMPING_IDS, ReproductionStudy
+from vibration.physics.frequency import local_maxima
 from vibration.presentation.captions import Captioned, panel_words
 from vibration.presentation.findings import case_name
 from vibration.presentation.narrative import g
@@ -50,10 +51,7 @@ def envelope(t: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.n
     >>> len(tu), round(float(yu[1:].min()), 6), round(float(yl[1:].max()), 6)
     (11, 1.0, -1.0)
     """
-    inner = np.arange(1, len(y) - 1)
-    top = inner[(y[inner] >= y[inner - 1]) & (y[inner] > y[inner + 1])]
-    low = inner[(y[inner] <= y[inner - 1]) & (y[inner] < y[inner + 1])]
-    top, low = np.concatenate(([0], top)), np.concatenate(([0], low))
+    top, low = np.concatenate(([0], local_maxima(y))), np.concatenate(([0], local_maxima(-y)))
     return t[top], y[top], t[low], y[low]
 
 

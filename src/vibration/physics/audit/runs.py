@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from ..exact import exact_response, steady_state
-from ..frequency import settling_time
+from ..frequency import local_maxima, settling_time
 from ..model import Oscillator
 from ..numerics import simulate
 from ..paper import Scenario
@@ -24,8 +24,7 @@ ALSO_USES = {
 def _cycle_peaks(t, x) -> np.ndarray:
     """Local maxima of |x| (one or two per forcing cycle), m."""
     a = np.abs(x)
-    idx = np.nonzero((a[1:-1] > a[:-2]) & (a[1:-1] >= a[2:]))[0] + 1
-    return a[idx]
+    return a[local_maxima(a)]
 
 
 class _Run:
