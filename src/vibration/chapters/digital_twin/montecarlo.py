@@ -28,6 +28,7 @@ from vibration.physics.model import Oscillator, ParameterError
 from vibration.physics.twin import (
     WHITENESS_LAGS,
     CoverageExperiment,
+    RunResults,
     expm_batch,
     identify,
     input_correlation,
@@ -35,7 +36,6 @@ from vibration.physics.twin import (
     random_force,
     synthetic_measurements,
 )
-from vibration.physics.twin.experiments import _RunResults
 
 #: Gauss-Newton iterations at most, and step halvings per iteration at most (every loop is bounded).
 MAX_ITERATIONS = 40
@@ -236,7 +236,7 @@ def experiment(
     t = np.asarray(t, float)
     n = t.size
     truth = np.array([osc.m, osc.c, osc.k])
-    out = _RunResults.empty(runs)
+    out = RunResults.empty(runs)
     # every run starts from the fit of the noise-free record: a few steps from its own optimum
     start = fit_batch(t, force, clean, start=osc).params[0]
     for lo in range(0, runs, BATCH):

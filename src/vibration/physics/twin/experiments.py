@@ -22,6 +22,7 @@ __all__ = [
     "MAX_EXPERIMENT_SAMPLES",
     "CoverageExperiment",
     "EstimateGrid",
+    "RunResults",
     "estimate_grid",
     "identification_experiment",
     "identification_sweep",
@@ -100,7 +101,7 @@ class CoverageExperiment:
 
 
 @dataclass(frozen=True, kw_only=True, eq=False)
-class _RunResults:
+class RunResults:
     """Per-run results of a coverage experiment, filled in place run by run (or batch by batch)."""
 
     estimates: np.ndarray  # (R, 3) m (kg), c (N s/m), k (N/m)
@@ -110,7 +111,7 @@ class _RunResults:
     input_p: np.ndarray  # (R,) p-value of each residual's correlation with the force
 
     @classmethod
-    def empty(cls, runs: int) -> _RunResults:
+    def empty(cls, runs: int) -> RunResults:
         """Unfilled arrays for ``runs`` runs."""
         return cls(
             estimates=np.empty((runs, 3)),
@@ -149,7 +150,7 @@ def _monte_carlo(
     Returns the experiment's record; ``noise`` (1) and ``dt`` (s) are the level and step it reports, ``case``
     the assumption the records break (None: as assumed).
     """
-    out = _RunResults.empty(runs)
+    out = RunResults.empty(runs)
     for i in range(runs):
         rng = _noise_rng(seed, stream, i)
         y = clean + sd * _ar1(t.size, colour, rng)
