@@ -24,12 +24,14 @@ __all__ = [
     "CELL_TIMEOUT_S",
     "KERNEL",
     "KERNEL_ARGS",
+    "KERNEL_START_ATTEMPTS",
     "CellTimeout",
     "ChapterTask",
     "execute_in_place",
     "execute_notebooks",
     "kernel_name",
     "run_chapter",
+    "with_kernel_restarts",
 ]
 
 KERNEL = "vibration"
@@ -53,8 +55,43 @@ KERNEL_ARGS = ["--IPKernelApp.log_level=CRITICAL"]
 CELL_TIMEOUT_S = 180
 
 
+#: Times a chapter's kernel may be started before its run fails. A kernel started beside others can die
+#: before its first reply when another process takes one of the ports it was given (the ports are chosen,
+#: freed, then bound by the kernel: jupyter_client's known race); no cell has run then, so starting again
+#: is safe.
+KERNEL_START_ATTEMPTS = 3
+_KERNEL_START_FAILED = "Kernel died before replying to kernel_info"
+
+
 class CellTimeout(RuntimeError):
     """A chapter's cell ran longer than :data:`CELL_TIMEOUT_S`."""
+
+
+def with_kernel_restarts(execute, *, attempts: int = KERNEL_START_ATTEMPTS, log=None):
+    """Call ``execute()``, again when its kernel died before its first reply, at most ``attempts`` times.
+
+    Any other error, and the last start failure, propagates unchanged.
+
+    >>> calls = []
+    >>> def flaky():
+    ...     calls.append(1)
+    ...     if len(calls) < 2:
+    ...         raise RuntimeError("Kernel died before replying to kernel_info")
+    ...     return "ran"
+    >>> with_kernel_restarts(flaky), len(calls)
+    ('ran', 2)
+    """
+    if attempts < 1:
+        raise ValueError(f"attempts = {attempts!r}: at least 1")
+    for attempt in range(1, attempts + 1):
+        try:
+            return execute()
+        except RuntimeError as exc:
+            if _KERNEL_START_FAILED not in str(exc) or attempt == attempts:
+                raise
+            if log is not None:
+                log(f"kernel died at start (attempt {attempt} of {attempts}); starting it again")
+    raise AssertionError("unreachable")  # pragma: no cover
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -106,7 +143,7 @@ def run_chapter(task: ChapterTask) -> dict:
             os.environ.pop(FORMATS_ENV, None)
         start = time.perf_counter()
         try:
-            papermill.execute_notebook(
+            with_kernel_restarts(lambda: papermill.execute_notebook(
                 str(source),
                 str(output),
                 parameters=dict(task.params),
@@ -116,7 +153,7 @@ def run_chapter(task: ChapterTask) -> dict:
                 log_output=False,
                 execution_timeout=task.cell_timeout,
                 extra_arguments=KERNEL_ARGS,
-            )
+            ))  # fmt: skip
         except TimeoutError as exc:
             raise CellTimeout(
                 f"{_cell_preview(str(exc))} ran longer than the runner's limit of {task.cell_timeout:g} s"
@@ -190,14 +227,15 @@ def execute_in_place(chapters: list[Chapter], log=print) -> None:
     for ch in chapters:
         start = time.perf_counter()
         nb = nbformat.read(ch.path, as_version=4)
-        NotebookClient(
+        client = NotebookClient(
             nb,
             kernel_name=kernel,
             timeout=CELL_TIMEOUT_S,
             extra_arguments=KERNEL_ARGS,
             record_timing=False,
             resources={"metadata": {"path": str(ch.path.parent)}},
-        ).execute()
+        )
+        with_kernel_restarts(client.execute)
         nb.metadata.pop("widgets", None)
         for cell in nb.cells:
             cell.metadata.pop("execution", None)
