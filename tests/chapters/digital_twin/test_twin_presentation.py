@@ -96,7 +96,7 @@ def test_panel_in_chromium_matches_the_grid(browser, tmp_path):
                 "input.twin-len", f"el => {{ el.value = '{j}'; el.dispatchEvent(new Event('input')); }}"
             )
             shown = page.evaluate(
-                """() => Array.from(document.querySelectorAll('.twin-readout tbody tr')).map(r =>
+                """() => Array.from(document.querySelectorAll('.twin-estimates tbody tr')).map(r =>
                     ['.twin-est', '.twin-lo', '.twin-hi', '.twin-in'].map(s => r.querySelector(s).textContent
                         .replace('\u2212', '-')))"""  # the book's minus sign, read back as a number
             )

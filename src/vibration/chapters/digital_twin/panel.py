@@ -88,7 +88,7 @@ def twin_panel_html(grid: EstimateGrid, *, panel_id: str | None = None) -> str:
         for n, u in zip(NAMES, UNITS, strict=True)
     )
     return f"""<div class="twin-panel" id="{e(pid)}" data-grid="{e(text)}" data-styles="{e(json.dumps(STYLES))}">
-{panel_assets("vibration.chapters.digital_twin", "twin.js", "twin.css")}\
+{panel_assets("vibration.chapters.digital_twin", "twin.js", "twin.css", kit="twin")}\
 <h3 class="twin-title">Noise and record length against the estimates (precomputed)</h3>
 <p class="twin-sub">Each position of the sliders shows one identification computed when the report was built \
 (same force and noise draw throughout; only the slider's quantity changes): each parameter's relative error \
@@ -98,7 +98,7 @@ with its 95 % interval.</p>
 {noise}{length}</div>
 <svg class="twin-plot" viewBox="0 0 640 200" role="img" \
 aria-label="relative error of m, c and k in percent with 95 % intervals"></svg>
-<table class="twin-readout">
+<table class="twin-estimates">
 <thead><tr><th>parameter</th><th>true</th><th>estimate</th><th>95 % low</th><th>95 % high</th>\
 <th>covers truth</th></tr></thead>
 <tbody>

@@ -215,7 +215,7 @@ def slider_panel_html(
     )
     return f"""<div class="vib-panel" id="{e(pid)}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
-{panel_assets("vibration.chapters.explore", "sliders.js", "sliders.css")}\
+{panel_assets("vibration.chapters.explore", "sliders.js", "sliders.css", kit="vib")}\
 <h3 class="vib-title">Explore without a kernel: m = {m:g} kg, k = {k:g} N/m, F<sub>0</sub> = {F0:g} N, \
 window 0 to {t_end:g} s</h3>
 <p class="vib-sub">Response from rest, <i>m x'' + c x' + k x = F<sub>0</sub> sin(ωt)</i>, computed in \

@@ -70,7 +70,7 @@
     var noise = root.querySelector(".twin-noise");
     var len = root.querySelector(".twin-len");
     var svg = root.querySelector(".twin-plot");
-    var rows = root.querySelectorAll(".twin-readout tbody tr");
+    var rows = root.querySelectorAll(".twin-estimates tbody tr");
     function update() {
       var i = Number(noise.value), j = Number(len.value);
       root.querySelector(".twin-noise-out").textContent = fmt(grid.noises[i], 3);
