@@ -104,20 +104,14 @@ def scenarios_from(
     }
 
 
+#: The parameters the paper's scenarios are built from (the arguments of :func:`scenarios_from`).
+SCENARIO_PARAMETERS = ("m", "k", "F0", "t_end", "omega_ref", "omega_res", "c_low", "c_nominal", "c_high")
+
+
 def scenarios_of(params) -> dict[str, Scenario]:
-    """:func:`scenarios_from` for a chapter's ``Params`` record (any object with the nine attributes)."""
-    p = params
-    return scenarios_from(
-        p.m,
-        p.k,
-        p.F0,
-        t_end=p.t_end,
-        omega_ref=p.omega_ref,
-        omega_res=p.omega_res,
-        c_low=p.c_low,
-        c_nominal=p.c_nominal,
-        c_high=p.c_high,
-    )
+    """:func:`scenarios_from` for a chapter's ``Params`` record (any object with the
+    :data:`SCENARIO_PARAMETERS` as attributes)."""
+    return scenarios_from(**{name: getattr(params, name) for name in SCENARIO_PARAMETERS})
 
 
 def at_least(value: float, floor: float):

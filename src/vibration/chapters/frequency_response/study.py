@@ -26,18 +26,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from vibration.chapters.frequency_response.params import Params
+from vibration.physics import frequency as fr
 from vibration.physics.audit import half_power_band, resonant_peak
 from vibration.physics.exact import Response, exact_response, steady_state
-from vibration.physics.frequency import (
-    EnergyBalance,
-    energy_balance,
-    half_power_points,
-    log_decrement,
-    magnification,
-    peak_displacement_map,
-    phase_lag,
-    settling_time,
-)
 from vibration.physics.model import Oscillator, ParameterError, SineForce
 from vibration.physics.numerics import simulate
 from vibration.physics.paper import Scenario
@@ -223,7 +214,7 @@ class FrequencyStudy:
     steady: np.ndarray  # its steady state on t, m
     transient: Response  # its transient (free response from what the steady state leaves over), s, m, m/s
     decomposition: Decomposition
-    energy: tuple[tuple[str, EnergyBalance], ...]  # (response name, balance): exact, then the paper's RK45
+    energy: tuple[tuple[str, fr.EnergyBalance], ...]  # (response name, balance): exact, then the paper's RK45
     energy_t: np.ndarray  # times of the energy balances, s
     design: DesignMap
     checks: tuple[Check, ...]
@@ -251,7 +242,7 @@ class FrequencyStudy:
 
 
 def _mag(osc: Oscillator, w: float) -> float:
-    return float(magnification(osc, [w])[0])
+    return float(fr.magnification(osc, [w])[0])
 
 
 def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[DampingCase, list[Check]]:
@@ -263,7 +254,7 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
     if lo is not None:
         w = wn * np.linspace(max(0.0, 1 - 20 * z), 1 + 20 * z, HALF_POWER_SAMPLES)
         try:
-            zeta_hp = half_power_points(w, magnification(osc, w)).damping_ratio
+            zeta_hp = fr.half_power_points(w, fr.magnification(osc, w)).damping_ratio
         except ParameterError:  # the lower point closer to 0 than one grid step
             zeta_hp = None
     if 0.0 < z < ZETA_DECREMENT_MAX:
@@ -271,7 +262,7 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
         decay = simulate(
             osc, SineForce(F0=0.0, omega=0.0), t_free, n_points=20001, x0=1.0, method="DOP853", rtol=1e-10, atol=1e-13
         )
-        zeta_ld = log_decrement(decay.t, decay.x)[1]
+        zeta_ld = fr.log_decrement(decay.t, decay.x)[1]
     name = case_name(sc.scenario_id)
     row = DampingCase(
         case=case,
@@ -287,8 +278,8 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
         M_res=_mag(osc, p.omega_res),
         zeta_hp=zeta_hp,
         zeta_ld=zeta_ld,
-        magnification=magnification(osc, omegas),
-        phase=phase_lag(osc, omegas),
+        magnification=fr.magnification(osc, omegas),
+        phase=fr.phase_lag(osc, omegas),
     )
     checks = [
         Check(check=f"ζ from the {what}, {name}, against c/(2√(km))", value=abs(est / z - 1), tol=TOL_ESTIMATE)
@@ -311,9 +302,9 @@ def _design(p: Params, study_t: np.ndarray, cases: tuple[DampingCase, ...]) -> t
     omegas = np.linspace(p.omega_max / p.n_omega, p.omega_max, p.n_omega)
     dampings = np.geomspace(p.c_min, p.c_max, p.n_damping)
     n = study_t.size
-    peaks = peak_displacement_map(p.m, p.k, p.F0, omegas=omegas, dampings=dampings, t_end=p.t_end, n_points=n)
+    peaks = fr.peak_displacement_map(p.m, p.k, p.F0, omegas=omegas, dampings=dampings, t_end=p.t_end, n_points=n)
     cs = [c.c for c in cases]
-    at = peak_displacement_map(p.m, p.k, p.F0, omegas=[p.omega_res], dampings=cs, t_end=p.t_end, n_points=n)[:, 0]
+    at = fr.peak_displacement_map(p.m, p.k, p.F0, omegas=[p.omega_res], dampings=cs, t_end=p.t_end, n_points=n)[:, 0]
     force = SineForce(F0=p.F0, omega=p.omega_res)
     direct = [float(np.max(np.abs(exact_response(Oscillator(m=p.m, c=c, k=p.k), force, study_t).x))) for c in cs]
     checks = [
@@ -375,11 +366,11 @@ def frequency_response_study(params: Params | None = None, **values) -> Frequenc
         )
     )
     decomposition = Decomposition(
-        X=ss.amplitude, phase=ss.phase, x_h0=a, x_h_end=float(transient.x[-1]), t_s=settling_time(osc, force)
+        X=ss.amplitude, phase=ss.phase, x_h0=a, x_h_end=float(transient.x[-1]), t_s=fr.settling_time(osc, force)
     )
     fine = np.linspace(0.0, p.t_end, 5 * (p.n_points - 1) + 1)
-    eb_exact = energy_balance(osc, force, exact_response(osc, force, fine))
-    eb_paper = energy_balance(osc, force, simulate(osc, force, p.t_end, n_points=fine.size))
+    eb_exact = fr.energy_balance(osc, force, exact_response(osc, force, fine))
+    eb_paper = fr.energy_balance(osc, force, simulate(osc, force, p.t_end, n_points=fine.size))
     checks.append(
         Check(
             check="energy balance W − D − ΔE on the exact response, resonance case (relative to max W)",

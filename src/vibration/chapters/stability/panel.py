@@ -20,27 +20,19 @@ from vibration.chapters.stability.study import BAND, StabilityStudy
 from vibration.chapters.stability.words import WN, c_text, num, pole_text, sig
 from vibration.physics.model import Oscillator, check_real
 from vibration.physics.stability import StepMetrics, poles, step_metrics, step_response, transmissibility
-from vibration.presentation.panels import (
-    KitExplorer,
-    PanelIds,
-    agg_figure,
-    line_style,
-    panel_assets,
-    range_control,
-    screen_words,
-)
+from vibration.presentation import panels as kit
 
 #: Range of the damping-ratio slider (log scale), 1.
 ZETA_MIN, ZETA_MAX = 0.005, 5.0
 #: Positions of the logarithmic slider.
 ZETA_STEPS = 600
-_ids = PanelIds("vst")
+_ids = kit.PanelIds("vst")
 #: The panel's colours, as the chapter's figures draw them: the nominal damping's curve, black marks, grey references.
 STYLES = {
-    "curve": line_style(look("nominal")),
-    "point": line_style({"color": "#000000"}),
-    "reference": line_style({"color": REF_GREY}),
-    "locus": line_style({"color": LOCUS_GREY}),
+    "curve": kit.line_style(look("nominal")),
+    "point": kit.line_style({"color": "#000000"}),
+    "reference": kit.line_style({"color": REF_GREY}),
+    "locus": kit.line_style({"color": LOCUS_GREY}),
 }
 
 
@@ -80,17 +72,17 @@ def stability_panel_html(
     e = html.escape
     pos = round(ZETA_STEPS * math.log(zeta / ZETA_MIN) / math.log(ZETA_MAX / ZETA_MIN))
     pid = e(panel_id)
-    zeta_control = range_control(pid, "z", "vst-zeta", "damping ratio ζ (log scale)", low=0, high=ZETA_STEPS, step=1,
-                                 value=pos)  # fmt: skip
-    omega_control = range_control(pid, "w", "vst-omega", "base frequency ω", low=0, high=repr(w_max),
-                                  step=repr(w_max / 1000.0), value=repr(omega))  # fmt: skip
-    sub = screen_words(
+    zeta_control = kit.range_control(pid, "z", "vst-zeta", "damping ratio ζ (log scale)", low=0, high=ZETA_STEPS,
+                                     step=1, value=pos)  # fmt: skip
+    omega_control = kit.range_control(pid, "w", "vst-omega", "base frequency ω", low=0, high=repr(w_max),
+                                      step=repr(w_max / 1000.0), value=repr(omega))  # fmt: skip
+    sub = kit.screen_words(
         "Move the damping ratio (logarithmic) and the base frequency; computed in your browser from the closed forms.",
         "Drawn from the closed forms at the starting damping ratio and base frequency.",
     )
     return f"""<div class="vst-panel" id="{e(panel_id)}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
-{panel_assets("vibration.chapters.stability", "stability.js", "stability.css", kit="vst")}\
+{kit.panel_assets("vibration.chapters.stability", "stability.js", "stability.css", kit="vst")}\
 <h3 class="vst-title">Damping as a design choice: m = {m:g} kg, k = {k:g} N/m, ω<sub>n</sub> = {wn:.4g} rad/s</h3>
 <p class="vst-sub">{sub}</p>
 <noscript>This panel needs JavaScript to draw its plots.</noscript>
@@ -117,7 +109,7 @@ aria-label="poles in the complex plane"></svg>
 """
 
 
-class StabilityExplorer(KitExplorer):
+class StabilityExplorer(kit.KitExplorer):
     """JupyterLab sliders (ipywidgets) over the same three views; the book shows the HTML panel.
 
     ``_repr_mimebundle_`` returns the widget view for JupyterLab and, for renderers
@@ -156,7 +148,7 @@ class StabilityExplorer(KitExplorer):
         return {"osc": osc, "T": float(transmissibility(osc, w)), "poles": poles(osc), "step": s, "omega": w}
 
     def figure(self, v: dict):
-        fig = agg_figure(9.0, 2.9)
+        fig = kit.agg_figure(9.0, 2.9)
         at, ast, ap = fig.subplots(1, 3, width_ratios=(1.2, 1.2, 0.8))
         osc, s = v["osc"], v["step"]
         wn = osc.natural_frequency

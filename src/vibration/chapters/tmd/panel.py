@@ -26,15 +26,7 @@ from vibration.physics.tmd import (
     tmd_magnification,
     tmd_peak,
 )
-from vibration.presentation.panels import (
-    KitExplorer,
-    PanelIds,
-    agg_figure,
-    line_style,
-    panel_assets,
-    range_control,
-    screen_words,
-)
+from vibration.presentation import panels as kit
 from vibration.presentation.style import OKABE_ITO, case_style
 
 __all__ = ["MU_RANGE", "F_RANGE", "ZETA_A_RANGE", "ZETA_P_RANGE", "TMDExplorer", "sliders_text", "tmd_explorer",
@@ -49,14 +41,14 @@ ZETA_P_RANGE = (0.0, 0.3)
 #: Frequency-ratio window of the slider plots, 1.
 R_RANGE = (0.4, 1.6)
 _SLIDER_RULES = (("dh", "Den Hartog"), ("hinf", "H∞ (Nishihara–Asami)"), ("h2", "H2 (Warburton)"))
-_ids = PanelIds("vtm")
+_ids = kit.PanelIds("vtm")
 #: The panel's lines and marks with their legend words, as the JupyterLab explorer draws them.
 STYLES = {
-    "curve": {**line_style({"color": OKABE_ITO["blue"]}), "label": "with the absorber of the sliders"},
-    "opt": {**line_style("exact"), "label": "H∞ tuning for this μ"},
-    "bare": {**line_style({"color": OKABE_ITO["grey"]}), "label": "without absorber"},
-    "fixed": {**line_style({"color": OKABE_ITO["black"]}), "label": "fixed points P, Q of the undamped primary"},
-    "peak": {**line_style({"color": OKABE_ITO["vermillion"]}), "label": "peak"},
+    "curve": {**kit.line_style({"color": OKABE_ITO["blue"]}), "label": "with the absorber of the sliders"},
+    "opt": {**kit.line_style("exact"), "label": "H∞ tuning for this μ"},
+    "bare": {**kit.line_style({"color": OKABE_ITO["grey"]}), "label": "without absorber"},
+    "fixed": {**kit.line_style({"color": OKABE_ITO["black"]}), "label": "fixed points P, Q of the undamped primary"},
+    "peak": {**kit.line_style({"color": OKABE_ITO["vermillion"]}), "label": "peak"},
 }
 
 
@@ -111,7 +103,7 @@ def tmd_panel_html(mu=0.05, f=None, zeta_a=None, *, zeta_p=0.0, panel_id: str | 
 
     def slider(cls, label, lo, hi, value, log):
         a, b, v = (lg(lo), lg(hi), lg(value)) if log else (lo, hi, value)
-        return range_control(pid, cls, f"vtm-{cls}", label, low=repr(a), high=repr(b), step="any", value=repr(v))
+        return kit.range_control(pid, cls, f"vtm-{cls}", label, low=repr(a), high=repr(b), step="any", value=repr(v))
 
     rules = "".join(
         f'<tr><th>{e(name)}</th><td class="vtm-{key}-f"></td><td class="vtm-{key}-za"></td>'
@@ -122,7 +114,7 @@ def tmd_panel_html(mu=0.05, f=None, zeta_a=None, *, zeta_p=0.0, panel_id: str | 
         f'<button type="button" class="vtm-rule" data-rule="{key}">{e(name.split(" (")[0])}</button>'
         for key, name in _SLIDER_RULES
     )
-    sub = screen_words(
+    sub = kit.screen_words(
         "Move the mass ratio μ and the absorber damping ζ<sub>a</sub> (logarithmic), the tuning "
         "f = ω<sub>a</sub>/ω<sub>p</sub> and the primary damping ζ<sub>p</sub>; computed in your browser from the "
         "closed forms.",
@@ -131,7 +123,7 @@ def tmd_panel_html(mu=0.05, f=None, zeta_a=None, *, zeta_p=0.0, panel_id: str | 
     )
     return f"""<div class="vtm-panel" id="{pid}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
-{panel_assets("vibration.chapters.tmd", "tmd.js", "tmd.css", kit="vtm")}\
+{kit.panel_assets("vibration.chapters.tmd", "tmd.js", "tmd.css", kit="vtm")}\
 <h3 class="vtm-title">Tuned mass damper: the primary's magnification against the frequency ratio</h3>
 <p class="vtm-sub">{sub}</p>
 <noscript>This panel needs JavaScript to draw its plot.</noscript>
@@ -172,7 +164,7 @@ aria-label="primary's magnification against the frequency ratio"></svg></figure>
 """
 
 
-class TMDExplorer(KitExplorer):
+class TMDExplorer(kit.KitExplorer):
     """JupyterLab sliders (ipywidgets) for μ, f, ζ_a and ζ_p over the magnification curve.
 
     ``_repr_mimebundle_`` returns the widget view for JupyterLab and, for renderers
@@ -240,7 +232,7 @@ class TMDExplorer(KitExplorer):
         }
 
     def figure(self, v: dict):
-        fig = agg_figure(7.5, 3.6)
+        fig = kit.agg_figure(7.5, 3.6)
         ax = fig.subplots()
         mu, f, za, zp = v["mu"], v["f"], v["zeta_a"], v["zeta_p"]
         r = np.linspace(*R_RANGE, 2401)
