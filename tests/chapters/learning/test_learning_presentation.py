@@ -25,14 +25,23 @@ from vibration.presentation.style import legend_overlap  # noqa: E402
 
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "11_learning.ipynb"
 
+
+def active_controllers(st):
+    return tables.controllers_table(st, "active")
+
+
+def semi_controllers(st):
+    return tables.controllers_table(st, "semi")
+
+
 TABLES = (
     tables.lqr_table,
     tables.learning_table,
     tables.seed_table,
-    tables.active_table,
+    active_controllers,
     tables.references_table,
     tables.robustness_table,
-    tables.semi_table,
+    semi_controllers,
     tables.checks_table,
 )
 SENTENCES = (

@@ -107,12 +107,9 @@ def _claim(row: dict) -> Claim:
 
 
 def claims_audit_study(params: Params | None = None, **values) -> ClaimsAuditStudy:
-    """The chapter's whole computation.
+    """Every claim of the paper read off the paper's own runs and the exact solution, with its verdict.
 
-    Parameters
-    ----------
-    params : Params, optional
-        The validated parameters; or give them as keyword arguments (checked by the schema).
+    ``params`` are the validated parameters; without it, keyword arguments are checked by the schema.
 
     Returns
     -------

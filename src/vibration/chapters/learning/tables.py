@@ -218,23 +218,24 @@ def comparison_table(cmp: Comparison, caption: str, name: str, *, reference: int
     )
 
 
-def active_table(st: LearningStudy) -> Table:
-    """The force actuator under the resonance force: every controller on the same episodes."""
-    return comparison_table(
-        st.active,
-        "Force actuator under the resonance force: controllers on the same episodes.",
-        "tab-learning-active",
-        reference=ACTIVE.index("LQR"),
-    )
+#: The two plants the controllers are compared on under the resonance force: the study's field, the caption's
+#: name of the device, its controllers and the reference controller of the "J / J_ref" column.
+DEVICES = {
+    "active": ("Force actuator", ACTIVE, "LQR"),
+    "semi": ("Semi-active damper", SEMI, "best constant damping"),
+}
 
 
-def semi_table(st: LearningStudy) -> Table:
-    """The semi-active damper under the resonance force: every controller on the same episodes."""
+def controllers_table(st: LearningStudy, device: str) -> Table:
+    """Every controller of ``device`` (a key of :data:`DEVICES`) on the same episodes under the resonance force."""
+    if device not in DEVICES:
+        raise ValueError(f"device = {device!r}: allowed {', '.join(map(repr, DEVICES))}")
+    what, names, reference = DEVICES[device]
     return comparison_table(
-        st.semi,
-        "Semi-active damper under the resonance force: controllers on the same episodes.",
-        "tab-learning-semi",
-        reference=SEMI.index("best constant damping"),
+        getattr(st, device),
+        f"{what} under the resonance force: controllers on the same episodes.",
+        f"tab-learning-{device}",
+        reference=names.index(reference),
     )
 
 

@@ -156,12 +156,9 @@ def reproduce(scenarios: dict[str, Scenario], n_points: int, params: Params) -> 
 
 
 def reproduction_study(params: Params | None = None, **values) -> ReproductionStudy:
-    """The chapter's whole computation.
+    """The paper's five runs, repeated with its RK45 settings and computed exactly, and what each shows.
 
-    Parameters
-    ----------
-    params : Params, optional
-        The validated parameters; or give them as keyword arguments (checked by the schema).
+    ``params`` are the validated parameters; without it, keyword arguments are checked by the schema.
 
     Returns
     -------

@@ -57,21 +57,33 @@ def random_deviations(st: StabilityStudy) -> dict[str, float]:
     }
 
 
+def low_damping_claim(st: StabilityStudy, *, detailed: bool) -> str:
+    """What the run says of the low damping the paper calls unstable: for the key results, or in detail."""
+    low = st.osc(st.dampings["low"])
+    s_low = stability_class(low)
+    if not s_low.asymptotic:
+        agree = "as the paper says of its own" if detailed else "here the paper's word fits"
+        return f"The low damping of this run ({c_text(low.c)}) is {s_low.verdict}{',' if detailed else ':'} {agree}."
+    tau, bound = num(low.time_constant, 3), num(st.design["low"].peak_magnification * st.F0 / st.k, 3)
+    if detailed:
+        return (
+            f"The low damping ({c_text(low.c)}) that the paper calls unstable is asymptotically stable: its slowest "
+            f"free mode decays as $e^{{-t/\\tau}}$ with τ = {tau} s, and its steady response is bounded by {bound} m "
+            "at any forcing frequency."
+        )
+    return (
+        f"The low damping ({c_text(low.c)}), which the paper calls unstable, is stable: its free motion dies out with "
+        f"time constant {tau} s, and its steady response to a sinusoidal force of {num(st.F0, 3)} N never exceeds "
+        f"{bound} m."
+    )
+
+
 # ----------------------------------------------------------------------------- key results
 
 
 def key_results(st: StabilityStudy) -> str:
     """The key-results box: computed headline numbers as a Markdown block quote."""
-    low = st.osc(st.dampings["low"])
-    s_low = stability_class(low)
-    if s_low.asymptotic:
-        first = (
-            f"The low damping ({c_text(low.c)}), which the paper calls unstable, is stable: its free motion dies "
-            f"out with time constant {num(low.time_constant, 3)} s, and its steady response to a sinusoidal force of "
-            f"{num(st.F0, 3)} N never exceeds {num(st.design['low'].peak_magnification * st.F0 / st.k, 3)} m."
-        )
-    else:
-        first = f"The low damping of this run ({c_text(low.c)}) is {s_low.verdict}: here the paper's word fits."
+    first = low_damping_claim(st, detailed=False)
     lin = st.growth["linear"]
     rate = st.growth_rate()
     second = (
@@ -129,16 +141,7 @@ def stability_sentence(st: StabilityStudy) -> str:
                 cs = groups[verdict]
                 parts.append(f"{join(cs)} {'is' if len(cs) == 1 else 'are'} {verdict} ({why})")
         head = "Of this run's dampings, " + "; ".join(parts) + "."
-    low = st.osc(st.dampings["low"])
-    s_low = stability_class(low)
-    if s_low.asymptotic:
-        claim = (
-            f"The low damping ({c_text(low.c)}) that the paper calls unstable is asymptotically stable: its slowest "
-            f"free mode decays as $e^{{-t/\\tau}}$ with τ = {num(low.time_constant, 3)} s, and its steady response "
-            f"is bounded by {num(st.design['low'].peak_magnification * st.F0 / st.k, 3)} m at any forcing frequency."
-        )
-    else:
-        claim = f"The low damping of this run ({c_text(low.c)}) is {s_low.verdict}, as the paper says of its own."
+    claim = low_damping_claim(st, detailed=True)
     s_u = stability_class(st.osc(st.c_unstable))
     if st.c_unstable < 0.0:
         tail = (
