@@ -141,12 +141,8 @@ def slider_panel_html(
 
     Parameters
     ----------
-    m : float
-        Mass, kg (> 0).
-    k : float
-        Stiffness, N/m (> 0).
-    F0 : float
-        Force amplitude, N (>= 0).
+    m, k, F0 : float
+        The oscillator: mass (kg, > 0), stiffness (N/m, > 0) and force amplitude (N, >= 0).
     c : float
         Initial damping, N s/m (> 0); the logarithmic slider spans ``min(C_MIN, c)`` to
         ``max(C_MAX, 2 c_crit, c)`` N s/m, so 0.01 and 20 N s/m are always reachable. The JavaScript closed
