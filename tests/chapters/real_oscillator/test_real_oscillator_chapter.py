@@ -10,6 +10,7 @@ import math
 import re
 from pathlib import Path
 
+import numpy as np
 import pohl_generator as gen
 import pytest
 
@@ -229,3 +230,31 @@ def test_the_schematic_says_what_the_rig_is_and_what_is_not_documented(study):
     other = told(torsional_oscillator(description="a simulated wheel", max_angle_rad=30.0))
     assert "can turn at most 30 rad (1719°)" in other and "the largest angle the wheel can turn" not in other
     assert "The data do not describe the rig." in told(torsional_oscillator())
+
+
+def test_the_pooled_power_law_follows_the_measured_damping_where_the_runs_overlap(study):
+    """The drawn and predicted law of a setting is one power term: its equivalent damping ratio (Coulomb term
+    included) must stay with the measured ratios over the amplitudes the runs share, not only at one amplitude.
+    Measured ratios are binned by amplitude (0.25 rad bins of at least 8 cycles, from 1.2 rad up) and each bin's
+    median compared with the pooled law at the bin's median amplitude."""
+    from vibration.physics.lab.decay import equivalent_zeta
+
+    checked = 0
+    for s in study.settings:
+        pooled = s.fits.get("coulomb+power")
+        if pooled is None:
+            continue
+        m = pooled.mean
+        x = np.concatenate([c.amplitude for c in s.curves])
+        z = np.concatenate([c.zeta_eq for c in s.curves])
+        edges = np.arange(1.2, x.max() + 0.25, 0.25)
+        for a, b in zip(edges[:-1], edges[1:], strict=True):
+            inside = (x >= a) & (x < b)
+            if inside.sum() < 8:
+                continue
+            xm, zm = float(np.median(x[inside])), float(np.median(z[inside]))
+            law = m["zeta"] + 2 * m["friction"] / (math.pi * xm)
+            law += float(equivalent_zeta(xm, m["omega_n"], power=m["power"], power_exponent=m["power_exponent"]))
+            assert abs(law / zm - 1) <= 0.12, (s.brake, xm, law, zm)
+            checked += 1
+    assert checked >= 8

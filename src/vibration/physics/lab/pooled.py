@@ -25,9 +25,9 @@ class PooledDecayFit:
         Canonical law string.
     mean : dict
         Mean over runs of "omega_n" (rad/s), "zeta", "friction" (rad), "quadratic" (1/rad), "power",
-        "power_exponent", "offset" (rad). For the power law, "power" is the coefficient whose
-        equivalent damping ratio at the runs' median half-period amplitude, with the mean exponent,
-        equals the mean over runs of theirs (coefficients with different exponents do not average).
+        "power_exponent", "offset" (rad). For the power law, "power" and "power_exponent" are those of the one
+        power term whose equivalent damping ratio best matches the runs' own over the amplitudes they cover
+        (coefficients with different exponents do not average); their ``stderr`` stay the runs' scatter.
     stderr : dict
         Run-to-run standard errors of those means (sample standard deviation / sqrt(n)); with a single
         run, that run's own fit error.
@@ -61,12 +61,53 @@ class PooledDecayFit:
     fits: tuple = field(repr=False)
 
 
-def _reference_amplitude(pairs) -> float:
-    """Median half-period amplitude of the runs (rad): where the power term's pooled coefficient is matched."""
-    from vibration.physics.lab.amplitude import _curve
+#: Amplitudes (evenly spaced over those the runs cover) at which the pooled power term is matched to the runs'.
+POWER_GRID = 64
 
-    x = np.concatenate([_curve(t, y).amplitude for t, y in pairs])
-    return float(np.median(x)) if x.size else 1.0
+
+def _pooled_power(fits, pairs, omega_n: float) -> tuple[float, float]:
+    """Coefficient and exponent of the one power term whose equivalent damping ratio is closest, in least squares,
+    to the mean of the runs' own power terms over the half-period amplitudes the runs cover.
+
+    At each of :data:`POWER_GRID` amplitudes the target is the mean over the runs whose decay covers it, weighted
+    by their number; the coefficient is linear (closed form) and the exponent is searched within
+    :data:`~vibration.physics.lab.damping_laws.POWER_EXPONENT_RANGE`. Averaging the runs' coefficients and
+    exponents separately would give a term that matches none of them away from one amplitude.
+    """
+    from scipy import optimize
+
+    from vibration.physics.lab.amplitude import _curve
+    from vibration.physics.lab.damping_laws import POWER_EXPONENT_RANGE
+
+    ranges = []
+    for t, y in pairs:
+        x = _curve(t, y).amplitude
+        x = x[x > 0]
+        ranges.append((float(x.min()), float(x.max())) if x.size else (math.inf, -math.inf))
+    lo, hi = min(r[0] for r in ranges), max(r[1] for r in ranges)
+    mean_exponent = float(np.mean([f.power_exponent for f in fits]))
+    if not lo < hi:  # no run has two half periods: nothing to match
+        return 0.0, mean_exponent
+    grid = np.linspace(lo, hi, POWER_GRID)
+    cover = np.array([(grid >= a) & (grid <= b) for a, b in ranges])
+    own = np.array([equivalent_zeta(grid, f.omega_n, power=max(f.power, 0.0), power_exponent=f.power_exponent)
+                    for f in fits])  # fmt: skip
+    weight = cover.sum(axis=0).astype(float)
+    keep = weight > 0
+    x, w = grid[keep], weight[keep]
+    target = np.where(cover, own, 0.0).sum(axis=0)[keep] / w
+    if not np.any(target > 0):
+        return 0.0, mean_exponent
+
+    def best(p: float) -> tuple[float, float]:
+        unit = np.asarray(equivalent_zeta(x, omega_n, power=1.0, power_exponent=p))
+        a = max(float(np.sum(w * unit * target) / np.sum(w * unit * unit)), 0.0)
+        return a, float(np.sum(w * (a * unit - target) ** 2))
+
+    res = optimize.minimize_scalar(
+        lambda p: best(p)[1], bounds=POWER_EXPONENT_RANGE, method="bounded", options={"xatol": 1e-6, "maxiter": 200}
+    )
+    return best(float(res.x))[0], float(res.x)
 
 
 def fit_free_decays(runs, law: str = "coulomb+viscous") -> PooledDecayFit:
@@ -103,13 +144,8 @@ def fit_free_decays(runs, law: str = "coulomb+viscous") -> PooledDecayFit:
         mean[k] = float(v.mean())
         stderr[k] = float(v.std(ddof=1) / math.sqrt(n)) if n > 1 else float(fits[0].stderr[k])
         fit_se[k] = float(np.median([f.stderr[k] for f in fits]))
-    if "power" in terms:  # a_i with different p_i do not average: match the mean equivalent ratio at X_ref
-        x_ref = _reference_amplitude(pairs)
-        z_ref = np.mean(
-            [equivalent_zeta(x_ref, f.omega_n, power=f.power, power_exponent=f.power_exponent) for f in fits]
-        )
-        unit = float(equivalent_zeta(x_ref, mean["omega_n"], power=1.0, power_exponent=mean["power_exponent"]))
-        mean["power"] = float(z_ref) / unit if unit > 0 else 0.0
+    if "power" in terms:  # a_i with different p_i do not average: one power term matching the runs' own
+        mean["power"], mean["power_exponent"] = _pooled_power(fits, pairs, mean["omega_n"])
     coeffs = {}
     names = {"viscous": "zeta", "coulomb": "friction", "quadratic": "quadratic", "power": "power"}
     for key in fits[0].coefficients:
