@@ -230,3 +230,18 @@ def test_too_many_half_cycles_is_an_error_naming_the_window():
 
     with pytest.raises(ParameterError, match="half periods which is out of range"):
         _half_cycles(1.0, 0.0, 1e4, 1e-9, 0.0, 1e-9, 0.0, 2.0, 1e3)
+
+
+def test_the_pooled_power_term_recovers_one_law_and_its_jackknife_error_sees_runs_that_disagree():
+    """Runs of one power law (a = 0.004, p = 3) from four start angles: the pooled term is that law and its
+    jackknife errors are small. Runs of two laws (p = 2 and p = 4): the error of the exponent grows to cover both."""
+    t = np.arange(0.0, 25.0, 0.01)
+    same = [(t, _ode(t, delta=0.02, a=0.004, p=3.0, theta0=x)) for x in (2.0, 2.5, 3.0, 3.5)]
+    p = fit_free_decays(same, "coulomb+power")
+    assert p.mean["power_exponent"] == pytest.approx(3.0, abs=0.05)
+    assert p.mean["power"] == pytest.approx(0.004, rel=0.05)
+    assert p.stderr["power_exponent"] < 0.05
+    mixed = [(t, _ode(t, delta=0.02, a=a, p=q, theta0=x)) for a, q, x in ((0.02, 2.0, 2.5), (0.0008, 4.0, 2.5))] * 2
+    m = fit_free_decays(mixed, "coulomb+power")
+    assert 2.0 < m.mean["power_exponent"] < 4.0
+    assert m.stderr["power_exponent"] > 10 * p.stderr["power_exponent"]

@@ -27,7 +27,8 @@ class PooledDecayFit:
         Mean over runs of "omega_n" (rad/s), "zeta", "friction" (rad), "quadratic" (1/rad), "power",
         "power_exponent", "offset" (rad). For the power law, "power" and "power_exponent" are those of the one
         power term whose equivalent damping ratio best matches the runs' own over the amplitudes they cover
-        (coefficients with different exponents do not average); their ``stderr`` stay the runs' scatter.
+        (coefficients with different exponents do not average); their ``stderr`` are the jackknife over runs (the
+        term fitted again with each run left out).
     stderr : dict
         Run-to-run standard errors of those means (sample standard deviation / sqrt(n)); with a single
         run, that run's own fit error.
@@ -146,6 +147,11 @@ def fit_free_decays(runs, law: str = "coulomb+viscous") -> PooledDecayFit:
         fit_se[k] = float(np.median([f.stderr[k] for f in fits]))
     if "power" in terms:  # a_i with different p_i do not average: one power term matching the runs' own
         mean["power"], mean["power_exponent"] = _pooled_power(fits, pairs, mean["omega_n"])
+        if n > 2:  # its error: the jackknife over runs (leave one run out, fit again)
+            drop = np.array([_pooled_power(fits[:i] + fits[i + 1 :], pairs[:i] + pairs[i + 1 :], mean["omega_n"])
+                             for i in range(n)])  # fmt: skip
+            spread = np.sqrt((n - 1) / n * np.sum((drop - drop.mean(axis=0)) ** 2, axis=0))
+            stderr["power"], stderr["power_exponent"] = float(spread[0]), float(spread[1])
     coeffs = {}
     names = {"viscous": "zeta", "coulomb": "friction", "quadratic": "quadratic", "power": "power"}
     for key in fits[0].coefficients:
