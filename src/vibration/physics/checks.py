@@ -35,6 +35,7 @@ __all__ = [
     "check_oscillator",
     "check_real",
     "check_records",
+    "check_start",
 ]
 
 
@@ -192,6 +193,23 @@ def check_array(
 
 def _inputs(inputs: dict) -> str:
     return ", ".join(f"{k} = {_show(v)}" for k, v in inputs.items())
+
+
+def check_start(start, name: str = "start") -> tuple[float, float]:
+    """An initial state ``(x0, v0)``: displacement (m) and velocity (m/s), both finite reals.
+
+    Examples
+    --------
+    >>> check_start((3, 0.0))
+    (3.0, 0.0)
+    >>> check_start(3.0)
+    Traceback (most recent call last):
+    ...
+    vibration.physics.model.ParameterError: start = 3.0 is not valid: allowed a pair (x0 in m, v0 in m/s)
+    """
+    if isinstance(start, (str, bytes)) or not hasattr(start, "__len__") or len(start) != 2:
+        raise ParameterError(f"{name} = {_show(start)} is not valid: allowed a pair (x0 in m, v0 in m/s)")
+    return check_real(f"{name}[0] (x0)", start[0], unit="m"), check_real(f"{name}[1] (v0)", start[1], unit="m/s")
 
 
 def check_choice(name: str, value, choices) -> str:

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import check_count, check_derived
+from ..checks import check_count, check_derived, check_start
 from ..model import ParameterError, check_int, check_real
 from .model import MAX_RK4_STEPS, RK4_STABILITY, Duffing, _check_duffing, _linear_rate, _rates, _x_ref
 
@@ -131,7 +131,7 @@ class LyapunovResult:
     v_end: float  # m/s
 
 
-def _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, mode=0, d0=1.0):
+def _rk4_run(duffing, F0, omega, start, n_periods, n_transient, steps_per_period, mode=0, d0=1.0):
     """Check the arguments, discard ``n_transient`` periods, then run the compiled RK4 in ``mode``.
 
     Returns the averaging time ``n_periods T`` (s) and the kernel's ``(points, running, tail)``.
@@ -139,8 +139,7 @@ def _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_perio
     d = _check_duffing(duffing)
     F0 = check_real("F0", F0, low=0.0, unit="N")
     w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
-    x0 = check_real("x0", x0, unit="m")
-    v0 = check_real("v0", v0, unit="m/s")
+    x0, v0 = check_start(start)
     n_periods = check_int("n_periods", n_periods, low=1, high=2_000_000)
     n_transient = check_int("n_transient", n_transient, low=0, high=10_000_000)
     spp = check_int("steps_per_period", steps_per_period, low=8, high=100_000)
@@ -232,8 +231,7 @@ def poincare_section(
     F0: float,
     omega: float,
     *,
-    x0: float = 0.0,
-    v0: float = 0.0,
+    start: tuple[float, float] = (0.0, 0.0),
     n_periods: int = 2000,
     n_transient: int = 200,
     steps_per_period: int = 400,
@@ -250,8 +248,8 @@ def poincare_section(
         Force amplitude, N.
     omega : float
         Forcing frequency, rad/s.
-    x0, v0 : float
-        Initial state at t = 0, m and m/s.
+    start : tuple of float
+        Initial state ``(x0, v0)`` at t = 0, m and m/s (python-control's ``X0``).
     n_periods : int
         Points returned (after the transient).
     n_transient : int
@@ -270,7 +268,7 @@ def poincare_section(
     >>> bool(np.ptp(pts[:, 0]) < 1e-9)           # a period-1 orbit: one point
     True
     """
-    _, pts, _, _ = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period)
+    _, pts, _, _ = _rk4_run(duffing, F0, omega, start, n_periods, n_transient, steps_per_period)
     return pts
 
 
@@ -279,8 +277,7 @@ def lyapunov_qr(
     F0: float,
     omega: float,
     *,
-    x0: float = 0.0,
-    v0: float = 0.0,
+    start: tuple[float, float] = (0.0, 0.0),
     n_periods: int = 2000,
     n_transient: int = 100,
     steps_per_period: int = 400,
@@ -294,7 +291,7 @@ def lyapunov_qr(
 
     Parameters
     ----------
-    duffing, F0, omega, x0, v0
+    duffing, F0, omega, start
         As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
         (rad/s) and initial state (m, m/s).
     n_periods : int
@@ -315,7 +312,7 @@ def lyapunov_qr(
     >>> round(sum(r.exponents), 6)        # = -c/m, 1/s
     -0.5
     """
-    time, _, running, tail = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, 1)
+    time, _, running, tail = _rk4_run(duffing, F0, omega, start, n_periods, n_transient, steps_per_period, 1)
     return _lyapunov_result(time, running, tail, "qr", 2)
 
 
@@ -324,8 +321,7 @@ def lyapunov_benettin(
     F0: float,
     omega: float,
     *,
-    x0: float = 0.0,
-    v0: float = 0.0,
+    start: tuple[float, float] = (0.0, 0.0),
     n_periods: int = 2000,
     n_transient: int = 100,
     steps_per_period: int = 400,
@@ -341,7 +337,7 @@ def lyapunov_benettin(
 
     Parameters
     ----------
-    duffing, F0, omega, x0, v0
+    duffing, F0, omega, start
         As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
         (rad/s) and initial state (m, m/s).
     n_periods, n_transient, steps_per_period : int
@@ -361,7 +357,7 @@ def lyapunov_benettin(
     True
     """
     d0 = check_real("d0", d0, low=1e-12, high=1e-4)
-    time, _, running, tail = _rk4_run(duffing, F0, omega, x0, v0, n_periods, n_transient, steps_per_period, 2, d0)
+    time, _, running, tail = _rk4_run(duffing, F0, omega, start, n_periods, n_transient, steps_per_period, 2, d0)
     return _lyapunov_result(time, running, tail, "benettin", 1)
 
 
@@ -414,8 +410,7 @@ def lyapunov_estimate(
     F0: float,
     omega: float,
     *,
-    x0: float = 0.0,
-    v0: float = 0.0,
+    start: tuple[float, float] = (0.0, 0.0),
     n_periods: int = 20_000,
     n_blocks: int = 20,
     n_transient: int = 300,
@@ -433,7 +428,7 @@ def lyapunov_estimate(
 
     Parameters
     ----------
-    duffing, F0, omega, x0, v0
+    duffing, F0, omega, start
         As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
         (rad/s) and initial state (m, m/s).
     n_periods : int
@@ -454,10 +449,11 @@ def lyapunov_estimate(
     Examples
     --------
     >>> u = Duffing(m=1.0, c=0.05, k=0.0, k3=1.0)                   # Ueda's oscillator
-    >>> e = lyapunov_estimate(u, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=4000)
+    >>> e = lyapunov_estimate(u, 7.5, 1.0, start=(3.0, 0.0), n_periods=4000)
     >>> 0.09 < e.exponent < 0.115 and 0.0005 < e.standard_error < 0.004   # 1/s
     True
     """
+    x0, v0 = check_start(start)
     n_blocks = check_int("n_blocks", n_blocks, low=5, high=1000)
     n_periods = check_int("n_periods", n_periods, low=10 * n_blocks, high=2_000_000)
     if not isinstance(method, str) or method not in ("qr", "benettin"):
@@ -467,8 +463,7 @@ def lyapunov_estimate(
         duffing,
         F0,
         omega,
-        x0=x0,
-        v0=v0,
+        start=(x0, v0),
         n_periods=n_periods,
         n_transient=n_transient,
         steps_per_period=steps_per_period,
@@ -484,8 +479,8 @@ def lyapunov_estimate(
         block_periods=b,
         second=r.exponents[1] if len(r.exponents) > 1 else math.nan,
         method=method,
-        x0=float(x0),
-        v0=float(v0),
+        x0=x0,
+        v0=v0,
         steps_per_period=int(steps_per_period),
         period=T,
         increments=increments,
