@@ -55,15 +55,15 @@ class Setting:
 
     brake: str
     current: float | None
-    runs: tuple = field(repr=False)
-    curves: tuple = field(repr=False)
-    fits: dict = field(repr=False)
     law: str
     wins: dict
     amplitude_range: tuple
     zeta_eq: float
     zeta_eq_stderr: float
     n_band: int
+    runs: tuple = field(repr=False)
+    curves: tuple = field(repr=False)
+    fits: dict = field(repr=False)
 
 
 def _setting_curves(runs) -> tuple:

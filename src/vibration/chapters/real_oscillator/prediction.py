@@ -74,9 +74,6 @@ class Prediction:
     gain: float
     omega_n: float
     coefficients: dict
-    calibration: tuple = field(repr=False)
-    predicted: tuple = field(repr=False)
-    errors: dict = field(repr=False)
     pooled_error: float
     session_errors: dict
     sensitivity: tuple
@@ -86,6 +83,9 @@ class Prediction:
     sim_pooled_error: float = math.nan
     sim_session_errors: dict = field(default_factory=dict)
     sim_sensitivity: tuple = ()
+    calibration: tuple = field(repr=False)
+    predicted: tuple = field(repr=False)
+    errors: dict = field(repr=False)
 
 
 def _law_terms(mean: dict) -> dict:

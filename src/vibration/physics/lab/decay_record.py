@@ -74,9 +74,6 @@ class FreeDecayFit:
     offset: float
     theta0: float
     t0: float
-    stderr: dict = field(repr=False)
-    stderr_naive: dict = field(repr=False)
-    stderr_hac: dict = field(repr=False)
     residual_rms: float
     aic: float
     bic: float
@@ -89,6 +86,9 @@ class FreeDecayFit:
     ljung_box_p: float
     converged: bool
     residuals: np.ndarray = field(repr=False)
+    stderr: dict = field(repr=False)
+    stderr_naive: dict = field(repr=False)
+    stderr_hac: dict = field(repr=False)
     quadratic: float = 0.0
     power: float = 0.0
     power_exponent: float = 0.0
