@@ -46,7 +46,7 @@ OTHER = {
 #: Fewer sweep frequencies keep the other sets affordable; the sentences do not depend on the grid's density.
 CHEAP = {"n_sweep": 15}
 
-TABLES = [getattr(T, name) for name in sorted(dir(T)) if name.endswith("_table")]
+TABLES = [getattr(T, name) for name in sorted(dir(T)) if name.endswith("_table") and not name.startswith("_")]
 NUMBER = re.compile(r"[−-]?\d+(?:[.,]\d+)*(?:×10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?|10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+")
 
 

@@ -26,7 +26,8 @@ FIRST_ROW = Missing(reason="first row")
 NO_SHAPER = Missing(reason="no shaper: the unshaped step is the reference")
 
 
-def _metric_rows(metrics: dict[str, Metrics], reference: str) -> list[dict]:
+def _metrics_table(metrics: dict[str, Metrics], reference: str, **table) -> Table:
+    """One row per law, its steady RMS reduction against ``reference``; ``table``: caption, name and notes."""
     ref = metrics[reference].rms_x_ss
     rows = []
     for name, mt in metrics.items():
@@ -43,7 +44,7 @@ def _metric_rows(metrics: dict[str, Metrics], reference: str) -> list[dict]:
                 "energy": cell(mt.energy),
             }
         )
-    return rows
+    return Table(rows=rows, columns=_METRIC_COLUMNS, **table)
 
 
 _METRIC_COLUMNS = columns(
@@ -164,9 +165,9 @@ def costs_table(study: ControlStudy) -> Table:
 def active_metrics_table(study: ControlStudy) -> Table:
     """Peak and RMS displacement (window and steady state), force and energy per active controller."""
     a = study.active
-    return Table(
-        rows=_metric_rows(a.metrics, "passive"),
-        columns=_METRIC_COLUMNS,
+    return _metrics_table(
+        a.metrics,
+        "passive",
         caption=(
             f"Active control at {_at(study)} from rest over {num(a.t[-1])} s: displacement over the window and in "
             f"steady state (last {STEADY_PERIODS} forcing periods, from t = {num(a.t_steady, 4)} s), steady RMS "
@@ -273,9 +274,9 @@ def flutter_table(study: ControlStudy) -> Table:
 def semi_active_metrics_table(study: ControlStudy) -> Table:
     """Displacement, device force and energy of every suspension law at the base frequency."""
     s = study.semi
-    return Table(
-        rows=_metric_rows(s.metrics, "soft"),
-        columns=_METRIC_COLUMNS,
+    return _metrics_table(
+        s.metrics,
+        "soft",
         caption=(
             f"Semi-active suspension at ω = {num(s.omega)} rad/s (ω/ω_n = {cell(s.omega / s.osc.natural_frequency)}), "
             f"base amplitude Y = F_0/k = {num(s.Y)} m, from rest over {num(s.runs['soft'].t[-1])} s: the mass's "

@@ -60,23 +60,23 @@ class _Row:
     key: str  # key in Explorer.values
     label: str  # quantity, with symbol
     unit: str  # SI unit, "" for dimensionless numbers and words
-    fmt: str  # format of the value
+    fmt: str = ".5g"  # format of the value: five significant figures unless told
 
 
 _ROWS = (
-    _Row(key="omega_n", label="natural frequency ω_n", unit="rad/s", fmt=".5g"),
-    _Row(key="f_n", label="natural frequency f_n", unit="Hz", fmt=".5g"),
-    _Row(key="omega", label="forcing frequency ω", unit="rad/s", fmt=".5g"),
-    _Row(key="f", label="forcing frequency f", unit="Hz", fmt=".5g"),
-    _Row(key="ratio", label="frequency ratio ω/ω_n", unit="", fmt=".5g"),
-    _Row(key="zeta", label="damping ratio ζ", unit="", fmt=".5g"),
+    _Row(key="omega_n", label="natural frequency ω_n", unit="rad/s"),
+    _Row(key="f_n", label="natural frequency f_n", unit="Hz"),
+    _Row(key="omega", label="forcing frequency ω", unit="rad/s"),
+    _Row(key="f", label="forcing frequency f", unit="Hz"),
+    _Row(key="ratio", label="frequency ratio ω/ω_n", unit=""),
+    _Row(key="zeta", label="damping ratio ζ", unit=""),
     _Row(key="regime", label="regime", unit="", fmt="s"),
-    _Row(key="magnification", label="magnification |X|/(F0/k)", unit="", fmt=".5g"),
-    _Row(key="amplitude", label="steady-state amplitude |X|", unit="m", fmt=".5g"),
-    _Row(key="peak", label="peak |x| in the window", unit="m", fmt=".5g"),
-    _Row(key="settling", label="2 % settling time", unit="s", fmt=".5g"),
+    _Row(key="magnification", label="magnification |X|/(F0/k)", unit=""),
+    _Row(key="amplitude", label="steady-state amplitude |X|", unit="m"),
+    _Row(key="peak", label="peak |x| in the window", unit="m"),
+    _Row(key="settling", label="2 % settling time", unit="s"),
     _Row(key="steady_reached", label="steady state reached in the window", unit="", fmt="s"),
-    _Row(key="t_end", label="time window", unit="s", fmt=".5g"),
+    _Row(key="t_end", label="time window", unit="s"),
 )
 _RK45_ROWS = (
     _Row(key="rk45_max_error", label="RK45 max |x − x_exact|", unit="m", fmt=".3e"),
@@ -184,7 +184,7 @@ class Explorer(widgets.VBox):
         self._active = False
 
         top, step = omega_range(osc.natural_frequency, force.omega)
-        style = {"description_width": "10.5em"}
+        slider = {"continuous_update": True, "style": {"description_width": "10.5em"}}
         self.omega_slider = widgets.FloatSlider(
             value=force.omega,
             min=step,
@@ -192,9 +192,8 @@ class Explorer(widgets.VBox):
             step=step,
             description="forcing ω (rad/s)",
             readout_format=".3f",
-            continuous_update=True,
-            style=style,
             layout=widgets.Layout(width="36em"),
+            **slider,
         )
         self.omega_hz = widgets.HTML(layout=widgets.Layout(width="9em"))
         lo = min(math.log10(C_MIN), math.floor(math.log10(osc.c)))
@@ -207,9 +206,8 @@ class Explorer(widgets.VBox):
             step=(hi - lo) / 400,
             description="damping c (N s/m)",
             readout_format=".3g",
-            continuous_update=True,
-            style=style,
             layout=widgets.Layout(width="36em"),
+            **slider,
         )
         self.zeta_label = widgets.HTML(layout=widgets.Layout(width="9em"))
         small = widgets.Layout(width="13em")

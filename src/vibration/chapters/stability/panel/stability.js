@@ -292,12 +292,6 @@
     return { update: update, state: state };
   }
 
-  window.vibrationStability = {
-    poles: poles,
-    transmissibility: transmissibility,
-    stepResponse: stepResponse,
-    stepMetrics: stepMetrics,
-    compute: compute,
-    mount: mount,
-  };
+  window.vibrationStability = {poles: poles, transmissibility: transmissibility, stepResponse: stepResponse,
+    stepMetrics: stepMetrics, compute: compute, mount: mount};
 })();

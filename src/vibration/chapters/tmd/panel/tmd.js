@@ -260,15 +260,6 @@
     return { update: update, state: state };
   }
 
-  window.vibrationTMD = {
-    magnification: magnification,
-    bare: bare,
-    fixedPoints: fixedPoints,
-    denHartog: denHartog,
-    hinf: hinf,
-    h2: h2,
-    peak: peak,
-    compute: compute,
-    mount: mount,
-  };
+  window.vibrationTMD = {magnification: magnification, bare: bare, fixedPoints: fixedPoints, denHartog: denHartog,
+    hinf: hinf, h2: h2, peak: peak, compute: compute, mount: mount};
 })();
