@@ -49,7 +49,7 @@ DIRECTIONS = {
     "torsional_oscillator": {
         r"$\tau_0\sin\omega t$": 1,
         r"$\kappa\theta$": -1,
-        r"$b\dot\theta$": -1,
+        r"$c_\theta\dot\theta$": -1,
         r"$\tau_c\,\mathrm{sgn}\,\dot\theta$": -1,
     },  # fmt: skip
 }

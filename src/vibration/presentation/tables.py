@@ -70,6 +70,8 @@ class Composite:
     >>> c = Composite(parts=("a = ", (Approx(value=0.012345, rtol=0.1), 3), " ± ", (Approx(value=0.0021, factor=3), 2)))
     >>> str(c), c.plain()
     ('a = 0.0123 ± 0.0021', 'a = ⟪0.012345 r0.1⟫ ± ⟪0.0021 f3⟫')
+    >>> Composite(parts=("θ_f = ", "0.11")).html()
+    'θ<sub>f</sub> = 0.11'
     """
 
     parts: tuple
@@ -84,9 +86,8 @@ class Composite:
         return self._each(lambda a, d: a.plain())
 
     def html(self) -> str:
-        return "".join(
-            html.escape(p) if isinstance(p, str) else p[0].html(sig(p[0].number(), p[1])) for p in self.parts
-        )
+        """The reader's form: text escaped, ``_sub`` as a subscript (``θ_f``), each Approx in its span."""
+        return "".join(_sub_html(p) if isinstance(p, str) else p[0].html(sig(p[0].number(), p[1])) for p in self.parts)
 
     def width(self) -> int:
         return sum(len(p) if isinstance(p, str) else plain_width(p[0]) for p in self.parts)

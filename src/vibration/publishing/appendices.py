@@ -191,7 +191,7 @@ def glossary_markdown() -> str:
 
 def _equation(text: str) -> str:
     """Subscripts of a plain-text equation ("ω_n = √(k/m)") as MyST ``{sub}`` roles."""
-    return re.sub(r"(?<=[^\s(,/])_([A-Za-z0-9]+)", lambda m: f"{{sub}}`{m.group(1)}`", text)
+    return re.sub(r"(?<=[^\s(,/])_([^\W_]+)", lambda m: f"{{sub}}`{m.group(1)}`", text)
 
 
 _DETAILS = re.compile(

@@ -21,7 +21,7 @@ def angle(x: float, digits: int = 3) -> str:
     """An angle in rad and degrees for a sentence."""
     if not math.isfinite(x):
         return "unbounded"
-    d = deg(x)
+    d = deg(float(f"{x:.{digits}g}"))  # the degrees of the radians as printed, so the two agree
     return f"{g(x, digits)} rad ({d:.0f}°)" if abs(d) >= 10 else f"{g(x, digits)} rad ({g(d, 2)}°)"
 
 

@@ -45,14 +45,14 @@ def decay_panel_html(st: RealOscillatorStudy, brake: str = "on") -> str:
     pid = f"vro-{next(_counter)}"
     e = html.escape
     start = {"wn": f.omega_n, "zeta": f.zeta, "fr": f.friction}
-    label = {"wn": "natural frequency ω<sub>n</sub>", "zeta": "damping ratio ζ", "fr": "friction angle Δ"}
+    label = {"wn": "natural frequency ω<sub>n</sub>", "zeta": "damping ratio ζ", "fr": "friction angle θ<sub>f</sub>"}
     controls = "\n".join(
         f'<label for="{pid}-{k}">{label[k]}</label><input type="range" class="vro-{k}" id="{pid}-{k}" '
         f'min="{lo:g}" max="{hi:g}" step="{step:g}" value="{start[k]!r}"><output class="vro-{k}-out"></output>'
         for k, (lo, hi, step) in RANGES.items()
     )
     title = "with" if brake == "on" else "without"
-    controls_named = screen_words(": move ω<sub>n</sub>, ζ and Δ")
+    controls_named = screen_words(": move ω<sub>n</sub>, ζ and θ<sub>f</sub>")
     where = screen_words(
         ", computed in your browser. The sliders start at the whole-trace fit.",
         ", with the whole-trace fit's parameters.",
@@ -81,7 +81,7 @@ class DecayPanel:
     def __init__(self, st: RealOscillatorStudy, brake: str = "on") -> None:
         self._html = decay_panel_html(st, brake)
         d = typical_decay(st, brake)
-        self._text = f"DecayPanel(brake={brake}, run={d.run}, sliders: ω_n, ζ, Δ)"
+        self._text = f"DecayPanel(brake={brake}, run={d.run}, sliders: ω_n, ζ, θ_f)"
 
     def _repr_html_(self) -> str:
         return self._html

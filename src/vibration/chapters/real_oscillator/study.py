@@ -2,15 +2,15 @@ r"""The real oscillator on any laboratory's Pohl wheel: damping against amplitud
 brake at matched amplitude, steadiness by late drift, a calibrated prediction, and the paper's claims.
 
 Pure computation on a folder read by :func:`vibration.physics.lab.load_lab_data` (logger files and a
-manifest). The model, for the wheel angle :math:`\theta` (rad) under the measured drive signal :math:`u`,
+manifest). The model, for the wheel angle :math:`\theta` (rad) under the measured drive angle :math:`\theta_d` (rad),
 
 .. math::
 
-    \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\Delta\,\mathrm{sgn}\dot\theta + b\dot\theta|\dot\theta|
-    + a|\dot\theta|^p\mathrm{sgn}\dot\theta + \omega_n^2(\theta - \theta_0) = \omega_n^2\,g\,u(t),
+    \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\theta_f\,\mathrm{sgn}\dot\theta + \beta\dot\theta|\dot\theta|
+    + \alpha|\dot\theta|^n\mathrm{sgn}\dot\theta + \omega_n^2(\theta - \theta_0) = \omega_n^2\,G\,\theta_d(t),
 
 with any subset of the damping terms (:data:`LAWS`), the resting angle :math:`\theta_0` and the drive gain
-:math:`g` (rad of static wheel angle per unit of drive signal).
+:math:`G` (rad of static wheel angle per rad of drive angle).
 
 The computation lives in three modules, each stating its choices: :mod:`.damping` (the laws the free decays
 choose, the comparison band, the brake law), :mod:`.driven` (steadiness by late drift, groups at one drive

@@ -25,7 +25,7 @@ LOOSE_VALUE, LOOSE_FACTOR, LOOSE_BIC = 0.5, 10.0, 0.01
 #: The power term's coefficient a itself is not resolved by the decays (its run-to-run error exceeds it by
 #: orders of magnitude): any value within a factor of 1000 reads the same.
 LOOSE_UNRESOLVED = 1000.0
-_SYMBOL = {"viscous": "ζ", "coulomb": "Δ", "quadratic": "b", "power": "a", "power_exponent": "p"}
+_SYMBOL = {"viscous": "ζ", "coulomb": "θ_f", "quadratic": "β", "power": "α", "power_exponent": "n"}
 _KEY = {
     "viscous": "zeta",
     "coulomb": "friction",
@@ -303,7 +303,7 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
                     "brake": s.brake,
                     "law": LAW_WORDS[law],
                     "omega_n": Composite(parts=omega) if loose else "".join(omega),
-                    "coef": Composite(parts=tuple(parts)) if loose else "".join(parts),
+                    "coef": Composite(parts=tuple(parts)),  # its symbols carry subscripts (θ_f)
                     "bic": Approx(value=p.bic, rtol=LOOSE_BIC) if loose else p.bic,
                     "rms": Approx(value=p.rms_over_step, rtol=LOOSE_VALUE) if loose else p.rms_over_step,
                 }
@@ -320,8 +320,8 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
             rms      rms / (step/√12)                 3
             """
         ),
-        caption="Every law fitted to every free decay, pooled per brake setting: coefficients (ζ; Δ in rad; b in "
-        "1/rad; a; p) with run-to-run standard errors, summed BIC, and the residual rms over the encoder's "
+        caption="Every law fitted to every free decay, pooled per brake setting: coefficients (ζ; θ_f in rad; β in "
+        "1/rad; α; n) with run-to-run standard errors, summed BIC, and the residual rms over the encoder's "
         "rounding noise.",
         name="tab-real-fits",
         notes=(

@@ -122,7 +122,7 @@ def steadiness_sentence(st: RealOscillatorStudy) -> str:
     """How many runs are steady, near resonance and elsewhere, and what the others do."""
     n_st, n, n_near_st, n_near = steady_counts(st)
     near = [d for d in st.driven if abs(d.omega / omega_n(st) - 1.0) <= 0.05]
-    t90 = float(np.median([d.steady.t90 for d in near])) if near else math.nan
+    t90 = float(np.median([d.steady.t90 for d in near if d.steady.steady])) if n_near_st else math.nan
     drift = [d.steady.drift for d in near if d.steady.steady]
     grow = sum(1 for d in st.driven if not d.steady.steady and d.steady.drift > 0)
     fdrift = max((abs(d.frequency_drift) for d in st.driven), default=0.0)
@@ -132,10 +132,9 @@ def steadiness_sentence(st: RealOscillatorStudy) -> str:
         f"over the last {st.params.periods} drive periods)"
     )
     if n_near:
-        s += (
-            f", {n_near_st} of the {n_near} within 5 % of ω<sub>n</sub>; these reach 90 % of their final amplitude "
-            f"in a median {g(t90, 2)} s"
-        )
+        s += f", {n_near_st} of the {n_near} within 5 % of ω<sub>n</sub>"
+    if n_near_st:
+        s += f"; these reach 90 % of their final amplitude in a median {g(t90, 2)} s"
         if drift:
             s += f" and drift by {g(100 * float(np.mean(drift)), 2)} % on average over their last periods"
     s += (

@@ -156,8 +156,9 @@ def _c18(st, quote) -> Claim:
             "C18",
             quote,
             verdict=VERDICTS[3],
-            detail=f"steady driven runs near resonance exist at brake settings: {brakes}; driven runs near resonance "
-            "at a second brake setting (for example without the brake) in the same session would test it",
+            detail=f"no session has steady driven runs near resonance at two brake settings (they exist with the "
+            f"brake {brakes}); such runs at a second setting in the same session (for example without the brake) "
+            "would test it",
         )
     rs = [r for _, r, _, _, _ in pairs]
     if all(r <= SUPPRESSED for r in rs):

@@ -42,8 +42,8 @@ def _rig_sentence(description: str | None, max_angle_rad: float | None, encoder_
     if max_angle_rad:
         known.append(f"the wheel can turn at most {max_angle_rad:.3g} rad ({math.degrees(max_angle_rad):.4g}°)")
     missing = [
-        "the values of $I$, $\\kappa$, $b$ and $\\tau_c$ (the chapter measures only $\\omega_n$, $\\zeta$ and "
-        "$\\Delta$)",
+        "the values of $I$, $\\kappa$, $c_\\theta$ and $\\tau_c$ (the chapter measures only $\\omega_n$, $\\zeta$ "
+        "and $\\theta_f$)",
         "the linkage from drive to spring (drawn as the usual push rod and lever)",
         "where the dry friction acts (drawn at the bearing)",
     ]
@@ -117,7 +117,7 @@ def torsional_oscillator(
     at = math.radians(225.0)
     _block(left, (0.93 * R * math.cos(at), 0.93 * R * math.sin(at)), 225.0, 0.55, 0.42, facecolor=OKABE_ITO["grey"],
            edgecolor=INK, lw=LW, zorder=4)  # fmt: skip
-    left.text(-1.48, -1.0, "$b$", ha="right", va="center", fontsize=TEXT)
+    left.text(-1.48, -1.0, "$c_\\theta$", ha="right", va="center", fontsize=TEXT)
     left.add_patch(Circle((0, 0), 0.12, facecolor="white", edgecolor=INK, lw=1.2, zorder=5))
     left.add_patch(Circle((0, 0), 0.06, facecolor=BODY, edgecolor=INK, lw=1.0, zorder=5))
     left.plot([0.09, 0.5], [-0.09, -0.58], color=INK, lw=0.7, zorder=5)
@@ -137,7 +137,7 @@ def torsional_oscillator(
     torques = (
         (r"$\tau_0\sin\omega t$", 60.0, 120.0, (0.0, ra + 0.2), "center", "bottom"),
         (r"$\kappa\theta$", 25.0, -25.0, (ra + 0.2, 0.0), "left", "center"),
-        (r"$b\dot\theta$", 290.0, 250.0, (0.0, -ra - 0.2), "center", "top"),
+        (r"$c_\theta\dot\theta$", 290.0, 250.0, (0.0, -ra - 0.2), "center", "top"),
         (r"$\tau_c\,\mathrm{sgn}\,\dot\theta$", 205.0, 155.0, (-ra - 0.2, 0.0), "right", "center"),
     )
     for label, a0, a1, at_xy, ha, va in torques:
@@ -151,9 +151,9 @@ def torsional_oscillator(
             fig,
             [
                 "the wheel $I$ on a spiral spring $\\kappa$, rocked by a motor's crank at the angle $\\omega t$, "
-                "with an eddy-current brake $b$ (grey) and bearing friction $\\tau_c$; its angle $\\theta$ (blue) "
-                "from rest (dashed).",
-                "the torques $\\tau_0\\sin\\omega t$, $\\kappa\\theta$, $b\\dot\\theta$ and "
+                "with an eddy-current brake $c_\\theta$ (grey) and bearing friction $\\tau_c$; its angle "
+                "$\\theta$ (blue) from rest (dashed).",
+                "the torques $\\tau_0\\sin\\omega t$, $\\kappa\\theta$, $c_\\theta\\dot\\theta$ and "
                 "$\\tau_c\\,\\mathrm{sgn}\\,\\dot\\theta$ on the wheel, in vermillion.",
             ],
         )
@@ -162,15 +162,15 @@ def torsional_oscillator(
         "The wheel (moment of inertia $I$, kg m²) turns on a bearing; the spiral spring (torsional stiffness "
         "$\\kappa$, N m/rad) joins its axle to a lever, which a push rod from the motor's eccentric rocks, winding "
         "the spring's outer end ($\\omega$ in rad/s, $t$ in s). The magnetic brake astride the rim damps the wheel "
-        "viscously ($b$, N m s/rad); the bearing adds dry friction of torque $\\tau_c$ (N m). The angle $\\theta$ "
-        "(rad) is the pointer's turn from rest. In Newton's form for a turning body, each torque about the axle "
-        "(N m) is drawn as it acts for positive $\\theta$ and $\\dot\\theta$, and $I\\ddot\\theta$, their sum, is "
+        "viscously ($c_\\theta$, N m s/rad); the bearing adds dry friction of torque $\\tau_c$ (N m). The angle "
+        "$\\theta$ (rad) is the pointer's turn from rest. In Newton's form for a turning body, each torque about the "
+        "axle (N m) is drawn as it acts for positive $\\theta$ and $\\dot\\theta$, and $I\\ddot\\theta$, their sum, is "
         "not drawn: the drive, passed on by the rocked spring, turns the wheel forward; the spring, the brake and "
         "the bearing's Coulomb friction turn it back; the weight and the bearing's reaction act through the axle "
         "and have no moment about it. Divided by $I$, this is the chapter's model with $\\omega_n^2 = \\kappa/I$, "
-        "$2\\zeta\\omega_n = b/I$ and the friction angle $\\Delta = \\tau_c/\\kappa$ (the spring's resting angle $c$ "
-        "taken as zero); the drive there is the measured drive signal $u(t)$ times the gain $g$, the torque "
-        "$\\kappa g u(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily."
+        "$2\\zeta\\omega_n = c_\\theta/I$ and the friction angle $\\theta_f = \\tau_c/\\kappa$ (the spring's resting "
+        "angle $\\theta_0$ taken as zero); the drive there is the measured drive angle $\\theta_d(t)$ times the gain "
+        "$G$, the torque $\\kappa G \\theta_d(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily."
         + _rig_sentence(description, max_angle_rad, encoder_step_rad)
     )
     alt = (
