@@ -5,7 +5,7 @@ the half-period amplitude :math:`X_k = |e_k - e_{k+1}|/2` (rad, independent of t
 the loss per half period :math:`X_k - X_{k+1}` and the equivalent viscous damping ratio
 :math:`\zeta_{eq,k} = \delta_k/\sqrt{\pi^2 + \delta_k^2}` with :math:`\delta_k = \ln(X_k/X_{k+1})`.
 Viscous damping gives a constant :math:`\zeta_{eq}`, Coulomb friction a constant loss
-:math:`2\Delta` (so :math:`\zeta_{eq} \approx 2\Delta/(\pi X)`), a quadratic term a loss growing as
+:math:`2\theta_f` (so :math:`\zeta_{eq} \approx 2\theta_f/(\pi X)`), a quadratic term a loss growing as
 :math:`X^2`.
 """
 
@@ -312,7 +312,7 @@ def joint_brake_fit(runs_a, runs_b) -> JointBrakeFit:
     r"""Second estimate of the brake: one shared amplitude law and a brake-only viscous term, fitted jointly.
 
     Every half period of both sets is fitted by linear least squares with the energy-balance loss
-    :math:`X_k - X_{k+1} = 2\Delta + \pi\zeta X_k + \tfrac43 b X_k^2 + \pi\,\Delta\zeta\,X_k\,[\text{set } b]`
+    :math:`X_k - X_{k+1} = 2\theta_f + \pi\zeta X_k + \tfrac43 \beta X_k^2 + \pi\,\Delta\zeta\,X_k\,[\text{set } \beta]`
     (Coulomb, viscous and quadratic terms shared, each >= 0; the viscous losses converted to ratios
     exactly, through :math:`1 - q`). 2000 bootstrap resamples (fixed seed) give the
     standard error of :math:`\Delta\zeta`.

@@ -5,23 +5,24 @@ The model, for an angle :math:`\theta(t)` in rad,
 
 .. math::
 
-    \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2(\theta - c) = -\omega_n^2\,\Delta\,\mathrm{sgn}(\dot\theta),
+    \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2(\theta - \theta_0)
+    = -\omega_n^2\,\theta_f\,\mathrm{sgn}(\dot\theta),
 
 has the natural angular frequency :math:`\omega_n` (rad/s), the damping ratio :math:`\zeta`, the
 resting angle :math:`c` (rad, ``offset``) and the Coulomb friction expressed as the equivalent angle
-:math:`\Delta` (rad, ``friction``): the friction torque divided by the spring stiffness. Between two
+:math:`\theta_f` (rad, ``friction``): the friction torque divided by the spring stiffness. Between two
 velocity reversals the sign is constant and the motion is a viscous free oscillation about
-:math:`c - \mathrm{sgn}(\dot\theta)\Delta`, so the exact solution is piecewise closed form. Every
+:math:`\theta_0 - \mathrm{sgn}(\dot\theta)\theta_f`, so the exact solution is piecewise closed form. Every
 half cycle lasts :math:`\pi/\omega_d` with :math:`\omega_d = \omega_n\sqrt{1-\zeta^2}`, and the
-distances :math:`a_k = |\theta_k - c|` of consecutive extrema from the resting angle obey
+distances :math:`a_k = |\theta_k - \theta_0|` of consecutive extrema from the resting angle obey
 
 .. math::
 
-    a_{k+1} = q\,a_k - (1 + q)\Delta, \qquad q = e^{-\pi\zeta/\sqrt{1-\zeta^2}},
+    a_{k+1} = q\,a_k - (1 + q)\theta_f, \qquad q = e^{-\pi\zeta/\sqrt{1-\zeta^2}},
 
-a loss per half period of :math:`(1-q)a_k + (1+q)\Delta`: proportional to the amplitude for
-viscous damping, the constant :math:`2\Delta` for pure Coulomb friction. The wheel sticks for good
-at the first extremum inside the dead band :math:`|\theta_k - c| \le \Delta`.
+a loss per half period of :math:`(1-q)a_k + (1+q)\theta_f`: proportional to the amplitude for
+viscous damping, the constant :math:`2\theta_f` for pure Coulomb friction. The wheel sticks for good
+at the first extremum inside the dead band :math:`|\theta_k - \theta_0| \le \theta_f`.
 """
 
 from __future__ import annotations

@@ -4,8 +4,8 @@ A law is a sum of the terms of
 
 .. math::
 
-    \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\Delta\,\mathrm{sgn}\dot\theta
-    + b\,\dot\theta|\dot\theta| + a|\dot\theta|^p\mathrm{sgn}\dot\theta + \omega_n^2(\theta-\theta_0) = 0
+    \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\theta_f\,\mathrm{sgn}\dot\theta
+    + \beta\,\dot\theta|\dot\theta| + \alpha|\dot\theta|^n\mathrm{sgn}\dot\theta + \omega_n^2(\theta-\theta_0) = 0
 
 (viscous, Coulomb, quadratic, power). Viscous and Coulomb terms alone have the piecewise closed form of
 :mod:`~vibration.physics.lab.coulomb_decay`; with a quadratic or power term the trace is the half-period
@@ -104,7 +104,7 @@ def equivalent_zeta(amplitude, omega_n, *, zeta=0.0, quadratic=0.0, power=0.0, p
     r"""Equivalent viscous damping ratio of the velocity-dependent terms at a half-period amplitude.
 
     Over a half period of :math:`\theta = X\cos\omega_n t` the terms
-    :math:`2\zeta\omega_n\dot\theta + b\dot\theta|\dot\theta| + a|\dot\theta|^p\,\mathrm{sgn}\,\dot\theta`
+    :math:`2\zeta\omega_n\dot\theta + \beta\dot\theta|\dot\theta| + \alpha|\dot\theta|^n\,\mathrm{sgn}\,\dot\theta`
     dissipate as much energy as a viscous term of ratio
 
     .. math::
@@ -278,8 +278,8 @@ def damping_ode(
 ):
     r"""The free decay of the full law integrated numerically (an independent check of the fits' model).
 
-    Integrates :math:`\ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\Delta\,\mathrm{sgn}\dot\theta +
-    b\dot\theta|\dot\theta| + a|\dot\theta|^p\mathrm{sgn}\dot\theta + \omega_n^2(\theta-\theta_0) = 0` from
+    Integrates :math:`\ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\theta_f\,\mathrm{sgn}\dot\theta +
+    \beta\dot\theta|\dot\theta| + \alpha|\dot\theta|^n\mathrm{sgn}\dot\theta + \omega_n^2(\theta-\theta_0) = 0` from
     rest at ``theta0`` with :func:`scipy.integrate.solve_ivp` (DOP853), event by event between velocity
     reversals; the wheel sticks at a reversal inside the dead band.
 

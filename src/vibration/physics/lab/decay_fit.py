@@ -197,8 +197,8 @@ def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
 
     .. math::
 
-        \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\Delta\,\mathrm{sgn}\dot\theta
-        + b\,\dot\theta|\dot\theta| + a|\dot\theta|^p\mathrm{sgn}\dot\theta + \omega_n^2(\theta-\theta_0) = 0
+        \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\theta_f\,\mathrm{sgn}\dot\theta
+        + \beta\,\dot\theta|\dot\theta| + \alpha|\dot\theta|^n\mathrm{sgn}\dot\theta + \omega_n^2(\theta-\theta_0) = 0
 
     (viscous zeta, Coulomb Delta in rad, quadratic b in 1/rad, power a with p fitted; ``quadratic+power``
     is refused). Viscous and Coulomb terms alone have a piecewise closed-form solution, which is fitted

@@ -1,17 +1,18 @@
 r"""Steady forced amplitude of a damping law by harmonic balance (one harmonic, equivalent linearisation).
 
-For :math:`\ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\Delta\,\mathrm{sgn}\dot\theta + b\dot\theta|\dot\theta|
-+ a|\dot\theta|^p\mathrm{sgn}\dot\theta + \omega_n^2\theta = \omega_n^2 g U \sin\omega t` and
+For :math:`\ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\theta_f\,\mathrm{sgn}\dot\theta
++ \beta\dot\theta|\dot\theta| + \alpha|\dot\theta|^n\mathrm{sgn}\dot\theta
++ \omega_n^2\theta = \omega_n^2 G U \sin\omega t` and
 :math:`\theta \approx X\sin(\omega t - \varphi)`, the first harmonic of the damping force is
 :math:`D(X)\cos(\omega t-\varphi)` with
 
 .. math::
 
     D(X) = 2\zeta\omega_n\omega X + \frac{8 b\,\omega^2 X^2}{3\pi} + \frac{2 I_{p+1}}{\pi} a(\omega X)^p
-    + \frac{4\omega_n^2\Delta}{\pi}, \qquad I_m = \int_0^\pi \sin^m u\,du,
+    + \frac{4\omega_n^2\theta_f}{\pi}, \qquad I_m = \int_0^\pi \sin^m u\,du,
 
-and the amplitude solves :math:`X^2(\omega_n^2-\omega^2)^2 + D(X)^2 = (\omega_n^2 g U)^2`. The wheel does
-not move steadily (X = 0) when :math:`4\omega_n^2\Delta/\pi \ge \omega_n^2 g U` (Den Hartog's
+and the amplitude solves :math:`X^2(\omega_n^2-\omega^2)^2 + D(X)^2 = (\omega_n^2 G U)^2`. The wheel does
+not move steadily (X = 0) when :math:`4\omega_n^2\theta_f/\pi \ge \omega_n^2 G U` (Den Hartog's
 harmonic-balance limit).
 """
 
@@ -143,17 +144,18 @@ def simulate_driven(
 
     .. math::
 
-        \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\Delta\,\mathrm{sgn}\dot\theta + b\dot\theta|\dot\theta|
-        + a|\dot\theta|^p\mathrm{sgn}\dot\theta + \omega_n^2\theta = \omega_n^2 F \sin(\omega t + \varphi)
+        \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2\theta_f\,\mathrm{sgn}\dot\theta
+        + \beta\dot\theta|\dot\theta| + \alpha|\dot\theta|^n\mathrm{sgn}\dot\theta
+        + \omega_n^2\theta = \omega_n^2 F \sin(\omega t + \varphi)
 
     for the angle about the spring's centre, every argument but ``duration``, ``sample_interval``,
     ``substeps`` and ``max_evaluations`` a number or an array of one value per wheel. Scheme: classical
     Runge-Kutta (4th order) with ``substeps`` steps per sample interval, all wheels together; a wheel at
     rest sticks while the spring and drive torque are within the static friction
-    (:math:`|\omega_n^2(F\sin(\omega t+\varphi) - \theta)| \le \omega_n^2\Delta`), and a wheel whose velocity
+    (:math:`|\omega_n^2(F\sin(\omega t+\varphi) - \theta)| \le \omega_n^2\theta_f`), and a wheel whose velocity
     reverses inside a step with the torque inside that bound is stopped there. The friction's sign jump is
     not located inside a step, so the error is first order in the step at each reversal: about
-    :math:`\omega_n^2\Delta h` in velocity per reversal; the tests check it against the exact linear steady
+    :math:`\omega_n^2\theta_f h` in velocity per reversal; the tests check it against the exact linear steady
     state, the exact Coulomb free decay and the event-located integration of :func:`damping_ode`.
 
     Parameters

@@ -6,7 +6,7 @@ Dimensionless model (time in units of :math:`1/\omega_n`, angles in units of
 .. math::
 
     x'' + 2\zeta x' + x + \delta\,\mathrm{sgn}(x') = \cos(r\tau + \varphi),
-    \qquad r = \omega/\omega_n, \quad \delta = \Delta / X_{st}.
+    \qquad r = \omega/\omega_n, \quad \delta = \theta_f / X_{st}.
 
 Den Hartog (1931, "Forced vibrations with combined Coulomb and viscous friction", Trans. ASME
 APM-53-9, 107-115) solved it exactly for the steady motion with two velocity reversals per
@@ -233,14 +233,14 @@ def simulate_friction_oscillator(
 
     .. math::
 
-        \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2(\theta - c) + \omega_n^2\Delta\,
+        \ddot\theta + 2\zeta\omega_n\dot\theta + \omega_n^2(\theta - \theta_0) + \omega_n^2\theta_f\,
         \mathrm{sgn}(\dot\theta) = \omega_n^2\,g\,d(t)
 
     with ``d(t)`` the drive sampled at ``t`` and interpolated linearly. Scheme: classical
     Runge-Kutta (4th order) with ``substeps`` steps per sample interval while the wheel slides;
     a velocity reversal inside a step is located by bisection on the step length (to 1e-12 of
     the step), and there the wheel sticks if the spring and drive torque are within the static
-    friction, :math:`|\omega_n^2(\theta - c) - \omega_n^2 g d(t)| \le \omega_n^2\Delta`, and
+    friction, :math:`|\omega_n^2(\theta - \theta_0) - \omega_n^2 G d(t)| \le \omega_n^2\theta_f`, and
     stays stuck until that fails. Error: fourth order in the step between events, i.e. a
     relative error of about :math:`(\omega_n h)^4 / 100` per period for ``h = dt / substeps``
     (below 1e-6 for omega_n dt = 0.25 and 20 substeps); the test checks 1e-6 against the exact

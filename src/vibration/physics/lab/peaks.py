@@ -218,7 +218,7 @@ def peak_decay_fit(t, theta, law: str = "combined") -> PeakDecayFit:
     shortens and the last few extrema do not follow the model. Their times give the half period
     :math:`\pi/\omega_d` by a straight-line fit against their count; their angles obey the
     recursion of :mod:`vibration.physics.lab.decay`, written
-    linearly as :math:`\theta_{k+1} = -q\theta_k + (1+q)c + \sigma_k(1+q)\Delta` with
+    linearly as :math:`\theta_{k+1} = -q\theta_k + (1+q)\theta_0 + \sigma_k(1+q)\theta_f` with
     :math:`\sigma_k = \mathrm{sgn}(\theta_k - c)` the known alternating sign, which is solved by
     ordinary least squares (``q = 1`` for "coulomb", no :math:`\sigma` term for "viscous"). Standard
     errors by the delta method from the two regressions. The regression is not constrained: with

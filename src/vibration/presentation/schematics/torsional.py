@@ -145,7 +145,7 @@ def torsional_oscillator(
         right.text(*at_xy, label, color=FORCE, ha=ha, va=va, fontsize=TEXT, zorder=5)
 
     caption = (
-        r"The real oscillator of chapter 12, a torsional wheel: $I\ddot\theta + b\dot\theta + "
+        r"The real oscillator of chapter 12, a torsional wheel: $I\ddot\theta + c_\theta\dot\theta + "
         r"\tau_c\,\mathrm{sgn}\,\dot\theta + \kappa\theta = \tau_0\sin\omega t$. "
         + sentence_panels(
             fig,
