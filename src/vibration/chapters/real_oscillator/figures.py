@@ -15,6 +15,7 @@ import numpy as np
 from vibration.chapters.real_oscillator.study import LAWS, RealOscillatorStudy, law_amplitude
 from vibration.physics.lab import FreeDecayFit, equivalent_zeta
 from vibration.presentation.captions import Captioned
+from vibration.presentation.narrative import g
 from vibration.presentation.style import OKABE_ITO, figure, place_legend
 
 SETTING_COLORS = ("blue", "vermillion", "bluish green", "orange", "reddish purple", "sky blue", "black")
@@ -78,7 +79,7 @@ def damping_figure(st: RealOscillatorStudy) -> Captioned:
     place_legend(ax)
     n = sum(len(s.runs) for s in st.settings)
     band = (
-        f" Shaded: the amplitudes every setting covers ({st.band[0]:.2f} to {st.band[1]:.2f} rad)."
+        f" Shaded: the common amplitude band every setting covers ({g(st.band[0], 3)} to {g(st.band[1], 3)} rad)."
         if st.band is not None
         else ""
     )
