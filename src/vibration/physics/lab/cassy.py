@@ -104,6 +104,31 @@ def load_cassy_runs(path) -> list[LoggerRun]:
         data.pop()
     if len(data) > MAX_ROWS:
         raise ParameterError(f"file {name!r} has {len(data)} data rows: allowed at most {MAX_ROWS}")
+    cols = _header_columns(name, header)
+    decimal = _decimal_mark(sep, data)
+    values = {k: _column(name, header[j], data, j, decimal) for k, j in cols.items()}
+    n = _common_length(name, header, cols, values)
+
+    def frozen(a):
+        arr = np.asarray(a[:n], dtype=float)
+        arr.flags.writeable = False
+        return arr
+
+    return [
+        LoggerRun(
+            run=1,
+            t=frozen(values["t"]),
+            angle=frozen(values["angle"]),
+            drive_angle=frozen(values["drive"]) if "drive" in values else None,
+            voltage=None,
+            current=None,
+            drive_unit="V",
+        )
+    ]
+
+
+def _header_columns(name: str, header: list[str]) -> dict[str, int]:
+    """The columns kept (time ``t``, wheel ``angle``, ``drive`` voltage) and their indices; derived ones skipped."""
     cols: dict[str, int] = {}
     for j, h in enumerate(header):
         m = _HEADER.fullmatch(h)
@@ -132,42 +157,48 @@ def load_cassy_runs(path) -> list[LoggerRun]:
     for key, label in (("t", "a time column 'Zeit t / s'"), ("angle", "a wheel angle column 'Weg &b_A1 / rad'")):
         if key not in cols:
             raise ParameterError(f"file {name!r}, header row (line 1): {label} is missing")
-    decimal = "."
+    return cols
+
+
+def _decimal_mark(sep: str, data: list[list[str]]) -> str:
+    """The decimal mark: a comma where the separator is not one and the first 50 rows hold a comma."""
     if sep != ",":
         for r in data[:50]:
             if any("," in c for c in r):
-                decimal = ","
-                break
+                return ","
+    return "."
+
+
+def _column(name: str, cname: str, data: list[list[str]], j: int, decimal: str) -> list[float]:
+    """Column j's numbers from the first data row to its first empty cell, after which all must be empty."""
     pattern = _NUM[decimal]
+    vals: list[float] = []
+    ended = None
+    for i, r in enumerate(data, start=1):
+        c = r[j].strip() if j < len(r) else ""
+        if c == "":
+            if ended is None:
+                ended = i
+            continue
+        if ended is not None:
+            raise ParameterError(
+                f"{_where(name, ended, cname)}: empty cell in the middle of the run (data continue at data row "
+                f"{i}): allowed empty cells only after the last sample"
+            )
+        if not pattern.fullmatch(c):
+            raise ParameterError(
+                f"{_where(name, i, cname)}: cell = {c!r} is not a number: allowed a decimal number with "
+                f"{decimal!r} as the decimal mark"
+            )
+        v = float(c.replace(",", "."))
+        if not math.isfinite(v) or abs(v) > 1e9:
+            raise ParameterError(f"{_where(name, i, cname)}: cell = {c!r} is out of range: allowed |value| <= 1e9")
+        vals.append(v)
+    return vals
 
-    def column(key):
-        j = cols[key]
-        cname = header[j]
-        vals: list[float] = []
-        ended = None
-        for i, r in enumerate(data, start=1):
-            c = r[j].strip() if j < len(r) else ""
-            if c == "":
-                if ended is None:
-                    ended = i
-                continue
-            if ended is not None:
-                raise ParameterError(
-                    f"{_where(name, ended, cname)}: empty cell in the middle of the run (data continue at data row "
-                    f"{i}): allowed empty cells only after the last sample"
-                )
-            if not pattern.fullmatch(c):
-                raise ParameterError(
-                    f"{_where(name, i, cname)}: cell = {c!r} is not a number: allowed a decimal number with "
-                    f"{decimal!r} as the decimal mark"
-                )
-            v = float(c.replace(",", "."))
-            if not math.isfinite(v) or abs(v) > 1e9:
-                raise ParameterError(f"{_where(name, i, cname)}: cell = {c!r} is out of range: allowed |value| <= 1e9")
-            vals.append(v)
-        return vals
 
-    values = {k: column(k) for k in cols}
+def _common_length(name: str, header: list[str], cols: dict[str, int], values: dict[str, list[float]]) -> int:
+    """The run's number of samples: no value past the last time, at most a ragged end, times increasing."""
     nt = len(values["t"])
     for k, v in values.items():
         if len(v) > nt:
@@ -192,20 +223,4 @@ def load_cassy_runs(path) -> list[LoggerRun]:
             f"{_where(name, i, header[cols['t']])}: time = {t[i - 1]!r} s after {t[i - 2]!r} s is not increasing: "
             "allowed strictly increasing time stamps"
         )
-
-    def frozen(a):
-        arr = np.asarray(a[:n], dtype=float)
-        arr.flags.writeable = False
-        return arr
-
-    return [
-        LoggerRun(
-            run=1,
-            t=frozen(values["t"]),
-            angle=frozen(values["angle"]),
-            drive_angle=frozen(values["drive"]) if "drive" in values else None,
-            voltage=None,
-            current=None,
-            drive_unit="V",
-        )
-    ]
+    return n

@@ -180,8 +180,19 @@ def load_logger_runs(path) -> list[LoggerRun]:
         raise ParameterError(f"file {name!r} has {len(header)} columns: allowed at most {MAX_COLUMNS}")
     if len(data) > MAX_ROWS:
         raise ParameterError(f"file {name!r} has {len(data)} data rows: allowed at most {MAX_ROWS}")
+    columns, unnamed = _header_columns(name, header)
+    _check_cells_outside_runs(name, header, data, unnamed)
+    return [_read_run(name, header, data, run, columns[run]) for run in sorted(columns)]
 
-    # --- header: map (run, field) -> column index
+
+def _cell(data: list[list[str]], i: int, j: int) -> str:
+    """Data row i, column j, stripped (``""`` past a short row's end)."""
+    r = data[i]
+    return r[j].strip() if j < len(r) else ""
+
+
+def _header_columns(name: str, header: list[str]) -> tuple[dict[int, dict[str, int]], list[int]]:
+    """The header read: each run's kept fields and their column indices, and the columns without a header."""
     columns: dict[int, dict[str, int]] = {}
     unnamed: list[int] = []
     for j, cell in enumerate(header):
@@ -207,97 +218,96 @@ def load_logger_runs(path) -> list[LoggerRun]:
         group[field] = j
     if not columns:
         raise ParameterError(f"file {name!r} has no run columns: allowed headers such as 'Time (s) Run #1'")
+    return columns, unnamed
 
+
+def _check_cells_outside_runs(name: str, header: list[str], data: list[list[str]], unnamed: list[int]) -> None:
+    """No row longer than the header, and nothing under an empty header."""
     ncol = len(header)
     for i, r in enumerate(data, start=1):
         if len(r) > ncol:
             raise ParameterError(
                 f"file {name!r}, data row {i} (line {i + 1}) has {len(r)} cells: allowed at most {ncol} (the header's)"
             )
-
-    def cell(i: int, j: int) -> str:
-        r = data[i]
-        return r[j].strip() if j < len(r) else ""
-
     for j in unnamed:
         for i in range(len(data)):
-            if cell(i, j) != "":
+            if _cell(data, i, j) != "":
                 raise ParameterError(
-                    f"{_where(name, i + 1, f'column {j + 1} (no header)')}: cell = {cell(i, j)!r} is under an empty "
-                    "header: allowed only empty cells there"
+                    f"{_where(name, i + 1, f'column {j + 1} (no header)')}: cell = {_cell(data, i, j)!r} is under an "
+                    "empty header: allowed only empty cells there"
                 )
 
-    runs = []
-    for run in sorted(columns):
-        group = columns[run]
-        if "t" not in group:
-            present = ", ".join(header[j].strip() for j in group.values())
-            raise ParameterError(
-                f"file {name!r}, header row (line 1), column 'Time (s) Run #{run}' is missing: run {run} has "
-                f"{present} but no time column"
-            )
-        if "angle" not in group:
-            raise ParameterError(
-                f"file {name!r}, header row (line 1), column 'Angle, Ch 1+2 (rad) Run #{run}' is missing: run "
-                f"{run} has a time column but no angle of the wheel"
-            )
-        jt = group["t"]
-        tname = header[jt].strip()
-        lengths: dict[str, int] = {}
-        for field, j in group.items():
-            cname = header[j].strip()
-            length = 0
-            while length < len(data) and cell(length, j) != "":
-                length += 1
-            for i in range(length, len(data)):
-                if cell(i, j) != "":
-                    raise ParameterError(
-                        f"{_where(name, length + 1, cname)}: empty cell in the middle of run {run} (data continue at "
-                        f"data row {i + 1}): allowed empty cells only after a run's last sample"
-                    )
-            lengths[field] = length
-        nt = lengths["t"]
-        for field, j in group.items():
-            cname = header[j].strip()
-            if lengths[field] > nt:
+
+def _run_lengths(name: str, header: list[str], data: list[list[str]], run: int, group: dict[str, int]) -> dict:
+    """Each field's number of samples in one run: filled from the first row, empty after, none past the time's."""
+    lengths: dict[str, int] = {}
+    for field, j in group.items():
+        cname = header[j].strip()
+        length = 0
+        while length < len(data) and _cell(data, length, j) != "":
+            length += 1
+        for i in range(length, len(data)):
+            if _cell(data, i, j) != "":
                 raise ParameterError(
-                    f"{_where(name, nt + 1, cname)}: cell = {cell(nt, j)!r} after the last time stamp of run {run} "
-                    f"(data row {nt}): allowed only empty cells there"
+                    f"{_where(name, length + 1, cname)}: empty cell in the middle of run {run} (data continue at "
+                    f"data row {i + 1}): allowed empty cells only after a run's last sample"
                 )
-            if lengths[field] < nt - MAX_RAGGED_END:
-                raise ParameterError(
-                    f"{_where(name, lengths[field] + 1, cname)}: empty cell in the middle of run {run} (its time "
-                    f"column goes on to data row {nt}): allowed a number in every row that has a time, except "
-                    f"in the last {MAX_RAGGED_END} rows"
-                )
-        n = min(lengths.values())
-        if n < MIN_SAMPLES:
+        lengths[field] = length
+    nt = lengths["t"]
+    for field, j in group.items():
+        cname = header[j].strip()
+        if lengths[field] > nt:
             raise ParameterError(
-                f"{_where(name, n + 1, tname)}: run {run} has {n} samples: allowed at least {MIN_SAMPLES}"
+                f"{_where(name, nt + 1, cname)}: cell = {_cell(data, nt, j)!r} after the last time stamp of run {run} "
+                f"(data row {nt}): allowed only empty cells there"
             )
-        values: dict[str, list[float]] = {}
-        for field in ("t", "angle", "drive_angle", "voltage", "current"):
-            if field not in group:
-                continue
-            j = group[field]
-            cname = header[j].strip()
-            col = [_parse_number(cell(i, j), name, i + 1, cname) for i in range(lengths[field])]
-            values[field] = col[:n]
-        t = values["t"]
-        for i in range(1, n):
-            if not t[i] > t[i - 1]:
-                raise ParameterError(
-                    f"{_where(name, i + 1, tname)}: time = {t[i]!r} s after {t[i - 1]!r} s is not increasing: "
-                    "allowed strictly increasing time stamps"
-                )
-        runs.append(
-            LoggerRun(
-                run=run,
-                t=_frozen(t),
-                angle=_frozen(values["angle"]),
-                drive_angle=_frozen(values["drive_angle"]) if "drive_angle" in values else None,
-                voltage=_frozen(values["voltage"]) if "voltage" in values else None,
-                current=_frozen(values["current"]) if "current" in values else None,
+        if lengths[field] < nt - MAX_RAGGED_END:
+            raise ParameterError(
+                f"{_where(name, lengths[field] + 1, cname)}: empty cell in the middle of run {run} (its time "
+                f"column goes on to data row {nt}): allowed a number in every row that has a time, except "
+                f"in the last {MAX_RAGGED_END} rows"
             )
+    return lengths
+
+
+def _read_run(name: str, header: list[str], data: list[list[str]], run: int, group: dict[str, int]) -> LoggerRun:
+    """One run's columns checked, parsed and cut to their common length, with time strictly increasing."""
+    if "t" not in group:
+        present = ", ".join(header[j].strip() for j in group.values())
+        raise ParameterError(
+            f"file {name!r}, header row (line 1), column 'Time (s) Run #{run}' is missing: run {run} has "
+            f"{present} but no time column"
         )
-    return runs
+    if "angle" not in group:
+        raise ParameterError(
+            f"file {name!r}, header row (line 1), column 'Angle, Ch 1+2 (rad) Run #{run}' is missing: run "
+            f"{run} has a time column but no angle of the wheel"
+        )
+    tname = header[group["t"]].strip()
+    lengths = _run_lengths(name, header, data, run, group)
+    n = min(lengths.values())
+    if n < MIN_SAMPLES:
+        raise ParameterError(f"{_where(name, n + 1, tname)}: run {run} has {n} samples: allowed at least {MIN_SAMPLES}")
+    values: dict[str, list[float]] = {}
+    for field in ("t", "angle", "drive_angle", "voltage", "current"):
+        if field not in group:
+            continue
+        j = group[field]
+        cname = header[j].strip()
+        col = [_parse_number(_cell(data, i, j), name, i + 1, cname) for i in range(lengths[field])]
+        values[field] = col[:n]
+    t = values["t"]
+    for i in range(1, n):
+        if not t[i] > t[i - 1]:
+            raise ParameterError(
+                f"{_where(name, i + 1, tname)}: time = {t[i]!r} s after {t[i - 1]!r} s is not increasing: "
+                "allowed strictly increasing time stamps"
+            )
+    return LoggerRun(
+        run=run,
+        t=_frozen(t),
+        angle=_frozen(values["angle"]),
+        drive_angle=_frozen(values["drive_angle"]) if "drive_angle" in values else None,
+        voltage=_frozen(values["voltage"]) if "voltage" in values else None,
+        current=_frozen(values["current"]) if "current" in values else None,
+    )
