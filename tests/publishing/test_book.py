@@ -433,6 +433,34 @@ def test_the_reader_text_has_no_code_notation(site):
     assert {k: v[:10] for k, v in found.items() if v} == {}
 
 
+#: Tools and libraries a chapter page's visible text does not name (the paper's own words, quoted in chapter 2,
+#: name its solver; integration methods such as RK45 or DOP853 are the subject of chapter 3, not tools).
+TOOLS = re.compile(
+    r"\b(papermill|nbval|pytest|sphinx|jupyter\w*|numpy|numba|matplotlib|ipywidgets|playwright|chromium|dask)\b"
+    r"|\bpython \d",
+    re.I,
+)
+
+
+def test_chapter_pages_name_no_tool_and_the_appendix_names_the_versions(site):
+    """The versions a notebook prints stay in the notebook; the book names its build's in "Using the package"."""
+    from bs4 import BeautifulSoup
+
+    found = {}
+    for page in [site / "index.html", *(site / f"{name}.html" for name in CHAPTERS)]:
+        article = BeautifulSoup(page.read_text(encoding="utf-8"), "html.parser").select_one("article")
+        for element in article.select("div.cell_input, script, style"):
+            element.decompose()
+        text = " ".join(article.get_text(" ").split())
+        found[page.name] = [text[max(0, m.start() - 30) : m.end() + 30] for m in TOOLS.finditer(text)]
+    assert {k: v for k, v in found.items() if v} == {}
+    using = BeautifulSoup((site / "using.html").read_text(encoding="utf-8"), "html.parser").get_text(" ")
+    import numpy
+    import scipy
+
+    assert f"NumPy {numpy.__version__}" in using and f"SciPy {scipy.__version__}" in using
+
+
 def test_no_paragraph_repeats_on_a_page(site):
     """A paragraph, list item or caption appears once per page, also when only its rounding differs."""
     from vibration.publishing.proofread import repeated_paragraphs

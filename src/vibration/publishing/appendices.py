@@ -20,6 +20,7 @@ import re
 from importlib.resources import files
 
 from ..presentation.notation import SETTLED, SYMBOLS
+from ..presentation.numbers import sig
 from ..presentation.references import bibliography_markdown
 from ..presentation.tables import symbol_myst
 
@@ -38,34 +39,13 @@ def _number(notebook: str) -> int:
     return int(notebook.split("_", 1)[0])
 
 
-_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
-
-
-def number(x: float) -> str:
-    """A bound as the book writes numbers: a true minus, powers of ten as ×10ⁿ.
-
-    >>> number(-1e4), number(1e6), number(2**31 - 1), number(0.001), number(1.4142135623730951)
-    ('−10⁴', '10⁶', '2.147×10⁹', '0.001', '1.414')
-    """
-    if x == 0:
-        return "0"
-    sign = "−" if x < 0 else ""
-    a = abs(x)
-    if 1e-3 <= a < 1e4:
-        return sign + f"{a:.4g}"
-    exp = int(f"{a:e}".split("e")[1])
-    mant = a / 10**exp
-    head = "" if abs(mant - 1) < 1e-12 else f"{mant:.4g}×"
-    return f"{sign}{head}10{str(exp).translate(_SUPERSCRIPT)}"
-
-
 def _range(p) -> str:
     if p.choices:
         return ", ".join(map(str, p.choices))
     op = "<" if p.low_open else "≤"
     sym = symbol_myst(p.symbol)
-    lo = "" if p.low is None else f"{number(p.low)} {op} "
-    hi = "" if p.high is None else f" ≤ {number(p.high)}"
+    lo = "" if p.low is None else f"{sig(p.low)} {op} "
+    hi = "" if p.high is None else f" ≤ {sig(p.high)}"
     return f"{lo}{sym}{hi}"
 
 
@@ -144,7 +124,50 @@ def usage_markdown(packages: list[str]) -> str:
         if usage.is_file():
             text = usage.read_text(encoding="utf-8").strip()
             parts += [text.replace("\n# ", "\n## ") if not text.startswith("# ") else "## " + text[2:], ""]
-    return "\n".join(parts)
+    return "\n".join([*parts, *environment_markdown()])
+
+
+#: (distribution, name as written) of the packages the chapters compute with, in the order listed.
+COMPUTING = (
+    ("numpy", "NumPy"),
+    ("scipy", "SciPy"),
+    ("matplotlib", "Matplotlib"),
+    ("numba", "Numba"),
+    ("control", "python-control"),
+    ("ipywidgets", "ipywidgets"),
+    ("gymnasium", "Gymnasium"),
+    ("cma", "cma"),
+)
+
+
+def environment_markdown() -> list[str]:
+    """The section naming the Python and package versions this edition's chapters were computed with.
+
+    The book builds in the environment its chapters run in, so these are the kernels' versions; a
+    package that is not installed is left out. Each notebook's last cell prints the same for its own run.
+
+    >>> lines = environment_markdown()
+    >>> lines[0], "NumPy " in lines[2]
+    ('## The computing environment of this edition', True)
+    """
+    import platform
+    from importlib.metadata import PackageNotFoundError, version
+
+    found = []
+    for dist, name in COMPUTING:
+        try:
+            found.append(f"{name} {version(dist)}")
+        except PackageNotFoundError:
+            continue
+    return [
+        "## The computing environment of this edition",
+        "",
+        f"The chapters of this edition were computed with Python {platform.python_version()} and "
+        + ", ".join(found)
+        + " (the pinned list of every package is the source's environment.txt); "
+        "a chapter's notebook ends by printing the versions of its own run.",
+        "",
+    ]
 
 
 def references_markdown() -> str:

@@ -173,7 +173,8 @@ def _notebook(stem: str, title: str, question: str, topic: str, prefix: str) -> 
     )
     cells.append(md("## The peak"))
     cells.append(code("display(Markdown(peak_sentence(study)))\npeak_table(study)"))
-    cells.append(code('import platform\n\nprint(f"python {platform.python_version()}")'))
+    # the versions the notebook ran with: shown in JupyterLab; the book lists its build's in an appendix
+    cells.append(code('import platform\n\nprint(f"python {platform.python_version()}")', tags=("remove-cell",)))
     return {
         "cells": cells,
         "metadata": {

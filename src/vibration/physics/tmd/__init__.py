@@ -33,7 +33,7 @@ the convention of each source and the conversion applied:
   the primary's frequency; converted, ζ_a = (c / c_c) / f = sqrt(3μ / (8 (1 + μ))).
 * Nishihara and Asami (2002), "Closed-form solutions to the exact optimizations
   of dynamic vibration absorbers (minimizations of the maximum amplitude
-  magnification factors)", J. Vib. Acoust. 124:576-582: the exact H∞ optimum
+  magnification factors)", J. Vib. Acoust. 124:576–582: the exact H∞ optimum
   for an undamped primary, with s = sqrt(4 + 3μ),
   f = 2/(1+μ) sqrt(2 (16 + 23μ + 9μ² + 2 (2+μ) s) / (3 (64 + 80μ + 27μ²))),
   ζ_a = ¼ sqrt((8 + 9μ − 4 s) / (1 + μ)); their damping ratio is the absorber's
@@ -44,7 +44,7 @@ the convention of each source and the conversion applied:
   tuning and is checked in the tests against the stationary-point peak.
 * Warburton (1982), "Optimum absorber parameters for various combinations of
   response and excitation parameters", Earthquake Eng. Struct. Dyn.
-  10:381-401, H2 optimum (mean-square primary displacement under white-noise
+  10:381–401, H2 optimum (mean-square primary displacement under white-noise
   force) for an undamped primary: f = sqrt(1 + μ/2) / (1 + μ),
   ζ_a = sqrt(μ (1 + 3μ/4) / (4 (1 + μ)(1 + μ/2))), absorber's own frequency
   (no conversion; the numerical minimum of the integral lands on it).

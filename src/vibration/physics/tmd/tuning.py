@@ -198,7 +198,7 @@ def hinf_tuning(mu, zeta_p=0.0, method="auto", *, maxiter=None) -> TMDTuning:
     """The H∞ optimum: (f, ζ_a) minimising the primary's largest magnification.
 
     For an undamped primary the closed form of Nishihara and Asami (2002,
-    J. Vib. Acoust. 124:576-582) is used (ζ_a relative to the absorber's own
+    J. Vib. Acoust. 124:576–582) is used (ζ_a relative to the absorber's own
     frequency, as in the paper); for a damped primary, or with
     ``method="numerical"``, a nested bounded min-max: Brent over f of Brent over
     log ζ_a of the exact peak (:func:`tmd_peak`), each bracketed by a grid
@@ -245,7 +245,7 @@ def h2_tuning(mu, zeta_p=0.0, method="auto", *, maxiter=None) -> TMDTuning:
     """The H2 optimum: (f, ζ_a) minimising ∫_0^∞ |H(r)|² dr (white-noise force).
 
     For an undamped primary Warburton's closed form (1982, Earthquake Eng.
-    Struct. Dyn. 10:381-401, force excitation, primary displacement; ζ_a relative
+    Struct. Dyn. 10:381–401, force excitation, primary displacement; ζ_a relative
     to the absorber's own frequency): f = sqrt(1 + μ/2)/(1 + μ),
     ζ_a = sqrt(μ (1 + 3μ/4) / (4 (1 + μ)(1 + μ/2))). For a damped primary, or with
     ``method="numerical"``, Nelder-Mead on the exact Lyapunov value
