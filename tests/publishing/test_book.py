@@ -265,6 +265,10 @@ def test_search_finds_dormand(browser, site):
     page.wait_for_selector("#search-results ul li a", timeout=20_000)
     links = page.eval_on_selector_all("#search-results ul li a", "els => els.map(e => e.getAttribute('href'))")
     assert any("03_solver_accuracy" in h for h in links), links
+    # each result shows the page's text around the word, also from disk (the pages' text ships with the book)
+    page.wait_for_function("document.querySelectorAll('#search-results ul li p.context').length > 0")
+    contexts = page.eval_on_selector_all("#search-results ul li p.context", "els => els.map(e => e.innerText)")
+    assert any("Dormand" in c for c in contexts), contexts
     assert errors == [] and outside == []
     page.close()
 

@@ -8,6 +8,7 @@
   numbering (which would renumber the chapters of Part II from 1).
 * A mention of another chapter in the text ("chapter 4", "chapters 1 and 4") links to that chapter's
   page, the number read from the table of contents' document names, so a reader can follow it.
+* Search results show the text around the words searched for, also from disk (:mod:`.search_text`).
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ import re
 
 from docutils import nodes
 
+from . import search_text
 from .mathml import latex_to_mathml
 
 
@@ -140,6 +142,7 @@ def setup(app):
     app.connect("builder-inited", _stable_build_info, priority=900)
     app.connect("build-finished", _accessible_pages)
     app.connect("doctree-resolved", _link_chapter_mentions)
+    search_text.setup(app)  # search results with their text, also from disk
     return {"version": "1", "parallel_read_safe": True, "parallel_write_safe": True}
 
 

@@ -48,7 +48,7 @@ html_copy_source = False
 html_last_updated_fmt = None
 html_math_renderer = "mathml"
 html_search_language = "en"
-html_show_search_summary = False
+html_show_search_summary = True
 html_theme_options = {{
     "show_toc_level": 2,
     "use_download_button": False,
