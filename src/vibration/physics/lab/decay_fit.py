@@ -190,6 +190,94 @@ def _coefficients(terms, p: dict) -> dict:
     return coefficients
 
 
+def _release(ta, ya):
+    """The extrema, the index of the first one after the release, and how many extrema follow from it on.
+
+    Refused below ``MIN_HALF_PERIODS`` half periods after the release.
+    """
+    peaks = _peaks(ta, ya)
+    k0 = _start(ta, ya, peaks)
+    n_ext = peaks.n - k0
+    if n_ext < MIN_HALF_PERIODS + 1:
+        raise ParameterError(
+            f"theta has {max(0, n_ext - 1)} half periods after its largest excursion which is out of range: allowed "
+            f"at least {MIN_HALF_PERIODS} (a free decay of at least two periods after the release)"
+        )
+    return peaks, k0, n_ext
+
+
+def _fit_window(ta, ya, peaks, k0: int, half: float):
+    """The fitted window: from the release's extremum to half a half period after the last extremum.
+
+    Returns its start and end (s) and the times and angles inside it.
+    """
+    t_start = float(ta[peaks.index[k0]])
+    t_end = min(float(ta[-1]), float(peaks.t[-1]) + 0.5 * half)
+    w = (ta >= t_start) & (ta <= t_end)
+    return t_start, t_end, ta[w], ya[w]
+
+
+def _physical_params(terms, free, base: dict, x) -> dict:
+    """Every parameter from the fitted vector ``x`` (``free`` order) over ``base``, the power term made physical."""
+    p = dict(base)
+    p.update(zip(free, x, strict=True))
+    if "power" in terms:  # the fitted value is the power term's equivalent ratio at X = 1 rad
+        pe = p["power_exponent"]
+        p["power"] = p["power"] * math.pi / (_sine_power_integral(pe + 1.0) * p["omega_n"] ** (pe - 2.0))
+    return p
+
+
+def _hac_lags(half: float, tw, n: int) -> int:
+    """Newey-West lags: one half period of samples, at least 1 and at most a quarter of the ``n`` residuals."""
+    return int(min(max(1, round(half / float(np.median(np.diff(tw))))), n // 4))
+
+
+def _decay_record(terms, p: dict, sol, r, errors, peaks, window) -> FreeDecayFit:
+    """The fit's record, with its residual statistics and information criteria.
+
+    From the solution ``p``, the solver's result ``sol``, the residuals ``r`` (model minus data), the standard
+    errors (reported, naive, Newey-West) and the fitted window's (start, end) (s).
+    """
+    se, se_n, se_h = errors
+    t_start, t_end = window
+    n, p_free = r.size, sol.x.size
+    rss = float(r @ r)
+    kpar = p_free + 1
+    m2ll = n * math.log(2.0 * math.pi * max(rss, 1e-300) / n) + n
+    dw, lb_p = whiteness(r)
+    in_window = (peaks.t >= t_start - 1e-12) & (peaks.t <= t_end)
+    res = -r
+    res.flags.writeable = False
+    return FreeDecayFit(
+        law=law_name(terms),
+        omega_n=float(p["omega_n"]),
+        zeta=float(p["zeta"]),
+        friction=float(p["friction"]),
+        offset=float(p["offset"]),
+        theta0=float(p["theta0"]),
+        t0=float(p["t0"]),
+        quadratic=float(p["quadratic"]),
+        power=float(p["power"]),
+        power_exponent=float(p["power_exponent"]),
+        coefficients=_coefficients(terms, p),
+        stderr=se,
+        stderr_naive=se_n,
+        stderr_hac=se_h,
+        residual_rms=float(math.sqrt(rss / n)),
+        aic=float(m2ll + 2 * kpar),
+        bic=float(m2ll + kpar * math.log(n)),
+        n=int(n),
+        n_params=int(p_free),
+        n_half_periods=int(max(0, np.count_nonzero(in_window) - 1)),
+        t_start=t_start,
+        t_end=t_end,
+        durbin_watson=dw,
+        ljung_box_p=lb_p,
+        converged=bool(sol.success),
+        residuals=res,
+    )
+
+
 def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
     r"""Fit a damping law's free decay to a whole trace.
 
@@ -256,32 +344,17 @@ def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
     """
     terms = parse_law(law)
     ta, ya = time_and_signal(t, theta, t_name="t", y_name="theta", y_unit="rad")
-    peaks = _peaks(ta, ya)
-    k0 = _start(ta, ya, peaks)
-    n_ext = peaks.n - k0
-    if n_ext < MIN_HALF_PERIODS + 1:
-        raise ParameterError(
-            f"theta has {max(0, n_ext - 1)} half periods after its largest excursion which is out of range: allowed "
-            f"at least {MIN_HALF_PERIODS} (a free decay of at least two periods after the release)"
-        )
+    peaks, k0, n_ext = _release(ta, ya)
     half = float(np.median(np.diff(peaks.t[k0:])))
     guesses, g_quad = _guesses(ta, ya, peaks, k0, n_ext, half)
-    t_start = float(ta[peaks.index[k0]])
-    t_end = min(float(ta[-1]), float(peaks.t[-1]) + 0.5 * half)
-    w = (ta >= t_start) & (ta <= t_end)
-    tw, yw = ta[w], ya[w]
+    t_start, t_end, tw, yw = _fit_window(ta, ya, peaks, k0, half)
     span = float(np.ptp(ya))
     lo, hi = _bounds(ya, peaks, k0, half, span)
     free = _free_params(terms)
     base = {"friction": 0.0, "zeta": 0.0, "quadratic": 0.0, "power": 0.0, "power_exponent": 0.0}
 
     def params(x):
-        p = dict(base)
-        p.update(zip(free, x, strict=True))
-        if "power" in terms:  # the fitted value is the power term's equivalent ratio at X = 1 rad
-            pe = p["power_exponent"]
-            p["power"] = p["power"] * math.pi / (_sine_power_integral(pe + 1.0) * p["omega_n"] ** (pe - 2.0))
-        return p
+        return _physical_params(terms, free, base, x)
 
     def misfit(p):
         return _response_general(tw, *(p[k] for k in _GENERAL_ARGS)) - yw
@@ -292,46 +365,7 @@ def fit_free_decay(t, theta, law: str = "coulomb+viscous") -> FreeDecayFit:
     lb = np.array([lo[k] for k in free])
     ub = np.array([hi[k] for k in free])
     sol = _best_of_starts(resid, _starts(guesses, terms, g_quad, span, peaks, k0), free, lb, ub)
-    x = sol.x
-    r = resid(x)
-    phys = params(x)
-    n, p_free = r.size, x.size
-    rss = float(r @ r)
-    lags = int(min(max(1, round(half / float(np.median(np.diff(tw))))), n // 4))
-    se, se_n, se_h = _standard_errors(misfit, phys, free, base, r, lags)
-    kpar = p_free + 1
-    m2ll = n * math.log(2.0 * math.pi * max(rss, 1e-300) / n) + n
-    dw, lb_p = whiteness(r)
-    p = phys
-    coefficients = _coefficients(terms, p)
-    in_window = (peaks.t >= t_start - 1e-12) & (peaks.t <= t_end)
-    res = -r
-    res.flags.writeable = False
-    return FreeDecayFit(
-        law=law_name(terms),
-        omega_n=float(p["omega_n"]),
-        zeta=float(p["zeta"]),
-        friction=float(p["friction"]),
-        offset=float(p["offset"]),
-        theta0=float(p["theta0"]),
-        t0=float(p["t0"]),
-        quadratic=float(p["quadratic"]),
-        power=float(p["power"]),
-        power_exponent=float(p["power_exponent"]),
-        coefficients=coefficients,
-        stderr=se,
-        stderr_naive=se_n,
-        stderr_hac=se_h,
-        residual_rms=float(math.sqrt(rss / n)),
-        aic=float(m2ll + 2 * kpar),
-        bic=float(m2ll + kpar * math.log(n)),
-        n=int(n),
-        n_params=int(p_free),
-        n_half_periods=int(max(0, np.count_nonzero(in_window) - 1)),
-        t_start=t_start,
-        t_end=t_end,
-        durbin_watson=dw,
-        ljung_box_p=lb_p,
-        converged=bool(sol.success),
-        residuals=res,
-    )
+    r = resid(sol.x)
+    phys = params(sol.x)
+    errors = _standard_errors(misfit, phys, free, base, r, _hac_lags(half, tw, r.size))
+    return _decay_record(terms, phys, sol, r, errors, peaks, (t_start, t_end))

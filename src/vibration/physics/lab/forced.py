@@ -19,6 +19,7 @@ harmonic-balance limit).
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from scipy import optimize
@@ -122,6 +123,151 @@ def _coefficient_array(name, value, n, *, low, high, unit=""):
     return np.broadcast_to(check_array(name, value, low=low, high=high, unit=unit), (n,)).copy()
 
 
+#: Per-wheel arguments of :func:`simulate_driven` and their allowed ranges (low, high, unit).
+_WHEEL_RANGES = {
+    "omega_n": (1e-9, 1e6, "rad/s"),
+    "force": (0.0, 1e6, "rad"),
+    "omega": (1e-9, 1e6, "rad/s"),
+    "phase": (-1e6, 1e6, "rad"),
+    "zeta": (0.0, 10.0, ""),
+    "friction": (0.0, 1e6, "rad"),
+    "quadratic": (0.0, 1e6, "1/rad"),
+    "power": (0.0, 1e6, ""),
+    "power_exponent": (0.0, 20.0, ""),
+    "theta0": (-1e6, 1e6, "rad"),
+    "velocity0": (-1e6, 1e6, "rad/s"),
+}
+
+
+def _record_times(duration, sample_interval, substeps) -> tuple[float, float]:
+    """The record's duration and sample interval (s), checked with the number of substeps."""
+    dur = check_real("duration", duration, low=0.0, low_open=True, high=1e6, unit="s")
+    dt = check_real("sample_interval", sample_interval, low=1e-9, unit="s")
+    if dt > dur:
+        raise ParameterError(
+            f"sample_interval = {dt:g} s is longer than duration = {dur:g} s: allowed sample_interval <= duration"
+        )
+    if isinstance(substeps, bool) or not isinstance(substeps, (int, np.integer)) or not 1 <= substeps <= 1000:
+        raise ParameterError(f"substeps = {substeps!r} is out of range: allowed an integer 1 <= substeps <= 1000")
+    return dur, dt
+
+
+def _wheel_coefficients(args: dict) -> tuple[int, dict]:
+    """The number of wheels and every per-wheel argument checked and spread over them (keyed as ``args``)."""
+    n = max(int(np.size(v)) for v in args.values())
+    for k, v in args.items():
+        if np.ndim(v) > 1 or np.size(v) not in (1, n):
+            raise ParameterError(f"{k} has {np.size(v)} values: allowed one or {n} (one per wheel)")
+    coefficients = {}
+    for k, v in args.items():
+        low, high, unit = _WHEEL_RANGES[k]
+        coefficients[k] = _coefficient_array(k, v, n, low=low, high=high, unit=unit)
+    return n, coefficients
+
+
+def _step_length(wn, om, dt, substeps) -> float:
+    """The Runge-Kutta step (s), refused where the drive or natural frequency times it exceeds ``MAX_OMEGA_STEP``."""
+    h = dt / substeps
+    worst = float(max(wn.max(), om.max())) * h
+    if worst > MAX_OMEGA_STEP:
+        raise ParameterError(
+            f"substeps = {substeps} is out of range: omega h = {worst:.3g} exceeds {MAX_OMEGA_STEP}; allowed at least "
+            f"{math.ceil(substeps * worst / MAX_OMEGA_STEP)} steps per sample interval"
+        )
+    return h
+
+
+def _sample_count(dur, dt, substeps, n, max_evaluations) -> int:
+    """The number of output samples, refused when the wheel-steps exceed ``max_evaluations``."""
+    m = int(math.floor(dur / dt + 1e-9)) + 1
+    steps = (m - 1) * substeps
+    if steps * n > max_evaluations:
+        raise ParameterError(
+            f"max_evaluations = {max_evaluations} is out of range: {n} wheels over {steps} steps need {steps * n}"
+        )
+    return m
+
+
+class _DrivenLaw(NamedTuple):
+    """The coefficients of every wheel as the integrator uses them."""
+
+    wn: np.ndarray
+    w2: np.ndarray
+    f: np.ndarray
+    om: np.ndarray
+    ph: np.ndarray
+    z: np.ndarray
+    fric: np.ndarray
+    b: np.ndarray
+    a: np.ndarray
+    p: np.ndarray
+    use_power: bool
+
+
+def _driven_law(c: dict) -> _DrivenLaw:
+    """The integrator's coefficients from the checked per-wheel arguments."""
+    wn = c["omega_n"]
+    w2 = wn * wn
+    return _DrivenLaw(
+        wn=wn,
+        w2=w2,
+        f=c["force"],
+        om=c["omega"],
+        ph=c["phase"],
+        z=c["zeta"],
+        fric=w2 * c["friction"],
+        b=c["quadratic"],
+        a=c["power"],
+        p=c["power_exponent"],
+        use_power=bool(np.any(c["power"] > 0)),
+    )
+
+
+def _drive_torque(law: _DrivenLaw, xx, time):
+    """Spring and drive torque per inertia of every wheel (rad/s^2), without damping."""
+    return law.w2 * (law.f * np.sin(law.om * time + law.ph) - xx)
+
+
+def _driven_acceleration(law: _DrivenLaw, xx, vv, time):
+    """Angular acceleration of every wheel; 0 for a wheel at rest that friction holds."""
+    drive = _drive_torque(law, xx, time)
+    s = np.where(vv > 0, 1.0, np.where(vv < 0, -1.0, np.sign(drive)))
+    damp = 2.0 * law.z * law.wn * vv + law.b * vv * np.abs(vv)
+    if law.use_power:
+        damp = damp + law.a * np.abs(vv) ** law.p * s
+    out = drive - law.fric * s - damp
+    stuck = (vv == 0) & (np.abs(drive) <= law.fric)
+    return np.where(stuck, 0.0, out)
+
+
+def _driven_step(law: _DrivenLaw, x, v, time, h):
+    """One Runge-Kutta step of every wheel; a wheel whose velocity reverses where friction holds it stops there."""
+    a1 = _driven_acceleration(law, x, v, time)
+    a2 = _driven_acceleration(law, x + 0.5 * h * v, v + 0.5 * h * a1, time + 0.5 * h)
+    v2 = v + 0.5 * h * a1
+    v3 = v + 0.5 * h * a2
+    a3 = _driven_acceleration(law, x + 0.5 * h * v2, v3, time + 0.5 * h)
+    v4 = v + h * a3
+    a4 = _driven_acceleration(law, x + h * v3, v4, time + h)
+    x_new = x + h / 6.0 * (v + 2.0 * v2 + 2.0 * v3 + v4)
+    v_new = v + h / 6.0 * (a1 + 2.0 * a2 + 2.0 * a3 + a4)
+    time += h
+    stop = (v_new * v < 0) & (np.abs(_drive_torque(law, x_new, time)) <= law.fric)
+    return x_new, np.where(stop, 0.0, v_new), time
+
+
+def _integrate_driven(law: _DrivenLaw, x, v, h, substeps, shape) -> np.ndarray:
+    """Angles of every wheel (rows) at every sample (columns), ``substeps`` steps apart, from angle x, velocity v."""
+    out = np.empty(shape)
+    out[:, 0] = x
+    time = 0.0
+    for i in range(1, shape[1]):
+        for _ in range(substeps):
+            x, v, time = _driven_step(law, x, v, time, h)
+        out[:, i] = x
+    return out
+
+
 def simulate_driven(
     duration,
     *,
@@ -193,89 +339,25 @@ def simulate_driven(
     >>> round(float(np.max(np.abs(th[0, t > 50]))), 3)  # F / (2 zeta) at resonance
     1.0
     """
-    dur = check_real("duration", duration, low=0.0, low_open=True, high=1e6, unit="s")
-    dt = check_real("sample_interval", sample_interval, low=1e-9, unit="s")
-    if dt > dur:
-        raise ParameterError(
-            f"sample_interval = {dt:g} s is longer than duration = {dur:g} s: allowed sample_interval <= duration"
-        )
-    if isinstance(substeps, bool) or not isinstance(substeps, (int, np.integer)) or not 1 <= substeps <= 1000:
-        raise ParameterError(f"substeps = {substeps!r} is out of range: allowed an integer 1 <= substeps <= 1000")
-    args = {
-        "omega_n": omega_n,
-        "force": force,
-        "omega": omega,
-        "phase": phase,
-        "zeta": zeta,
-        "friction": friction,
-        "quadratic": quadratic,
-        "power": power,
-        "power_exponent": power_exponent,
-        "theta0": theta0,
-        "velocity0": velocity0,
-    }
-    n = max(int(np.size(v)) for v in args.values())
-    for k, v in args.items():
-        if np.ndim(v) > 1 or np.size(v) not in (1, n):
-            raise ParameterError(f"{k} has {np.size(v)} values: allowed one or {n} (one per wheel)")
-    wn = _coefficient_array("omega_n", omega_n, n, low=1e-9, high=1e6, unit="rad/s")
-    f = _coefficient_array("force", force, n, low=0.0, high=1e6, unit="rad")
-    om = _coefficient_array("omega", omega, n, low=1e-9, high=1e6, unit="rad/s")
-    ph = _coefficient_array("phase", phase, n, low=-1e6, high=1e6, unit="rad")
-    z = _coefficient_array("zeta", zeta, n, low=0.0, high=10.0)
-    d = _coefficient_array("friction", friction, n, low=0.0, high=1e6, unit="rad")
-    b = _coefficient_array("quadratic", quadratic, n, low=0.0, high=1e6, unit="1/rad")
-    a = _coefficient_array("power", power, n, low=0.0, high=1e6)
-    p = _coefficient_array("power_exponent", power_exponent, n, low=0.0, high=20.0)
-    x = _coefficient_array("theta0", theta0, n, low=-1e6, high=1e6, unit="rad")
-    v = _coefficient_array("velocity0", velocity0, n, low=-1e6, high=1e6, unit="rad/s")
-    h = dt / substeps
-    worst = float(max(wn.max(), om.max())) * h
-    if worst > MAX_OMEGA_STEP:
-        raise ParameterError(
-            f"substeps = {substeps} is out of range: omega h = {worst:.3g} exceeds {MAX_OMEGA_STEP}; allowed at least "
-            f"{math.ceil(substeps * worst / MAX_OMEGA_STEP)} steps per sample interval"
-        )
-    m = int(math.floor(dur / dt + 1e-9)) + 1
-    steps = (m - 1) * substeps
-    if steps * n > max_evaluations:
-        raise ParameterError(
-            f"max_evaluations = {max_evaluations} is out of range: {n} wheels over {steps} steps need {steps * n}"
-        )
-    w2 = wn * wn
-    fric = w2 * d
-    use_power = bool(np.any(a > 0))
-
-    def acc(xx, vv, time):
-        drive = w2 * (f * np.sin(om * time + ph) - xx)
-        s = np.where(vv > 0, 1.0, np.where(vv < 0, -1.0, np.sign(drive)))
-        damp = 2.0 * z * wn * vv + b * vv * np.abs(vv)
-        if use_power:
-            damp = damp + a * np.abs(vv) ** p * s
-        out = drive - fric * s - damp
-        stuck = (vv == 0) & (np.abs(drive) <= fric)
-        return np.where(stuck, 0.0, out), drive
-
-    out = np.empty((n, m))
-    out[:, 0] = x
-    time = 0.0
-    for i in range(1, m):
-        for _ in range(substeps):
-            a1, _ = acc(x, v, time)
-            a2, _ = acc(x + 0.5 * h * v, v + 0.5 * h * a1, time + 0.5 * h)
-            v2 = v + 0.5 * h * a1
-            v3 = v + 0.5 * h * a2
-            a3, _ = acc(x + 0.5 * h * v2, v3, time + 0.5 * h)
-            v4 = v + h * a3
-            a4, _ = acc(x + h * v3, v4, time + h)
-            x_new = x + h / 6.0 * (v + 2.0 * v2 + 2.0 * v3 + v4)
-            v_new = v + h / 6.0 * (a1 + 2.0 * a2 + 2.0 * a3 + a4)
-            time += h
-            drive_new = w2 * (f * np.sin(om * time + ph) - x_new)
-            stop = (v_new * v < 0) & (np.abs(drive_new) <= fric)
-            v = np.where(stop, 0.0, v_new)
-            x = x_new
-        out[:, i] = x
+    dur, dt = _record_times(duration, sample_interval, substeps)
+    n, c = _wheel_coefficients(
+        {
+            "omega_n": omega_n,
+            "force": force,
+            "omega": omega,
+            "phase": phase,
+            "zeta": zeta,
+            "friction": friction,
+            "quadratic": quadratic,
+            "power": power,
+            "power_exponent": power_exponent,
+            "theta0": theta0,
+            "velocity0": velocity0,
+        }
+    )
+    h = _step_length(c["omega_n"], c["omega"], dt, substeps)
+    m = _sample_count(dur, dt, substeps, n, max_evaluations)
+    out = _integrate_driven(_driven_law(c), c["theta0"], c["velocity0"], h, substeps, (n, m))
     if not np.all(np.isfinite(out)):
         raise ParameterError("force is out of range: the simulation diverged; allowed a law that bounds the motion")
     return np.arange(m) * dt, out

@@ -27,6 +27,7 @@ motion has stops and the function returns NaN. For :math:`\zeta = 0` it reduces 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -58,43 +59,37 @@ def _as_ratios(r):
     return rv, scalar
 
 
-def _den_hartog_one(r: float, zeta: float, delta: float) -> float:
-    """Exact two-reversal steady amplitude X/X_st at one frequency ratio, NaN when it has stops."""
-    half = math.pi / r
-    # particular response to cos(r tau) and sin(r tau): H = 1 / (1 - r^2 + 2 i zeta r)
-    den = (1.0 - r * r) ** 2 + (2.0 * zeta * r) ** 2
-    if den == 0.0:  # undamped resonance: the force's work per cycle (pi F0 X) outgrows friction's (4 F X)
-        return math.inf if 4.0 * delta / math.pi < 1.0 else math.nan
-    hr, hi = (1.0 - r * r) / den, -2.0 * zeta * r / den
+def _particular(r: float, hr: float, hi: float, tau: float) -> tuple[float, float, float, float]:
+    """(x, x') coefficients of c and of s of the particular response to ``c cos(r tau) - s sin(r tau)``.
 
-    # force cos(r tau + phi) = c cos(r tau) - s sin(r tau); response Re(H (c + i s) e^{i r tau})
-    def part(tau):
-        ct, st = math.cos(r * tau), math.sin(r * tau)
-        # returns (x, x') coefficients of c and of s
-        xc, xs = hr * ct - hi * st, -(hr * st + hi * ct)
-        vc, vs = r * (-hr * st - hi * ct), -r * (hr * ct - hi * st)
-        return xc, xs, vc, vs
+    The response is Re(H (c + i s) e^{i r tau}) with H = hr + i hi; returns (xc, xs, vc, vs).
+    """
+    ct, st = math.cos(r * tau), math.sin(r * tau)
+    xc, xs = hr * ct - hi * st, -(hr * st + hi * ct)
+    vc, vs = r * (-hr * st - hi * ct), -r * (hr * ct - hi * st)
+    return xc, xs, vc, vs
 
-    if zeta < 1.0:
-        wd = math.sqrt(1.0 - zeta * zeta)
 
-        def free(tau):
-            e = math.exp(-zeta * tau)
-            c1, s1 = math.cos(wd * tau), math.sin(wd * tau)
-            x1, x2 = e * c1, e * s1
-            v1, v2 = e * (-zeta * c1 - wd * s1), e * (-zeta * s1 + wd * c1)
-            return x1, x2, v1, v2
-    else:
-        return math.nan
+def _free(zeta: float, wd: float, tau: float) -> tuple[float, float, float, float]:
+    """(x, x') of the two free solutions e^{-zeta tau} cos(wd tau) and e^{-zeta tau} sin(wd tau): (x1, x2, v1, v2)."""
+    e = math.exp(-zeta * tau)
+    c1, s1 = math.cos(wd * tau), math.sin(wd * tau)
+    x1, x2 = e * c1, e * s1
+    v1, v2 = e * (-zeta * c1 - wd * s1), e * (-zeta * s1 + wd * c1)
+    return x1, x2, v1, v2
 
-    # unknowns u = (c, s, A, B), equations linear in u and X:
-    # x(0) + X = 0, x'(0) = 0, x(half) - X = 0, x'(half) = 0, with x = part + free - delta
+
+def _half_period_solutions(r, zeta, wd, hr, hi, half, delta):
+    """The unknowns u = (c, s, A, B) as u0 + X u1 from the half period's four end conditions, or None if singular.
+
+    The conditions are x(0) + X = 0, x'(0) = 0, x(half) - X = 0, x'(half) = 0, with x = part + free - delta.
+    """
     M = np.zeros((4, 4))
     rhs_const = np.zeros(4)
     rhs_x = np.zeros(4)
     for row, (tau, which, sx) in enumerate([(0.0, 0, 1.0), (0.0, 1, 0.0), (half, 0, -1.0), (half, 1, 0.0)]):
-        xc, xs, vc, vs = part(tau)
-        x1, x2, v1, v2 = free(tau)
+        xc, xs, vc, vs = _particular(r, hr, hi, tau)
+        x1, x2, v1, v2 = _free(zeta, wd, tau)
         if which == 0:
             M[row] = [xc, xs, x1, x2]
             rhs_const[row] = delta
@@ -105,19 +100,27 @@ def _den_hartog_one(r: float, zeta: float, delta: float) -> float:
         u0 = np.linalg.solve(M, rhs_const)
         u1 = np.linalg.solve(M, rhs_x)
     except np.linalg.LinAlgError:
-        return math.nan
-    # (c, s) = u0[:2] + X u1[:2]; c^2 + s^2 = 1
+        return None
+    return u0, u1
+
+
+def _phase_amplitude(u0, u1):
+    """The positive root X of c^2 + s^2 = 1 with (c, s) = u0[:2] + X u1[:2], or None."""
     a = float(u1[:2] @ u1[:2])
     b = 2.0 * float(u0[:2] @ u1[:2])
     cc = float(u0[:2] @ u0[:2]) - 1.0
     disc = b * b - 4.0 * a * cc
     if a == 0.0 or disc < 0.0:
-        return math.nan
+        return None
     X = (-b + math.sqrt(disc)) / (2.0 * a)
     if not X > 0.0:
-        return math.nan
-    c, s, A, B = u0 + X * u1
-    # non-stop condition: velocity > 0 inside the half period; force overcomes friction at the start
+        return None
+    return X
+
+
+def _slides_through(r, zeta, wd, hr, hi, half, u) -> bool:
+    """Whether the velocity of the solution u = (c, s, A, B) stays > 0 inside the half period (N_CHECK points)."""
+    c, s, A, B = u
     tau = np.linspace(0.0, half, N_CHECK + 1)[1:-1]
     ct, st = np.cos(r * tau), np.sin(r * tau)
     e = np.exp(-zeta * tau)
@@ -127,9 +130,32 @@ def _den_hartog_one(r: float, zeta: float, delta: float) -> float:
         + A * e * (-zeta * np.cos(wd * tau) - wd * np.sin(wd * tau))
         + B * e * (-zeta * np.sin(wd * tau) + wd * np.cos(wd * tau))
     )
-    if np.any(v <= 0.0):
+    return not np.any(v <= 0.0)
+
+
+def _den_hartog_one(r: float, zeta: float, delta: float) -> float:
+    """Exact two-reversal steady amplitude X/X_st at one frequency ratio, NaN when it has stops."""
+    half = math.pi / r
+    # particular response to cos(r tau) and sin(r tau): H = 1 / (1 - r^2 + 2 i zeta r)
+    den = (1.0 - r * r) ** 2 + (2.0 * zeta * r) ** 2
+    if den == 0.0:  # undamped resonance: the force's work per cycle (pi F0 X) outgrows friction's (4 F X)
+        return math.inf if 4.0 * delta / math.pi < 1.0 else math.nan
+    hr, hi = (1.0 - r * r) / den, -2.0 * zeta * r / den
+    if not zeta < 1.0:
         return math.nan
-    if c + X - delta <= 0.0:  # x''(0+) = cos(phi) - x(0) - delta must be > 0 (x(0) = -X, x'(0) = 0)
+    wd = math.sqrt(1.0 - zeta * zeta)
+    solutions = _half_period_solutions(r, zeta, wd, hr, hi, half, delta)
+    if solutions is None:
+        return math.nan
+    u0, u1 = solutions
+    X = _phase_amplitude(u0, u1)
+    if X is None:
+        return math.nan
+    u = u0 + X * u1
+    # non-stop condition: velocity > 0 inside the half period; force overcomes friction at the start
+    if not _slides_through(r, zeta, wd, hr, hi, half, u):
+        return math.nan
+    if u[0] + X - delta <= 0.0:  # x''(0+) = cos(phi) - x(0) - delta must be > 0 (x(0) = -X, x'(0) = 0)
         return math.nan
     return float(X)
 
@@ -226,6 +252,122 @@ def friction_forced_amplitude_hb(r, zeta, friction_ratio):
     return float(X[0]) if scalar else X
 
 
+def _time_and_drive(t, drive) -> tuple[np.ndarray, np.ndarray]:
+    """The sample times (s), strictly increasing, and the drive signal at them, checked."""
+    ta = as_series("t", t, unit="s", min_size=2)
+    da = as_series("drive", drive, min_size=2)
+    if da.size != ta.size:
+        raise ParameterError(f"drive has {da.size} samples and t has {ta.size}: allowed the same number of samples")
+    if not np.all(np.diff(ta) > 0):
+        raise ParameterError("t is not strictly increasing: allowed strictly increasing time (s)")
+    return ta, da
+
+
+def _check_substeps(substeps, n_samples: int) -> None:
+    """Refuse a number of substeps outside 1 to 1000, or more than ``MAX_STEPS`` steps over ``n_samples`` samples."""
+    if isinstance(substeps, bool) or not isinstance(substeps, int) or not 1 <= substeps <= 1000:
+        raise ParameterError(f"substeps = {substeps!r} is out of range: allowed integer 1 <= substeps <= 1000")
+    if (n_samples - 1) * substeps > MAX_STEPS:
+        raise ParameterError(
+            f"t has {n_samples} samples which with substeps = {substeps} is out of range: allowed at most "
+            f"{MAX_STEPS} steps in all"
+        )
+
+
+class _FrictionModel(NamedTuple):
+    """The checked inputs of :func:`simulate_friction_oscillator` as its integrator uses them."""
+
+    ta: np.ndarray  # sample times, s
+    da: np.ndarray  # drive at the sample times
+    w: float  # omega_n, rad/s
+    w2: float  # omega_n^2
+    z: float  # zeta
+    fr: float  # friction angle, rad
+    g: float  # gain
+    c: float  # offset, rad
+
+
+def _drive_at(m: _FrictionModel, time, k):
+    """The drive at ``time`` inside sample interval ``k``, interpolated linearly."""
+    t0, t1 = m.ta[k], m.ta[k + 1]
+    return m.da[k] + (m.da[k + 1] - m.da[k]) * (time - t0) / (t1 - t0)
+
+
+def _friction_acceleration(m: _FrictionModel, x, vel, s, time, k):
+    """Angular acceleration while sliding in direction ``s`` (+1 or -1)."""
+    return -2.0 * m.z * m.w * vel - m.w2 * (x - m.c) - m.w2 * m.fr * s + m.w2 * m.g * _drive_at(m, time, k)
+
+
+def _net_torque(m: _FrictionModel, x, time, k):
+    """Spring + drive torque per inertia, without friction."""
+    return -m.w2 * (x - m.c) + m.w2 * m.g * _drive_at(m, time, k)
+
+
+def _friction_rk4(m: _FrictionModel, x, vel, s, time, h, k):
+    """One classical Runge-Kutta step of length ``h`` sliding in direction ``s``: (angle, velocity)."""
+    a1 = _friction_acceleration(m, x, vel, s, time, k)
+    x2, v2 = x + 0.5 * h * vel, vel + 0.5 * h * a1
+    a2 = _friction_acceleration(m, x2, v2, s, time + 0.5 * h, k)
+    x3, v3 = x + 0.5 * h * v2, vel + 0.5 * h * a2
+    a3 = _friction_acceleration(m, x3, v3, s, time + 0.5 * h, k)
+    x4, v4 = x + h * v3, vel + h * a3
+    a4 = _friction_acceleration(m, x4, v4, s, time + h, k)
+    return x + h / 6.0 * (vel + 2 * v2 + 2 * v3 + v4), vel + h / 6.0 * (a1 + 2 * a2 + 2 * a3 + a4)
+
+
+def _reversal_step(m: _FrictionModel, th, v, s, time, remaining, k):
+    """The step length (at most ``remaining``) to the velocity reversal, by bisection to 1e-12 of ``remaining``."""
+    lo_h, hi_h = 0.0, remaining
+    for _ in range(60):
+        mid = 0.5 * (lo_h + hi_h)
+        _, vm = _friction_rk4(m, th, v, s, time, mid, k)
+        if vm * s > 0.0:
+            lo_h = mid
+        else:
+            hi_h = mid
+        if hi_h - lo_h <= 1e-12 * remaining:
+            break
+    return hi_h
+
+
+def _friction_substep(m: _FrictionModel, th, v, time, h, k):
+    """Advance (angle, velocity, time) by one substep ``h``: stuck, sliding, or sliding to a reversal and on."""
+    remaining = h
+    guard = 0
+    while remaining > 0.0 and guard < 8:
+        guard += 1
+        if v == 0.0:
+            f = _net_torque(m, th, time, k)
+            if abs(f) <= m.w2 * m.fr:  # stuck for this (sub)step
+                return th, v, time + remaining
+            s = 1.0 if f > 0 else -1.0
+        else:
+            s = 1.0 if v > 0 else -1.0
+        x1, v1 = _friction_rk4(m, th, v, s, time, remaining, k)
+        if v1 * s >= 0.0 or (v == 0.0 and v1 * s > 0.0):
+            return x1, v1, time + remaining
+        hi_h = _reversal_step(m, th, v, s, time, remaining, k)  # velocity reverses inside
+        th, _ = _friction_rk4(m, th, v, s, time, hi_h, k)
+        v = 0.0
+        time += hi_h
+        remaining -= hi_h
+    return th, v, time
+
+
+def _integrate_friction(m: _FrictionModel, th, v, substeps) -> tuple[np.ndarray, np.ndarray]:
+    """Angle and velocity at the sample times from (th, v) at the first, ``substeps`` steps per interval."""
+    out_th = np.empty(m.ta.size)
+    out_v = np.empty(m.ta.size)
+    out_th[0], out_v[0] = th, v
+    for k in range(m.ta.size - 1):
+        h = (m.ta[k + 1] - m.ta[k]) / substeps
+        time = m.ta[k]
+        for _ in range(substeps):
+            th, v, time = _friction_substep(m, th, v, time, h, k)
+        out_th[k + 1], out_v[k + 1] = th, v
+    return out_th, out_v
+
+
 def simulate_friction_oscillator(
     t, drive, omega_n, *, zeta, friction, gain, theta0=0.0, omega0=0.0, offset=0.0, substeps=20
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -280,12 +422,7 @@ def simulate_friction_oscillator(
     >>> round(float(th[-1]), 8)  # one undamped period later
     1.0
     """
-    ta = as_series("t", t, unit="s", min_size=2)
-    da = as_series("drive", drive, min_size=2)
-    if da.size != ta.size:
-        raise ParameterError(f"drive has {da.size} samples and t has {ta.size}: allowed the same number of samples")
-    if not np.all(np.diff(ta) > 0):
-        raise ParameterError("t is not strictly increasing: allowed strictly increasing time (s)")
+    ta, da = _time_and_drive(t, drive)
     w = check_real("omega_n", omega_n, low=0.0, low_open=True, high=1e6, unit="rad/s")
     z = check_real("zeta", zeta, low=0.0, high=0.999)
     fr = check_real("friction", friction, low=0.0, high=1e6, unit="rad")
@@ -293,72 +430,6 @@ def simulate_friction_oscillator(
     th = check_real("theta0", theta0, low=-1e9, high=1e9, unit="rad")
     v = check_real("omega0", omega0, low=-1e9, high=1e9, unit="rad/s")
     c = check_real("offset", offset, low=-1e9, high=1e9, unit="rad")
-    if isinstance(substeps, bool) or not isinstance(substeps, int) or not 1 <= substeps <= 1000:
-        raise ParameterError(f"substeps = {substeps!r} is out of range: allowed integer 1 <= substeps <= 1000")
-    if (ta.size - 1) * substeps > MAX_STEPS:
-        raise ParameterError(
-            f"t has {ta.size} samples which with substeps = {substeps} is out of range: allowed at most "
-            f"{MAX_STEPS} steps in all"
-        )
-    w2 = w * w
-    out_th = np.empty(ta.size)
-    out_v = np.empty(ta.size)
-    out_th[0], out_v[0] = th, v
-
-    def drive_at(time, k):
-        t0, t1 = ta[k], ta[k + 1]
-        return da[k] + (da[k + 1] - da[k]) * (time - t0) / (t1 - t0)
-
-    def acc(x, vel, s, time, k):
-        return -2.0 * z * w * vel - w2 * (x - c) - w2 * fr * s + w2 * g * drive_at(time, k)
-
-    def rk4(x, vel, s, time, h, k):
-        a1 = acc(x, vel, s, time, k)
-        x2, v2 = x + 0.5 * h * vel, vel + 0.5 * h * a1
-        a2 = acc(x2, v2, s, time + 0.5 * h, k)
-        x3, v3 = x + 0.5 * h * v2, vel + 0.5 * h * a2
-        a3 = acc(x3, v3, s, time + 0.5 * h, k)
-        x4, v4 = x + h * v3, vel + h * a3
-        a4 = acc(x4, v4, s, time + h, k)
-        return x + h / 6.0 * (vel + 2 * v2 + 2 * v3 + v4), vel + h / 6.0 * (a1 + 2 * a2 + 2 * a3 + a4)
-
-    def net(x, time, k):  # spring + drive torque per inertia, without friction
-        return -w2 * (x - c) + w2 * g * drive_at(time, k)
-
-    for k in range(ta.size - 1):
-        h = (ta[k + 1] - ta[k]) / substeps
-        time = ta[k]
-        for _ in range(substeps):
-            remaining = h
-            guard = 0
-            while remaining > 0.0 and guard < 8:
-                guard += 1
-                if v == 0.0:
-                    f = net(th, time, k)
-                    if abs(f) <= w2 * fr:  # stuck for this (sub)step
-                        time += remaining
-                        remaining = 0.0
-                        break
-                    s = 1.0 if f > 0 else -1.0
-                else:
-                    s = 1.0 if v > 0 else -1.0
-                x1, v1 = rk4(th, v, s, time, remaining, k)
-                if v1 * s >= 0.0 or (v == 0.0 and v1 * s > 0.0):
-                    th, v, time, remaining = x1, v1, time + remaining, 0.0
-                    break
-                lo_h, hi_h = 0.0, remaining  # velocity reverses inside: bisection on the step
-                for _ in range(60):
-                    mid = 0.5 * (lo_h + hi_h)
-                    _, vm = rk4(th, v, s, time, mid, k)
-                    if vm * s > 0.0:
-                        lo_h = mid
-                    else:
-                        hi_h = mid
-                    if hi_h - lo_h <= 1e-12 * remaining:
-                        break
-                th, _ = rk4(th, v, s, time, hi_h, k)
-                v = 0.0
-                time += hi_h
-                remaining -= hi_h
-        out_th[k + 1], out_v[k + 1] = th, v
-    return out_th, out_v
+    _check_substeps(substeps, ta.size)
+    model = _FrictionModel(ta=ta, da=da, w=w, w2=w * w, z=z, fr=fr, g=g, c=c)
+    return _integrate_friction(model, th, v, substeps)

@@ -239,6 +239,73 @@ def _load_file(path: Path, label: str, row: int) -> tuple[list[LoggerRun], str]:
     )
 
 
+def _manifest_rows(p: Path) -> list[list[str]]:
+    """The manifest's rows (header first), its header and its number of data rows checked."""
+    rows = _read_csv(p / MANIFEST, MANIFEST)
+    header = tuple(c.strip() for c in rows[0])
+    if header != MANIFEST_HEADER:
+        raise ParameterError(
+            f"file {MANIFEST!r}, row 0 (header): header = {','.join(header)!r} is out of range: allowed exactly "
+            f"{','.join(MANIFEST_HEADER)!r}"
+        )
+    if len(rows) - 1 > MAX_MANIFEST_ROWS:
+        raise ParameterError(f"file {MANIFEST!r} has {len(rows) - 1} rows: allowed at most {MAX_MANIFEST_ROWS}")
+    if len(rows) == 1:
+        raise ParameterError(f"file {MANIFEST!r} has no data rows: allowed at least one run")
+    return rows
+
+
+def _manifest_file(p: Path, root: Path, i: int, fname: str) -> Path:
+    """The logger file of manifest row ``i``, checked to be a file inside the folder."""
+    if fname == "":
+        raise ParameterError(f"{_where(MANIFEST, i, 'file')}: cell is empty: allowed the name of a logger file")
+    fpath = (p / fname).resolve()
+    if root not in fpath.parents or fname in (MANIFEST, RIG):
+        raise ParameterError(
+            f"{_where(MANIFEST, i, 'file')}: cell = {fname!r} is out of range: allowed a logger file inside the folder"
+        )
+    if not fpath.is_file():
+        raise ParameterError(f"{_where(MANIFEST, i, 'file')}: cell = {fname!r} is not a file in the folder")
+    return fpath
+
+
+def _manifest_row(p: Path, root: Path, i: int, r: list[str]) -> tuple[dict, Path, float | None]:
+    """Manifest data row ``i`` checked: its cells by column, its logger file's path and its brake current (A)."""
+    if len(r) != len(MANIFEST_HEADER):
+        raise ParameterError(
+            f"file {MANIFEST!r}, row {i} has {len(r)} cells: allowed exactly {len(MANIFEST_HEADER)} "
+            f"({','.join(MANIFEST_HEADER)})"
+        )
+    cell = dict(zip(MANIFEST_HEADER, (c.strip() for c in r), strict=True))
+    fpath = _manifest_file(p, root, i, cell["file"])
+    if cell["kind"] not in KINDS:
+        raise ParameterError(f"{_where(MANIFEST, i, 'kind')}: cell = {cell['kind']!r} is out of range: allowed {KINDS}")
+    for col in ("brake", "session"):
+        if cell[col] == "":
+            raise ParameterError(f"{_where(MANIFEST, i, col)}: cell is empty: allowed a label")
+    cur = (
+        None
+        if cell["brake_current_A"] == ""
+        else _number(MANIFEST, i, "brake_current_A", cell["brake_current_A"], low=0.0, high=MAX_CURRENT_A, unit="A")
+    )
+    return cell, fpath, cur
+
+
+def _wanted_runs(c: str, available: dict, fname: str, i: int) -> list[int]:
+    """The run numbers that the ``run`` cell ``c`` of manifest row ``i`` selects from a file's runs."""
+    if c == "":
+        return sorted(available)
+    if not c.isdigit() or int(c) < 1:
+        raise ParameterError(
+            f"{_where(MANIFEST, i, 'run')}: cell = {c!r} is not a run number: allowed a positive integer or empty"
+        )
+    if int(c) not in available:
+        raise ParameterError(
+            f"{_where(MANIFEST, i, 'run')}: cell = {c!r} is out of range: file {fname!r} has runs {sorted(available)}"
+        )
+    return [int(c)]
+
+
 def load_lab_data(folder) -> LabData:
     """Read a folder of logger files through its manifest.
 
@@ -257,71 +324,19 @@ def load_lab_data(folder) -> LabData:
         A missing or malformed manifest, rig file or logger file, naming the file, the row and the column.
     """
     p = _folder(folder)
-    rows = _read_csv(p / MANIFEST, MANIFEST)
-    header = tuple(c.strip() for c in rows[0])
-    if header != MANIFEST_HEADER:
-        raise ParameterError(
-            f"file {MANIFEST!r}, row 0 (header): header = {','.join(header)!r} is out of range: allowed exactly "
-            f"{','.join(MANIFEST_HEADER)!r}"
-        )
-    if len(rows) - 1 > MAX_MANIFEST_ROWS:
-        raise ParameterError(f"file {MANIFEST!r} has {len(rows) - 1} rows: allowed at most {MAX_MANIFEST_ROWS}")
-    if len(rows) == 1:
-        raise ParameterError(f"file {MANIFEST!r} has no data rows: allowed at least one run")
+    rows = _manifest_rows(p)
     cache: dict[str, list[LoggerRun]] = {}
     formats: dict[str, str] = {}
     seen: dict[tuple, int] = {}
     out: list[LabRun] = []
     root = p.resolve()
     for i, r in enumerate(rows[1:], start=1):
-        if len(r) != len(MANIFEST_HEADER):
-            raise ParameterError(
-                f"file {MANIFEST!r}, row {i} has {len(r)} cells: allowed exactly {len(MANIFEST_HEADER)} "
-                f"({','.join(MANIFEST_HEADER)})"
-            )
-        cell = dict(zip(MANIFEST_HEADER, (c.strip() for c in r), strict=True))
+        cell, fpath, cur = _manifest_row(p, root, i, r)
         fname = cell["file"]
-        if fname == "":
-            raise ParameterError(f"{_where(MANIFEST, i, 'file')}: cell is empty: allowed the name of a logger file")
-        fpath = (p / fname).resolve()
-        if root not in fpath.parents or fname in (MANIFEST, RIG):
-            raise ParameterError(
-                f"{_where(MANIFEST, i, 'file')}: cell = {fname!r} is out of range: allowed a logger file inside "
-                "the folder"
-            )
-        if not fpath.is_file():
-            raise ParameterError(f"{_where(MANIFEST, i, 'file')}: cell = {fname!r} is not a file in the folder")
-        if cell["kind"] not in KINDS:
-            raise ParameterError(
-                f"{_where(MANIFEST, i, 'kind')}: cell = {cell['kind']!r} is out of range: allowed {KINDS}"
-            )
-        for col in ("brake", "session"):
-            if cell[col] == "":
-                raise ParameterError(f"{_where(MANIFEST, i, col)}: cell is empty: allowed a label")
-        cur = (
-            None
-            if cell["brake_current_A"] == ""
-            else _number(MANIFEST, i, "brake_current_A", cell["brake_current_A"], low=0.0, high=MAX_CURRENT_A, unit="A")
-        )
         if fname not in cache:
             cache[fname], formats[fname] = _load_file(fpath, fname, i)
         available = {lr.run: lr for lr in cache[fname]}
-        if cell["run"] == "":
-            wanted = sorted(available)
-        else:
-            c = cell["run"]
-            if not c.isdigit() or int(c) < 1:
-                raise ParameterError(
-                    f"{_where(MANIFEST, i, 'run')}: cell = {c!r} is not a run number: allowed a positive integer "
-                    "or empty"
-                )
-            if int(c) not in available:
-                raise ParameterError(
-                    f"{_where(MANIFEST, i, 'run')}: cell = {c!r} is out of range: file {fname!r} has runs "
-                    f"{sorted(available)}"
-                )
-            wanted = [int(c)]
-        for run in wanted:
+        for run in _wanted_runs(cell["run"], available, fname, i):
             key = (fname, run)
             if key in seen:
                 raise ParameterError(

@@ -246,14 +246,14 @@ def identify(t, force, x=None, *, a=None, search: str = "global") -> Identificat
     return _identify(t, h, force, y, sensor, local=False)
 
 
-def _identify(t, h, force, y, sensor, local: bool) -> Identification:
-    n = t.size
-    span = float(t[-1] - t[0])
-    w_lo, w_hi = 2.0 * np.pi / span, 0.9 * np.pi / h
-    if w_lo >= w_hi / 2:
-        raise ParameterError(f"t spans {span:g} s with step {h:g} s: allowed a record of many samples")
+def _search_starts(force, y, h, sensor, local: bool, band) -> list:
+    """Starting points (cost, (omega_n, zeta)) of the polish, best first: the grid's best and the Levy start.
 
-    # global search on at most 20000 samples, then a polish on the whole record
+    The grid runs over the natural frequencies in ``band`` (rad/s) on at most 20000 samples; ``local`` keeps the
+    Levy start only (refused if it fails).
+    """
+    w_lo, w_hi = band
+    n = force.size
     m_search = min(n, 20000)
     *_, grid_cost = _varpro(force[:m_search], y[:m_search], h, sensor)
     lo_s = max(w_lo, 2.0 * np.pi / (h * (m_search - 1)))
@@ -272,7 +272,11 @@ def _identify(t, h, force, y, sensor, local: bool) -> Identification:
         levy = (levy[0], min(max(levy[1], 1e-4), 5.0))
         starts.append((float(grid_cost([levy[0]], [levy[1]])[0]), levy))
     starts.sort(key=lambda s: s[0])
-    columns, solve, residual, _ = _varpro(force, y, h, sensor)
+    return starts
+
+
+def _polish(residual, starts):
+    """The best Levenberg-Marquardt solution from the first three distinct starts (None without starts)."""
     best = None
     seen = []
     for _, (wv, zeta) in starts:
@@ -285,9 +289,11 @@ def _identify(t, h, force, y, sensor, local: bool) -> Identification:
             best = sol
         if len(seen) >= 3:
             break
-    psi = best.x
-    wn, zeta = np.exp(psi)
-    coef, g = solve(psi)
+    return best
+
+
+def _check_estimate(coef, wn, h, span) -> None:
+    """Refuse a fit with 1/m <= 0, or a natural frequency that the step ``h`` or the span (s) does not resolve."""
     if coef is None or not coef[0] > 0.0:
         raise ParameterError(
             "x or a does not fit the oscillator model (best fit has 1/m <= 0): allowed a response measured "
@@ -303,13 +309,16 @@ def _identify(t, h, force, y, sensor, local: bool) -> Identification:
             f"t spans {span:g} s, less than one period of the estimated natural frequency {wn:.4g} rad/s: "
             f"allowed a record of several periods (> {2 * np.pi / wn:.3g} s)"
         )
-    m = 1.0 / coef[0]
-    c, k = 2.0 * zeta * wn * m, wn * wn * m
-    # the forced column already holds the -gamma1 F[0] part of w[0], so the free coefficients are z[0]
-    z0 = coef[1:]
-    res = g @ coef - y
 
-    # Gauss-Newton covariance of (ln omega_n, ln zeta, 1/m, x0, v0), mapped to (m, c, k) (delta method)
+
+def _mck_covariance(columns, psi, coef, g, res, mck) -> tuple[np.ndarray, float]:
+    """Covariance of (m, c, k) and the noise variance s^2 at the solution ``psi``, ``coef`` with residual ``res``.
+
+    Gauss-Newton covariance of (ln omega_n, ln zeta, 1/m, x0, v0), mapped to ``mck`` = (m, c, k) by the delta
+    method.
+    """
+    m, c, k = mck
+    n = res.size
     jac = np.empty((n, 5))
     for j in range(2):
         step = 1e-6
@@ -330,9 +339,30 @@ def _identify(t, h, force, y, sensor, local: bool) -> Identification:
         )
     cov_full = (vt.T / sv**2) @ vt / np.outer(scale, scale) * s2
     d = np.array([[0.0, 0.0, -m * m, 0, 0], [c, c, -c * m, 0, 0], [2.0 * k, 0.0, -k * m, 0, 0]])
-    cov = d @ cov_full @ d.T
+    return d @ cov_full @ d.T, s2
+
+
+def _identify(t, h, force, y, sensor, local: bool) -> Identification:
+    """Identify the oscillator from a checked record: start search, polish on the whole record, uncertainty."""
+    n = t.size
+    span = float(t[-1] - t[0])
+    w_lo, w_hi = 2.0 * np.pi / span, 0.9 * np.pi / h
+    if w_lo >= w_hi / 2:
+        raise ParameterError(f"t spans {span:g} s with step {h:g} s: allowed a record of many samples")
+    starts = _search_starts(force, y, h, sensor, local, (w_lo, w_hi))
+    columns, solve, residual, _ = _varpro(force, y, h, sensor)
+    psi = _polish(residual, starts).x
+    wn, zeta = np.exp(psi)
+    coef, g = solve(psi)
+    _check_estimate(coef, wn, h, span)
+    m = 1.0 / coef[0]
+    c, k = 2.0 * zeta * wn * m, wn * wn * m
+    # the forced column already holds the -gamma1 F[0] part of w[0], so the free coefficients are z[0]
+    z0 = coef[1:]
+    res = g @ coef - y
+    cov, s2 = _mck_covariance(columns, psi, coef, g, res, (m, c, k))
     stderr = np.sqrt(np.diag(cov))
-    q = float(student_t.ppf(0.975, dof))
+    q = float(student_t.ppf(0.975, n - 5))
     est = np.array([m, c, k])
     ci = np.column_stack([est - q * stderr, est + q * stderr])
     hold = float(np.max(np.abs(np.diff(force, 2))) / 8.0 / max(np.sqrt(np.mean(force**2)), 1e-300))
@@ -418,6 +448,98 @@ def _nan_estimate(method: str, reason: str) -> FrequencyEstimate:
     )
 
 
+def _resonance_bins(frf: FrequencyResponse):
+    """The contiguous bins with force and coherence, their magnitudes and the peak's bin, or None and the reason.
+
+    Returns ((omega, H, |H|, peak index), "") or (None, reason).
+    """
+    if frf.omega.size == 0:
+        return None, "no frequency bins"
+    keep = (frf.force_psd >= 1e-2 * np.max(frf.force_psd)) & (frf.coherence > 0.5)
+    first, last = np.nonzero(keep)[0][[0, -1]] if np.any(keep) else (0, -1)
+    w, hh = frf.omega[first : last + 1], frf.H[first : last + 1]
+    if w.size < 5:
+        return None, "fewer than 5 frequency bins with force and coherence"
+    mag = np.abs(hh)
+    i = int(np.argmax(mag))
+    if i == 0 or i == w.size - 1:
+        return None, "no resonance peak inside the measured band"
+    return (w, hh, mag, i), ""
+
+
+def _parabolic_peak(w, mag, i: int) -> tuple[float, float]:
+    """Frequency and magnitude of the peak at bin ``i`` by parabolic interpolation of its bins."""
+    y0, y1, y2 = mag[i - 1], mag[i], mag[i + 1]
+    den = y0 - 2 * y1 + y2
+    d = 0.5 * (y0 - y2) / den if den < 0 else 0.0
+    w_pk = w[i] + d * (w[i + 1] - w[i - 1]) / 2.0
+    h_pk = y1 - 0.25 * (y0 - y2) * d
+    return w_pk, h_pk
+
+
+def _half_power_estimate(w, mag, i: int, w_pk, h_pk) -> FrequencyEstimate:
+    """The half-power estimate from the peak (frequency ``w_pk``, magnitude ``h_pk``, bin ``i``)."""
+    level = h_pk / math.sqrt(2.0)
+    left = np.nonzero(mag[:i] < level)[0]
+    right = np.nonzero(mag[i:] < level)[0]
+    if left.size == 0 or right.size == 0 or (right[0] + (i - left[-1]) - 1) < 5:
+        return _nan_estimate("half-power", "half-power band not resolved by the frequency bins")
+    j = left[-1]
+    lo = float(np.interp(level, [mag[j], mag[j + 1]], [w[j], w[j + 1]]))
+    j = i + right[0]
+    hi = float(np.interp(level, [mag[j], mag[j - 1]], [w[j], w[j - 1]]))
+    ratio = (hi**2 - lo**2) / (hi**2 + lo**2)
+    if ratio >= 1.0:
+        return _nan_estimate("half-power", "damping too high for a half-power estimate")
+    # 2 z sqrt(1 - z^2) / (1 - 2 z^2) = ratio  ->  z^2 = (1 - 1/sqrt(1 + ratio^2)) / 2
+    zeta = math.sqrt(0.5 * (1.0 - 1.0 / math.sqrt(1.0 + ratio * ratio)))
+    wn = w_pk / math.sqrt(1.0 - 2.0 * zeta**2)
+    k = 1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta**2) * h_pk)
+    m = k / wn**2
+    return FrequencyEstimate(
+        method="half-power",
+        m=float(m),
+        c=2.0 * zeta * math.sqrt(k * m),
+        k=float(k),
+        omega_n=float(wn),
+        zeta=float(zeta),
+    )
+
+
+def _circle_fit_estimate(w, hh, mag, i: int, h_pk) -> FrequencyEstimate:
+    """The circle-fit estimate on the bins around the peak (bin ``i``, magnitude ``h_pk``) above half of it."""
+    lo_i, hi_i = i, i
+    while lo_i - 1 >= 0 and mag[lo_i - 1] >= 0.5 * h_pk:
+        lo_i -= 1
+    while hi_i + 1 < w.size and mag[hi_i + 1] >= 0.5 * h_pk:
+        hi_i += 1
+    sel = slice(lo_i, hi_i + 1)
+    if hi_i - lo_i + 1 < 5:
+        return _nan_estimate("circle fit", "fewer than 5 frequency bins near the resonance")
+    yv = 1j * w[sel] * hh[sel]
+    u, v = yv.real, yv.imag
+    g = np.column_stack([u, v, np.ones_like(u)])
+    (dd, ee, ff), *_ = np.linalg.lstsq(g, -(u * u + v * v), rcond=None)
+    centre = complex(-dd / 2.0, -ee / 2.0)
+    radius = math.sqrt(max(abs(centre) ** 2 - ff, 0.0))
+    if radius == 0.0 or abs(centre) == 0.0:
+        return _nan_estimate("circle fit", "degenerate circle")
+    c = 1.0 / (2.0 * radius)
+    theta = np.angle((yv - centre) / centre)
+    ws = w[sel]
+    (m, k), *_ = np.linalg.lstsq(np.column_stack([ws**2, -np.ones_like(ws)]), -c * ws * np.tan(theta / 2.0), rcond=None)
+    if not (m > 0 and k > 0):
+        return _nan_estimate("circle fit", "circle fit gave m or k <= 0")
+    return FrequencyEstimate(
+        method="circle fit",
+        m=float(m),
+        c=float(c),
+        k=float(k),
+        omega_n=math.sqrt(k / m),
+        zeta=c / (2 * math.sqrt(k * m)),
+    )
+
+
 def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, FrequencyEstimate]:
     """Half-power and circle-fit estimates of m, c, k from a measured receptance.
 
@@ -446,81 +568,9 @@ def frequency_estimates(frf: FrequencyResponse) -> tuple[FrequencyEstimate, Freq
     """
     if not isinstance(frf, FrequencyResponse):
         raise ParameterError(f"frf = {frf!r:.60} is not a FrequencyResponse: allowed the output of frf_estimate")
-    if frf.omega.size == 0:
-        r = "no frequency bins"
+    bins, r = _resonance_bins(frf)
+    if bins is None:
         return _nan_estimate("half-power", r), _nan_estimate("circle fit", r)
-    keep = (frf.force_psd >= 1e-2 * np.max(frf.force_psd)) & (frf.coherence > 0.5)
-    first, last = np.nonzero(keep)[0][[0, -1]] if np.any(keep) else (0, -1)
-    w, hh = frf.omega[first : last + 1], frf.H[first : last + 1]
-    if w.size < 5:
-        r = "fewer than 5 frequency bins with force and coherence"
-        return _nan_estimate("half-power", r), _nan_estimate("circle fit", r)
-    mag = np.abs(hh)
-    i = int(np.argmax(mag))
-    if i == 0 or i == w.size - 1:
-        r = "no resonance peak inside the measured band"
-        return _nan_estimate("half-power", r), _nan_estimate("circle fit", r)
-    # parabolic interpolation of the peak
-    y0, y1, y2 = mag[i - 1], mag[i], mag[i + 1]
-    den = y0 - 2 * y1 + y2
-    d = 0.5 * (y0 - y2) / den if den < 0 else 0.0
-    w_pk = w[i] + d * (w[i + 1] - w[i - 1]) / 2.0
-    h_pk = y1 - 0.25 * (y0 - y2) * d
-    level = h_pk / math.sqrt(2.0)
-    left = np.nonzero(mag[:i] < level)[0]
-    right = np.nonzero(mag[i:] < level)[0]
-    if left.size == 0 or right.size == 0 or (right[0] + (i - left[-1]) - 1) < 5:
-        hp = _nan_estimate("half-power", "half-power band not resolved by the frequency bins")
-    else:
-        j = left[-1]
-        lo = float(np.interp(level, [mag[j], mag[j + 1]], [w[j], w[j + 1]]))
-        j = i + right[0]
-        hi = float(np.interp(level, [mag[j], mag[j - 1]], [w[j], w[j - 1]]))
-        ratio = (hi**2 - lo**2) / (hi**2 + lo**2)
-        if ratio >= 1.0:
-            hp = _nan_estimate("half-power", "damping too high for a half-power estimate")
-        else:
-            # 2 z sqrt(1 - z^2) / (1 - 2 z^2) = ratio  ->  z^2 = (1 - 1/sqrt(1 + ratio^2)) / 2
-            zeta = math.sqrt(0.5 * (1.0 - 1.0 / math.sqrt(1.0 + ratio * ratio)))
-            wn = w_pk / math.sqrt(1.0 - 2.0 * zeta**2)
-            k = 1.0 / (2.0 * zeta * math.sqrt(1.0 - zeta**2) * h_pk)
-            m = k / wn**2
-            hp = FrequencyEstimate(
-                method="half-power",
-                m=float(m),
-                c=2.0 * zeta * math.sqrt(k * m),
-                k=float(k),
-                omega_n=float(wn),
-                zeta=float(zeta),
-            )
-    lo_i, hi_i = i, i
-    while lo_i - 1 >= 0 and mag[lo_i - 1] >= 0.5 * h_pk:
-        lo_i -= 1
-    while hi_i + 1 < w.size and mag[hi_i + 1] >= 0.5 * h_pk:
-        hi_i += 1
-    sel = slice(lo_i, hi_i + 1)
-    if hi_i - lo_i + 1 < 5:
-        return hp, _nan_estimate("circle fit", "fewer than 5 frequency bins near the resonance")
-    yv = 1j * w[sel] * hh[sel]
-    u, v = yv.real, yv.imag
-    g = np.column_stack([u, v, np.ones_like(u)])
-    (dd, ee, ff), *_ = np.linalg.lstsq(g, -(u * u + v * v), rcond=None)
-    centre = complex(-dd / 2.0, -ee / 2.0)
-    radius = math.sqrt(max(abs(centre) ** 2 - ff, 0.0))
-    if radius == 0.0 or abs(centre) == 0.0:
-        return hp, _nan_estimate("circle fit", "degenerate circle")
-    c = 1.0 / (2.0 * radius)
-    theta = np.angle((yv - centre) / centre)
-    ws = w[sel]
-    (m, k), *_ = np.linalg.lstsq(np.column_stack([ws**2, -np.ones_like(ws)]), -c * ws * np.tan(theta / 2.0), rcond=None)
-    if not (m > 0 and k > 0):
-        return hp, _nan_estimate("circle fit", "circle fit gave m or k <= 0")
-    cf = FrequencyEstimate(
-        method="circle fit",
-        m=float(m),
-        c=float(c),
-        k=float(k),
-        omega_n=math.sqrt(k / m),
-        zeta=c / (2 * math.sqrt(k * m)),
-    )
-    return hp, cf
+    w, hh, mag, i = bins
+    w_pk, h_pk = _parabolic_peak(w, mag, i)
+    return _half_power_estimate(w, mag, i, w_pk, h_pk), _circle_fit_estimate(w, hh, mag, i, h_pk)
