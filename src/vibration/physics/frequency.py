@@ -429,19 +429,7 @@ def peak_displacement_map(
     array([[0.613, 2.237],
            [0.135, 0.105]])
     """
-    m = check_real("m", m, low=0.0, low_open=True, unit="kg")
-    k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
-    F0 = check_real("F0", F0, low=0.0, unit="N")
-    t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
-    n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
-    w = _omegas(omegas)
-    c = check_array("dampings", dampings, ndim=(1,), unit="N s/m")
-    for name, size in (("omegas", w.size), ("dampings", c.size)):
-        if size * n_points > MAP_CELLS_MAX:
-            raise ParameterError(
-                f"len({name}) * n_points = {size * n_points} is out of range: allowed <= {MAP_CELLS_MAX} "
-                f"samples per table (memory)"
-            )
+    m, k, F0, t_end, n_points, w, c = _map_args(m, k, F0, t_end, n_points, omegas, dampings)
     if F0 == 0.0:
         return np.zeros((c.size, w.size))
     t = np.linspace(0.0, t_end, n_points)
@@ -449,36 +437,8 @@ def peak_displacement_map(
     with np.errstate(all="ignore"):
         ew = _grid_exp(1j * w, t, step)  # exp(i omega t)
         sw, cw = np.ascontiguousarray(ew.imag), np.ascontiguousarray(ew.real)
-        kc = np.empty((c.size, n_points))  # P of the free response x = x0 P + (v0 + a x0) g
-        g = np.empty((c.size, n_points))
-        coef = np.empty(c.size)  # a, 1/s
-        roots = [_roots(_damped(m, float(ci), k)) for ci in c]
-        osc_rows = [i for i, ro in enumerate(roots) if ro.kind == "osc"]
-        if osc_rows:  # underdamped: exp((-sigma + i wd) t) for all of them at once
-            s1 = np.array([complex(-roots[i].sigma, roots[i].wd) for i in osc_rows])
-            z = _grid_exp(s1, t, step)
-            kc[osc_rows] = z.real
-            g[osc_rows] = z.imag / s1.imag[:, None]
-        for i, ro in enumerate(roots):
-            coef[i] = ro.a
-            if ro.kind != "osc":
-                kc[i], _, g[i], _ = _kernels(Oscillator(m=m, c=float(c[i]), k=k), t)
-    blown = ~(np.isfinite(kc).all(axis=1) & np.isfinite(g).all(axis=1))
-    if blown.any():
-        i = int(np.nonzero(blown)[0][0])
-        raise ParameterError(
-            f"dampings contains {float(c[i])!r}: its free response overflows the float range within "
-            f"t_end = {t_end!r} s: allowed dampings whose response stays finite"
-        )
-    # distance from i omega to the nearest characteristic root, 1/s
-    sigma = (c / (2.0 * m))[:, None]
-    root = np.emath.sqrt(sigma * sigma - k / m)
-    dist = np.minimum(np.abs(1j * w[None, :] + sigma - root), np.abs(1j * w[None, :] + sigma + root))
-    near = dist * t_end < NEAR
-    den = (k - m * w * w)[None, :] + 1j * np.multiply.outer(c, w)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        h = np.where(near, 0.0, F0 / np.where(near, 1.0, den))
-    p, q = h.real, h.imag
+    kc, g, coef = _free_kernels(m, k, c, t, step, t_end)
+    near, p, q = _forced_amplitudes(m, k, F0, w, c, t_end)
     # transient = free response from x0 = -q, v0 = -omega p, as in exact_response:
     # x0 P + (v0 + a x0) g
     a = -q
@@ -498,3 +458,64 @@ def peak_displacement_map(
             f"the float range within t_end = {t_end!r} s: allowed dampings whose response stays finite"
         )
     return out
+
+
+def _map_args(m, k, F0, t_end, n_points, omegas, dampings):
+    """The checked arguments of :func:`peak_displacement_map`, ``(m, k, F0, t_end, n_points, omegas, dampings)``,
+    refused when a table of ``len(omegas)`` or ``len(dampings)`` rows of ``n_points`` exceeds ``MAP_CELLS_MAX``."""
+    m = check_real("m", m, low=0.0, low_open=True, unit="kg")
+    k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
+    F0 = check_real("F0", F0, low=0.0, unit="N")
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
+    n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
+    w = _omegas(omegas)
+    c = check_array("dampings", dampings, ndim=(1,), unit="N s/m")
+    for name, size in (("omegas", w.size), ("dampings", c.size)):
+        if size * n_points > MAP_CELLS_MAX:
+            raise ParameterError(
+                f"len({name}) * n_points = {size * n_points} is out of range: allowed <= {MAP_CELLS_MAX} "
+                f"samples per table (memory)"
+            )
+    return m, k, F0, t_end, n_points, w, c
+
+
+def _free_kernels(m: float, k: float, c: np.ndarray, t: np.ndarray, step, t_end: float):
+    """Free-response kernels of each damping on the uniform times ``t``: ``(P, g, a)`` with
+    ``x = x0 P + (v0 + a x0) g``; refused when one overflows within ``t_end``."""
+    with np.errstate(all="ignore"):
+        kc = np.empty((c.size, t.size))  # P of the free response x = x0 P + (v0 + a x0) g
+        g = np.empty((c.size, t.size))
+        coef = np.empty(c.size)  # a, 1/s
+        roots = [_roots(_damped(m, float(ci), k)) for ci in c]
+        osc_rows = [i for i, ro in enumerate(roots) if ro.kind == "osc"]
+        if osc_rows:  # underdamped: exp((-sigma + i wd) t) for all of them at once
+            s1 = np.array([complex(-roots[i].sigma, roots[i].wd) for i in osc_rows])
+            z = _grid_exp(s1, t, step)
+            kc[osc_rows] = z.real
+            g[osc_rows] = z.imag / s1.imag[:, None]
+        for i, ro in enumerate(roots):
+            coef[i] = ro.a
+            if ro.kind != "osc":
+                kc[i], _, g[i], _ = _kernels(Oscillator(m=m, c=float(c[i]), k=k), t)
+    blown = ~(np.isfinite(kc).all(axis=1) & np.isfinite(g).all(axis=1))
+    if blown.any():
+        i = int(np.nonzero(blown)[0][0])
+        raise ParameterError(
+            f"dampings contains {float(c[i])!r}: its free response overflows the float range within "
+            f"t_end = {t_end!r} s: allowed dampings whose response stays finite"
+        )
+    return kc, g, coef
+
+
+def _forced_amplitudes(m: float, k: float, F0: float, w: np.ndarray, c: np.ndarray, t_end: float):
+    """``(near, Re H, Im H)`` on the (damping, omega) grid, ``H = F0 / (k - m omega^2 + i c omega)``: ``near``
+    where i omega lies within ``NEAR / t_end`` of a characteristic root, and there H is set to 0."""
+    # distance from i omega to the nearest characteristic root, 1/s
+    sigma = (c / (2.0 * m))[:, None]
+    root = np.emath.sqrt(sigma * sigma - k / m)
+    dist = np.minimum(np.abs(1j * w[None, :] + sigma - root), np.abs(1j * w[None, :] + sigma + root))
+    near = dist * t_end < NEAR
+    den = (k - m * w * w)[None, :] + 1j * np.multiply.outer(c, w)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        h = np.where(near, 0.0, F0 / np.where(near, 1.0, den))
+    return near, h.real, h.imag

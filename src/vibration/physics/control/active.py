@@ -263,16 +263,43 @@ def simulate_controlled(
     >>> bool(np.max(np.abs(r.x - ex.x)) < 1e-9)
     True
     """
-    from scipy.integrate import solve_ivp
+    _check_loop_parts(osc, controller, force)
+    Y, wb = _base(base)
+    umax = _limit(u_max)
+    grid = _grid(t_end, n_points)
+    x0, v0 = _initial_state(osc, x0, v0)
+    rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
+    atol = check_real("atol", atol, low=0.0, low_open=True)
+    step = math.inf if max_step is None else check_real("max_step", max_step, low=0.0, low_open=True, unit="s")
+    F0, wf = (force.F0, force.omega) if force is not None else (0.0, 0.0)
+    t_end = float(grid[-1])
+    _check_loop_work(osc, t_end, max(osc.natural_frequency + abs(osc.c) / osc.m, wf, wb), rtol, step)
+    rhs = _controlled_rhs(osc, controller, (F0, wf), (Y, wb), umax)
+    x, v, nfev = _integrate_loop(rhs, (x0, v0), grid, rtol, atol, step)
+    demand = np.array([_call(controller, ti, xi, vi) for ti, xi, vi in zip(grid, x, v, strict=True)])
+    return ControlledResponse(
+        t=grid,
+        x=x,
+        v=v,
+        u=np.clip(demand, -umax, umax),
+        u_demand=demand,
+        x_base=Y * np.sin(wb * grid),
+        v_base=Y * wb * np.cos(wb * grid),
+        nfev=nfev,
+    )
 
+
+def _check_loop_parts(osc, controller, force) -> None:
+    """Refuse a plant that is not an :class:`Oscillator`, a controller that is not callable or a wrong force."""
     check_oscillator(osc)
     if not callable(controller):
         raise ParameterError(f"controller = {controller!r} is not callable: allowed a function (t, x, v) -> force in N")
     if force is not None and not isinstance(force, SineForce):
         raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
-    Y, wb = _base(base)
-    umax = _limit(u_max)
-    grid = _grid(t_end, n_points)
+
+
+def _initial_state(osc, x0, v0) -> tuple[float, float]:
+    """The checked initial displacement (m) and velocity (m/s), whose energy must be a finite float."""
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
     check_derived(
@@ -281,18 +308,24 @@ def simulate_controlled(
         inputs={"x0": x0, "v0": v0},
         allowed="x0 and v0 whose energy is a finite float",
     )
-    rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
-    atol = check_real("atol", atol, low=0.0, low_open=True)
-    step = math.inf if max_step is None else check_real("max_step", max_step, low=0.0, low_open=True, unit="s")
-    m, c, k = osc.m, osc.c, osc.k
-    F0, wf = (force.F0, force.omega) if force is not None else (0.0, 0.0)
-    t_end = float(grid[-1])
-    _work_check(t_end, max(osc.natural_frequency + abs(c) / m, wf, wb), rtol, "plant")
+    return x0, v0
+
+
+def _check_loop_work(osc, t_end: float, rate: float, rtol: float, step: float) -> None:
+    """Refuse a run whose plant (fastest ``rate``, 1/s) or ``max_step`` (s) needs more than :data:`MAX_NFEV`."""
+    _work_check(t_end, rate, rtol, "plant")
     if t_end / step > MAX_NFEV / 12:
         raise ParameterError(
             f"max_step = {step!r} s: t_end / max_step = {t_end / step:.3g} steps of 12 evaluations, "
             f"allowed at most {MAX_NFEV // 12} steps (budget {MAX_NFEV} evaluations)"
         )
+
+
+def _controlled_rhs(osc, controller, force, base, umax):
+    """The loop's right-hand side ``(t, [x, v]) -> (v, a)`` with ``force = (F0, omega)`` and ``base = (Y, omega)``."""
+    m, c, k = osc.m, osc.c, osc.k
+    F0, wf = force
+    Y, wb = base
     sin, cos = math.sin, math.cos
 
     def rhs(t, y):
@@ -301,11 +334,19 @@ def simulate_controlled(
         xb, vb = Y * sin(wb * t), Y * wb * cos(wb * t)
         return (v, (F0 * sin(wf * t) - c * (v - vb) - k * (x - xb) + u) / m)
 
+    return rhs
+
+
+def _integrate_loop(rhs, y0, grid, rtol: float, atol: float, step: float):
+    """DOP853 on ``grid`` within :data:`MAX_NFEV` evaluations: ``(x, v, nfev)``, refused unless finite."""
+    from scipy.integrate import solve_ivp
+
+    t_end = float(grid[-1])
     budget = [MAX_NFEV]
     try:
         with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused below
             sol = solve_ivp(
-                _counted(rhs, budget), (0.0, t_end), (x0, v0), method="DOP853", t_eval=grid, rtol=rtol, atol=atol,
+                _counted(rhs, budget), (0.0, t_end), y0, method="DOP853", t_eval=grid, rtol=rtol, atol=atol,
                 max_step=step,
             )  # fmt: skip
     except OverBudget:
@@ -321,17 +362,7 @@ def simulate_controlled(
         raise ParameterError(
             f"t_end = {t_end!r} s: the controlled response overflowed (an unstable loop); allowed a finite response"
         )
-    demand = np.array([_call(controller, ti, xi, vi) for ti, xi, vi in zip(grid, x, v, strict=True)])
-    return ControlledResponse(
-        t=grid,
-        x=x,
-        v=v,
-        u=np.clip(demand, -umax, umax),
-        u_demand=demand,
-        x_base=Y * np.sin(wb * grid),
-        v_base=Y * wb * np.cos(wb * grid),
-        nfev=int(sol.nfev),
-    )
+    return x, v, int(sol.nfev)
 
 
 # ----------------------------------------------------------------------------- metrics

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -330,6 +331,36 @@ def continue_orbits(
     >>> [round(f.omega, 4) for f in b.folds]           # rad/s: the branch turns twice
     [5.1079, 5.0447]
     """
+    d, F0, w0, w1, step, max_points, rtol = _continuation_args(
+        duffing, F0, omega_start, omega_end, step, max_points, rtol
+    )
+    orb = periodic_orbit(d, F0, w0, amplitude_guess=amplitude_guess, rtol=rtol)
+    budget = _Counted(None, 400 * MAX_RHS_EVALUATIONS)
+    a = max(orb.amplitude, 1e-300)
+    scale = np.array([a, a * w0, abs(w1 - w0)])  # physical = scale * scaled
+    lo, hi = min(w0, w1), max(w0, w1)
+    correct = functools.partial(_correct_on_branch, d, F0, rtol, budget, scale, lo - abs(w1 - w0))
+    z = np.array([orb.x0, orb.v0, w0])
+    G, M, amp = _orbit_map(d, F0, z, rtol, budget, events=True)
+    J = _branch_jacobian(d, F0, z, G, M, rtol, budget, scale)
+    t = _branch_tangent(J, np.array([0.0, 0.0, 1.0 if w1 > w0 else -1.0]))
+    pts, folds = _follow_branch(
+        d, F0, z, t, (z.copy(), amp, M.copy()), step, max_points, (lo, hi), rtol, budget, correct
+    )
+    zs = np.array([p[0] for p in pts])
+    mus = np.array([max(abs(m) for m in np.linalg.eigvals(p[2])) for p in pts])
+    return OrbitBranch(
+        omega=zs[:, 2],
+        amplitude=np.array([p[1] for p in pts]),
+        x0=zs[:, 0],
+        v0=zs[:, 1],
+        max_multiplier=mus,
+        folds=tuple(folds),
+    )
+
+
+def _continuation_args(duffing, F0, omega_start, omega_end, step, max_points, rtol):
+    """The checked arguments of :func:`continue_orbits`: ``(d, F0, w0, w1, step, max_points, rtol)``."""
     d = _check_duffing(duffing)
     if d.c <= 0.0:
         raise ParameterError(f"c = {d.c!r} N s/m is out of range: allowed c > 0 N s/m (continuation needs damping)")
@@ -341,54 +372,58 @@ def continue_orbits(
     step = check_real("step", step, low=1e-4, high=0.5)
     max_points = check_int("max_points", max_points, low=10, high=5000)
     rtol = check_real("rtol", rtol, low=1e-12, high=1e-7)
-    orb = periodic_orbit(d, F0, w0, amplitude_guess=amplitude_guess, rtol=rtol)
-    budget = _Counted(None, 400 * MAX_RHS_EVALUATIONS)
-    a = max(orb.amplitude, 1e-300)
-    scale = np.array([a, a * w0, abs(w1 - w0)])  # physical = scale * scaled
-    lo, hi = min(w0, w1), max(w0, w1)
+    return d, F0, w0, w1, step, max_points, rtol
 
-    def jac(z, G, M):
-        """The 2 x 3 Jacobian of the scaled residual at z (physical), from M and a difference in omega."""
-        dw = 1e-7 * z[2]
-        G2, _, _ = _orbit_map(d, F0, z + np.array([0.0, 0.0, dw]), rtol, budget)
-        J = np.column_stack([M - np.eye(2), (G2 - G) / dw]) * scale  # d G / d scaled
-        return J / scale[:2, None]  # rows scaled as the unknowns
 
-    def tangent(J, prev):
-        t = np.cross(J[0], J[1])
-        t /= np.linalg.norm(t)
-        return t if prev is None or np.dot(t, prev) >= 0 else -t
+def _branch_jacobian(d, F0, z, G, M, rtol, budget, scale):
+    """The 2 x 3 Jacobian of the scaled residual at z (physical), from M and a difference in omega."""
+    dw = 1e-7 * z[2]
+    G2, _, _ = _orbit_map(d, F0, z + np.array([0.0, 0.0, dw]), rtol, budget)
+    J = np.column_stack([M - np.eye(2), (G2 - G) / dw]) * scale  # d G / d scaled
+    return J / scale[:2, None]  # rows scaled as the unknowns
 
-    def correct(z0, t0, h):
-        """Newton on G = 0 and t0 . (Z - Z0 - h t0) = 0; returns (z, G, M, J) or None."""
-        zp = z0 + h * t0 * scale
-        z = zp.copy()
-        J = None
-        for it in range(8):
-            G, M, _ = _orbit_map(d, F0, z, rtol, budget)
-            if not (np.all(np.isfinite(G)) and np.all(np.isfinite(M))):
-                return None
-            if it == 0 or J is None:
-                J = jac(z, G, M)
-            else:
-                J[:, :2] = (M - np.eye(2)) * scale[:2] / scale[:2, None]
-            res = np.concatenate([G / scale[:2], [np.dot(t0, (z - zp) / scale)]])
-            if np.max(np.abs(res[:2])) < 1e-10 and abs(res[2]) < 1e-10:
-                return z, G, M, jac(z, G, M), it
-            try:
-                dz = np.linalg.solve(np.vstack([J, t0]), -res)
-            except np.linalg.LinAlgError:
-                return None
-            z = z + dz * scale
-            if not (lo - abs(w1 - w0) < z[2] and z[2] > 0):
-                return None
-        return None
 
-    z = np.array([orb.x0, orb.v0, w0])
-    G, M, amp = _orbit_map(d, F0, z, rtol, budget, events=True)
-    J = jac(z, G, M)
-    t = tangent(J, np.array([0.0, 0.0, 1.0 if w1 > w0 else -1.0]))
-    pts = [(z.copy(), amp, M.copy())]
+def _branch_tangent(J, prev):
+    """The unit null vector of ``J`` (the branch's tangent), oriented along ``prev`` when given."""
+    t = np.cross(J[0], J[1])
+    t /= np.linalg.norm(t)
+    return t if prev is None or np.dot(t, prev) >= 0 else -t
+
+
+def _correct_on_branch(d, F0, rtol, budget, scale, w_floor, z0, t0, h):
+    """Newton on G = 0 and t0 . (Z - Z0 - h t0) = 0; returns (z, G, M, J, iterations) or None.
+
+    ``w_floor`` is the lowest omega (rad/s) a Newton iterate may reach before the step is refused.
+    """
+    zp = z0 + h * t0 * scale
+    z = zp.copy()
+    J = None
+    for it in range(8):
+        G, M, _ = _orbit_map(d, F0, z, rtol, budget)
+        if not (np.all(np.isfinite(G)) and np.all(np.isfinite(M))):
+            return None
+        if it == 0 or J is None:
+            J = _branch_jacobian(d, F0, z, G, M, rtol, budget, scale)
+        else:
+            J[:, :2] = (M - np.eye(2)) * scale[:2] / scale[:2, None]
+        res = np.concatenate([G / scale[:2], [np.dot(t0, (z - zp) / scale)]])
+        if np.max(np.abs(res[:2])) < 1e-10 and abs(res[2]) < 1e-10:
+            return z, G, M, _branch_jacobian(d, F0, z, G, M, rtol, budget, scale), it
+        try:
+            dz = np.linalg.solve(np.vstack([J, t0]), -res)
+        except np.linalg.LinAlgError:
+            return None
+        z = z + dz * scale
+        if not (w_floor < z[2] and z[2] > 0):
+            return None
+    return None
+
+
+def _follow_branch(d, F0, z, t, first, step, max_points, bounds, rtol, budget, correct):
+    """Predictor-corrector steps from ``z`` along ``t`` until omega leaves ``bounds`` or ``max_points`` are
+    reached; returns the points ``(z, amplitude, M)`` (``first`` the point at ``z``) and the folds passed."""
+    lo, hi = bounds
+    pts = [first]
     folds = []
     h = 0.2 * step
     try:
@@ -403,7 +438,7 @@ def continue_orbits(
                     )
                 continue
             zn, Gn, Mn, Jn, its = out
-            tn = tangent(Jn, t)
+            tn = _branch_tangent(Jn, t)
             if np.sign(tn[2]) != np.sign(t[2]) and tn[2] != 0.0:
                 folds.append(_locate_fold(d, F0, z, t, h, correct, rtol, budget))
             _, _, amp = _orbit_map(d, F0, zn, rtol, budget, events=True)
@@ -417,16 +452,7 @@ def continue_orbits(
             f"continue_orbits spent its budget of {budget.limit} right-hand-side evaluations at omega = "
             f"{z[2]:.6g} rad/s ({_rates(d)}): allowed a narrower frequency range or a larger step"
         ) from None
-    zs = np.array([p[0] for p in pts])
-    mus = np.array([max(abs(m) for m in np.linalg.eigvals(p[2])) for p in pts])
-    return OrbitBranch(
-        omega=zs[:, 2],
-        amplitude=np.array([p[1] for p in pts]),
-        x0=zs[:, 0],
-        v0=zs[:, 1],
-        max_multiplier=mus,
-        folds=tuple(folds),
-    )
+    return pts, folds
 
 
 def _locate_fold(d, F0, z, t, h, correct, rtol, budget) -> OrbitFold:

@@ -175,6 +175,36 @@ def train(
     """
     task = _check_task(task)
     seed = check_int("seed", seed, low=0, high=2**32 - 2)
+    opts = _learner_options(method, options)
+    iters, n_ep, n_eval, theta = _checked_budget(task, method, opts, iterations, n_episodes, n_eval, initial_gains)
+    train_seq, eval_seq, algo_seq = np.random.SeedSequence([seed, 14]).spawn(3)
+    states_rng = np.random.default_rng(train_seq)
+    eval_states = sample_initial_states(task, n_eval, np.random.default_rng(eval_seq))
+    episodes, gains_hist, costs, exact = [0], [theta.copy()], [], []
+    c0, e0 = _curve_point(task, theta, eval_states)
+    costs.append(c0)
+    exact.append(e0)
+    learner = _ars_iterations if method == "ars" else _cma_iterations
+    for used, gains in learner(task, theta, opts, iters, n_ep, states_rng, algo_seq):
+        theta = gains
+        episodes.append(episodes[-1] + used)
+        gains_hist.append(theta.copy())
+        c, e = _curve_point(task, theta, eval_states)
+        costs.append(c)
+        exact.append(e)
+    return TrainingResult(
+        policy=LinearPolicy(gains=theta, task=task),
+        method=method,
+        seed=seed,
+        curve_episodes=np.array(episodes),
+        curve_gains=np.array(gains_hist),
+        curve_cost=np.array(costs),
+        curve_exact=np.array(exact),
+    )
+
+
+def _learner_options(method, options) -> dict:
+    """The learner's hyper-parameters: :data:`DEFAULTS` of ``method`` updated with ``options`` (checked names)."""
     if not isinstance(method, str) or method not in METHODS:
         raise ParameterError(f"method = {method!r:.60} is not a learner: allowed one of {METHODS}")
     opts = dict(DEFAULTS[method])
@@ -182,6 +212,11 @@ def train(
     if unknown:
         raise ParameterError(f"options = {sorted(unknown)!r} are not options of {method}: allowed {sorted(opts)}")
     opts.update(options)
+    return opts
+
+
+def _checked_budget(task, method, opts, iterations, n_episodes, n_eval, initial_gains):
+    """``(iterations, n_episodes, n_eval, initial gains)`` checked, and the simulated steps they make up."""
     iters = check_int("iterations", opts["iterations"] if iterations is None else iterations, low=1, high=100_000)
     n_ep = check_int("n_episodes", opts["n_episodes"] if n_episodes is None else n_episodes, low=1, high=100_000)
     n_eval = check_int("n_eval", n_eval, low=1, high=1_000_000)
@@ -198,63 +233,44 @@ def train(
             f"iteration and n_steps = {task.n_steps} make up to {work} simulated steps: allowed at most "
             f"{MAX_EPISODE_STEPS}"
         )
-    train_seq, eval_seq, algo_seq = np.random.SeedSequence([seed, 14]).spawn(3)
-    states_rng = np.random.default_rng(train_seq)
-    eval_states = sample_initial_states(task, n_eval, np.random.default_rng(eval_seq))
-    episodes, gains_hist, costs, exact = [0], [theta.copy()], [], []
-    c0, e0 = _curve_point(task, theta, eval_states)
-    costs.append(c0)
-    exact.append(e0)
+    return iters, n_ep, n_eval, theta
 
-    if method == "ars":
-        n_dir = check_int("n_directions", opts["n_directions"], low=1, high=10_000)
-        top = check_int("top", opts["top"], low=1, high=n_dir)
-        step = check_real("step", opts["step"], low=0.0, low_open=True, unit="N/m")
-        noise = check_real("noise", opts["noise"], low=0.0, low_open=True, unit="N/m")
-        rng = np.random.default_rng(algo_seq)
-        for _ in range(iters):
-            delta = rng.standard_normal((n_dir, 2))
-            cand = np.concatenate([theta + noise * delta, theta - noise * delta])
-            states = sample_initial_states(task, n_ep, states_rng)
-            ret = -_finite_costs(episode_costs(task, cand, states).mean(axis=1), cand)
-            r_plus, r_minus = ret[:n_dir], ret[n_dir:]
-            best = np.argsort(-np.maximum(r_plus, r_minus), kind="stable")[:top]
-            sigma = float(np.std(np.concatenate([r_plus[best], r_minus[best]])))
-            if sigma > 0.0:
-                theta = theta + step / (top * sigma) * ((r_plus[best] - r_minus[best]) @ delta[best])
-            episodes.append(episodes[-1] + 2 * n_dir * n_ep)
-            gains_hist.append(theta.copy())
-            c, e = _curve_point(task, theta, eval_states)
-            costs.append(c)
-            exact.append(e)
-    else:
-        import cma
 
-        popsize = check_int("popsize", opts["popsize"], low=2, high=10_000)
-        sigma0 = check_real("sigma0", opts["sigma0"], low=0.0, low_open=True, unit="N/m")
-        es = cma.CMAEvolutionStrategy(
-            theta,
-            sigma0,
-            {"seed": int(algo_seq.generate_state(1)[0]) % (2**31 - 1) + 1, "popsize": popsize, "verbose": -9,
-             "tolfun": 0.0, "tolx": 0.0, "tolfunhist": 0.0, "tolflatfitness": 10**9, "tolstagnation": 10**9,
-             "maxiter": 10**9, "CMA_diagonal": False},
-        )  # fmt: skip
-        for _ in range(iters):
-            cand = np.asarray(es.ask(), dtype=float)
-            states = sample_initial_states(task, n_ep, states_rng)
-            es.tell(list(cand), list(_finite_costs(episode_costs(task, cand, states).mean(axis=1), cand)))
-            theta = np.asarray(es.mean, dtype=float).copy()
-            episodes.append(episodes[-1] + popsize * n_ep)
-            gains_hist.append(theta.copy())
-            c, e = _curve_point(task, theta, eval_states)
-            costs.append(c)
-            exact.append(e)
-    return TrainingResult(
-        policy=LinearPolicy(gains=theta, task=task),
-        method=method,
-        seed=seed,
-        curve_episodes=np.array(episodes),
-        curve_gains=np.array(gains_hist),
-        curve_cost=np.array(costs),
-        curve_exact=np.array(exact),
-    )
+def _ars_iterations(task, theta, opts, iters, n_ep, states_rng, algo_seq):
+    """Augmented random search (V1-t) from ``theta``: yields each iteration's training episodes and new gains."""
+    n_dir = check_int("n_directions", opts["n_directions"], low=1, high=10_000)
+    top = check_int("top", opts["top"], low=1, high=n_dir)
+    step = check_real("step", opts["step"], low=0.0, low_open=True, unit="N/m")
+    noise = check_real("noise", opts["noise"], low=0.0, low_open=True, unit="N/m")
+    rng = np.random.default_rng(algo_seq)
+    for _ in range(iters):
+        delta = rng.standard_normal((n_dir, 2))
+        cand = np.concatenate([theta + noise * delta, theta - noise * delta])
+        states = sample_initial_states(task, n_ep, states_rng)
+        ret = -_finite_costs(episode_costs(task, cand, states).mean(axis=1), cand)
+        r_plus, r_minus = ret[:n_dir], ret[n_dir:]
+        best = np.argsort(-np.maximum(r_plus, r_minus), kind="stable")[:top]
+        sigma = float(np.std(np.concatenate([r_plus[best], r_minus[best]])))
+        if sigma > 0.0:
+            theta = theta + step / (top * sigma) * ((r_plus[best] - r_minus[best]) @ delta[best])
+        yield 2 * n_dir * n_ep, theta
+
+
+def _cma_iterations(task, theta, opts, iters, n_ep, states_rng, algo_seq):
+    """CMA-ES from ``theta``: yields each generation's training episodes and the distribution mean."""
+    import cma
+
+    popsize = check_int("popsize", opts["popsize"], low=2, high=10_000)
+    sigma0 = check_real("sigma0", opts["sigma0"], low=0.0, low_open=True, unit="N/m")
+    es = cma.CMAEvolutionStrategy(
+        theta,
+        sigma0,
+        {"seed": int(algo_seq.generate_state(1)[0]) % (2**31 - 1) + 1, "popsize": popsize, "verbose": -9,
+         "tolfun": 0.0, "tolx": 0.0, "tolfunhist": 0.0, "tolflatfitness": 10**9, "tolstagnation": 10**9,
+         "maxiter": 10**9, "CMA_diagonal": False},
+    )  # fmt: skip
+    for _ in range(iters):
+        cand = np.asarray(es.ask(), dtype=float)
+        states = sample_initial_states(task, n_ep, states_rng)
+        es.tell(list(cand), list(_finite_costs(episode_costs(task, cand, states).mean(axis=1), cand)))
+        yield popsize * n_ep, np.asarray(es.mean, dtype=float).copy()

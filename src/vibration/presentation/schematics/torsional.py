@@ -71,37 +71,70 @@ def torsional_oscillator(
     """
     fig, (left, right) = figure(1, 2, height=3.7)
     R = 1.3
-    blank(left, "schematic", "schematic", xlim=(-2.2, 2.9), ylim=(-2.35, 2.75))
-    ground(left, -1.4, 1.4, y=-1.95)
-    left.add_patch(Rectangle((-0.09, -1.95), 0.18, 1.95, facecolor=BODY, edgecolor=INK, lw=LW, zorder=1))
-    left.add_patch(Circle((0, 0), R, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
-    left.text(-0.85, 0.3, "$I$", ha="center", va="center", fontsize=10, zorder=5)
-    # the pointer and its rest position; the angle theta
-    theta = 32.0
-    t = math.radians(theta)
-    left.plot([0.62 * R, 1.12 * R], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
-    left.plot([0.62 * R * math.cos(t), R * math.cos(t)], [0.62 * R * math.sin(t), R * math.sin(t)], color=INK,
-              lw=2.2, zorder=3)  # fmt: skip
-    # the angle's arrow, drawn alike on the wheel and on its free-body diagram
-    theta_arrow = {"start_deg": 2.0, "end_deg": theta - 2.0, "color": COORDINATE, "gid": "coordinate:$\\theta$",
-                   "lw": 1.1, "scale": 9.0}  # fmt: skip
-    arc_arrow(left, (0, 0), 0.8 * R, **theta_arrow)
-    left.text(0.8 * R + 0.06, 0.26, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
-    # spiral spring from the axle to the lever, the lever, the push rod, the crank and the motor
-    xe, ye = _spiral(left, 0.2, 0.62, 2.25, 90.0)
-    left.text(-0.45, 0.62, "$\\kappa$", ha="center", va="center", fontsize=TEXT, zorder=5)
+    _draw_wheel(left, R)
+    top = _draw_spring(left, R)
+    _draw_drive(left, R, top)
+    _draw_brake_and_bearing(left, R)
+    _draw_free_body(right)
+    alt = (
+        "A wheel on a spiral spring whose outer end is rocked by a motor through a crank and a push rod, with a "
+        "magnetic brake at its rim, and beside it the wheel alone with the drive torque turning it one way and the "
+        "spring, brake and friction torques turning it back."
+    )
+    remark = _REMARK + _rig_sentence(description, max_angle_rad, encoder_step_rad)
+    return Captioned(fig, _caption(fig), "fig-schematic-torsional", alt, remark=remark)
+
+
+#: The angle the pointer is drawn at, degrees.
+_THETA = 32.0
+
+#: The angle's arrow, drawn alike on the wheel and on its free-body diagram.
+_THETA_ARROW = {"start_deg": 2.0, "end_deg": _THETA - 2.0, "color": COORDINATE, "gid": "coordinate:$\\theta$",
+                "lw": 1.1, "scale": 9.0}  # fmt: skip
+
+
+def _draw_angle(ax, r_in: float, r_rest: float, r_out: float, r_arrow: float, label_y: float) -> None:
+    """The pointer from ``r_in`` to ``r_out`` at the angle theta, its rest position (dashed, out to ``r_rest``) and
+    the angle's arrow at ``r_arrow`` with its label."""
+    t = math.radians(_THETA)
+    ax.plot([r_in, r_rest], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
+    ax.plot([r_in * math.cos(t), r_out * math.cos(t)], [r_in * math.sin(t), r_out * math.sin(t)], color=INK, lw=2.2,
+            zorder=3)  # fmt: skip
+    arc_arrow(ax, (0, 0), r_arrow, **_THETA_ARROW)
+    ax.text(r_arrow + 0.06, label_y, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
+
+
+def _draw_wheel(ax, R: float) -> None:
+    """The schematic's panel, the wheel of radius ``R`` on its post, and its pointer at the angle theta."""
+    blank(ax, "schematic", "schematic", xlim=(-2.2, 2.9), ylim=(-2.35, 2.75))
+    ground(ax, -1.4, 1.4, y=-1.95)
+    ax.add_patch(Rectangle((-0.09, -1.95), 0.18, 1.95, facecolor=BODY, edgecolor=INK, lw=LW, zorder=1))
+    ax.add_patch(Circle((0, 0), R, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
+    ax.text(-0.85, 0.3, "$I$", ha="center", va="center", fontsize=10, zorder=5)
+    _draw_angle(ax, 0.62 * R, 1.12 * R, R, 0.8 * R, 0.26)
+
+
+def _draw_spring(ax, R: float) -> tuple[float, float]:
+    """The spiral spring from the axle and the lever on its outer end; returns the lever's top (the rod's pin)."""
+    xe, ye = _spiral(ax, 0.2, 0.62, 2.25, 90.0)
+    ax.text(-0.45, 0.62, "$\\kappa$", ha="center", va="center", fontsize=TEXT, zorder=5)
     top = (0.0, R + 0.7)
-    left.plot([xe, top[0]], [ye, top[1]], color=INK, lw=2.4, solid_capstyle="round", zorder=4)
+    ax.plot([xe, top[0]], [ye, top[1]], color=INK, lw=2.4, solid_capstyle="round", zorder=4)
+    return top
+
+
+def _draw_drive(ax, R: float, top: tuple[float, float]) -> None:
+    """The motor, its crank at the angle omega t and the push rod from the crank's pin to the lever's ``top``."""
     crank_c, crank_r = (2.2, R + 0.7), 0.32
     pin = (crank_c[0] + crank_r * math.cos(math.radians(150)), crank_c[1] + crank_r * math.sin(math.radians(150)))
-    left.add_patch(Rectangle((1.75, R - 0.3), 0.9, 1.0, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
-    left.text(2.2, R - 0.02, "motor", ha="center", va="center", fontsize=TEXT, zorder=5)
-    left.add_patch(Circle(crank_c, crank_r, facecolor="white", edgecolor=INK, lw=LW, zorder=3))
-    left.plot([top[0], pin[0]], [top[1], pin[1]], color=INK, lw=1.6, zorder=4)
+    ax.add_patch(Rectangle((1.75, R - 0.3), 0.9, 1.0, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
+    ax.text(2.2, R - 0.02, "motor", ha="center", va="center", fontsize=TEXT, zorder=5)
+    ax.add_patch(Circle(crank_c, crank_r, facecolor="white", edgecolor=INK, lw=LW, zorder=3))
+    ax.plot([top[0], pin[0]], [top[1], pin[1]], color=INK, lw=1.6, zorder=4)
     for p, r in ((top, 0.06), (pin, 0.05), (crank_c, 0.04)):
-        left.add_patch(Circle(p, r, facecolor="white", edgecolor=INK, lw=1.0, zorder=5))
+        ax.add_patch(Circle(p, r, facecolor="white", edgecolor=INK, lw=1.0, zorder=5))
     arc_arrow(
-        left,
+        ax,
         crank_c,
         crank_r + 0.14,
         start_deg=20.0,
@@ -111,28 +144,30 @@ def torsional_oscillator(
         lw=1.1,
         scale=9.0,
     )
-    left.text(crank_c[0] + 0.45, crank_c[1] + 0.3, "$\\omega t$", color=COORDINATE, ha="left", va="bottom",
-              fontsize=TEXT)  # fmt: skip
-    # the eddy-current brake astride the rim, and the bearing
-    at = math.radians(225.0)
-    _block(left, (0.93 * R * math.cos(at), 0.93 * R * math.sin(at)), 225.0, 0.55, 0.42, facecolor=OKABE_ITO["grey"],
-           edgecolor=INK, lw=LW, zorder=4)  # fmt: skip
-    left.text(-1.48, -1.0, "$c_\\theta$", ha="right", va="center", fontsize=TEXT)
-    left.add_patch(Circle((0, 0), 0.12, facecolor="white", edgecolor=INK, lw=1.2, zorder=5))
-    left.add_patch(Circle((0, 0), 0.06, facecolor=BODY, edgecolor=INK, lw=1.0, zorder=5))
-    left.plot([0.09, 0.5], [-0.09, -0.58], color=INK, lw=0.7, zorder=5)
-    left.text(0.52, -0.58, "$\\tau_c$", ha="left", va="top", fontsize=TEXT, zorder=5)
+    ax.text(crank_c[0] + 0.45, crank_c[1] + 0.3, "$\\omega t$", color=COORDINATE, ha="left", va="bottom",
+            fontsize=TEXT)  # fmt: skip
 
-    blank(right, "free-body diagram", "free-body diagram of the wheel", xlim=(-2.55, 2.55), ylim=(-2.35, 2.75))
+
+def _draw_brake_and_bearing(ax, R: float) -> None:
+    """The eddy-current brake astride the rim, and the bearing with its dry friction."""
+    at = math.radians(225.0)
+    _block(ax, (0.93 * R * math.cos(at), 0.93 * R * math.sin(at)), 225.0, 0.55, 0.42, facecolor=OKABE_ITO["grey"],
+           edgecolor=INK, lw=LW, zorder=4)  # fmt: skip
+    ax.text(-1.48, -1.0, "$c_\\theta$", ha="right", va="center", fontsize=TEXT)
+    ax.add_patch(Circle((0, 0), 0.12, facecolor="white", edgecolor=INK, lw=1.2, zorder=5))
+    ax.add_patch(Circle((0, 0), 0.06, facecolor=BODY, edgecolor=INK, lw=1.0, zorder=5))
+    ax.plot([0.09, 0.5], [-0.09, -0.58], color=INK, lw=0.7, zorder=5)
+    ax.text(0.52, -0.58, "$\\tau_c$", ha="left", va="top", fontsize=TEXT, zorder=5)
+
+
+def _draw_free_body(ax) -> None:
+    """The free-body diagram: the wheel alone, its angle, and the four torques on it."""
+    blank(ax, "free-body diagram", "free-body diagram of the wheel", xlim=(-2.55, 2.55), ylim=(-2.35, 2.75))
     Rf = 1.05
-    right.add_patch(Circle((0, 0), Rf, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
-    right.add_patch(Circle((0, 0), 0.08, facecolor="white", edgecolor=INK, lw=1.2, zorder=3))
-    right.text(-0.45, 0.5, "$I$", ha="center", va="center", fontsize=10, zorder=5)
-    right.plot([0.1, 0.95 * Rf], [0.0, 0.0], color=INK, lw=0.9, ls="--", zorder=3)
-    right.plot([0.1 * math.cos(t), Rf * math.cos(t)], [0.1 * math.sin(t), Rf * math.sin(t)], color=INK, lw=2.2,
-               zorder=3)  # fmt: skip
-    arc_arrow(right, (0, 0), 0.7 * Rf, **theta_arrow)
-    right.text(0.7 * Rf + 0.06, 0.2, "$\\theta$", color=COORDINATE, ha="left", va="center", fontsize=TEXT, zorder=5)
+    ax.add_patch(Circle((0, 0), Rf, facecolor=BODY, edgecolor=INK, lw=LW, zorder=2))
+    ax.add_patch(Circle((0, 0), 0.08, facecolor="white", edgecolor=INK, lw=1.2, zorder=3))
+    ax.text(-0.45, 0.5, "$I$", ha="center", va="center", fontsize=10, zorder=5)
+    _draw_angle(ax, 0.1, 0.95 * Rf, Rf, 0.7 * Rf, 0.2)
     ra = Rf + 0.28
     torques = (
         (r"$\tau_0\sin\omega t$", 60.0, 120.0, (0.0, ra + 0.2), "center", "bottom"),
@@ -141,10 +176,13 @@ def torsional_oscillator(
         (r"$\tau_c\,\mathrm{sgn}\,\dot\theta$", 205.0, 155.0, (-ra - 0.2, 0.0), "right", "center"),
     )
     for label, a0, a1, at_xy, ha, va in torques:
-        arc_arrow(right, (0, 0), ra, start_deg=a0, end_deg=a1, color=FORCE, gid="force:" + label)
-        right.text(*at_xy, label, color=FORCE, ha=ha, va=va, fontsize=TEXT, zorder=5)
+        arc_arrow(ax, (0, 0), ra, start_deg=a0, end_deg=a1, color=FORCE, gid="force:" + label)
+        ax.text(*at_xy, label, color=FORCE, ha=ha, va=va, fontsize=TEXT, zorder=5)
 
-    caption = (
+
+def _caption(fig) -> str:
+    """The figure's caption: the equation of motion and what each panel shows."""
+    return (
         r"The real oscillator of chapter 12, a torsional wheel: $I\ddot\theta + c_\theta\dot\theta + "
         r"\tau_c\,\mathrm{sgn}\,\dot\theta + \kappa\theta = \tau_0\sin\omega t$. "
         + sentence_panels(
@@ -158,24 +196,20 @@ def torsional_oscillator(
             ],
         )
     )
-    remark = (
-        "The wheel (moment of inertia $I$, kg m²) turns on a bearing; the spiral spring (torsional stiffness "
-        "$\\kappa$, N m/rad) joins its axle to a lever, which a push rod from the motor's eccentric rocks, winding "
-        "the spring's outer end ($\\omega$ in rad/s, $t$ in s). The magnetic brake astride the rim damps the wheel "
-        "viscously ($c_\\theta$, N m s/rad); the bearing adds dry friction of torque $\\tau_c$ (N m). The angle "
-        "$\\theta$ (rad) is the pointer's turn from rest. In Newton's form for a turning body, each torque about the "
-        "axle (N m) is drawn as it acts for positive $\\theta$ and $\\dot\\theta$, and $I\\ddot\\theta$, their sum, is "
-        "not drawn: the drive, passed on by the rocked spring, turns the wheel forward; the spring, the brake and "
-        "the bearing's Coulomb friction turn it back; the weight and the bearing's reaction act through the axle "
-        "and have no moment about it. Divided by $I$, this is the chapter's model with $\\omega_n^2 = \\kappa/I$, "
-        "$2\\zeta\\omega_n = c_\\theta/I$ and the friction angle $\\theta_f = \\tau_c/\\kappa$ (the spring's resting "
-        "angle $\\theta_0$ taken as zero); the drive there is the measured drive angle $\\theta_d(t)$ times the gain "
-        "$G$, the torque $\\kappa G \\theta_d(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily."
-        + _rig_sentence(description, max_angle_rad, encoder_step_rad)
-    )
-    alt = (
-        "A wheel on a spiral spring whose outer end is rocked by a motor through a crank and a push rod, with a "
-        "magnetic brake at its rim, and beside it the wheel alone with the drive torque turning it one way and the "
-        "spring, brake and friction torques turning it back."
-    )
-    return Captioned(fig, caption, "fig-schematic-torsional", alt, remark=remark)
+
+
+#: The remark's account of the rig and its torques (the rig's data follow it, :func:`_rig_sentence`).
+_REMARK = (
+    "The wheel (moment of inertia $I$, kg m²) turns on a bearing; the spiral spring (torsional stiffness "
+    "$\\kappa$, N m/rad) joins its axle to a lever, which a push rod from the motor's eccentric rocks, winding "
+    "the spring's outer end ($\\omega$ in rad/s, $t$ in s). The magnetic brake astride the rim damps the wheel "
+    "viscously ($c_\\theta$, N m s/rad); the bearing adds dry friction of torque $\\tau_c$ (N m). The angle "
+    "$\\theta$ (rad) is the pointer's turn from rest. In Newton's form for a turning body, each torque about the "
+    "axle (N m) is drawn as it acts for positive $\\theta$ and $\\dot\\theta$, and $I\\ddot\\theta$, their sum, is "
+    "not drawn: the drive, passed on by the rocked spring, turns the wheel forward; the spring, the brake and "
+    "the bearing's Coulomb friction turn it back; the weight and the bearing's reaction act through the axle "
+    "and have no moment about it. Divided by $I$, this is the chapter's model with $\\omega_n^2 = \\kappa/I$, "
+    "$2\\zeta\\omega_n = c_\\theta/I$ and the friction angle $\\theta_f = \\tau_c/\\kappa$ (the spring's resting "
+    "angle $\\theta_0$ taken as zero); the drive there is the measured drive angle $\\theta_d(t)$ times the gain "
+    "$G$, the torque $\\kappa G \\theta_d(t)$, nearly $\\tau_0\\sin\\omega t$ while the eccentric turns steadily."
+)
