@@ -6,8 +6,7 @@ formatter that drifts from them fails. Years, run numbers and counts are integer
 pass every rule; a count grouped by narrow no-break spaces (U+202F) must be grouped in threes from the
 right. Inline maths (``$...$``) is typeset, not a number format, and is left out.
 
-The chapters listed in :data:`CHECKED` are those that use the shared format today; chapters 0 and 12
-are folded in later.
+Every chapter and the front page are checked (:data:`CHECKED`).
 """
 
 from __future__ import annotations
@@ -20,7 +19,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-CHECKED = ("01", "02", "03", "04", "05", "06", "07", "08", "09", "10", "11")
+CHECKED = ("00", "01", "02", "03", "04", "05", "06", "07", "08", "09", "10", "11", "12")
 
 #: (rule, pattern) pairs; each match is a violation.
 RULES = [
@@ -59,6 +58,27 @@ def _fence_body(block: str) -> str:
     return caption + "\n" + body.rsplit("\n", 1)[0]
 
 
+#: "value ± error" with both numbers written out (not a complex number "a ± bi", not a power of ten factored
+#: out, which the rule reads as its mantissas).
+_PAIR = re.compile(r"(?<![\w.×⁰¹²³⁴⁵⁶⁷⁸⁹])(−?\d+(?:\.\d+)?) ± (\d+(?:\.\d+)?)(?![\w.×])")
+
+
+def _uncertainty_violations(seen: str) -> list[str]:
+    """Pairs whose error has more figures than one (two when it starts with 1) or whose value stops at
+    another decimal place than its error."""
+    bad = []
+    for m in _PAIR.finditer(seen):
+        value, error = m.group(1), m.group(2)
+        figures = error.replace(".", "").lstrip("0")
+        if not figures or set(figures) == {"0"}:
+            continue  # an exact error, "± 0"
+        too_many = len(figures) > 2 or (len(figures) == 2 and figures[0] != "1" and not figures.endswith("0"))
+        places = [len(x.partition(".")[2]) for x in (value, error)]
+        if too_many or places[0] != places[1]:
+            bad.append(seen[max(0, m.start() - 40) : m.end() + 40].replace("\n", " "))
+    return bad
+
+
 def violations(text: str) -> list[tuple[str, str]]:
     """(rule, context) of every violation in ``text``."""
     seen = _visible(text)
@@ -66,6 +86,7 @@ def violations(text: str) -> list[tuple[str, str]]:
     for rule, pattern in RULES:
         for m in pattern.finditer(seen):
             out.append((rule, seen[max(0, m.start() - 40) : m.end() + 40].replace("\n", " ")))
+    out += [("an uncertainty not written value ± error to one decimal place", c) for c in _uncertainty_violations(seen)]
     return out
 
 
@@ -83,6 +104,9 @@ def test_the_rules_catch_what_they_should():
         "9600\u202f00 steps",
         "96\u202f0000 steps",
         "1\u202f234 samples",
+        "0.0449 ± 0.001 per run",
+        "0.0011 ± 0.00078",
+        "16 ± 0.054",
     ]
     for text in bad:
         assert violations(text), text
@@ -94,6 +118,8 @@ def test_the_rules_catch_what_they_should():
         "<td>11\u202f804</td><td>20\u202f000</td>",
         "0.000512 s",
         "0.1037 ± 0.0003 s⁻¹",
+        "0.0449 ± 0.0010, 12 ± 1, −2.47 ± 0.13, 1 ± 0",
+        "poles −0.05000 ± 4.472i",
         "ζ ≈ 0.78",
         "Runge-Kutta 4(5)",
         "$10^{-6}$",

@@ -200,6 +200,35 @@ def pm(value: float, error: float) -> str:
     return _pm_fixed(v, e, place)
 
 
+def error(value: float) -> str:
+    """An error alone, rounded as :func:`pm` rounds it (one figure, two when it starts with 1): a second,
+    systematic error written after ``pm``'s.
+
+    >>> error(1.43), error(0.27), error(0.0149), error(9.7)
+    ('1.4', '0.3', '0.015', '10')
+    """
+    e = abs(float(value))
+    if not math.isfinite(e) or e == 0:
+        return sig(e)
+    return sig(_decimals_of(e)[1], 2)
+
+
+def pm_figures(value: float, error: float) -> tuple[int, int]:
+    """The significant figures :func:`pm` gives a value and its error, for a pair whose two numbers are written
+    apart (each a machine-dependent :class:`Approx`, say).
+
+    >>> pm_figures(0.10372, 0.00031), pm_figures(4.4762, 0.0049), pm_figures(0.004, 0.057)
+    ((4, 1), (4, 1), (1, 1))
+    """
+    e = abs(float(error))
+    if not (math.isfinite(e) and e > 0 and math.isfinite(float(value))):
+        return 4, 2
+    place, rounded = _decimals_of(e)
+    v = abs(float(value))
+    value_figures = math.floor(math.log10(v)) - place + 1 if v > 0 else 1
+    return max(1, value_figures), math.floor(math.log10(rounded)) - place + 1
+
+
 def _pm_fixed(v: float, e: float, place: int) -> str:
     decimals = max(0, -place)
     vr = round(v, -place) if place > 0 else v

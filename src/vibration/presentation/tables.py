@@ -43,7 +43,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .numbers import Approx, integer, plain_width, sig
+from .numbers import Approx, column, integer, plain_width, sig
 from .numbers import bound as _bound
 
 TABLES_ENV = "VIBRATION_TABLES_DIR"
@@ -64,7 +64,8 @@ class Missing:
 class Composite:
     """A cell that joins words and numbers, some of them machine-dependent (:class:`Approx`).
 
-    ``parts`` holds text and ``(Approx, digits)`` pairs; the reader sees one line of text, the plain form
+    ``parts`` holds text and ``(Approx, digits)`` pairs, each number written as a table cell (``digits``
+    significant figures, trailing zeros kept); the reader sees one line of text, the plain form
     writes each Approx with its tolerance (``⟪value tolerance⟫``), and its width is fixed, as an Approx cell's.
 
     >>> c = Composite(parts=("a = ", (Approx(value=0.012345, rtol=0.1), 3), " ± ", (Approx(value=0.0021, factor=3), 2)))
@@ -80,14 +81,16 @@ class Composite:
         return "".join(p if isinstance(p, str) else number(*p) for p in self.parts)
 
     def __str__(self) -> str:
-        return self._each(lambda a, d: sig(a.number(), d))
+        return self._each(lambda a, d: column(a.number(), d))
 
     def plain(self) -> str:
         return self._each(lambda a, d: a.plain())
 
     def html(self) -> str:
         """The reader's form: text escaped, ``_sub`` as a subscript (``θ_f``), each Approx in its span."""
-        return "".join(_sub_html(p) if isinstance(p, str) else p[0].html(sig(p[0].number(), p[1])) for p in self.parts)
+        return "".join(
+            _sub_html(p) if isinstance(p, str) else p[0].html(column(p[0].number(), p[1])) for p in self.parts
+        )
 
     def width(self) -> int:
         return sum(len(p) if isinstance(p, str) else plain_width(p[0]) for p in self.parts)

@@ -16,6 +16,7 @@ from vibration.chapters.real_oscillator.study import LAWS, RealOscillatorStudy, 
 from vibration.physics.lab import FreeDecayFit, equivalent_zeta
 from vibration.presentation.captions import Captioned
 from vibration.presentation.narrative import g
+from vibration.presentation.numbers import pm
 from vibration.presentation.style import OKABE_ITO, figure, place_legend
 
 SETTING_COLORS = ("blue", "vermillion", "bluish green", "orange", "reddish purple", "sky blue", "black")
@@ -114,8 +115,8 @@ def current_figure(st: RealOscillatorStudy) -> Captioned | None:
     place_legend(ax)
     caption = (
         f"Viscous damping ratio of the free decays against the brake current at {len(cur)} settings, with the "
-        f"eddy-current law ζ = ζ₀ + k I² fitted by weighted least squares: k = {cl['k']:.3g} ± "
-        f"{cl['k_stderr']:.2g} per A², χ² = {cl['chi2']:.2g} on {cl['dof']} degrees of freedom."
+        f"eddy-current law ζ = ζ₀ + k I² fitted by weighted least squares: k = {pm(cl['k'], cl['k_stderr'])} "
+        f"per A², χ² = {g(cl['chi2'], 2)} on {cl['dof']} degrees of freedom."
     )
     return Captioned(fig, caption, "fig-real-current", "Damping ratio rising with brake current, with a parabola.")
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import re
 
+from vibration.presentation import numbers
 from vibration.presentation.narrative import g
 from vibration.presentation.tables import Missing
 
@@ -26,10 +27,15 @@ def angle(x: float, digits: int = 3) -> str:
 
 
 def pm(x: float, s: float, digits: int = 3) -> str:
-    """x ± s for a sentence (the error with two figures)."""
+    """x ± s in the book's format (:func:`vibration.presentation.numbers.pm`: the error to one figure, two when
+    it starts with 1, the value to its last digit); ``x`` alone, to ``digits`` figures, when ``s`` is unknown.
+
+    >>> pm(0.0449, 0.00101), pm(0.00113, 0.00078), pm(16.0, 0.054), pm(2.5, float("nan"))
+    ('0.0449 ± 0.0010', '0.0011 ± 0.0008', '16.00 ± 0.05', '2.5')
+    """
     if not math.isfinite(s):
         return g(x, digits)
-    return f"{g(x, digits)} ± {g(s, 2)}"
+    return numbers.pm(x, s)
 
 
 def ascii_detail(text: str) -> str:

@@ -16,6 +16,7 @@ from vibration.chapters.real_oscillator.notation import NONE, ascii_detail, deg,
 from vibration.chapters.real_oscillator.study import RealOscillatorStudy, best_prediction
 from vibration.chapters.real_oscillator.verdicts import claims
 from vibration.presentation.narrative import g
+from vibration.presentation.numbers import pm_figures
 from vibration.presentation.tables import Approx, Column, Composite, Missing, Table, columns
 
 #: Tolerances of the power law's machine-dependent digits (declared for the regression comparison): ω_n and the
@@ -162,7 +163,7 @@ def steadiness_table(st: RealOscillatorStudy) -> Table:
             "run": f"{d.run.session}/{d.run.run}",
             "brake": d.run.brake,
             "omega": d.omega,
-            "drift": f"{g(100 * d.steady.drift, 2)} ± {g(100 * d.steady.drift_stderr, 1)}",
+            "drift": pm(100 * d.steady.drift, 100 * d.steady.drift_stderr, 2),
             "t90": d.steady.t90,
             "label": _label(d),
             "fdrift": 100 * d.frequency_drift,
@@ -287,17 +288,17 @@ def pooled_table(st: RealOscillatorStudy) -> Table:
             def num(value, digits, *, loose=loose, **tolerance):
                 return (Approx(value=value, **tolerance), digits) if loose else g(value, digits)
 
+            def pair(value, error, *, loose=loose, **tolerance):  # value ± error as the book writes it (numbers.pm)
+                if not loose:
+                    return (pm(value, error),)
+                fv, fe = pm_figures(value, error)
+                return (num(value, fv, **tolerance), " ± ", num(error, fe, factor=LOOSE_FACTOR))
+
             parts = []
             for k, v in p.coefficients.items():
                 factor = LOOSE_UNRESOLVED if k == "power" else LOOSE_FACTOR
-                parts += ["; " if parts else "", f"{_SYMBOL[k]} = ", num(v, 3, factor=factor), " ± "]
-                parts += [num(p.stderr[_KEY[k]], 2, factor=LOOSE_FACTOR)]
-            omega = (
-                "",
-                num(p.mean["omega_n"], 4, rtol=LOOSE_VALUE),
-                " ± ",
-                num(p.stderr["omega_n"], 2, factor=LOOSE_FACTOR),
-            )
+                parts += ["; " if parts else "", f"{_SYMBOL[k]} = ", *pair(v, p.stderr[_KEY[k]], factor=factor)]
+            omega = ("", *pair(p.mean["omega_n"], p.stderr["omega_n"], rtol=LOOSE_VALUE))
             rows.append(
                 {
                     "brake": s.brake,

@@ -15,6 +15,7 @@ from vibration.chapters.real_oscillator.notation import angle, pm
 from vibration.chapters.real_oscillator.study import RealOscillatorStudy, omega_n
 from vibration.physics.paper import load_claims
 from vibration.presentation.narrative import g
+from vibration.presentation.numbers import error
 from vibration.presentation.tables import Table, columns
 
 VERDICTS = ("supported", "partly supported", "not supported", "not testable with these data")
@@ -104,7 +105,7 @@ def _c09(st, quote) -> Claim:
             return f"{pm(a, se, 3)} ({where})"
         if math.isfinite(sys):
             return (
-                f"{pm(a, se, 3)} ± {g(sys, 2)} systematic ({where}; static amplitude from session {static_session}, "
+                f"{pm(a, se, 3)} ± {error(sys)} systematic ({where}; static amplitude from session {static_session}, "
                 "the systematic error from the session-to-session spread)"
             )
         return (
