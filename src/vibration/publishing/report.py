@@ -344,10 +344,8 @@ def _subcommand(name: str, argv: list[str]) -> int:
     return getattr(importlib.import_module(module), function)(argv)
 
 
-def main(argv: list[str] | None = None) -> int:
-    argv = list(sys.argv[1:] if argv is None else argv)
-    if argv and argv[0] in SUBCOMMANDS:  # every subcommand is dispatched here
-        return _subcommand(argv[0], argv[1:])
+def _argument_parser() -> argparse.ArgumentParser:
+    """The runner's options (the subcommands have their own)."""
     parser = argparse.ArgumentParser(prog="python -m vibration.report", description=__doc__.split("\n\n")[0])
     parser.add_argument("chapters", nargs="*", help="chapters to run (default: all)")
     parser.add_argument(
@@ -381,40 +379,58 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--check-lab", metavar="DIR", help="validate a lab data folder (runs.csv, logger files) and exit"
     )
-    args = parser.parse_args(protect_negative_values(argv))
+    return parser
+
+
+def _list_chapters(chapters: list[Chapter]) -> None:
+    """Print each chapter's name and its parameters (type, default, help)."""
+    for ch in chapters:
+        print(ch.name)
+        for name, info in ch.params.items():
+            print(f"  {name}: {info['inferred_type_name']} = {info['default']}  # {info['help']}")
+
+
+def _run_command(args: argparse.Namespace) -> int:
+    """Do what the parsed options ask: check lab data, write a new chapter, list, re-execute in place, or run."""
+    if args.check_lab:
+        from ..physics.lab.manifest import check_lab_data
+
+        print(check_lab_data(args.check_lab).summary())
+        return 0
+    if args.new_chapter:
+        for path in new_chapter(args.new_chapter, project_root(), part=args.part):
+            print(f"wrote {path.relative_to(project_root())}")
+        return 0
+    chapters = select(discover(), args.chapters)
+    if args.list:
+        _list_chapters(chapters)
+        return 0
+    if args.in_place:
+        if args.parameter:
+            raise ParameterError("--in-place re-executes the references with their defaults: -p is not allowed")
+        execute_in_place(chapters)
+        return 0
+    values = check_parameters(chapters, [tuple(p) for p in args.parameter])
+    run(
+        chapters,
+        values,
+        Path(args.out).resolve(),
+        jobs=args.jobs,
+        pdf=not args.no_pdf,
+        cache=not args.no_cache,
+        scheduler=args.scheduler,
+    )
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv and argv[0] in SUBCOMMANDS:  # every subcommand is dispatched here
+        return _subcommand(argv[0], argv[1:])
+    args = _argument_parser().parse_args(protect_negative_values(argv))
     previous = signal.signal(signal.SIGTERM, terminate)
     try:
-        if args.check_lab:
-            from ..physics.lab.manifest import check_lab_data
-
-            print(check_lab_data(args.check_lab).summary())
-            return 0
-        if args.new_chapter:
-            for path in new_chapter(args.new_chapter, project_root(), part=args.part):
-                print(f"wrote {path.relative_to(project_root())}")
-            return 0
-        chapters = select(discover(), args.chapters)
-        if args.list:
-            for ch in chapters:
-                print(ch.name)
-                for name, info in ch.params.items():
-                    print(f"  {name}: {info['inferred_type_name']} = {info['default']}  # {info['help']}")
-            return 0
-        if args.in_place:
-            if args.parameter:
-                raise ParameterError("--in-place re-executes the references with their defaults: -p is not allowed")
-            execute_in_place(chapters)
-            return 0
-        values = check_parameters(chapters, [tuple(p) for p in args.parameter])
-        run(
-            chapters,
-            values,
-            Path(args.out).resolve(),
-            jobs=args.jobs,
-            pdf=not args.no_pdf,
-            cache=not args.no_cache,
-            scheduler=args.scheduler,
-        )
+        return _run_command(args)
     except ParameterError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
@@ -426,7 +442,6 @@ def main(argv: list[str] | None = None) -> int:
         return 130
     finally:
         signal.signal(signal.SIGTERM, previous)
-    return 0
 
 
 if __name__ == "__main__":

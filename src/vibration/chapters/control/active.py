@@ -32,7 +32,7 @@ from vibration.physics.control import (
     simulate_controlled,
     stabilising_velocity_gain,
 )
-from vibration.physics.exact import exact_response, steady_state
+from vibration.physics.exact import Response, exact_response, steady_state
 from vibration.physics.model import Oscillator, SineForce, check_int
 
 #: The active designs compared on equal footing: PD, LQR, a PD with the PID's K_p and K_d, the PID.
@@ -216,6 +216,92 @@ def _move_run(scheme: str, run: PIDResponse, x_ref: float, ts: float) -> MoveRun
     )
 
 
+def _gains(p: Params, design: LQRResult) -> dict[str, tuple[float, float, float]]:
+    """``(K_x, K_i, K_v)`` of each design in :data:`DESIGNS`."""
+    return {
+        "PD": (p.kp, 0.0, p.kd),
+        "PD2": (p.pid_kp, 0.0, p.pid_kd),
+        "LQR": (float(design.K[0]), 0.0, float(design.K[1])),
+        "PID": (p.pid_kp, p.pid_ki, p.pid_kd),
+    }
+
+
+def _responses(osc: Oscillator, force: SineForce, p: Params, t: np.ndarray, passive: Response, gains: dict):
+    """Displacement, force and velocity of every run (passive first), and the PD loop's simulation error."""
+    xs, us, vs = {}, {}, {}
+    xs["passive"], us["passive"], vs["passive"] = passive.x, np.zeros_like(t), passive.v
+    for name in ("PD", "PD2", "LQR"):
+        kx, _, kv = gains[name]
+        r = exact_response(pd_oscillator(osc, kx, kv), force, t)
+        xs[name], us[name], vs[name] = r.x, -kx * r.x - kv * r.v, r.v
+    sim_pd = simulate_controlled(osc, lambda _t, x, v: -p.kp * x - p.kd * v, force, t_end=p.t_end, n_points=p.n_points)
+    pd_error = float(np.max(np.abs(sim_pd.x - xs["PD"])))
+
+    reg = pid_response(
+        osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, u_max=p.u_max, anti_windup="clamping", t_end=p.t_end,
+        n_points=p.n_points,
+    )  # fmt: skip
+    xs["PID"], us["PID"], vs["PID"] = reg.x, reg.u, reg.v
+    return xs, us, vs, pd_error
+
+
+def _designs(osc: Oscillator, force: SineForce, p: Params, gains: dict, metrics: dict) -> dict[str, Design]:
+    """The designs of :data:`DESIGNS` on equal footing: amplitude, force against its floor, loop costs."""
+    designs = {}
+    for name in DESIGNS:
+        kx, ki, kv = gains[name]
+        X = loop_amplitude(osc, force, kx, ki=ki, kd=kv)
+        designs[name] = Design(
+            name=name,
+            kx=kx,
+            ki=ki,
+            kv=kv,
+            amplitude=X,
+            u_rms=metrics[name].rms_u,
+            floor=float(force_floor(osc, force, X)),
+            costs=loop_costs(osc, kx, kv, ki=ki, omega=p.omega_res),
+        )
+    return designs
+
+
+def _moves(osc: Oscillator, force: SineForce, p: Params, ts: float) -> dict[str, MoveRun]:
+    """The PID set-point move under each integrator treatment of :data:`MOVE_SCHEMES`."""
+    moves = {}
+    for scheme in MOVE_SCHEMES:
+        limit = {} if scheme == "unlimited" else {"u_max": p.u_max, "anti_windup": scheme}
+        run = pid_response(
+            osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, x_ref=p.x_ref, t_end=p.t_end, n_points=p.n_points, **limit
+        )
+        moves[scheme] = _move_run(scheme, run, p.x_ref, ts)
+    return moves
+
+
+def _hold(osc: Oscillator, force: SineForce, p: Params, ts: float) -> Hold:
+    """Whether the force limit holds the set point, and the clamped move to a set point it can hold."""
+    needed = hold_force(osc, force, p.x_ref)
+    x_max = largest_holdable_reference(osc, force, p.u_max)
+    x_ok, ok_run = math.nan, None
+    if math.isfinite(x_max) and x_max > 0.0:
+        x_ok = FEASIBLE_FRACTION * x_max * (1.0 if p.x_ref >= 0.0 else -1.0)
+        run = pid_response(
+            osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, u_max=p.u_max, anti_windup="clamping", x_ref=x_ok,
+            t_end=p.t_end, n_points=p.n_points,
+        )  # fmt: skip
+        ok_run = _move_run("clamping", run, x_ok, ts)
+    return Hold(needed=needed, feasible=needed <= p.u_max, x_max=x_max, x_ok=x_ok, run=ok_run)
+
+
+def _flutter_cases(flutter: Oscillator, kd_star: float) -> tuple[FlutterCase, ...]:
+    """The flutter plant's poles without feedback and at 0.9, 1 and 1.1 times the stabilising gain."""
+    cases = []
+    for label, kv in (("no feedback", 0.0), ("0.9", 0.9 * kd_star), ("1", kd_star), ("1.1", 1.1 * kd_star)):
+        poles = np.roots([flutter.m, flutter.c + kv, flutter.k]).astype(complex)
+        cases.append(
+            FlutterCase(label=label, kv=kv, re=float(np.max(poles.real)), im=float(np.max(np.abs(poles.imag))))
+        )
+    return tuple(cases)
+
+
 def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> ActiveStudy:
     """Passive, PD, LQR and PID at the forcing, the PID move under a force limit, the LQR trade-off.
 
@@ -237,79 +323,21 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
     osc, force = Oscillator(m=p.m, c=p.c_nominal, k=p.k), SineForce(F0=p.F0, omega=p.omega_res)
     t = np.linspace(0.0, p.t_end, p.n_points)
     ts = t_steady(p.t_end, p.omega_res)
-    xs, us, vs = {}, {}, {}
-
-    ex = exact_response(osc, force, t)
-    xs["passive"], us["passive"], vs["passive"] = ex.x, np.zeros_like(t), ex.v
-
+    passive = exact_response(osc, force, t)
     design = lqr(osc, p.q_x, p.q_v, r=p.r_lqr)
     loops = {
         "PD": _closed_loop("PD", osc, p.kp, p.kd, force),
         "LQR": _closed_loop("LQR", osc, float(design.K[0]), float(design.K[1]), force),
     }
-    gains = {
-        "PD": (p.kp, 0.0, p.kd),
-        "PD2": (p.pid_kp, 0.0, p.pid_kd),
-        "LQR": (float(design.K[0]), 0.0, float(design.K[1])),
-        "PID": (p.pid_kp, p.pid_ki, p.pid_kd),
-    }
-    for name in ("PD", "PD2", "LQR"):
-        kx, _, kv = gains[name]
-        r = exact_response(pd_oscillator(osc, kx, kv), force, t)
-        xs[name], us[name], vs[name] = r.x, -kx * r.x - kv * r.v, r.v
-    sim_pd = simulate_controlled(osc, lambda _t, x, v: -p.kp * x - p.kd * v, force, t_end=p.t_end, n_points=p.n_points)
-    pd_error = float(np.max(np.abs(sim_pd.x - xs["PD"])))
-
-    reg = pid_response(
-        osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, u_max=p.u_max, anti_windup="clamping", t_end=p.t_end,
-        n_points=p.n_points,
-    )  # fmt: skip
-    xs["PID"], us["PID"], vs["PID"] = reg.x, reg.u, reg.v
+    gains = _gains(p, design)
+    xs, us, vs, pd_error = _responses(osc, force, p, t, passive, gains)
     metrics = {name: response_metrics(t, xs[name], us[name], v_rel=vs[name], t_steady=ts) for name in xs}
-
-    designs = {}
-    for name in DESIGNS:
-        kx, ki, kv = gains[name]
-        X = loop_amplitude(osc, force, kx, ki=ki, kd=kv)
-        designs[name] = Design(
-            name=name,
-            kx=kx,
-            ki=ki,
-            kv=kv,
-            amplitude=X,
-            u_rms=metrics[name].rms_u,
-            floor=float(force_floor(osc, force, X)),
-            costs=loop_costs(osc, kx, kv, ki=ki, omega=p.omega_res),
-        )
-
-    moves = {}
-    for scheme in MOVE_SCHEMES:
-        limit = {} if scheme == "unlimited" else {"u_max": p.u_max, "anti_windup": scheme}
-        run = pid_response(
-            osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, x_ref=p.x_ref, t_end=p.t_end, n_points=p.n_points, **limit
-        )
-        moves[scheme] = _move_run(scheme, run, p.x_ref, ts)
-
-    needed = hold_force(osc, force, p.x_ref)
-    x_max = largest_holdable_reference(osc, force, p.u_max)
-    x_ok, ok_run = math.nan, None
-    if math.isfinite(x_max) and x_max > 0.0:
-        x_ok = FEASIBLE_FRACTION * x_max * (1.0 if p.x_ref >= 0.0 else -1.0)
-        run = pid_response(
-            osc, force, p.pid_kp, ki=p.pid_ki, kd=p.pid_kd, u_max=p.u_max, anti_windup="clamping", x_ref=x_ok,
-            t_end=p.t_end, n_points=p.n_points,
-        )  # fmt: skip
-        ok_run = _move_run("clamping", run, x_ok, ts)
-    hold = Hold(needed=needed, feasible=needed <= p.u_max, x_max=x_max, x_ok=x_ok, run=ok_run)
-
+    designs = _designs(osc, force, p, gains, metrics)
+    moves = _moves(osc, force, p, ts)
+    hold = _hold(osc, force, p, ts)
     flutter = Oscillator(m=p.m, c=p.c_flutter, k=p.k)
     kd_star = stabilising_velocity_gain(flutter)
-    cases = []
-    for label, kv in (("no feedback", 0.0), ("0.9", 0.9 * kd_star), ("1", kd_star), ("1.1", 1.1 * kd_star)):
-        poles = np.roots([flutter.m, flutter.c + kv, flutter.k]).astype(complex)
-        cases.append(
-            FlutterCase(label=label, kv=kv, re=float(np.max(poles.real)), im=float(np.max(np.abs(poles.imag))))
-        )
+    cases = _flutter_cases(flutter, kd_star)
 
     return ActiveStudy(
         osc=osc,
@@ -333,5 +361,5 @@ def active_study(params: Params | None = None, *, n_r: int = 61, **values) -> Ac
         hold=hold,
         flutter=flutter,
         kd_star=kd_star,
-        flutter_cases=tuple(cases),
+        flutter_cases=cases,
     )

@@ -108,6 +108,66 @@ def _findings(osc, ratios, closed, sweeps, c_max, Y) -> SemiActiveFindings:
     )
 
 
+def _closed_forms(osc: Oscillator, p: Params, ratios: np.ndarray, w: np.ndarray) -> dict[str, np.ndarray]:
+    """Closed-form transmissibility: soft and firm passive dampers, ideal skyhook, the best passive envelope."""
+    return {
+        "soft": passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + p.c_sa_min, k=p.k), w),
+        "firm": passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + p.c_sa_max, k=p.k), w),
+        "skyhook": skyhook_transmissibility(osc, p.c_sky, w),
+        "envelope": np.where(ratios < math.sqrt(2.0), 1.0, 1.0 / np.abs(ratios**2 - 1.0 + (ratios == 1.0))),
+    }
+
+
+def _runs(osc: Oscillator, p: Params, Y: float, damper: MRDamper) -> dict[str, SemiActiveResponse]:
+    """Time runs of every law at the forcing frequency: soft, firm, skyhook, on-off, clipped, MR."""
+    c_min, c_max = p.c_sa_min, p.c_sa_max
+    runs = {}
+    for name, law, cmin, cmax in (
+        ("soft", "passive", c_min, c_min),
+        ("firm", "passive", c_max, c_max),
+        ("skyhook", "skyhook", c_min, c_max),
+        ("on-off", "on-off", c_min, c_max),
+        ("clipped", "clipped", c_min, c_max),
+        ("mr", "mr", c_min, c_max),
+    ):
+        runs[name] = semi_active_response(
+            osc, law, p.omega_res, Y=Y, c_sky=p.c_sky, c_min=cmin, c_max=cmax, damper=damper, t_end=p.t_end,
+            n_points=p.n_points,
+        )  # fmt: skip
+    return runs
+
+
+def _power_run(sky: SemiActiveResponse, c_sky: float, ts: float) -> dict[str, float]:
+    """The skyhook run's mean powers over its steady tail (trapezoidal rule), W."""
+    tail = sky.t >= ts
+    tt = sky.t[tail]
+    p_rel = (sky.f * (sky.v - sky.v_base))[tail]
+    span = tt[-1] - tt[0]
+
+    def mean(y):
+        return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(tt))) / span
+
+    return {
+        "removed": mean(c_sky * sky.v[tail] ** 2),
+        "net": mean(p_rel),
+        "supplied": mean(np.maximum(p_rel, 0.0)),
+        "gross": mean(np.abs(p_rel)),
+    }
+
+
+def _closed_run_error(osc: Oscillator, p: Params, runs: dict, Y: float, ts: float) -> dict[str, float]:
+    """The soft and skyhook runs' steady max|x|/Y against the closed form, relative."""
+    omega = p.omega_res
+    closed_run_error = {}
+    for name, exact in (
+        ("soft", float(passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + p.c_sa_min, k=p.k), omega))),
+        ("skyhook", float(skyhook_transmissibility(osc, p.c_sky, omega))),
+    ):
+        r = runs[name]
+        closed_run_error[name] = abs(float(np.max(np.abs(r.x[r.t >= ts]))) / Y / exact - 1.0)
+    return closed_run_error
+
+
 def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy:
     """Base excitation ``Y = F0 / k`` (so that ``k Y = F0``): sweeps and runs of every law.
 
@@ -127,57 +187,20 @@ def semi_active_study(params: Params | None = None, **values) -> SemiActiveStudy
     wn = osc.natural_frequency
     ratios = np.unique(np.concatenate([np.geomspace(0.3, 4.0, p.n_sweep), [1.0, math.sqrt(2.0)]]))
     w = ratios * wn
-    closed = {
-        "soft": passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + c_min, k=p.k), w),
-        "firm": passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + c_max, k=p.k), w),
-        "skyhook": skyhook_transmissibility(osc, p.c_sky, w),
-        "envelope": np.where(ratios < math.sqrt(2.0), 1.0, 1.0 / np.abs(ratios**2 - 1.0 + (ratios == 1.0))),
-    }
+    closed = _closed_forms(osc, p, ratios, w)
     scale = (Y / SPENCER_1997_STROKE, p.f_mr / SPENCER_1997.yield_force)
     damper = SPENCER_1997.scaled(*scale)
     kw = {"c_sky": p.c_sky, "c_min": c_min, "c_max": c_max}
     sweeps = {law: semi_active_sweep(osc, law, w, Y=Y, damper=damper, **kw) for law in ("on-off", "clipped", "mr")}
-    runs = {}
-    for name, law, cmin, cmax in (
-        ("soft", "passive", c_min, c_min),
-        ("firm", "passive", c_max, c_max),
-        ("skyhook", "skyhook", c_min, c_max),
-        ("on-off", "on-off", c_min, c_max),
-        ("clipped", "clipped", c_min, c_max),
-        ("mr", "mr", c_min, c_max),
-    ):
-        runs[name] = semi_active_response(
-            osc, law, omega, Y=Y, c_sky=p.c_sky, c_min=cmin, c_max=cmax, damper=damper, t_end=p.t_end,
-            n_points=p.n_points,
-        )  # fmt: skip
+    runs = _runs(osc, p, Y, damper)
     ts = t_steady(p.t_end, omega)
     metrics = {name: response_metrics(r.t, r.x, r.f, v_rel=r.v - r.v_base, t_steady=ts) for name, r in runs.items()}
     refine = {
         spp: float(semi_active_sweep(osc, "on-off", np.array([wn]), Y=Y, steps_per_period=spp, **kw).peak[0])
         for spp in REFINE_STEPS
     }
-    sky = runs["skyhook"]
-    tail = sky.t >= ts
-    tt = sky.t[tail]
-    p_rel = (sky.f * (sky.v - sky.v_base))[tail]
-    span = tt[-1] - tt[0]
-
-    def mean(y):
-        return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(tt))) / span
-
-    power_run = {
-        "removed": mean(p.c_sky * sky.v[tail] ** 2),
-        "net": mean(p_rel),
-        "supplied": mean(np.maximum(p_rel, 0.0)),
-        "gross": mean(np.abs(p_rel)),
-    }
-    closed_run_error = {}
-    for name, exact in (
-        ("soft", float(passive_transmissibility(Oscillator(m=p.m, c=p.c_nominal + c_min, k=p.k), omega))),
-        ("skyhook", float(skyhook_transmissibility(osc, p.c_sky, omega))),
-    ):
-        r = runs[name]
-        closed_run_error[name] = abs(float(np.max(np.abs(r.x[r.t >= ts]))) / Y / exact - 1.0)
+    power_run = _power_run(runs["skyhook"], p.c_sky, ts)
+    closed_run_error = _closed_run_error(osc, p, runs, Y, ts)
     worst = max(float(np.max(runs[n].f * (runs[n].v - runs[n].v_base))) for n in ("on-off", "clipped"))
     return SemiActiveStudy(
         osc=osc,

@@ -290,24 +290,19 @@ def _delay_theory(asset, p, fit, t, force, sd, threshold, drift) -> dict:
     return out
 
 
-def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStudy:
-    """Chapter 10 on one parameter record: identification, its coverage, the monitored asset and its alarms.
-
-    ``params`` is the chapter's validated record (the force band and its rms, the sampling step, the record
-    lengths, the noise, the faults, the seed), or the values are given as keyword arguments and checked by
-    the schema. Every record the study reads is synthetic, drawn from that seed. Returns the frozen
-    :class:`DigitalTwinStudy`.
-    """
-    p = params if params is not None else Params.from_values(values)
-    asset = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
-    band = (F_LOW, p.f_max)
-    # the sine check: rms F_rms at the band's upper edge, sampled at dt over 50 s
+def _checks(asset: Oscillator, p: Params) -> dict:
+    """The discretisation check: a sine of rms F_rms at the band's upper edge, sampled at dt over 50 s."""
     n_check = int(round(CHECK_WINDOW / p.dt)) + 1
     checks_raw = discretisation_checks(
         asset, math.sqrt(2.0) * p.F_rms, 2.0 * math.pi * p.f_max, t_end=CHECK_WINDOW, n=n_check
     )
-    checks = {name: (value, bound, value < ROUNDING) for name, (value, bound) in checks_raw.items()}
+    return {name: (value, bound, value < ROUNDING) for name, (value, bound) in checks_raw.items()}
 
+
+def _identification(
+    asset: Oscillator, p: Params, band
+) -> tuple[Measurements, Identification, FrequencyResponse, FrequencyEstimate, FrequencyEstimate]:
+    """The test record, its fit and FRF; the half-power and circle-fit estimates from a longer record."""
     test = simulated_test(asset, p.t_record, p.dt, noise=p.noise, seed=p.seed, band=band, rms=p.F_rms)
     fit = identify(test.t, test.force, x=test.x)
     frf = frf_estimate(test.t, test.force, x=test.x)
@@ -315,15 +310,26 @@ def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStu
         asset, FRF_FACTOR * p.t_record, p.dt, noise=p.noise, seed=p.seed + 5, band=band, rms=p.F_rms
     )
     half_power, circle = frequency_estimates(frf_estimate(long_test.t, long_test.force, x=long_test.x))
+    return test, fit, frf, half_power, circle
 
+
+def _coverages(
+    asset: Oscillator, p: Params, band
+) -> tuple[CoverageExperiment, tuple[CoverageExperiment, ...], tuple[CoverageExperiment, ...]]:
+    """The coverage experiment at the parameters, and the sweeps over the noise level and the record length."""
     coverage = _coverage(asset, p, band, p.t_record, p.noise, p.runs, 0)
     by_noise = tuple(_coverage(asset, p, band, p.t_record, s, p.sweep_runs, 1 + i) for i, s in enumerate(SWEEP_NOISES))
     by_length = tuple(
         _coverage(asset, p, band, f * p.t_record, p.noise, p.sweep_runs, 1 + len(SWEEP_NOISES) + j)
         for j, f in enumerate(SWEEP_LENGTHS)
     )
-    assumptions, agree = _assumptions(asset, p, band, coverage)
+    return coverage, by_noise, by_length
 
+
+def _monitoring(
+    asset: Oscillator, p: Params, band, fit: Identification
+) -> tuple[FaultScenario, Measurements, StiffnessTrack, ChangeDetection]:
+    """The fault scenario, its monitored record, the Kalman stiffness track and the CUSUM alarm on it."""
     scenario = fault_scenario(p.k, p.t_monitor, p.dt, decline_rate=p.decline_rate, drop=p.drop)
     monitored = synthetic_measurements(
         asset,
@@ -335,8 +341,11 @@ def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStu
     )
     track = track_stiffness(monitored.t, monitored.force, x=monitored.x, reference=fit, walk=WALK)
     alarm = detect_change(monitored.t, monitored.force, x=monitored.x, reference=fit, threshold=p.threshold)
-    kalman = _kalman(asset, p, band, fit, fit.sigma)
+    return scenario, monitored, track, alarm
 
+
+def _detection(asset: Oscillator, p: Params, band, fit: Identification) -> tuple[dict, cusum.RunLengths, dict]:
+    """The detection experiments, the healthy records' run lengths and each fault's alarm-time theory."""
     detection: dict[str, DetectionExperiment] = detection_study(
         asset,
         fit,
@@ -355,7 +364,27 @@ def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStu
     t_mon, force_mon, _, sd_mon, increments, n_cal = _healthy_increments(asset, p, band, fit, p.noise)
     run_lengths = _run_lengths(p, increments, drift, n_cal)
     delay_theory = _delay_theory(asset, p, fit, t_mon, force_mon, sd_mon, float(p.threshold), drift)
+    return detection, run_lengths, delay_theory
 
+
+def digital_twin_study(params: Params | None = None, **values) -> DigitalTwinStudy:
+    """Chapter 10 on one parameter record: identification, its coverage, the monitored asset and its alarms.
+
+    ``params`` is the chapter's validated record (the force band and its rms, the sampling step, the record
+    lengths, the noise, the faults, the seed), or the values are given as keyword arguments and checked by
+    the schema. Every record the study reads is synthetic, drawn from that seed. Returns the frozen
+    :class:`DigitalTwinStudy`.
+    """
+    p = params if params is not None else Params.from_values(values)
+    asset = Oscillator(m=p.m, c=p.c_nominal, k=p.k)
+    band = (F_LOW, p.f_max)
+    checks = _checks(asset, p)
+    test, fit, frf, half_power, circle = _identification(asset, p, band)
+    coverage, by_noise, by_length = _coverages(asset, p, band)
+    assumptions, agree = _assumptions(asset, p, band, coverage)
+    scenario, monitored, track, alarm = _monitoring(asset, p, band, fit)
+    kalman = _kalman(asset, p, band, fit, fit.sigma)
+    detection, run_lengths, delay_theory = _detection(asset, p, band, fit)
     grid = estimate_grid(asset, dt=p.dt, seed=p.seed, band=band, rms=p.F_rms)
     return DigitalTwinStudy(
         params=p,

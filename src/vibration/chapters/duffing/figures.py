@@ -251,50 +251,59 @@ def paper_figure(study: DuffingStudy) -> Captioned:
 # ------------------------------------------------------------------------------------------- chaos
 
 
-def chaos_figure(study: DuffingStudy) -> Captioned:
-    """Poincaré sections of Ueda's oscillator, the running largest Lyapunov exponent by both methods, and
-    Ueda's chaos map (the pooled exponent over forcing frequency and amplitude)."""
-    fig, (ax1, ax2, ax3) = figure(1, 3, height=3.9, layout="constrained")
+def _draw_sections(ax, study: DuffingStudy, chaos_col: str, per_col: str) -> None:
+    """Left panel: the Poincaré sections of the chaotic (dots) and the periodic (circles) forcing."""
     p = study.params
     strobe = r"2\pi n" if p.omega_ueda == 1.0 else rf"2\pi n/{p.omega_ueda:g}"
-    chaos_col, per_col = OKABE_ITO["black"], case_style("hardening")["color"]
-    ax1.plot(study.section_chaos[:, 0], study.section_chaos[:, 1], ".", ms=1.2, color=chaos_col,
-             label=f"$F$ = {p.F0_ueda:g} N")  # fmt: skip
-    ax1.plot(study.section_periodic[:, 0], study.section_periodic[:, 1], "o", ms=6, color=per_col,
-             label=f"$F$ = {p.F0_ueda_periodic:g} N")  # fmt: skip
-    ax1.set_xlabel(rf"$x$ at $t = {strobe}$ (m)")
-    ax1.set_ylabel(rf"$\dot x$ at $t = {strobe}$ (m/s)")
-    ax1.legend(loc="lower left", bbox_to_anchor=(0.0, 1.02, 1.0, 0.1), ncol=2, borderaxespad=0.0, frameon=False)
+    ax.plot(study.section_chaos[:, 0], study.section_chaos[:, 1], ".", ms=1.2, color=chaos_col,
+            label=f"$F$ = {p.F0_ueda:g} N")  # fmt: skip
+    ax.plot(study.section_periodic[:, 0], study.section_periodic[:, 1], "o", ms=6, color=per_col,
+            label=f"$F$ = {p.F0_ueda_periodic:g} N")  # fmt: skip
+    ax.set_xlabel(rf"$x$ at $t = {strobe}$ (m)")
+    ax.set_ylabel(rf"$\dot x$ at $t = {strobe}$ (m/s)")
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.02, 1.0, 0.1), ncol=2, borderaxespad=0.0, frameon=False)
+
+
+def _draw_running(ax, study: DuffingStudy, chaos_col: str, per_col: str) -> None:
+    """Middle panel: the running largest exponent of both forcings, QR solid and Benettin dashed."""
     styles = {"qr": "-", "benettin": "--"}
     for which, col in (("chaotic", chaos_col), ("periodic", per_col)):
         for method in ("qr", "benettin"):
             t, lam = study.running(which, method)
-            ax2.plot(t, lam, color=col, ls=styles[method], lw=1.0)
-    ax2.axhline(0.0, color="k", lw=0.6)
-    ax2.set_xscale("log")
-    ax2.set_xlabel(r"averaging time (s)")
-    ax2.set_ylabel(r"largest exponent $\lambda_1$ (1/s)")
+            ax.plot(t, lam, color=col, ls=styles[method], lw=1.0)
+    ax.axhline(0.0, color="k", lw=0.6)
+    ax.set_xscale("log")
+    ax.set_xlabel(r"averaging time (s)")
+    ax.set_ylabel(r"largest exponent $\lambda_1$ (1/s)")
 
+
+def _draw_chaos_map(fig, ax, study: DuffingStudy, chaos_col: str, per_col: str) -> None:
+    """Right panel: Ueda's chaos map (the pooled exponent over forcing frequency and amplitude), both forcings
+    circled."""
+    p = study.params
     cmap = study.chaos_map
     top = max(float(np.max(np.abs(cmap.exponent))), 1e-12)
-    mesh = ax3.pcolormesh(cmap.omegas, cmap.forces, cmap.exponent, shading="nearest", cmap="RdBu_r", vmin=-top,
-                          vmax=top)  # fmt: skip
-    fig.colorbar(mesh, ax=ax3, location="top", label=r"$\lambda_1$ (1/s)")
-    ax3.plot([p.omega_ueda], [p.F0_ueda], "o", ms=6, mfc="none", color=chaos_col)
-    ax3.plot([p.omega_ueda], [p.F0_ueda_periodic], "o", ms=6, mfc="none", color=per_col)
-    ax3.set_xlabel(r"frequency $\omega_U$ (rad/s)")
-    ax3.set_ylabel(r"amplitude $F_U$ (N)")
+    mesh = ax.pcolormesh(cmap.omegas, cmap.forces, cmap.exponent, shading="nearest", cmap="RdBu_r", vmin=-top,
+                         vmax=top)  # fmt: skip
+    fig.colorbar(mesh, ax=ax, location="top", label=r"$\lambda_1$ (1/s)")
+    ax.plot([p.omega_ueda], [p.F0_ueda], "o", ms=6, mfc="none", color=chaos_col)
+    ax.plot([p.omega_ueda], [p.F0_ueda_periodic], "o", ms=6, mfc="none", color=per_col)
+    ax.set_xlabel(r"frequency $\omega_U$ (rad/s)")
+    ax.set_ylabel(r"amplitude $F_U$ (N)")
 
-    left, middle, right = (w[:1].upper() + w[1:] for w in panel_words(fig)[:3])
-    n_chaos, n_per = study.section_points("chaotic"), study.section_points("periodic")
 
-    def section(n: int, total: int) -> str:
-        if n == 1:
-            return "a single point: a periodic motion of the forcing period"
-        if n < total:
-            return f"{integer(n)} points: a periodic motion of {integer(n)} forcing periods"
-        return f"{integer(n)} distinct points spread over a folded set, no repeating pattern"
+def _section_words(n: int, total: int) -> str:
+    """What a Poincaré section of ``n`` distinct points out of ``total`` shows."""
+    if n == 1:
+        return "a single point: a periodic motion of the forcing period"
+    if n < total:
+        return f"{integer(n)} points: a periodic motion of {integer(n)} forcing periods"
+    return f"{integer(n)} distinct points spread over a folded set, no repeating pattern"
 
+
+def _chaos_remark(study: DuffingStudy, n_chaos: int, n_per: int) -> str:
+    """What the chaos figure shows: the sections' points, whether the two methods agree, the map's grid."""
+    p, cmap = study.params, study.chaos_map
     dot = f"a {COLOUR_WORD['hardening']} circle" if n_per == 1 else f"{COLOUR_WORD['hardening']} circles"
     gaps = {w: study.method_gap(w) for w in ("chaotic", "periodic")}
     both = all(g < COINCIDE for g in gaps.values())
@@ -308,6 +317,40 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
             for w, f in (("chaotic", p.F0_ueda), ("periodic", p.F0_ueda_periodic))
         )
     )
+    return (
+        f"The section at F = {p.F0_ueda:g} N holds {_section_words(n_chaos, len(study.section_chaos))}; at "
+        f"F = {p.F0_ueda_periodic:g} N it holds {_section_words(n_per, len(study.section_periodic))} ({dot}). The "
+        f"exponent's estimates take the colours of the forcings; {coincide}. The map computes the exponent over "
+        f"{integer(cmap.n_periods)} periods at each point of a {integer(cmap.omegas.size)} × "
+        f"{integer(cmap.forces.size)} grid of forcings; red (a positive exponent) means chaotic motion."
+    )
+
+
+def _chaos_alt(study: DuffingStudy, n_chaos: int, n_per: int) -> str:
+    """The chaos figure's alt text: the sections' sizes and the sign each running exponent settles to."""
+    final = {w: study.running(w, "qr")[1][-1] for w in ("chaotic", "periodic")}
+    return (
+        f"Left, a Poincaré section of {integer(n_chaos)} points for the stronger forcing and {integer(n_per)} for "
+        "the weaker one; middle, running estimates of the largest Lyapunov exponent against averaging time, settling "
+        + ("above zero" if final["chaotic"] > 0 else "below zero")
+        + " for the stronger forcing and "
+        + ("below zero" if final["periodic"] < 0 else "above zero")
+        + " for the weaker one; right, a colour map of the exponent over forcing frequency and amplitude."
+    )
+
+
+def chaos_figure(study: DuffingStudy) -> Captioned:
+    """Poincaré sections of Ueda's oscillator, the running largest Lyapunov exponent by both methods, and
+    Ueda's chaos map (the pooled exponent over forcing frequency and amplitude)."""
+    fig, (ax1, ax2, ax3) = figure(1, 3, height=3.9, layout="constrained")
+    p = study.params
+    chaos_col, per_col = OKABE_ITO["black"], case_style("hardening")["color"]
+    _draw_sections(ax1, study, chaos_col, per_col)
+    _draw_running(ax2, study, chaos_col, per_col)
+    _draw_chaos_map(fig, ax3, study, chaos_col, per_col)
+
+    left, middle, right = (w[:1].upper() + w[1:] for w in panel_words(fig)[:3])
+    n_chaos, n_per = study.section_points("chaotic"), study.section_points("periodic")
     forcing = r"F\cos t" if p.omega_ueda == 1.0 else rf"F\cos({p.omega_ueda:g}t)"
     caption = (
         rf"Ueda's oscillator $\ddot x + {p.c_ueda:g}\,\dot x + x^3 = {forcing}$. {left}: Poincaré sections (state "
@@ -316,20 +359,6 @@ def chaos_figure(study: DuffingStudy) -> Captioned:
         f"axis), by variational equations with QR (solid) and by two trajectories (dashed). {right}: the exponent over "
         "forcing frequency and amplitude (red positive, blue negative); circles mark both forcings."
     )
-    remark = (
-        f"The section at F = {p.F0_ueda:g} N holds {section(n_chaos, len(study.section_chaos))}; at "
-        f"F = {p.F0_ueda_periodic:g} N it holds {section(n_per, len(study.section_periodic))} ({dot}). The "
-        f"exponent's estimates take the colours of the forcings; {coincide}. The map computes the exponent over "
-        f"{integer(cmap.n_periods)} periods at each point of a {integer(cmap.omegas.size)} × "
-        f"{integer(cmap.forces.size)} grid of forcings; red (a positive exponent) means chaotic motion."
-    )
-    final = {w: study.running(w, "qr")[1][-1] for w in ("chaotic", "periodic")}
-    alt = (
-        f"Left, a Poincaré section of {integer(n_chaos)} points for the stronger forcing and {integer(n_per)} for "
-        "the weaker one; middle, running estimates of the largest Lyapunov exponent against averaging time, settling "
-        + ("above zero" if final["chaotic"] > 0 else "below zero")
-        + " for the stronger forcing and "
-        + ("below zero" if final["periodic"] < 0 else "above zero")
-        + " for the weaker one; right, a colour map of the exponent over forcing frequency and amplitude."
-    )
+    remark = _chaos_remark(study, n_chaos, n_per)
+    alt = _chaos_alt(study, n_chaos, n_per)
     return Captioned(fig, caption, "fig-duffing-chaos", alt, remark=remark)

@@ -120,6 +120,86 @@ def frequency_caption(facts: PanelFacts) -> str:
     return f"Steady-state magnification{scale}; dot: operating point; {facts.natural}: ω<sub>n</sub>."
 
 
+def _checked_values(m, k, F0, c, omega, t_end, n_points) -> tuple[dict, float]:
+    """The panel's values, checked, with the damping slider's range (``c_min``, ``c_max``, N s/m) as the script
+    reads them (``data-params``); and the top of the forcing-frequency slider, rad/s."""
+    m = check_real("m", m, low=0.0, low_open=True, unit="kg")
+    k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
+    F0 = check_real("F0", F0, low=0.0, unit="N")
+    c_crit = 2.0 * math.sqrt(k) * math.sqrt(m)
+    c = check_real("c", c, low=0.0, low_open=True, unit="N s/m")
+    c_min = min(C_MIN, c)  # the slider always reaches C_MIN and the starting value
+    c_max = max(C_MAX, 2.0 * c_crit, c)
+    omega = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
+    n_points = check_int("n_points", n_points, low=2, high=100_001)
+    wn = math.sqrt(k / m)
+    w_max = math.ceil(max(3.0 * wn, 1.5 * omega) * 10.0) / 10.0  # rad/s, on the 0.1 grid
+    params = {
+        "m": m,
+        "c": c,
+        "k": k,
+        "F0": F0,
+        "omega": omega,
+        "t_end": t_end,
+        "n_points": n_points,
+        "c_min": c_min,
+        "c_max": c_max,
+    }
+    return params, w_max
+
+
+def _controls_html(pid: str, omega: float, c: float, w_max: float, c_pos: int) -> str:
+    """The panel's controls: the forcing-frequency slider, the logarithmic damping slider and the reset button."""
+    e = html.escape
+    return f"""<div class="vib-controls">
+<label for="{e(pid)}-omega">forcing frequency ω</label>
+<input type="range" class="vib-omega" id="{e(pid)}-omega" min="{OMEGA_STEP:g}" max="{w_max:g}" \
+step="{OMEGA_STEP:g}" value="{omega!r}" aria-describedby="{e(pid)}-omega-out">
+<output class="vib-omega-out" id="{e(pid)}-omega-out" for="{e(pid)}-omega"></output>
+<label for="{e(pid)}-c">damping c (log scale)</label>
+<input type="range" class="vib-logc" id="{e(pid)}-c" min="0" max="{C_STEPS}" step="1" value="{c_pos}" \
+aria-describedby="{e(pid)}-c-out">
+<output class="vib-c-out" id="{e(pid)}-c-out" for="{e(pid)}-c"></output>
+<span></span><button type="button" class="vib-reset">reset ω = {omega:g} rad/s, c = {c:g} N s/m</button>
+</div>
+"""
+
+
+def _body_html(facts: PanelFacts) -> str:
+    """The panel's plots (time and frequency, with their captions) and its readout table, to be filled by the script."""
+    readout = [
+        ("natural frequency ω<sub>n</sub>", "vib-r-wn", "regime", "vib-r-regime"),
+        ("damping ratio ζ", "vib-r-zeta", "frequency ratio ω/ω<sub>n</sub>", "vib-r-ratio"),
+        ("steady-state amplitude", "vib-r-amp", "magnification X/(F<sub>0</sub>/k)", "vib-r-mag"),
+        ("peak |x| in the window", "vib-r-peak", "2 % settling time", "vib-r-settle"),
+        ("velocity amplitude ω|X|", "vib-r-vamp", "peak |v| in the window", "vib-r-peakv"),
+    ]
+    rows = "\n".join(
+        f'<tr><th scope="row">{a}</th><td class="{ca}"></td><th scope="row">{b}</th><td class="{cb}"></td></tr>'
+        for a, ca, b, cb in readout
+    )
+    return f"""<div class="vib-body">
+<figure class="vib-fig-time">
+<svg class="vib-time" viewBox="0 0 640 270" role="img" \
+aria-label="displacement x in m against time t in s"></svg>
+<svg class="vib-vel" viewBox="0 0 640 270" role="img" \
+aria-label="velocity v in m/s against time t in s"></svg>
+<figcaption>{time_caption(facts)}</figcaption>
+</figure>
+<figure class="vib-fig-freq">
+<svg class="vib-freq" viewBox="0 0 340 270" role="img" \
+aria-label="magnification against forcing frequency in rad/s"></svg>
+<figcaption>{frequency_caption(facts)}</figcaption>
+</figure>
+<table class="vib-readout">
+{rows}
+<tr><th scope="row">steady state reached in the window</th><td class="vib-r-settled" colspan="3"></td></tr>
+</table>
+</div>
+"""
+
+
 def slider_panel_html(
     m: float = 1.0,
     k: float = 20.0,
@@ -171,44 +251,12 @@ def slider_panel_html(
     >>> frag.startswith('<div class="vib-panel"'), "http" in frag
     (True, False)
     """
-    m = check_real("m", m, low=0.0, low_open=True, unit="kg")
-    k = check_real("k", k, low=0.0, low_open=True, unit="N/m")
-    F0 = check_real("F0", F0, low=0.0, unit="N")
-    c_crit = 2.0 * math.sqrt(k) * math.sqrt(m)
-    c = check_real("c", c, low=0.0, low_open=True, unit="N s/m")
-    c_min = min(C_MIN, c)  # the slider always reaches C_MIN and the starting value
-    c_max = max(C_MAX, 2.0 * c_crit, c)
-    omega = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
-    t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
-    n_points = check_int("n_points", n_points, low=2, high=100_001)
-    wn = math.sqrt(k / m)
-    w_max = math.ceil(max(3.0 * wn, 1.5 * omega) * 10.0) / 10.0  # rad/s, on the 0.1 grid
-    params = {
-        "m": m,
-        "c": c,
-        "k": k,
-        "F0": F0,
-        "omega": omega,
-        "t_end": t_end,
-        "n_points": n_points,
-        "c_min": c_min,
-        "c_max": c_max,
-    }
+    params, w_max = _checked_values(m, k, F0, c, omega, t_end, n_points)
+    m, k, F0, c, omega, t_end = (params[name] for name in ("m", "k", "F0", "c", "omega", "t_end"))
     pid = checked_panel_id(panel_id) or _ids.new(params)
-    c_pos = round(C_STEPS * math.log(c / c_min) / math.log(c_max / c_min))
+    c_pos = round(C_STEPS * math.log(c / params["c_min"]) / math.log(params["c_max"] / params["c_min"]))
     e = html.escape
     facts = panel_facts()
-    readout = [
-        ("natural frequency ω<sub>n</sub>", "vib-r-wn", "regime", "vib-r-regime"),
-        ("damping ratio ζ", "vib-r-zeta", "frequency ratio ω/ω<sub>n</sub>", "vib-r-ratio"),
-        ("steady-state amplitude", "vib-r-amp", "magnification X/(F<sub>0</sub>/k)", "vib-r-mag"),
-        ("peak |x| in the window", "vib-r-peak", "2 % settling time", "vib-r-settle"),
-        ("velocity amplitude ω|X|", "vib-r-vamp", "peak |v| in the window", "vib-r-peakv"),
-    ]
-    rows = "\n".join(
-        f'<tr><th scope="row">{a}</th><td class="{ca}"></td><th scope="row">{b}</th><td class="{cb}"></td></tr>'
-        for a, ca, b, cb in readout
-    )
     return f"""<div class="vib-panel" id="{e(pid)}" data-params="{e(json.dumps(params))}" \
 data-styles="{e(json.dumps(STYLES))}">
 {panel_assets("vibration.chapters.explore", "sliders.js", "sliders.css", kit="vib")}\
@@ -218,35 +266,7 @@ window 0 to {t_end:g} s</h3>
 your browser from the closed form (steady state plus transient). Here only ω, c and reset are controls; \
 m, k, F<sub>0</sub>, the window and the RK45 overlay need the running notebook. The damping slider is logarithmic.</p>
 <noscript>This panel needs JavaScript to draw its plots.</noscript>
-<div class="vib-controls">
-<label for="{e(pid)}-omega">forcing frequency ω</label>
-<input type="range" class="vib-omega" id="{e(pid)}-omega" min="{OMEGA_STEP:g}" max="{w_max:g}" \
-step="{OMEGA_STEP:g}" value="{omega!r}" aria-describedby="{e(pid)}-omega-out">
-<output class="vib-omega-out" id="{e(pid)}-omega-out" for="{e(pid)}-omega"></output>
-<label for="{e(pid)}-c">damping c (log scale)</label>
-<input type="range" class="vib-logc" id="{e(pid)}-c" min="0" max="{C_STEPS}" step="1" value="{c_pos}" \
-aria-describedby="{e(pid)}-c-out">
-<output class="vib-c-out" id="{e(pid)}-c-out" for="{e(pid)}-c"></output>
-<span></span><button type="button" class="vib-reset">reset ω = {omega:g} rad/s, c = {c:g} N s/m</button>
-</div>
-<div class="vib-body">
-<figure class="vib-fig-time">
-<svg class="vib-time" viewBox="0 0 640 270" role="img" \
-aria-label="displacement x in m against time t in s"></svg>
-<svg class="vib-vel" viewBox="0 0 640 270" role="img" \
-aria-label="velocity v in m/s against time t in s"></svg>
-<figcaption>{time_caption(facts)}</figcaption>
-</figure>
-<figure class="vib-fig-freq">
-<svg class="vib-freq" viewBox="0 0 340 270" role="img" \
-aria-label="magnification against forcing frequency in rad/s"></svg>
-<figcaption>{frequency_caption(facts)}</figcaption>
-</figure>
-<table class="vib-readout">
-{rows}
-<tr><th scope="row">steady state reached in the window</th><td class="vib-r-settled" colspan="3"></td></tr>
-</table>
-</div>
+{_controls_html(pid, omega, c, w_max, c_pos)}{_body_html(facts)}\
 <script>window.vibrationSliders.mount(document.getElementById({json.dumps(pid)}));</script>
 </div>
 """

@@ -174,6 +174,25 @@ class Explorer(widgets.VBox):
         check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
         t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
         self.n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
+        self._start_state()
+        self._build_sliders(osc, force)
+        self._build_fields(osc, force, t_end, show_rk45)
+
+        self.figure = self._build_figure()
+        self._canvas = self.figure.canvas
+
+        super().__init__(children=[widgets.HBox([self._controls(), self.readout]), self.image])
+        self.add_class("vibration-explorer")
+
+        for w in (self.omega_slider, self.c_slider, self.m_text, self.k_text, self.F0_text, self.t_end_text):
+            w.observe(self._on_change, names="value")
+        self.rk45_checkbox.observe(self._on_toggle, names="value")
+        if not self.update():  # pragma: no cover - the inputs were validated above
+            raise ParameterError(self.error)
+
+    # ------------------------------------------------------------------ controls
+    def _start_state(self) -> None:
+        """No error, no readout yet, no draws counted, no cached background."""
         self.error: str | None = None
         self.values: dict = {}
         self.n_full_draws = 0
@@ -183,6 +202,8 @@ class Explorer(widgets.VBox):
         self._dirty = True
         self._active = False
 
+    def _build_sliders(self, osc: Oscillator, force: SineForce) -> None:
+        """The forcing-frequency slider (with its Hz label) and the logarithmic damping slider (with its zeta label)."""
         top, step = omega_range(osc.natural_frequency, force.omega)
         slider = {"continuous_update": True, "style": {"description_width": "10.5em"}}
         self.omega_slider = widgets.FloatSlider(
@@ -210,6 +231,9 @@ class Explorer(widgets.VBox):
             **slider,
         )
         self.zeta_label = widgets.HTML(layout=widgets.Layout(width="9em"))
+
+    def _build_fields(self, osc: Oscillator, force: SineForce, t_end: float, show_rk45: bool) -> None:
+        """The typed values (m, k, F0, t_end), the RK45 checkbox, the readout and the figure's image."""
         small = widgets.Layout(width="13em")
         text_style = {"description_width": "5.5em"}
         self.m_text = widgets.FloatText(value=osc.m, description="m (kg)", style=text_style, layout=small)
@@ -227,10 +251,9 @@ class Explorer(widgets.VBox):
         self.image = widgets.Image(format="png", layout=widgets.Layout(max_width="100%", height="auto"))
         self.image.add_class("vibration-figure")
 
-        self.figure = self._build_figure()
-        self._canvas = self.figure.canvas
-
-        controls = widgets.VBox(
+    def _controls(self) -> widgets.VBox:
+        """The controls in rows: the two sliders with their labels, the typed values in pairs, the checkbox."""
+        return widgets.VBox(
             [
                 widgets.HBox([self.omega_slider, self.omega_hz]),
                 widgets.HBox([self.c_slider, self.zeta_label]),
@@ -239,14 +262,6 @@ class Explorer(widgets.VBox):
                 self.rk45_checkbox,
             ]
         )
-        super().__init__(children=[widgets.HBox([controls, self.readout]), self.image])
-        self.add_class("vibration-explorer")
-
-        for w in (self.omega_slider, self.c_slider, self.m_text, self.k_text, self.F0_text, self.t_end_text):
-            w.observe(self._on_change, names="value")
-        self.rk45_checkbox.observe(self._on_toggle, names="value")
-        if not self.update():  # pragma: no cover - the inputs were validated above
-            raise ParameterError(self.error)
 
     # ------------------------------------------------------------------ figure
     def _build_figure(self) -> Figure:
