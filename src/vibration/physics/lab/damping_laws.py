@@ -300,8 +300,6 @@ def damping_ode(
     numpy.ndarray
         Angle (rad) at ``t_eval``.
     """
-    from scipy import integrate
-
     te = as_series("t_eval", t_eval, unit="s", min_size=2)
     if not np.all(np.diff(te) > 0) or te[0] < 0:
         raise ParameterError("t_eval is not increasing from t >= 0: allowed increasing times (s) from 0")
@@ -310,7 +308,7 @@ def damping_ode(
     friction = check_real("friction", friction, low=0.0, high=1e6, unit="rad")
     offset = check_real("offset", offset, low=-1e6, high=1e6, unit="rad")
     theta0 = check_real("theta0", theta0, low=-1e6, high=1e6, unit="rad")
-    w2 = omega_n * omega_n
+    law = (omega_n, zeta, friction, quadratic, power, power_exponent, offset)
     out = np.full(te.size, np.nan)
     t_now, y_now, v_now = 0.0, float(theta0), 0.0
     used = 0
@@ -320,28 +318,8 @@ def damping_ode(
             out[te >= t_now] = y_now
             break
         s = -math.copysign(1.0, d) if abs(v_now) < 1e-12 else math.copysign(1.0, v_now)
-
-        def rhs(_t, x, s=s):
-            v = x[1]
-            damp = 2.0 * zeta * omega_n * v + quadratic * v * abs(v) + power * abs(v) ** power_exponent * s
-            return [v, -w2 * (x[0] - offset) - w2 * friction * s - damp]
-
-        def reversal(_t, x, s=s, t_from=t_now):
-            return x[1] if _t > t_from + 1e-9 else s
-
-        reversal.terminal = True
-        reversal.direction = -s
         mask = te >= t_now
-        sol = integrate.solve_ivp(
-            rhs,
-            (t_now, float(te[-1])),
-            [y_now, v_now],
-            method="DOP853",
-            rtol=rtol,
-            atol=atol,
-            events=reversal,
-            dense_output=True,
-        )
+        sol = _swing(law, s, t_now, float(te[-1]), y_now, v_now, rtol=rtol, atol=atol)
         used += sol.nfev
         if used > max_steps:
             raise ParameterError(f"max_steps = {max_steps} is out of range: the integration needed more")
@@ -352,3 +330,36 @@ def damping_ode(
         if not sol.t_events[0].size:
             break
     return out
+
+
+def _swing(law, s, t_now, t_stop, y_now, v_now, *, rtol, atol):
+    """``solve_ivp`` (DOP853, dense) of one swing of :func:`damping_ode`, moving in direction ``s``, from ``t_now``.
+
+    ``law`` is ``(omega_n, zeta, friction, quadratic, power, power_exponent, offset)``; the integration stops at
+    the velocity reversal (a terminal event) or at ``t_stop``.
+    """
+    from scipy import integrate
+
+    omega_n, zeta, friction, quadratic, power, power_exponent, offset = law
+    w2 = omega_n * omega_n
+
+    def rhs(_t, x, s=s):
+        v = x[1]
+        damp = 2.0 * zeta * omega_n * v + quadratic * v * abs(v) + power * abs(v) ** power_exponent * s
+        return [v, -w2 * (x[0] - offset) - w2 * friction * s - damp]
+
+    def reversal(_t, x, s=s, t_from=t_now):
+        return x[1] if _t > t_from + 1e-9 else s
+
+    reversal.terminal = True
+    reversal.direction = -s
+    return integrate.solve_ivp(
+        rhs,
+        (t_now, t_stop),
+        [y_now, v_now],
+        method="DOP853",
+        rtol=rtol,
+        atol=atol,
+        events=reversal,
+        dense_output=True,
+    )

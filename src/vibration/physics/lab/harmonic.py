@@ -123,51 +123,15 @@ def harmonic_fit(t, y, omega=None) -> HarmonicFit:
     x = ta - tc
     if omega is not None:
         w = check_real("omega", omega, low=0.0, low_open=True, high=1e9, unit="rad/s")
-        coef, rss = _linear(x, ya, w)
-        J = np.column_stack([np.sin(w * x), np.cos(w * x), np.ones_like(x)])
-        cov = rss / max(1, n - 3) * np.linalg.pinv(J.T @ J)
-        a, b, c = coef
+        a, b, c, rss, cov = _fit_at(x, ya, w)
         var_w = 0.0
-        cov_ab = cov[:2, :2]
-        var_c = cov[2, 2]
     else:
-        duration = float(ta[-1] - ta[0])
-        w_lo = 2.0 * math.pi / duration
-        w_hi = math.pi / float(np.median(np.diff(ta)))
-        n_trial = int(min(MAX_TRIAL, max(200, 4.0 * (w_hi - w_lo) / w_lo)))
-        grid = np.linspace(w_lo, w_hi, n_trial)
-        sub = np.unique(np.linspace(0, n - 1, min(n, MAX_GRID_SAMPLES)).astype(np.int64))
-        w0 = float(grid[int(np.argmin(_rss_grid(x[sub], ya[sub], grid)))])
-        coef0, _ = _linear(x, ya, w0)
-
-        def resid(p):
-            return p[0] * np.sin(p[3] * x) + p[1] * np.cos(p[3] * x) + p[2] - ya
-
-        sol = optimize.least_squares(resid, np.r_[coef0, w0], x_scale="jac", method="lm", max_nfev=2000)
-        a, b, c, w = sol.x
-        w = abs(w)
-        if sol.x[3] < 0:
-            a = -a
-        r = resid(np.array([a, b, c, w]))
-        rss = float(r @ r)
-        J = np.column_stack(
-            [np.sin(w * x), np.cos(w * x), np.ones_like(x), a * x * np.cos(w * x) - b * x * np.sin(w * x)]
-        )
-        cov = rss / max(1, n - 4) * np.linalg.pinv(J.T @ J)
-        cov_ab = cov[:2, :2]
-        var_c = cov[2, 2]
+        a, b, c, w, rss, cov = _fit_with_frequency(ta, x, ya)
         var_w = cov[3, 3]
-        cov_abw = cov[:2, 3]
-    amp = math.hypot(a, b)
-    phase_c = math.atan2(b, a)  # at centred time
-    # d(amp) = (a da + b db)/amp ; d(phase_c) = (a db - b da)/amp^2
-    g_amp = np.array([a, b]) / amp if amp > 0 else np.zeros(2)
-    g_ph = np.array([-b, a]) / amp**2 if amp > 0 else np.zeros(2)
-    var_amp = float(g_amp @ cov_ab @ g_amp)
-    var_phc = float(g_ph @ cov_ab @ g_ph)
+    amp, phase_c, var_amp, var_phc, g_ph = _polar(a, b, cov[:2, :2])
     # phase at t = 0: phase_c - w tc
     if omega is None:
-        var_ph = var_phc + tc * tc * var_w - 2.0 * tc * float(g_ph @ cov_abw)
+        var_ph = var_phc + tc * tc * var_w - 2.0 * tc * float(g_ph @ cov[:2, 3])
     else:
         var_ph = var_phc
     phase = _wrap(phase_c - w * tc)
@@ -180,8 +144,65 @@ def harmonic_fit(t, y, omega=None) -> HarmonicFit:
             "omega": float(math.sqrt(max(var_w, 0.0))),
             "amplitude": float(math.sqrt(max(var_amp, 0.0))),
             "phase": float(math.sqrt(max(var_ph, 0.0))),
-            "offset": float(math.sqrt(max(var_c, 0.0))),
+            "offset": float(math.sqrt(max(cov[2, 2], 0.0))),
         },
         residual_rms=float(math.sqrt(rss / n)),
         n=int(n),
     )
+
+
+def _fit_at(x, y, w):
+    """``(a, b, c, rss, cov)`` of ``a sin(w x) + b cos(w x) + c`` at the given w (covariance ``s^2 (J^T J)^-1``)."""
+    coef, rss = _linear(x, y, w)
+    J = np.column_stack([np.sin(w * x), np.cos(w * x), np.ones_like(x)])
+    cov = rss / max(1, x.size - 3) * np.linalg.pinv(J.T @ J)
+    a, b, c = coef
+    return a, b, c, rss, cov
+
+
+def _fit_with_frequency(ta, x, y):
+    """``(a, b, c, w, rss, cov)`` with w estimated too: periodogram start, then nonlinear least squares.
+
+    ``x`` is the centred time ``ta - tc``; ``cov`` is 4 x 4, in the order a, b, c, w.
+    """
+    n = ta.size
+    w0 = _periodogram_peak(ta, x, y)
+    coef0, _ = _linear(x, y, w0)
+
+    def resid(p):
+        return p[0] * np.sin(p[3] * x) + p[1] * np.cos(p[3] * x) + p[2] - y
+
+    sol = optimize.least_squares(resid, np.r_[coef0, w0], x_scale="jac", method="lm", max_nfev=2000)
+    a, b, c, w = sol.x
+    w = abs(w)
+    if sol.x[3] < 0:
+        a = -a
+    r = resid(np.array([a, b, c, w]))
+    rss = float(r @ r)
+    J = np.column_stack([np.sin(w * x), np.cos(w * x), np.ones_like(x), a * x * np.cos(w * x) - b * x * np.sin(w * x)])
+    cov = rss / max(1, n - 4) * np.linalg.pinv(J.T @ J)
+    return a, b, c, w, rss, cov
+
+
+def _periodogram_peak(ta, x, y) -> float:
+    """The trial frequency (rad/s) of least residual on the least-squares periodogram (see :func:`harmonic_fit`)."""
+    n = ta.size
+    duration = float(ta[-1] - ta[0])
+    w_lo = 2.0 * math.pi / duration
+    w_hi = math.pi / float(np.median(np.diff(ta)))
+    n_trial = int(min(MAX_TRIAL, max(200, 4.0 * (w_hi - w_lo) / w_lo)))
+    grid = np.linspace(w_lo, w_hi, n_trial)
+    sub = np.unique(np.linspace(0, n - 1, min(n, MAX_GRID_SAMPLES)).astype(np.int64))
+    return float(grid[int(np.argmin(_rss_grid(x[sub], y[sub], grid)))])
+
+
+def _polar(a, b, cov_ab):
+    """Amplitude and phase of ``a sin + b cos``, their variances, and the phase's gradient in (a, b)."""
+    amp = math.hypot(a, b)
+    phase_c = math.atan2(b, a)  # at centred time
+    # d(amp) = (a da + b db)/amp ; d(phase_c) = (a db - b da)/amp^2
+    g_amp = np.array([a, b]) / amp if amp > 0 else np.zeros(2)
+    g_ph = np.array([-b, a]) / amp**2 if amp > 0 else np.zeros(2)
+    var_amp = float(g_amp @ cov_ab @ g_amp)
+    var_phc = float(g_ph @ cov_ab @ g_ph)
+    return amp, phase_c, var_amp, var_phc, g_ph

@@ -254,6 +254,29 @@ def peak_decay_fit(t, theta, law: str = "combined") -> PeakDecayFit:
     if law not in LAWS:
         raise ParameterError(f"law = {law!r} is out of range: allowed one of {LAWS}")
     ta, ya = time_and_signal(t, theta, t_name="t", y_name="theta", y_unit="rad")
+    tp, yp, sp = _used_extrema(ta, ya)
+    wd, s_wd = _damped_frequency(tp)
+    x, y1, sig = yp[:-1], yp[1:], sp[:-1].astype(float)
+    if law == "coulomb":
+        zeta, s_z, c, s_c, d, s_d = _coulomb_recursion(x, y1, sig)
+    else:
+        zeta, s_z, c, s_c, d, s_d = _decay_ratio_recursion(x, y1, sig, law)
+    root = math.sqrt(1.0 - zeta * zeta)
+    omega_n = wd / root
+    s_w = math.hypot(s_wd / root, wd * zeta / root**3 * s_z)
+    return PeakDecayFit(
+        law=law,
+        omega_n=float(omega_n),
+        zeta=float(zeta),
+        friction=float(d),
+        offset=float(c),
+        stderr={"omega_n": s_w, "zeta": float(s_z), "friction": float(s_d), "offset": float(s_c)},
+        n_peaks=int(tp.size),
+    )
+
+
+def _used_extrema(ta, ya):
+    """Times, angles and signs of the extrema :func:`peak_decay_fit` uses (at least ``MIN_HALF_PERIODS + 1``)."""
     peaks = _peaks(ta, ya)
     k0 = _start(ta, ya, peaks)
     tp, yp, sp = peaks.t[k0:], peaks.theta[k0:], peaks.sign[k0:]
@@ -269,53 +292,51 @@ def peak_decay_fit(t, theta, law: str = "combined") -> PeakDecayFit:
             f"theta has {max(0, tp.size - 1)} half periods after its largest excursion which is out of range: "
             f"allowed at least {MIN_HALF_PERIODS} (the fit needs {need} extrema)"
         )
+    return tp, yp, sp
+
+
+def _damped_frequency(tp):
+    """omega_d (rad/s) and its standard error from the line through the extrema's times against their count."""
     kk = np.arange(tp.size, dtype=float)
     (_, half), cov_t = _ols(np.column_stack([np.ones_like(kk), kk]), tp)
     wd = math.pi / half
-    s_wd = wd / half * math.sqrt(cov_t[1, 1])
-    x, y1, sig = yp[:-1], yp[1:], sp[:-1].astype(float)
-    if law == "coulomb":
-        beta, cov = _ols(np.column_stack([np.ones_like(x), sig]), x + y1)
-        c, d = beta / 2.0
-        s_c, s_d = math.sqrt(cov[0, 0]) / 2.0, math.sqrt(cov[1, 1]) / 2.0
-        zeta = s_z = 0.0
-    else:
-        cols = [-x, np.ones_like(x)] + ([sig] if law == "combined" else [])
-        beta, cov = _ols(np.column_stack(cols), y1)
-        qv = float(beta[0])
-        if not 0.0 < qv < 2.0:
-            raise ParameterError(
-                f"theta: the extrema give a decay ratio q = {qv!r} which is out of range: allowed 0 < q < 2 (not a "
-                "free decay)"
-            )
-        lq = math.log(qv)
-        zeta = -lq / math.hypot(math.pi, lq)
-        dz_dq = (math.pi**2 / math.hypot(math.pi, lq) ** 3) * (-1.0 / qv)
-        s_z = abs(dz_dq) * math.sqrt(cov[0, 0])
-        # c = b/(1+q), Delta = d/(1+q): delta method with the full covariance
-        b = float(beta[1])
-        gc = np.zeros(len(beta))
-        gc[0], gc[1] = -b / (1 + qv) ** 2, 1.0 / (1 + qv)
-        c, s_c = b / (1 + qv), math.sqrt(float(gc @ cov @ gc))
-        if law == "combined":
-            dd = float(beta[2])
-            gd = np.zeros(len(beta))
-            gd[0], gd[2] = -dd / (1 + qv) ** 2, 1.0 / (1 + qv)
-            d, s_d = dd / (1 + qv), math.sqrt(float(gd @ cov @ gd))
-        else:
-            d = s_d = 0.0
-    root = math.sqrt(1.0 - zeta * zeta)
-    omega_n = wd / root
-    s_w = math.hypot(s_wd / root, wd * zeta / root**3 * s_z)
-    return PeakDecayFit(
-        law=law,
-        omega_n=float(omega_n),
-        zeta=float(zeta),
-        friction=float(d),
-        offset=float(c),
-        stderr={"omega_n": s_w, "zeta": float(s_z), "friction": float(s_d), "offset": float(s_c)},
-        n_peaks=int(tp.size),
-    )
+    return wd, wd / half * math.sqrt(cov_t[1, 1])
+
+
+def _coulomb_recursion(x, y1, sig):
+    """``(zeta, s_zeta, c, s_c, Delta, s_Delta)`` of the Coulomb recursion (q = 1): ``x + y1 = 2 c + 2 Delta sig``."""
+    beta, cov = _ols(np.column_stack([np.ones_like(x), sig]), x + y1)
+    c, d = beta / 2.0
+    s_c, s_d = math.sqrt(cov[0, 0]) / 2.0, math.sqrt(cov[1, 1]) / 2.0
+    zeta = s_z = 0.0
+    return zeta, s_z, c, s_c, d, s_d
+
+
+def _decay_ratio_recursion(x, y1, sig, law):
+    """``(zeta, s_zeta, c, s_c, Delta, s_Delta)`` of the recursion ``y1 = -q x + (1 + q) c [+ (1 + q) Delta sig]``."""
+    cols = [-x, np.ones_like(x)] + ([sig] if law == "combined" else [])
+    beta, cov = _ols(np.column_stack(cols), y1)
+    qv = float(beta[0])
+    if not 0.0 < qv < 2.0:
+        raise ParameterError(
+            f"theta: the extrema give a decay ratio q = {qv!r} which is out of range: allowed 0 < q < 2 (not a "
+            "free decay)"
+        )
+    lq = math.log(qv)
+    zeta = -lq / math.hypot(math.pi, lq)
+    dz_dq = (math.pi**2 / math.hypot(math.pi, lq) ** 3) * (-1.0 / qv)
+    s_z = abs(dz_dq) * math.sqrt(cov[0, 0])
+    c, s_c = _over_one_plus_q(beta, cov, qv, 1)
+    d, s_d = _over_one_plus_q(beta, cov, qv, 2) if law == "combined" else (0.0, 0.0)
+    return zeta, s_z, c, s_c, d, s_d
+
+
+def _over_one_plus_q(beta, cov, qv, j):
+    """``beta[j] / (1 + q)`` and its standard error (delta method with the full covariance)."""
+    b = float(beta[j])
+    g = np.zeros(len(beta))
+    g[0], g[j] = -b / (1 + qv) ** 2, 1.0 / (1 + qv)
+    return b / (1 + qv), math.sqrt(float(g @ cov @ g))
 
 
 def half_period_losses(peaks: DecayPeaks, offset: float) -> tuple[np.ndarray, np.ndarray]:

@@ -97,45 +97,16 @@ def steadiness(t, theta, omega, *, periods: int = 3, tolerance: float = 0.02) ->
     (True, 4.7)
     """
     ta, ya = time_and_signal(t, theta, t_name="t", y_name="theta", y_unit="rad")
-    omega = check_real("omega", omega, low=0.0, low_open=True, high=1e4, unit="rad/s")
-    if isinstance(periods, bool) or not isinstance(periods, (int, np.integer)) or not 2 <= periods <= 100:
-        raise ParameterError(f"periods = {periods!r} is out of range: allowed an integer 2 <= periods <= 100")
-    tolerance = check_real("tolerance", tolerance, low=0.0, low_open=True, high=0.999)
-    period = 2.0 * math.pi / omega
-    if ta[-1] - ta[0] < periods * period:
-        raise ParameterError(
-            f"t spans {ta[-1] - ta[0]:g} s, fewer than periods = {periods} drive periods of omega = {omega!r} rad/s "
-            f"({periods * period:g} s): allowed omega >= {2.0 * math.pi * periods / (ta[-1] - ta[0]):.6g} rad/s "
-            "for this record, or a longer record"
-        )
+    omega, periods, tolerance, period = _checked_drive(ta, omega, periods, tolerance)
     t_end = float(ta[-1])
-    windows = []
-    for start in (t_end - periods * period, t_end - period):
-        m = (ta >= start - 1e-9) & (ta <= start + period + 1e-9)
-        if np.count_nonzero(m) < 6:
-            raise ParameterError(
-                f"omega = {omega!r} rad/s is out of range: a drive period holds fewer than 6 samples of t"
-            )
-        windows.append(_harmonic(ta[m], ya[m], omega))
-    (a1, s1), (a2, s2) = windows
+    (a1, s1), (a2, s2) = _end_periods(ta, ya, omega, periods, period)
     if a1 <= 0:
         raise ParameterError("theta has no oscillation at the drive frequency: allowed a driven run")
     drift = (a2 - a1) / a1
     drift_se = math.hypot(s2 / a1, a2 * s1 / a1**2)
     late = ta >= t_end - periods * period - 1e-9
     amp, amp_se = _harmonic(ta[late], ya[late], omega)
-    final = a2
-    t90 = t_end
-    step = period / T90_STEPS
-    n_steps = int((t_end - period - ta[0]) / step) + 1
-    for i in range(max(n_steps, 0)):
-        s0 = float(ta[0]) + i * step
-        m = (ta >= s0) & (ta <= s0 + period)
-        if np.count_nonzero(m) < 6:
-            continue
-        if _harmonic(ta[m], ya[m], omega)[0] >= 0.9 * final:
-            t90 = s0 + 0.5 * period - float(ta[0])
-            break
+    t90 = _t90(ta, ya, omega, period, a2)
     steady = bool(abs(drift) <= tolerance or abs(drift) <= 2.0 * drift_se)
     return Steadiness(
         steady=steady,
@@ -147,3 +118,51 @@ def steadiness(t, theta, omega, *, periods: int = 3, tolerance: float = 0.02) ->
         periods=int(periods),
         tolerance=float(tolerance),
     )
+
+
+def _checked_drive(ta, omega, periods, tolerance):
+    """The options of :func:`steadiness`, checked in order: ``(omega, periods, tolerance, drive period in s)``."""
+    omega = check_real("omega", omega, low=0.0, low_open=True, high=1e4, unit="rad/s")
+    if isinstance(periods, bool) or not isinstance(periods, (int, np.integer)) or not 2 <= periods <= 100:
+        raise ParameterError(f"periods = {periods!r} is out of range: allowed an integer 2 <= periods <= 100")
+    tolerance = check_real("tolerance", tolerance, low=0.0, low_open=True, high=0.999)
+    period = 2.0 * math.pi / omega
+    if ta[-1] - ta[0] < periods * period:
+        raise ParameterError(
+            f"t spans {ta[-1] - ta[0]:g} s, fewer than periods = {periods} drive periods of omega = {omega!r} rad/s "
+            f"({periods * period:g} s): allowed omega >= {2.0 * math.pi * periods / (ta[-1] - ta[0]):.6g} rad/s "
+            "for this record, or a longer record"
+        )
+    return omega, periods, tolerance, period
+
+
+def _end_periods(ta, ya, omega, periods, period):
+    """``[(amplitude, stderr)]`` of the first and of the last of the final ``periods`` drive periods."""
+    t_end = float(ta[-1])
+    windows = []
+    for start in (t_end - periods * period, t_end - period):
+        m = (ta >= start - 1e-9) & (ta <= start + period + 1e-9)
+        if np.count_nonzero(m) < 6:
+            raise ParameterError(
+                f"omega = {omega!r} rad/s is out of range: a drive period holds fewer than 6 samples of t"
+            )
+        windows.append(_harmonic(ta[m], ya[m], omega))
+    return windows
+
+
+def _t90(ta, ya, omega, period, final):
+    """Centre (s, from the record's start) of the first one-period window whose amplitude reaches 0.9 ``final``.
+
+    The windows slide in steps of ``period / T90_STEPS``; the last time ``ta[-1]`` (s) when none does.
+    """
+    t_end = float(ta[-1])
+    step = period / T90_STEPS
+    n_steps = int((t_end - period - ta[0]) / step) + 1
+    for i in range(max(n_steps, 0)):
+        s0 = float(ta[0]) + i * step
+        m = (ta >= s0) & (ta <= s0 + period)
+        if np.count_nonzero(m) < 6:
+            continue
+        if _harmonic(ta[m], ya[m], omega)[0] >= 0.9 * final:
+            return s0 + 0.5 * period - float(ta[0])
+    return t_end

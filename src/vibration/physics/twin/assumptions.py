@@ -125,6 +125,27 @@ def assumption_study(
     >>> list(st.experiments)[:2], st.experiments["coloured sensor noise"].flagged()
     (['as assumed', 'noise on the force'], 1.0)
     """
+    force_noise, colour, cubic, runs, seed = _checked_study(osc, reference, force_noise, colour, cubic, runs, seed)
+    t, force, linear = _study_record(osc, reference, runs, seed, band, rms)
+    x_rms = float(np.sqrt(np.mean(linear**2)))
+    k3 = cubic * osc.k / x_rms**2
+    experiments, predicted = _case_experiments(
+        osc, reference, t, force, linear, k3=k3, runs=runs, seed=seed, force_noise=force_noise, colour=colour
+    )
+    return AssumptionStudy(
+        experiments=experiments,
+        predicted=predicted,
+        force_noise=force_noise,
+        noise=reference.noise,
+        colour=colour,
+        cubic=cubic,
+        k3=k3,
+        lags=WHITENESS_LAGS,
+    )
+
+
+def _checked_study(osc, reference, force_noise, colour, cubic, runs, seed):
+    """The arguments of :func:`assumption_study`, checked in order: ``(force_noise, colour, cubic, runs, seed)``."""
     check_oscillator(osc)
     if not isinstance(reference, CoverageExperiment) or reference.sensor != "x":
         raise ParameterError(f"reference = {reference!r:.60}: allowed a displacement CoverageExperiment")
@@ -133,17 +154,23 @@ def assumption_study(
     cubic = check_real("cubic", cubic, low=0.0, low_open=True, high=1.0)
     runs = check_int("runs", runs, low=2, high=10_000)
     seed = _check_seed(seed)
+    return force_noise, colour, cubic, runs, seed
+
+
+def _study_record(osc, reference, runs, seed, band, rms):
+    """Sample times (s), force (N) and linear noise-free response (m) of the study, on the reference's design."""
     dt = reference.dt
     n = _grid_size(reference.duration, dt)
     _work("runs", runs, len(ASSUMPTION_CASES) * runs * n, MAX_EXPERIMENT_SAMPLES, "samples to identify")
     t = np.arange(n) * dt
     force = random_force(t, band=band, rms=rms, seed=seed)
-    linear = synthetic_measurements(osc, t, force).x
-    x_rms = float(np.sqrt(np.mean(linear**2)))
-    k3 = cubic * osc.k / x_rms**2
+    return t, force, synthetic_measurements(osc, t, force).x
+
+
+def _case_experiments(osc, reference, t, force, linear, *, k3, runs, seed, force_noise, colour):
+    """The experiment and predicted coverage of every case, keyed by label (``reference`` as assumed, first)."""
     f_rms = float(np.sqrt(np.mean(force**2)))
     truth = np.array([osc.m, osc.c, osc.k])
-    lags = WHITENESS_LAGS
     experiments = {"as assumed": reference}
     predicted = {"as assumed": predicted_coverage(osc, t, force, colour=0.0)}
     for j, label, (uf, uy, uc, _uk), clean in assumption_records(osc, k3, t, force=force, linear=linear):
@@ -159,20 +186,11 @@ def assumption_study(
             1000 + j,
             "x",
             noise=reference.noise * uy,
-            dt=dt,
-            lags=lags,
+            dt=reference.dt,
+            lags=WHITENESS_LAGS,
             force_sd=uf * force_noise * f_rms,
             colour=uc * colour,
             case=label,
         )
         predicted[label] = predicted_coverage(osc, t, force, colour=colour) if uc else None
-    return AssumptionStudy(
-        experiments=experiments,
-        predicted=predicted,
-        force_noise=force_noise,
-        noise=reference.noise,
-        colour=colour,
-        cubic=cubic,
-        k3=k3,
-        lags=lags,
-    )
+    return experiments, predicted

@@ -144,6 +144,30 @@ def detection_experiment(
     >>> ex.detection_probability.tolist(), ex.false_alarm_probability.tolist()
     ([1.0, 1.0], [0.0, 0.0])
     """
+    t, runs, seed, sensor, change_time, thr, noise, drift, stiffness = _checked_experiment(
+        osc, t, runs, seed, sensor, change_time, thresholds, noise, drift, stiffness
+    )
+    records = (
+        synthetic_measurements(osc, t, force, sensor=sensor),
+        synthetic_measurements(osc, t, force, sensor=sensor, stiffness=stiffness),
+    )
+    settings = {"reference": reference, "threshold": float(np.max(thr)), "drift": drift, "calibration": calibration}
+    peaks, first, monitored = _monitor_records(t, force, records, noise, runs, seed, thr, sensor, settings)
+    return DetectionExperiment(
+        thresholds=thr,
+        change_time=change_time,
+        monitored=monitored,
+        healthy_peak=peaks,
+        first_crossing=first,
+        drift=drift,
+    )
+
+
+def _checked_experiment(osc, t, runs, seed, sensor, change_time, thresholds, noise, drift, stiffness):
+    """The arguments of :func:`detection_experiment`, checked in order (ParameterError at the first bad one).
+
+    Returns ``(t, runs, seed, sensor, change_time, thresholds, noise, drift, stiffness)``.
+    """
     check_oscillator(osc)
     t = check_array("t", _signal("t", t), low=0.0, ndim=(1,), min_size=MIN_SAMPLES, increasing=True, unit="s")
     runs = check_int("runs", runs, low=2, high=10_000)
@@ -166,40 +190,41 @@ def detection_experiment(
         "stiffness", _signal("stiffness", stiffness, t.size), low=osc.m * RATE_MIN**2, high=osc.m * RATE_MAX**2,
         ndim=(1,), unit="N/m",
     )  # fmt: skip
-    healthy = synthetic_measurements(osc, t, force, sensor=sensor)
-    faulty = synthetic_measurements(osc, t, force, sensor=sensor, stiffness=stiffness)
+    return t, runs, seed, sensor, change_time, thr, noise, drift, stiffness
+
+
+def _noisy_statistic(t, force, clean, noise, seed, sensor, settings):
+    """CUSUM statistic of :func:`detect_change` on ``clean`` plus seeded noise, and the monitored time (s)."""
+    y = clean.response + noise * np.random.default_rng(seed).standard_normal(t.size)
+    det = detect_change(t, force, **{sensor: y}, **settings)
+    return det.statistic, float(t[-1] - det.calibration_end)
+
+
+def _first_crossing(t, g, thresholds):
+    """(T,) first time the statistic ``g`` exceeds each threshold, s (nan: never)."""
+    run_max = np.maximum.accumulate(g)
+    idx = np.searchsorted(run_max, thresholds, side="right")
+    ok = idx < t.size
+    out = np.full(thresholds.size, np.nan)
+    out[ok] = t[idx[ok]]
+    return out
+
+
+def _monitor_records(t, force, records, noise, runs, seed, thresholds, sensor, settings):
+    """Each healthy record's peak statistic, each faulty record's first crossings, and the monitored time (s).
+
+    Record i draws its noise from seed ``seed + i`` (healthy) and ``seed + runs + i`` (faulty), in that order.
+    """
+    healthy, faulty = records
     peaks = np.empty(runs)
-    first = np.full((runs, thr.size), np.nan)
+    first = np.full((runs, thresholds.size), np.nan)
     monitored = math.nan
     for i in range(runs):
-        for kind, clean, sd in ((0, healthy, seed + i), (1, faulty, seed + runs + i)):
-            y = clean.response + noise * np.random.default_rng(sd).standard_normal(t.size)
-            det = detect_change(
-                t,
-                force,
-                **{sensor: y},
-                reference=reference,
-                threshold=float(np.max(thr)),
-                drift=drift,
-                calibration=calibration,
-            )
-            monitored = float(t[-1] - det.calibration_end)
-            g = det.statistic
-            if kind == 0:
-                peaks[i] = float(np.max(g))
-            else:
-                run_max = np.maximum.accumulate(g)
-                idx = np.searchsorted(run_max, thr, side="right")
-                ok = idx < t.size
-                first[i, ok] = t[idx[ok]]
-    return DetectionExperiment(
-        thresholds=thr,
-        change_time=change_time,
-        monitored=monitored,
-        healthy_peak=peaks,
-        first_crossing=first,
-        drift=drift,
-    )
+        g, monitored = _noisy_statistic(t, force, healthy, noise, seed + i, sensor, settings)
+        peaks[i] = float(np.max(g))
+        g, monitored = _noisy_statistic(t, force, faulty, noise, seed + runs + i, sensor, settings)
+        first[i] = _first_crossing(t, g, thresholds)
+    return peaks, first, monitored
 
 
 # --------------------------------------------------------------------------- chapter scenarios

@@ -261,63 +261,21 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, *, t_end: fl
     >>> all(v < b for v, b in ch.values())
     True
     """
-    from scipy.integrate import solve_ivp
-
     from ..exact import exact_response
     from ..model import SineForce
 
-    check_oscillator(osc)
-    F0 = check_real("F0", F0, low=0.0, high=MAX_ABS, unit="N")
-    omega = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
-    t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
-    n = check_int("n", n, low=2, high=N_POINTS_MAX)
+    F0, omega, t_end, n = _checked_sine(osc, F0, omega, t_end, n)
     t = np.linspace(0.0, t_end, n)
     h = float(t[1] - t[0])
-    # the solve_ivp reference: DOP853 (12 evaluations a step) needs h lambda within its stability interval
-    # (about 6) and, at rtol 1e-12, steps of at most about a tenth of the fastest period
-    wn = osc.natural_frequency
-    lam = max(abs(osc.c) / osc.m, wn, omega)
-    m_ = min(200, n)
-    need = 12.0 * (m_ - 1) * max(h * lam / 6.0, 1.0)
-    if not need <= MAX_RHS_EVALUATIONS:
-        raise ParameterError(
-            f"n = {n} samples over t_end = {t_end!r} s (step {h:.3g} s) with the fastest rate {lam:.3g} 1/s "
-            f"(|c|/m = {abs(osc.c) / osc.m:.3g} 1/s, omega_n = {wn:.3g} rad/s, omega = {omega:.3g} rad/s) need at "
-            f"least {need:.3g} right-hand-side evaluations for the solve_ivp reference: allowed at most "
-            f"{MAX_RHS_EVALUATIONS} (more samples n, a shorter t_end or a less stiff oscillator)"
-        )
-    budget = _Counted(None, MAX_RHS_EVALUATIONS)
+    m_ = _ivp_reference_samples(osc, omega, t_end, n, h)
     force = SineForce(F0=F0, omega=omega)
     f = force(t)
     ours = sampled_response(osc, t, f)
     exact = exact_response(osc, force, t)
-    wd = osc.damped_natural_frequency
-    integral = 2.0 / (osc.c * wd) if osc.c > 0 and wd > 0 else t_end / osc.m * max(t_end, 1.0)
-    if osc.c > 0 and wd == 0.0:
-        integral = 1.0 / osc.k * 4.0
-    bound_sine = h * h * omega * omega * F0 / 8.0 * integral
-    a = np.array([[0.0, 1.0], [-osc.k / osc.m, -osc.c / osc.m]])
-    b = np.array([[0.0], [1.0 / osc.m]])
-    ad, bd, cd, dd, _ = signal.cont2discrete((a, b, np.eye(2), np.zeros((2, 1))), h, method="foh")
-    with np.errstate(over="ignore", invalid="ignore"):
-        _, yd, _ = signal.dlsim((ad, bd, cd, dd, h), f, x0=-dd[:, 0] * f[0])
-    _finite_output(yd, "the cont2discrete + dlsim reference", "allowed a response that stays a finite float")
+    bound_sine = h * h * omega * omega * F0 / 8.0 * _impulse_response_integral(osc, t_end)
+    yd = _foh_state_space_reference(osc, f, h)
     scale = max(float(np.max(np.abs(ours.x))), 1e-300)
-    z = np.zeros(2)
-    ref = [0.0]
-    for i in range(m_ - 1):
-        slope = (f[i + 1] - f[i]) / h
-        budget.fun = lambda s, y, i=i, slope=slope: [y[1], (f[i] + slope * s - osc.c * y[1] - osc.k * y[0]) / osc.m]
-        try:
-            sol = solve_ivp(budget, (0.0, h), z, method="DOP853", rtol=1e-12, atol=1e-14 * scale)
-        except OverBudget:
-            raise ParameterError(
-                f"discretisation_checks spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations on the "
-                f"solve_ivp reference at sample {i} of {m_} (step {h:.3g} s, |c|/m = {abs(osc.c) / osc.m:.3g} 1/s, "
-                f"omega_n = {wn:.3g} rad/s): allowed more samples n, a shorter t_end or a less stiff oscillator"
-            ) from None
-        z = sol.y[:, -1]
-        ref.append(z[0])
+    ref = _ivp_reference(osc, f, h, m_, scale)
     out = {
         "sine: closed form (interpolation error of the force)": (
             float(np.max(np.abs(ours.x - exact.x))),
@@ -336,3 +294,77 @@ def discretisation_checks(osc: Oscillator, F0: float, omega: float, *, t_end: fl
         list(out.values()), "a difference or bound", "allowed an oscillator and force whose responses stay finite"
     )
     return out
+
+
+def _checked_sine(osc, F0, omega, t_end, n):
+    """The arguments of :func:`discretisation_checks`, checked in order: ``(F0, omega, t_end, n)``."""
+    check_oscillator(osc)
+    F0 = check_real("F0", F0, low=0.0, high=MAX_ABS, unit="N")
+    omega = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
+    n = check_int("n", n, low=2, high=N_POINTS_MAX)
+    return F0, omega, t_end, n
+
+
+def _ivp_reference_samples(osc, omega, t_end, n, h) -> int:
+    """Samples of the ``solve_ivp`` reference (at most 200), refused when their work exceeds the budget.
+
+    DOP853 (12 evaluations a step) needs h lambda within its stability interval (about 6) and, at rtol 1e-12,
+    steps of at most about a tenth of the fastest period.
+    """
+    wn = osc.natural_frequency
+    lam = max(abs(osc.c) / osc.m, wn, omega)
+    m_ = min(200, n)
+    need = 12.0 * (m_ - 1) * max(h * lam / 6.0, 1.0)
+    if not need <= MAX_RHS_EVALUATIONS:
+        raise ParameterError(
+            f"n = {n} samples over t_end = {t_end!r} s (step {h:.3g} s) with the fastest rate {lam:.3g} 1/s "
+            f"(|c|/m = {abs(osc.c) / osc.m:.3g} 1/s, omega_n = {wn:.3g} rad/s, omega = {omega:.3g} rad/s) need at "
+            f"least {need:.3g} right-hand-side evaluations for the solve_ivp reference: allowed at most "
+            f"{MAX_RHS_EVALUATIONS} (more samples n, a shorter t_end or a less stiff oscillator)"
+        )
+    return m_
+
+
+def _impulse_response_integral(osc, t_end) -> float:
+    """Bound of the integral of ``|impulse response|`` over the record, s/kg."""
+    wd = osc.damped_natural_frequency
+    integral = 2.0 / (osc.c * wd) if osc.c > 0 and wd > 0 else t_end / osc.m * max(t_end, 1.0)
+    if osc.c > 0 and wd == 0.0:
+        integral = 1.0 / osc.k * 4.0
+    return integral
+
+
+def _foh_state_space_reference(osc, f, h):
+    """States (x, v) at the samples from ``scipy.signal.cont2discrete(method="foh")`` and ``dlsim``."""
+    a = np.array([[0.0, 1.0], [-osc.k / osc.m, -osc.c / osc.m]])
+    b = np.array([[0.0], [1.0 / osc.m]])
+    ad, bd, cd, dd, _ = signal.cont2discrete((a, b, np.eye(2), np.zeros((2, 1))), h, method="foh")
+    with np.errstate(over="ignore", invalid="ignore"):
+        _, yd, _ = signal.dlsim((ad, bd, cd, dd, h), f, x0=-dd[:, 0] * f[0])
+    _finite_output(yd, "the cont2discrete + dlsim reference", "allowed a response that stays a finite float")
+    return yd
+
+
+def _ivp_reference(osc, f, h, m_, scale) -> list:
+    """x at the first ``m_`` samples from ``solve_ivp`` (DOP853, rtol 1e-12), sample by sample, force linear."""
+    from scipy.integrate import solve_ivp
+
+    budget = _Counted(None, MAX_RHS_EVALUATIONS)
+    z = np.zeros(2)
+    ref = [0.0]
+    for i in range(m_ - 1):
+        slope = (f[i + 1] - f[i]) / h
+        budget.fun = lambda s, y, i=i, slope=slope: [y[1], (f[i] + slope * s - osc.c * y[1] - osc.k * y[0]) / osc.m]
+        try:
+            sol = solve_ivp(budget, (0.0, h), z, method="DOP853", rtol=1e-12, atol=1e-14 * scale)
+        except OverBudget:
+            raise ParameterError(
+                f"discretisation_checks spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations on the "
+                f"solve_ivp reference at sample {i} of {m_} (step {h:.3g} s, |c|/m = {abs(osc.c) / osc.m:.3g} 1/s, "
+                f"omega_n = {osc.natural_frequency:.3g} rad/s): allowed more samples n, a shorter t_end or a less "
+                "stiff oscillator"
+            ) from None
+        z = sol.y[:, -1]
+        ref.append(z[0])
+    return ref

@@ -87,6 +87,13 @@ def _reference_output(osc, force, y, h, sensor, n_cal):
     return model, s2, z0
 
 
+def _calibrated_reference(reference, calibration, t, h, force, y, sensor):
+    """``(n_cal, osc, model, s2, z0)``: the calibration window's length, the reference and its fitted output."""
+    n_cal = _calibration(calibration, t.size)
+    osc, _ = _reference(reference, t, force, y, sensor, n_cal)
+    return (n_cal, osc, *_reference_output(osc, force, y, h, sensor, n_cal))
+
+
 @dataclass(frozen=True, kw_only=True)
 class StiffnessTrack:
     """Online stiffness estimate: ``t`` (s), ``k`` (N/m) and its standard deviation ``k_std`` (N/m)."""
@@ -137,63 +144,85 @@ def track_stiffness(
     t, h, force, y, sensor = _record(t, force, x, a)
     _work("t", f"{t.size} samples", t.size, MAX_TRACK_SAMPLES, "filter steps (one per sample)")
     walk = check_real("walk", walk, low=0.0, low_open=True, high=1e6, unit="1/sqrt(s)")
-    n = t.size
-    n_cal = _calibration(calibration, n)
-    osc, _ = _reference(reference, t, force, y, sensor, n_cal)
-    _, s2, z0 = _reference_output(osc, force, y, h, sensor, n_cal)
-    m, c, k_ref = osc.m, osc.c, osc.k
-    q = (walk * k_ref) ** 2 * h
+    _, osc, _, s2, z0 = _calibrated_reference(reference, calibration, t, h, force, y, sensor)
     r_var = max(s2, 1e-30)
-    # state (x, v, k) and the symmetric covariance as plain floats: 3 x 3 algebra written out
-    x_, v_, k_ = float(z0[0]), float(z0[1]), k_ref
-    p00, p01, p02 = 1e-6 * max(abs(x_), 1e-9) ** 2, 0.0, 0.0
-    p11, p12, p22 = 1e-6 * max(abs(v_), 1e-9) ** 2, 0.0, (0.02 * k_ref) ** 2
+    ks, kstd = _kalman_track(osc, h, force, y, sensor, z0, q=(walk * osc.k) ** 2 * h, r_var=r_var)
+    return StiffnessTrack(t=t, k=ks, k_std=kstd, reference=osc, walk=walk, sigma=math.sqrt(r_var))
+
+
+def _kalman_track(osc, h, force, y, sensor, z0, *, q, r_var):
+    """Filtered k (N/m) and its standard deviation (N/m) at every sample, from the state ``z0`` at the first.
+
+    The state ``(x, v, k)`` and its symmetric covariance ``(p00, p01, p02, p11, p12, p22)`` are plain floats
+    (the 3 x 3 algebra written out); ``q`` is the random-walk variance of k per step, ``r_var`` the sensor's.
+    """
+    m, c, k_ref = osc.m, osc.c, osc.k
+    n = force.size
+    x0, v0 = float(z0[0]), float(z0[1])
+    state = (x0, v0, k_ref)
+    p = (1e-6 * max(abs(x0), 1e-9) ** 2, 0.0, 0.0, 1e-6 * max(abs(v0), 1e-9) ** 2, 0.0, (0.02 * k_ref) ** 2)
     ks = np.empty(n)
     kstd = np.empty(n)
     fl, yl = force.tolist(), y.tolist()
     quantum = K_QUANTUM * k_ref
     cache: dict[int, tuple] = {}
     for i in range(n):
-        # update with sample i
-        if sensor == "x":
-            h0, h1, h2, pred = 1.0, 0.0, 0.0, x_
-        else:
-            h0, h1, h2 = -k_ / m, -c / m, -x_ / m
-            pred = (fl[i] - c * v_ - k_ * x_) / m
-        ph0 = p00 * h0 + p01 * h1 + p02 * h2
-        ph1 = p01 * h0 + p11 * h1 + p12 * h2
-        ph2 = p02 * h0 + p12 * h1 + p22 * h2
-        sv = h0 * ph0 + h1 * ph1 + h2 * ph2 + r_var
-        innov = (yl[i] - pred) / sv
-        x_, v_, k_ = x_ + ph0 * innov, v_ + ph1 * innov, max(k_ + ph2 * innov, 1e-6 * k_ref)
-        p00, p01, p02 = p00 - ph0 * ph0 / sv, p01 - ph0 * ph1 / sv, p02 - ph0 * ph2 / sv
-        p11, p12, p22 = p11 - ph1 * ph1 / sv, p12 - ph1 * ph2 / sv, p22 - ph2 * ph2 / sv
-        ks[i], kstd[i] = k_, math.sqrt(max(p22, 0.0))
+        state, p = _kalman_update(state, p, m, c, sensor, fl[i], yl[i], r_var, 1e-6 * k_ref)
+        ks[i], kstd[i] = state[2], math.sqrt(max(p[5], 0.0))
         if i == n - 1:
             break
         # predict to sample i + 1 with the exact FOH step at the current k (quantised to K_QUANTUM k_ref)
-        key = int(round(k_ / quantum))
-        mats = cache.get(key)
-        if mats is None:
-            phi, g0, g1 = (v[0] for v in _foh(m, c, key * quantum, h))
-            mats = (*phi.ravel().tolist(), *g0.tolist(), *g1.tolist())
-            cache[key] = mats
-        f00, f01, f10, f11, a0, a1, b0, b1 = mats
-        xn = f00 * x_ + f01 * v_ + a0 * fl[i] + b0 * fl[i + 1]
-        vn = f10 * x_ + f11 * v_ + a1 * fl[i] + b1 * fl[i + 1]
-        s0, s1 = -(a0 * x_ + b0 * xn), -(a1 * x_ + b1 * xn)  # d(x, v)[i+1] / dk, the -k x term held linear
-        q00 = f00 * p00 + f01 * p01 + s0 * p02
-        q01 = f00 * p01 + f01 * p11 + s0 * p12
-        q02 = f00 * p02 + f01 * p12 + s0 * p22
-        q10 = f10 * p00 + f11 * p01 + s1 * p02
-        q11 = f10 * p01 + f11 * p11 + s1 * p12
-        q12 = f10 * p02 + f11 * p12 + s1 * p22
-        p00 = q00 * f00 + q01 * f01 + q02 * s0
-        p01 = q00 * f10 + q01 * f11 + q02 * s1
-        p11 = q10 * f10 + q11 * f11 + q12 * s1
-        p02, p12, p22 = q02, q12, p22 + q
-        x_, v_ = xn, vn
-    return StiffnessTrack(t=t, k=ks, k_std=kstd, reference=osc, walk=walk, sigma=math.sqrt(r_var))
+        key = int(round(state[2] / quantum))
+        if key not in cache:
+            cache[key] = _foh_step(m, c, key * quantum, h)
+        state, p = _kalman_predict(state, p, cache[key], fl[i], fl[i + 1], q)
+    return ks, kstd
+
+
+def _foh_step(m, c, k, h):
+    """The exact FOH step at stiffness k as plain floats: phi (row by row), then gamma0, then gamma1."""
+    phi, g0, g1 = (v[0] for v in _foh(m, c, k, h))
+    return (*phi.ravel().tolist(), *g0.tolist(), *g1.tolist())
+
+
+def _kalman_update(state, p, m, c, sensor, f, y, r_var, k_min):
+    """Measurement update of the state and covariance with one sample (force ``f``, measured ``y``); k >= k_min."""
+    x_, v_, k_ = state
+    p00, p01, p02, p11, p12, p22 = p
+    if sensor == "x":
+        h0, h1, h2, pred = 1.0, 0.0, 0.0, x_
+    else:
+        h0, h1, h2 = -k_ / m, -c / m, -x_ / m
+        pred = (f - c * v_ - k_ * x_) / m
+    ph0 = p00 * h0 + p01 * h1 + p02 * h2
+    ph1 = p01 * h0 + p11 * h1 + p12 * h2
+    ph2 = p02 * h0 + p12 * h1 + p22 * h2
+    sv = h0 * ph0 + h1 * ph1 + h2 * ph2 + r_var
+    innov = (y - pred) / sv
+    state = (x_ + ph0 * innov, v_ + ph1 * innov, max(k_ + ph2 * innov, k_min))
+    p00, p01, p02 = p00 - ph0 * ph0 / sv, p01 - ph0 * ph1 / sv, p02 - ph0 * ph2 / sv
+    p11, p12, p22 = p11 - ph1 * ph1 / sv, p12 - ph1 * ph2 / sv, p22 - ph2 * ph2 / sv
+    return state, (p00, p01, p02, p11, p12, p22)
+
+
+def _kalman_predict(state, p, mats, f0, f1, q):
+    """Prediction of the state and covariance over one step (``mats`` of :func:`_foh_step`, forces f0 then f1)."""
+    x_, v_, k_ = state
+    p00, p01, p02, p11, p12, p22 = p
+    f00, f01, f10, f11, a0, a1, b0, b1 = mats
+    xn = f00 * x_ + f01 * v_ + a0 * f0 + b0 * f1
+    vn = f10 * x_ + f11 * v_ + a1 * f0 + b1 * f1
+    s0, s1 = -(a0 * x_ + b0 * xn), -(a1 * x_ + b1 * xn)  # d(x, v)[i+1] / dk, the -k x term held linear
+    q00 = f00 * p00 + f01 * p01 + s0 * p02
+    q01 = f00 * p01 + f01 * p11 + s0 * p12
+    q02 = f00 * p02 + f01 * p12 + s0 * p22
+    q10 = f10 * p00 + f11 * p01 + s1 * p02
+    q11 = f10 * p01 + f11 * p11 + s1 * p12
+    q12 = f10 * p02 + f11 * p12 + s1 * p22
+    p00 = q00 * f00 + q01 * f01 + q02 * s0
+    p01 = q00 * f10 + q01 * f11 + q02 * s1
+    p11 = q10 * f10 + q11 * f11 + q12 * s1
+    return (xn, vn, k_), (p00, p01, q02, p11, q12, p22 + q)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -301,20 +330,12 @@ def detect_change(
     t, h, force, y, sensor = _record(t, force, x, a)
     threshold = check_real("threshold", threshold, low=0.0, low_open=True)
     drift = check_real("drift", drift, low=0.0, low_open=True, high=DRIFT_MAX)
-    n = t.size
-    n_cal = _calibration(calibration, n)
-    osc, _ = _reference(reference, t, force, y, sensor, n_cal)
-    model, s2, _ = _reference_output(osc, force, y, h, sensor, n_cal)
+    n_cal, osc, model, s2, _ = _calibrated_reference(reference, calibration, t, h, force, y, sensor)
     r = y - model
     s2 = max(s2, 1e-300)
-    g = np.zeros(n)
+    g = np.zeros(t.size)
     g[n_cal:] = _cusum(r[n_cal:] ** 2 / s2 - 1.0 - drift)
-    over = np.nonzero(g > threshold)[0]
-    alarm = int(over[0]) if over.size else None
-    onset = None
-    if alarm is not None:
-        zeros = np.nonzero(g[n_cal:alarm] == 0.0)[0]
-        onset = float(t[n_cal + zeros[-1] + 1]) if zeros.size else float(t[n_cal])
+    alarm, onset = _first_alarm(t, g, threshold, n_cal)
     return ChangeDetection(
         alarm_time=float(t[alarm]) if alarm is not None else None,
         alarm_index=alarm,
@@ -328,3 +349,13 @@ def detect_change(
         reference=osc,
         calibration_end=float(t[n_cal]),
     )
+
+
+def _first_alarm(t, g, threshold, n_cal):
+    """Index of the first ``g > threshold`` and the estimated onset (s): the CUSUM's last restart before it."""
+    over = np.nonzero(g > threshold)[0]
+    if not over.size:
+        return None, None
+    alarm = int(over[0])
+    zeros = np.nonzero(g[n_cal:alarm] == 0.0)[0]
+    return alarm, float(t[n_cal + zeros[-1] + 1]) if zeros.size else float(t[n_cal])
