@@ -10,7 +10,7 @@ Examples
 >>> print(prose("x_ss = F0/√((k − mω²)² + (cω)²) = 0.4504 m, 1.8 times F0/k = 0.25 m."))
 $x_\mathrm{ss} = F_0/\sqrt{(k - m\omega^2)^2 + (c\omega)^2}$ = 0.4504 m, 1.8 times $F_0/k$ = 0.25 m.
 >>> print(prose("beats with period 2.94e3 s; damping_nominal: c = -0.1 N s/m"))
-beats with period 2.94 × 10³ s; nominal damping: c = −0.1 N s/m
+beats with period 2.94×10³ s; nominal damping: c = −0.1 N s/m
 >>> cell("2 x_ss at resonance / x_ss of reference"), cell("growing at t_end")
 ('2 xₛₛ at resonance / xₛₛ of reference', 'growing at the end of the window')
 """
@@ -20,8 +20,7 @@ from __future__ import annotations
 import re
 
 from vibration.presentation.findings import CASE_NAMES
-
-_SUPERSCRIPT = str.maketrans("-−0123456789", "⁻⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+from vibration.presentation.numbers import minus, superscript
 
 #: Whole formulas first, then single symbols (the order matters: a replaced symbol is no longer code).
 _PROSE: tuple[tuple[str, str], ...] = (
@@ -62,7 +61,7 @@ _SQRT_NUMBERS = re.compile(r"√\((\d+(?:\.\d+)?)/(\d+(?:\.\d+)?)\)")
 
 
 def _ten(match: re.Match) -> str:
-    return f"{match.group(1)} × 10{str(int(match.group(2))).translate(_SUPERSCRIPT)}"
+    return f"{minus(match.group(1))}×10{superscript(int(match.group(2)))}"  # the book's power of ten
 
 
 def _case_ids(text: str) -> str:

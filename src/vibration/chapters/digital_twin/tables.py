@@ -12,7 +12,7 @@ import numpy as np
 
 from vibration.chapters.digital_twin.study import KALMAN_BLOCK, KALMAN_SETTLE, MIN_ALARMS, DigitalTwinStudy
 from vibration.physics.twin import binomial_halfwidth
-from vibration.presentation.numbers import integer, pm
+from vibration.presentation.numbers import integer, pm, sig
 from vibration.presentation.tables import Approx, Missing, Table, columns
 
 #: A rounding-level check value is compared with its reference within this fraction of its bound.
@@ -165,7 +165,7 @@ def _case_text(label: str, st: DigitalTwinStudy) -> str:
         "response on the response",
         "coloured sensor noise": f"AR(1) sensor noise, lag-one correlation {a.colour:g}, {a.noise:g} of the rms "
         "response",
-        "unmodelled cubic spring": f"a cubic spring force k₃x³, k₃ = {a.k3:.3g} N/m³ ({100 * a.cubic:g} % of kx "
+        "unmodelled cubic spring": f"a cubic spring force k₃x³, k₃ = {sig(a.k3, 3)} N/m³ ({100 * a.cubic:g} % of kx "
         f"at the rms displacement), white sensor noise {a.noise:g} of the rms response",
     }.get(label, label)
 
@@ -379,7 +379,7 @@ def run_length_table(st: DigitalTwinStudy, min_alarms: int = MIN_ALARMS) -> Tabl
         name="tab-twin-arl",
         notes=(
             f"False-alarm rows: {integer(rl.samples)} monitored samples of healthy records "
-            f"({rl.samples * dt / 3600:.3g} h), the CUSUM restarted after each alarm; measured: monitored time per "
+            f"({sig(rl.samples * dt / 3600, 3)} h), the CUSUM restarted after each alarm; measured: monitored time per "
             "alarm, standard error from the "
             "alarm count (Poisson). Theory: the Brook–Evans chain for a white Gaussian residual, averaged over the "
             "spread of each record's calibrated noise variance, extrapolated from two cell counts.",

@@ -14,7 +14,7 @@ from scipy.stats import chi2
 from vibration.chapters.digital_twin.study import HALFWIDTH_TARGET, MIN_ALARMS, DigitalTwinStudy
 from vibration.chapters.digital_twin.tables import flag_halfwidth
 from vibration.physics.twin import cusum_variance_ratio
-from vibration.presentation.numbers import integer, pm, sig
+from vibration.presentation.numbers import column, integer, percent, pm, sig
 from vibration.presentation.tables import cross_reference
 
 NAMES = ("m", "c", "k")
@@ -27,15 +27,6 @@ def sci(value: float, digits: int = 2) -> str:
     ('1.2×10⁵', '0.5', '3.2×10⁻⁷', '5.1×10²')
     """
     return sig(value, digits)
-
-
-def _signed(value: float, digits: int = 2) -> str:
-    """A signed number with a typographic minus: ``−0.35``."""
-    return f"{value:.{digits}f}".replace("-", "−")
-
-
-def _pct(share: float, digits: int = 1) -> str:
-    return f"{100 * share:.{digits}f} %"
 
 
 def _rel_err(est: float, truth: float) -> float:
@@ -69,8 +60,8 @@ def key_results(st: DigitalTwinStudy) -> str:
         f"{pm(fit.k, fit.stderr[2])} N/m (true {sig(st.asset.k, 6)} N/m); over {integer(cov.runs)} noisy repeats its "
         f"95 % intervals cover the truth in {pm(cov.coverage[2], cov.coverage_uncertainty[2])} of the runs.",
         f"When the records break an assumption the coverage drops, down to "
-        f"{float(np.min(a[worst_label].coverage)):.2f} "
-        f"({worst_label}); the residual whiteness test flags at least {_pct(flagged, 0)} of those records.",
+        f"{sig(float(np.min(a[worst_label].coverage)), 2)} "
+        f"({worst_label}); the residual whiteness test flags at least {percent(flagged, 2)} of those records.",
         f"The Kalman filter's stated σ of k is honest when k wanders as the filter assumes (actual/stated "
         f"{pm(walk.ratio, walk.halfwidth)}) and {sig(1 / const.ratio, 2)} times too cautious when k is constant.",
         f"At the threshold h = {st.params.threshold:g} the CUSUM finds the faults after {delays}; {arl_text}, "
@@ -116,7 +107,8 @@ def frf_sentence(st: DigitalTwinStudy) -> str:
     verdict = "more" if fd[best] > ls else "less"
     return (
         "The frequency-domain estimates need a resolved resonance peak, so they read a record "
-        f"{st.frf_record / (fit.n * fit.dt):.0f} times longer than the test. Even so the better of them, the "
+        f"{integer(round(st.frf_record / (fit.n * fit.dt)))} times longer than the test. Even so the better of "
+        "them, the "
         f"{best} estimate, is {sig(100 * fd[best], 2)} % off in k, {verdict} than the time-domain fit's "
         f"{sig(100 * ls, 2)} % on the short record ({cross_reference('tab-twin-identified')})."
     )
@@ -162,8 +154,8 @@ def coverage_sentence(st: DigitalTwinStudy) -> str:
     return (
         f"Over {integer(main.runs)} noisy realisations the 95 % intervals contained the true m, c and k in "
         f"{pm(cov[0], hw[0])}, {pm(cov[1], hw[1])} and {pm(cov[2], hw[2])} of the runs, {verdict}. The "
-        f"stiffness error grows as the noise level to the power {_signed(p_s)} ± {u_s:.2f} (least-squares theory: 1, "
-        f"{_within(p_s, u_s, 1.0)}) and falls as the record length to the power {_signed(p_d)} ± {u_d:.2f} (theory "
+        f"stiffness error grows as the noise level to the power {pm(p_s, u_s)} (least-squares theory: 1, "
+        f"{_within(p_s, u_s, 1.0)}) and falls as the record length to the power {pm(p_d, u_d)} (theory "
         f"for a stationary random force: −0.5, {_within(p_d, u_d, -0.5)}); every point of both sweeps draws its "
         "own noise, so neither exponent is fixed by construction."
     )
@@ -184,38 +176,40 @@ def assumption_sentence(st: DigitalTwinStudy) -> str:
             continue
         c = ex.coverage
         parts.append(
-            f"{label[:1].upper() + label[1:]}: coverage {min(c):.2f} to {max(c):.2f}, whiteness test flags "
+            f"{label[:1].upper() + label[1:]}: coverage {column(min(c), 2)} to {column(max(c), 2)}, "
+            "whiteness test flags "
             f"{pm(ex.flagged(), ex.flagged_uncertainty())}."
         )
     flags = [ex.flagged() for lb, ex in a.experiments.items() if lb != "as assumed"]
     if min(flags) >= 0.5:
         parts.append(
             "At these magnitudes every broken assumption is flagged in "
-            + ("every one of its runs" if min(flags) == 1.0 else f"at least {100 * min(flags):.0f} % of its runs")
+            + ("every one of its runs" if min(flags) == 1.0 else f"at least {percent(min(flags), 2)} of its runs")
             + ": a flagged record's intervals should not be read at face value (the test's power at milder "
             "violations is not measured here)."
         )
     else:
         parts.append(
             f"The whiteness test misses some broken assumptions at these magnitudes (flag share as low as "
-            f"{100 * min(flags):.0f} %): passing it does not make the intervals trustworthy."
+            f"{percent(min(flags), 2)}): passing it does not make the intervals trustworthy."
         )
     pred = a.predicted.get("coloured sensor noise")
     if pred is not None:
         ex = a.experiments["coloured sensor noise"]
         agree = bool(np.all(np.abs(ex.coverage - pred) <= ex.coverage_uncertainty))
         parts.append(
-            f"For coloured noise the first-order (sandwich) coverage, {pred[0]:.2f}, {pred[1]:.2f} and "
-            f"{pred[2]:.2f}, {'agrees with' if agree else 'differs from'} the Monte Carlo within its uncertainty."
+            f"For coloured noise the first-order (sandwich) coverage, {sig(pred[0], 2)}, {sig(pred[1], 2)} and "
+            f"{sig(pred[2], 2)}, {'agrees with' if agree else 'differs from'} the Monte Carlo within its uncertainty."
         )
     largest = flag_halfwidth(st)
     need = math.ceil(1.96**2 * 0.25 / HALFWIDTH_TARGET**2)
     parts.append(
-        f"The largest half-width in the table is ± {largest:.3f}"
+        f"The largest half-width in the table is ± {sig(largest, 2)}"
         + (
-            f", within the ± {HALFWIDTH_TARGET:.2f} aimed at."
+            f", within the ± {sig(HALFWIDTH_TARGET, 2)} aimed at."
             if largest <= HALFWIDTH_TARGET
-            else f", above the ± {HALFWIDTH_TARGET:.2f} aimed at: a share near one half needs about {need} runs per "
+            else f", above the ± {sig(HALFWIDTH_TARGET, 2)} aimed at: a share near one half needs about {need} "
+            "runs per "
             "case for that, and the run count is a parameter of the chapter."
         )
     )
@@ -287,7 +281,7 @@ def cusum_sentence(st: DigitalTwinStudy) -> str:
         f"With ν = {st.drift:g} the increment r²/σ² − 1 − ν is the log-likelihood ratio of a Gaussian residual "
         f"whose variance grows by the factor ρ with ln ρ / (1 − 1/ρ) = 1 + ν: the detector is tuned to a "
         f"{sig(rho, 3)}-fold increase of the residual power, not a doubling (a doubling needs ν = "
-        f"{2 * math.log(2) - 1:.3f}). Over {2 * ex.runs} healthy records ({sig(hours, 3)} h monitored) it raised "
+        f"{sig(2 * math.log(2) - 1, 3)}). Over {2 * ex.runs} healthy records ({sig(hours, 3)} h monitored) it raised "
         f"{alarms} false alarm{'s' if alarms != 1 else ''} at h = {h:g}: a rate below {sig(upper, 2)} per hour at 95 % "
         f"confidence. The highest value the statistic reached on a healthy record was {sig(peak, 3)}, "
         + (f"so the threshold has a margin of {sig(margin, 2)} times." if margin >= 1 else "above the threshold.")
@@ -340,14 +334,15 @@ def summary(st: DigitalTwinStudy) -> str:
         bullets.append(
             "For identification, fit the exact discrete model in the time domain: on a "
             f"{sig(test, 3)} s test it misses "
-            f"k by {sig(100 * ls, 2)} %, where the better frequency-domain method, given {st.frf_record / test:.0f} "
+            f"k by {sig(100 * ls, 2)} %, where the better frequency-domain method, given "
+            f"{integer(round(st.frf_record / test))} "
             f"times the data, misses by {sig(100 * best, 2)} %."
         )
     broken = {k: v for k, v in st.assumptions.experiments.items() if k != "as assumed"}
     low = min(float(np.min(v.coverage)) for v in broken.values())
     bullets.append(
         "Trust an interval only from a record whose residual passes the whiteness test: a broken assumption can "
-        f"leave a nominal 95 % interval covering the truth as rarely as {100 * low:.0f} % of the time."
+        f"leave a nominal 95 % interval covering the truth as rarely as {percent(low, 2)} of the time."
     )
     const = next(c for c in st.kalman if c.truth == "constant")
     bullets.append(

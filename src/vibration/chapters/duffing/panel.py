@@ -18,7 +18,7 @@ import numpy as np
 from vibration.chapters.duffing.figures import STABLE_LS, UNSTABLE_LS, plot_curve
 from vibration.physics.duffing import Duffing, backbone, folds, response_curve
 from vibration.physics.model import check_real
-from vibration.presentation.numbers import minus, sig
+from vibration.presentation.numbers import sig
 from vibration.presentation.panels import KitExplorer, PanelIds, agg_figure, line_style, panel_assets, screen_words
 from vibration.presentation.style import case_style, place_legend
 
@@ -175,7 +175,7 @@ class HBExplorer(KitExplorer):
         ax = fig.subplots()
         d, (w, a, stable), f = v["duffing"], v["curve"], v["folds"]
         plot_curve(ax, w, a, stable=stable, color=_colors()["hardening" if d.k3 >= 0 else "softening"],
-                   label=minus(f"$k_3$ = {d.k3:.3g} N/m$^3$"))  # fmt: skip
+                   label=f"$k_3$ = {sig(d.k3, 3)} N/m$^3$")  # fmt: skip
         ax.plot(*v["backbone"], "k:", lw=0.8, label="backbone")
         if f.bistable:
             ax.plot([f.omega_low, f.omega_high], [f.amplitude_low, f.amplitude_high], "o", mfc="white", color="k",

@@ -40,12 +40,6 @@ def _spring(case: SpringCase) -> str:
     return f"{case.label}, {_k3(case)}"
 
 
-def _bound(value: float, tol: float) -> str | Missing:
-    """A self-check against its tolerance: ``< 10⁻¹²`` when it holds, else the value and the tolerance."""
-    text = bound(value, tol)
-    return Missing(reason="not computed for this case") if text is None else text
-
-
 def hb_table(study: DuffingStudy) -> Table:
     """Folds, peak and its textbook estimate for each spring, and the linear spring's peak."""
     rows = []
@@ -343,10 +337,10 @@ def lyapunov_convergence_table(study: DuffingStudy) -> Table:
 def checks_table(study: DuffingStudy) -> Table:
     """Rounding-level self-checks, printed as bounds (the bound, not the value, reproduces on every machine)."""
     checks = (
-        ("amplitude equation on the drawn curves, relative residual", _bound(study.amp_residual, 1e-12)),
-        ("Floquet: |μ₁ μ₂| against exp(−cT/m), relative error", _bound(study.liouville, 1e-9)),
-        ("QR exponents: |λ₁ + λ₂ + c/m| (RK4 step error), 1/s", _bound(study.qr_sum_error, 1e-6)),
-        ("continued folds: |μ − 1| of the multiplier closest to +1", _bound(study.fold_multiplier_error, 1e-8)),
+        ("amplitude equation on the drawn curves, relative residual", bound(study.amp_residual, 1e-12)),
+        ("Floquet: |μ₁ μ₂| against exp(−cT/m), relative error", bound(study.liouville, 1e-9)),
+        ("QR exponents: |λ₁ + λ₂ + c/m| (RK4 step error), 1/s", bound(study.qr_sum_error, 1e-6)),
+        ("continued folds: |μ − 1| of the multiplier closest to +1", bound(study.fold_multiplier_error, 1e-8)),
     )
     caption = "Self-checks: identities the computation must meet to rounding, with the bound each meets."
     return self_checks(checks, caption=caption, name="tab-duffing-checks")

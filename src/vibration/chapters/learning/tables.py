@@ -14,7 +14,7 @@ from vibration.chapters.learning.notation import num, power, sig
 from vibration.chapters.learning.study import ACTIVE, SEMI, TARGETS, LearningStudy
 from vibration.physics.learning import Comparison
 from vibration.presentation.numbers import integer
-from vibration.presentation.tables import Column, Missing, Table, columns
+from vibration.presentation.tables import Column, Missing, Table, bound, columns
 
 METHOD_NAMES = {"ars": "ARS (augmented random search, V1-t)", "cma": "CMA-ES"}
 SHORT_NAMES = {"ars": "ARS", "cma": "CMA-ES"}
@@ -329,20 +329,12 @@ CHECK_LABELS = {
 }
 
 
-def _bound(value: float, tol: float):
-    """``< 10⁻¹²`` when the check holds (stable on every machine), else the value and the tolerance."""
-    if not math.isfinite(value):
-        return Missing(reason="not computed for this case")
-    tol_text = power(round(math.log10(tol)))
-    return f"< {tol_text}" if abs(value) < tol else f"{num(abs(value), 2)} (above {tol_text})"
-
-
 def checks_table(st: LearningStudy) -> Table:
     """Residuals against independent methods, printed as bounds."""
     rows = []
     for key, value in st.checks.items():
         what, against = CHECK_LABELS[key]
-        rows.append({"what": what, "against": against, "bound": _bound(value, CHECK_TOL)})
+        rows.append({"what": what, "against": against, "bound": bound(value, CHECK_TOL)})
     return Table(
         rows=rows,
         columns=columns(

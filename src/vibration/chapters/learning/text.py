@@ -17,7 +17,7 @@ import numpy as np
 from vibration.chapters.learning.notation import num, pct, sig
 from vibration.chapters.learning.study import METHODS, TARGETS, LearningStudy, Paired
 from vibration.chapters.learning.tables import EXCESS_FLOOR, METHOD_NAMES, SHORT_NAMES, decay_rates
-from vibration.presentation.numbers import integer
+from vibration.presentation.numbers import integer, pm
 
 #: The first target (5 %): the chapter's yardstick for "found the optimum".
 TARGET = TARGETS[0]
@@ -51,9 +51,8 @@ def compared(p: Paired, other: str, verb: str = "costs") -> str:
 
 
 def _pm(x: float, se: float) -> str:
-    """``x ± se`` with x given to the digit of the standard error's first significant figure."""
-    digits = max(1, math.floor(math.log10(abs(x))) - math.floor(math.log10(se)) + 1) if se > 0 and x != 0 else 4
-    return f"{sig(x, digits)} \\pm {num(se, 1)}"
+    """``x ± se`` in the book's format (:func:`vibration.presentation.numbers.pm`), for a formula."""
+    return pm(x, se).replace("±", "\\pm")
 
 
 def _cap(text: str) -> str:
@@ -143,7 +142,7 @@ def learning_sentence(st: LearningStudy) -> str:
     parts = []
     for res in st.learners:
         parts.append(
-            f"{METHOD_NAMES[res.method]} reaches $J/J^* = {st.ratio(res):.5f}$ after {res.episodes} episodes "
+            f"{METHOD_NAMES[res.method]} reaches $J/J^* = {sig(st.ratio(res), 6)}$ after {res.episodes} episodes "
             f"({_steps(res.episodes * st.task.n_steps)} steps), with gains {_gains(res.gains, 4)}"
         )
     ok = all(st.ratio(r) <= 1.0 + TARGET for r in st.learners)

@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 
 from vibration.chapters.tmd.designs import TUNINGS
-from vibration.chapters.tmd.digits import Sig, power, sig
+from vibration.chapters.tmd.digits import Sig, sig
 from vibration.chapters.tmd.study import TMDStudy
 from vibration.physics.tmd import mistuned_peak
-from vibration.presentation.tables import Column, Missing, Table, columns, self_checks
+from vibration.presentation.tables import Column, Missing, Table, bound, columns, self_checks
 
 #: Tables of the chapter in the order the notebook shows them (the tests build every one).
 __all__ = [
@@ -271,19 +271,10 @@ def building_load_table(st: TMDStudy) -> Table:
     )
 
 
-def _bound(value: float, tol: float) -> str | Missing:
-    """A check against its tolerance, as the printed tolerance (stable on every machine) or the failure."""
-    if not math.isfinite(value):
-        return Missing(reason="not finite")
-    if abs(value) < tol:
-        return f"< {power(tol) if tol < 1.0 else f'{tol:g}'}"
-    return f"{sig(abs(value), 2)} (above {power(tol) if tol < 1.0 else f'{tol:g}'})"
-
-
 def checks_table(st: TMDStudy) -> Table:
     """Independent checks of the chapter's numbers, printed as bounds."""
     return self_checks(
-        ((c.name, _bound(c.value, c.tolerance), c.ok) for c in st.checks),
+        ((c.name, bound(c.value, c.tolerance), c.ok) for c in st.checks),
         caption="Independent checks of the chapter's numbers.",
         name="tab-tmd-checks",
         headers=("check", "difference", "within"),

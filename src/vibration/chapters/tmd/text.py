@@ -24,6 +24,7 @@ from vibration.chapters.tmd.designs import (
 from vibration.chapters.tmd.digits import pct, sig
 from vibration.chapters.tmd.keyresults import worst_peak
 from vibration.chapters.tmd.study import TMDStudy
+from vibration.presentation.numbers import signed
 
 ZP, ZA, F, R = r"$\zeta_p$", r"$\zeta_a$", "$f$", r"$r = \omega/\omega_p$"
 __all__ = [
@@ -60,10 +61,6 @@ def _the(design: Design) -> str:
 
 def _band(st: TMDStudy) -> str:
     return f"±{100 * st.mistuning:g} %"
-
-
-def _signed_pct(share: float) -> str:
-    return f"{100 * share:+.3g} %".replace("-", "−")
 
 
 # ----------------------------------------------------------------------------- the front
@@ -165,7 +162,8 @@ def robustness_sentence(st: TMDStudy) -> str:
     bare = float(st.robust_none.max())
     text += (
         f"Over the whole {_band(st)} band its worst peak is {sig(h.worst_peak)} (at $k_p$ "
-        f"{_signed_pct(h.eps_worst)}), against {sig(bare) if math.isfinite(bare) else 'an unbounded peak'} without "
+        f"{signed(100 * h.eps_worst, 3)} %), against "
+        f"{sig(bare) if math.isfinite(bare) else 'an unbounded peak'} without "
         f"an absorber. The robust min-max design ({F} = {sig(rb.tuning.f)}, {ZA} = {sig(rb.tuning.zeta_a)}) holds "
         f"the worst peak to {sig(rb.worst_peak)} ({_rel(rb.worst_peak, h.worst_peak)}) at the price of a nominal "
         f"peak of {sig(rb.nominal_peak)} instead of {sig(h.nominal_peak)} ({_rel(rb.nominal_peak, h.nominal_peak)})."
