@@ -138,6 +138,15 @@ def check_array(
     vibration.physics.model.ParameterError: t contains nan s: allowed finite real numbers
     """
     u = f" {unit}" if unit else ""
+    arr = _real_dtype_array(name, value, u)
+    _check_shape(name, value, arr, ndim, min_size, max_size)
+    out = arr.astype(float)
+    _check_elements(name, out, u, low, high, low_open, increasing)
+    return out + 0.0
+
+
+def _real_dtype_array(name: str, value, u: str) -> np.ndarray:
+    """``value`` as a numpy array of integers or floats (not yet converted), or :class:`ParameterError`."""
     if isinstance(value, (str, bytes)):
         raise ParameterError(f"{name} = {_show(value)} is a string: allowed an array of real numbers{u}")
     if isinstance(value, np.ndarray):
@@ -160,6 +169,11 @@ def check_array(
         raise ParameterError(
             f"{name} = {_show(value)} is not an array of real numbers (dtype {arr.dtype}): allowed real numbers{u}"
         )
+    return arr
+
+
+def _check_shape(name: str, value, arr: np.ndarray, ndim: tuple[int, ...], min_size: int, max_size: int) -> None:
+    """Refuse an array ``arr`` (given as ``value``) whose number of dimensions or of elements is not allowed."""
     if arr.ndim not in ndim:
         dims = " or ".join(f"{d}-D" for d in ndim) if len(ndim) <= 4 else f"at most {max(ndim)}-D"
         raise ParameterError(f"{name} has shape {arr.shape} ({name} = {_show(value)}): allowed {dims}")
@@ -169,7 +183,12 @@ def check_array(
             + ("a non-empty array, " if arr.size == 0 else "")
             + f"{min_size} to {max_size} elements"
         )
-    out = arr.astype(float)
+
+
+def _check_elements(
+    name: str, out: np.ndarray, u: str, low: float | None, high: float | None, low_open: bool, increasing: bool
+) -> None:
+    """Refuse a float array ``out`` with a non-finite element, one out of bounds, or not strictly increasing."""
     bad = ~np.isfinite(out)
     if bad.any():
         raise ParameterError(f"{name} contains {float(out[bad].ravel()[0])!r}{u}: allowed finite real numbers")
@@ -188,7 +207,6 @@ def check_array(
             f"{name} is not strictly increasing ({name}[{j}] = {out[j]!r}, {name}[{j + 1}] = {out[j + 1]!r}): "
             "allowed strictly increasing values"
         )
-    return out + 0.0
 
 
 def _inputs(inputs: dict) -> str:

@@ -104,6 +104,17 @@ def simulate(
     >>> r.t.shape, r.method, r.status
     ((5001,), 'RK45', 0)
     """
+    t_end, n_points, x0, v0, rtol, atol = _simulate_args(
+        osc, force, t_end, n_points, x0, v0, method, rtol, atol, t_eval
+    )
+    _check_window(osc, force, t_end, method)
+    sol = _integrate(osc, force, t_end, n_points, x0, v0, method, rtol, atol, t_eval)
+    _check_solution(sol, t_end, n_points, method, t_eval)
+    return _response(sol, method, rtol, atol)
+
+
+def _simulate_args(osc, force, t_end, n_points, x0, v0, method, rtol, atol, t_eval):
+    """The checked arguments of :func:`simulate`: ``(t_end, n_points, x0, v0, rtol, atol)``."""
     check_records(osc, force)
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
@@ -117,9 +128,11 @@ def simulate(
         raise ParameterError(
             f"t_eval = {t_eval!r:.60} is not a bool: allowed True (n_points samples) or False (the solver's steps)"
         )
+    return t_end, n_points, x0, v0, rtol, atol
 
-    _check_window(osc, force, t_end, method)
 
+def _integrate(osc, force, t_end, n_points, x0, v0, method, rtol, atol, t_eval):
+    """``solve_ivp`` on the state space of :func:`simulate`, its right-hand side counted against ``MAX_NFEV``."""
     m, c, k = osc.m, osc.c, osc.k
     F0, w = force.F0, force.omega
     sin = math.sin
@@ -139,12 +152,16 @@ def simulate(
     extra = {"jac": jac} if method in ("Radau", "BDF", "LSODA") else {}
     try:
         with np.errstate(all="ignore"):  # an overflow is reported below, by name
-            sol = solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
+            return solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
     except OverBudget:
         raise ParameterError(
             f"t_end = {t_end!r} s needs more than {MAX_NFEV} right-hand-side evaluations with {method} at "
             f"rtol = {rtol!r}, atol = {atol!r}: allowed a shorter window or looser tolerances"
         ) from None
+
+
+def _check_solution(sol, t_end: float, n_points: int, method: str, t_eval) -> None:
+    """Refuse a run of :func:`simulate` with too many steps or an overflow; raise ``RuntimeError`` on a failure."""
     if sol.status == 0 and not t_eval and sol.t.size > n_points:
         raise ParameterError(
             f"n_points = {n_points} is out of range: the solver took {sol.t.size - 1} steps and t_eval=False "
@@ -154,6 +171,10 @@ def simulate(
         raise ParameterError(f"t_end = {t_end!r} s: the response overflows the float range: allowed a shorter window")
     if sol.status != 0:
         raise RuntimeError(f"solve_ivp ({method}) failed at t = {sol.t[-1]:g} s: {sol.message}")
+
+
+def _response(sol, method: str, rtol: float, atol: float) -> Response:
+    """The :class:`Response` record of a finished ``solve_ivp`` run of :func:`simulate`."""
     return Response(
         t=sol.t,
         x=sol.y[0],

@@ -172,8 +172,21 @@ def semi_active_response(
     Y = check_real("Y", Y, low=0.0, unit="m")
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
+    spp, dt_max = _check_steps(steps_per_period, dt_max)
+    n_steps, stride, dt = _response_steps(law_i, p, w, t_end, n_points, spp, dt_max)
+    rec, dt = _response_run(law_i, p, Y, w, n_steps, stride, dt, spp, dt_max)
+    return _response_record(rec, Y, w, law, dt)
+
+
+def _check_steps(steps_per_period, dt_max) -> tuple[int, float]:
+    """The checked RK4 step settings ``(steps_per_period, dt_max)`` of the semi-active runs and sweeps."""
     spp = check_int("steps_per_period", steps_per_period, low=100, high=100_000)
     dt_max = check_real("dt_max", dt_max, low=0.0, low_open=True, unit="s")
+    return spp, dt_max
+
+
+def _response_steps(law_i: int, p: np.ndarray, w: float, t_end: float, n_points: int, spp: int, dt_max: float):
+    """RK4 steps in all, steps per output sample and the step (s) of :func:`semi_active_response` (checked budget)."""
     dt, _ = _sa_step(law_i, w, spp, dt_max)
     _sa_rate_check(p, dt, w, spp)
     if not t_end / dt <= RK4_STEPS_MAX:
@@ -190,6 +203,11 @@ def semi_active_response(
             f"t_end = {t_end!r} s needs {n_steps} RK4 steps of {dt:.3g} s: allowed at most {RK4_STEPS_MAX} "
             "(shorten t_end or lower steps_per_period)"
         )
+    return n_steps, stride, dt
+
+
+def _response_run(law_i, p, Y, w, n_steps, stride, dt, spp, dt_max) -> tuple[np.ndarray, float]:
+    """The compiled run's samples and its step (s), a quarter as long while the run overflows (REFINE times)."""
     rec, _ = _sa_kernel()[0](law_i, p, Y, w, np.zeros(5), dt, n_steps, stride, n_steps + 1)
     for _ in range(REFINE):  # the MR damper's state may need a shorter step (see semi_active_sweep)
         if np.all(np.isfinite(rec)) or 4 * n_steps > RK4_STEPS_MAX:
@@ -201,6 +219,11 @@ def semi_active_response(
             f"dt_max = {dt_max!r} s, steps_per_period = {spp}: the RK4 run overflowed (step {dt:.3g} s too long "
             "for the device or the plant); allowed a smaller step"
         )
+    return rec, dt
+
+
+def _response_record(rec: np.ndarray, Y: float, w: float, law: str, dt: float) -> SemiActiveResponse:
+    """The :class:`SemiActiveResponse` of the compiled run's samples ``rec`` (t, x, v, f, command)."""
     t = rec[:, 0]
     return SemiActiveResponse(
         t=t,
@@ -342,8 +365,7 @@ def semi_active_sweep(
     Y = check_real("Y", Y, low=0.0, low_open=True, unit="m")
     settle = check_real("settle", settle, low=1.0, high=50.0)
     periods = check_int("periods", periods, low=1, high=1000)
-    spp = check_int("steps_per_period", steps_per_period, low=100, high=100_000)
-    dt_max = check_real("dt_max", dt_max, low=0.0, low_open=True, unit="s")
+    spp, dt_max = _check_steps(steps_per_period, dt_max)
     ws = w_arr.ravel()
     dts, n_steps, n_settle, s0s = _sweep_plan(
         osc, law_i, p, ws, Y, c_sky=c_sky, c_min=c_min, settle=settle, periods=periods, spp=spp, dt_max=dt_max
@@ -356,6 +378,12 @@ def semi_active_sweep(
             f"with Y = {Y!r} m (too long for the device; allowed a smaller dt_max = {dt_max!r} s or more "
             f"steps_per_period = {spp}, or a smaller Y)"
         )
+    return _sweep_record(st, w_arr, Y, periods, law)
+
+
+def _sweep_record(st: np.ndarray, w_arr: np.ndarray, Y: float, periods: int, law: str) -> SemiActiveSweep:
+    """The :class:`SemiActiveSweep` of the compiled sweep's per-frequency sums ``st``, shaped as ``w_arr``."""
+    ws = w_arr.ravel()
     n, span = st[:, 6], periods * 2.0 * np.pi / ws
     out = np.stack(
         [

@@ -266,8 +266,21 @@ def duffing_response(
     >>> round(float(x[-1]), 4)          # m, as the linear closed form of Part I
     2.009
     """
-    from scipy.integrate import solve_ivp
+    d, F0, w, x0, v0, rtol, tt = _response_args(duffing, F0, omega, x0, v0, rtol, sine, t)
+    t_end = float(tt[-1])
+    if t_end == 0.0:  # t = [0]: the initial state
+        return np.array([x0]), np.array([v0])
+    xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
+    _check_scales(d, F0, x0, v0, xr)
+    _check_response_work(d, w, x0, xr, t_end)
+    blow_up = 1e3 * max(xr, abs(x0), d.barrier) if d.k3 < 0 else math.inf
+    sol = _integrate_response(d, F0, w, sine, x0, v0, tt, t_end, rtol, xr, blow_up)
+    _check_response_solution(sol, d, blow_up, tt)
+    return sol.y[0], sol.y[1]
 
+
+def _response_args(duffing, F0, omega, x0, v0, rtol, sine, t):
+    """The checked arguments of :func:`duffing_response`: ``(d, F0, omega, x0, v0, rtol, t)``, ``t`` flattened."""
     d = _check_duffing(duffing)
     F0 = check_real("F0", F0, low=0.0, unit="N")
     w = check_real("omega", omega, low=0.0, unit="rad/s")
@@ -277,13 +290,11 @@ def duffing_response(
     if not isinstance(sine, (bool, np.bool_)):
         raise ParameterError(f"sine = {sine!r:.60} is not a bool: allowed True or False")
     tt = check_array("t", t, low=0.0, ndim=(0, 1), increasing=True, unit="s").reshape(-1)
-    m, c, k, k3 = d.m, d.c, d.k, d.k3
-    trig = math.sin if sine else math.cos
-    t_end = float(tt[-1])
-    if t_end == 0.0:  # t = [0]: the initial state
-        return np.array([x0]), np.array([v0])
-    xr = _x_ref(d, F0) if F0 > 0 else max(abs(x0), 1.0)
-    _check_scales(d, F0, x0, v0, xr)
+    return d, F0, w, x0, v0, rtol, tt
+
+
+def _check_response_work(d: Duffing, w: float, x0: float, xr: float, t_end: float) -> None:
+    """Refuse up front a window of :func:`duffing_response` that needs more than ``MAX_RHS_EVALUATIONS``."""
     # DOP853 needs h lambda within its stability interval (about 6) and takes 12 evaluations a step
     lam = _linear_rate(d, max(abs(x0), xr))
     need = 12.0 * t_end * max(lam, w) / 6.0
@@ -293,7 +304,14 @@ def duffing_response(
             f"lambda = {max(lam, w):.3g} 1/s from {_rates(d)}, omega = {w:.3g} rad/s), more than "
             f"{MAX_RHS_EVALUATIONS}: allowed a shorter window or a less stiff oscillator (smaller c/m, k/m)"
         )
-    blow_up = 1e3 * max(xr, abs(x0), d.barrier) if d.k3 < 0 else math.inf
+
+
+def _integrate_response(d: Duffing, F0, w, sine, x0, v0, tt, t_end, rtol, xr, blow_up):
+    """``solve_ivp`` (DOP853) of :func:`duffing_response` at the times ``tt``, stopped at ``|x| = blow_up``."""
+    from scipy.integrate import solve_ivp
+
+    m, c, k, k3 = d.m, d.c, d.k, d.k3
+    trig = math.sin if sine else math.cos
 
     def rhs(time, y):
         return (y[1], (F0 * trig(w * time) - c * y[1] - k * y[0] - k3 * y[0] ** 3) / m)
@@ -305,7 +323,7 @@ def duffing_response(
     counted = _Counted(rhs, MAX_RHS_EVALUATIONS)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
-            sol = solve_ivp(
+            return solve_ivp(
                 counted,
                 (0.0, t_end),
                 (x0, v0),
@@ -321,6 +339,10 @@ def duffing_response(
             f"t = {t_end:.6g} s ({_rates(d)}, k3 = {k3!r} N/m^3, x0 = {x0!r} m, v0 = {v0!r} m/s): allowed a shorter "
             "window, a looser rtol or a less stiff oscillator"
         ) from None
+
+
+def _check_response_solution(sol, d: Duffing, blow_up: float, tt: np.ndarray) -> None:
+    """Refuse a run of :func:`duffing_response` in which the mass escaped or the integration failed."""
     if sol.status == 1:
         raise ParameterError(
             f"the mass escaped over the softening spring's barrier ({d.barrier:.3g} m): |x| passed {blow_up:.3g} m "
@@ -331,4 +353,3 @@ def duffing_response(
         raise ParameterError(
             f"the integration failed ({sol.message}): allowed parameters whose motion stays bounded and finite"
         )
-    return sol.y[0], sol.y[1]

@@ -131,6 +131,21 @@ def periodic_orbit(
     w = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
     rtol = check_real("rtol", rtol, low=1e-13, high=1e-6)
     max_iterations = check_int("max_iterations", max_iterations, low=1, high=200)
+    x, v = _orbit_start(d, F0, w, amplitude_guess, x0, v0)
+    _check_orbit_work(d, F0, w, x)
+    budget = _Counted(None, MAX_RHS_EVALUATIONS)
+    try:
+        return _shoot(d, F0, w, x, v, rtol, max_iterations, budget)
+    except OverBudget:
+        raise ParameterError(
+            f"periodic_orbit spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations at omega = "
+            f"{w!r} rad/s ({_rates(d)}): allowed fewer max_iterations, a looser rtol, a higher omega or a less "
+            "stiff oscillator"
+        ) from None
+
+
+def _orbit_start(d: Duffing, F0: float, w: float, amplitude_guess, x0, v0) -> tuple[float, float]:
+    """The checked starting state ``(x, v)`` (m, m/s) of :func:`periodic_orbit`: ``(x0, v0)`` or the guess's."""
     if (x0 is None) != (v0 is None):
         raise ParameterError(f"x0 = {x0!r:.30} and v0 = {v0!r:.30}: allowed both given (m, m/s) or both None")
     if x0 is None:
@@ -157,6 +172,11 @@ def periodic_orbit(
         raise ParameterError(
             f"amplitude_guess = {amplitude_guess!r} m gives a non-finite starting state: allowed a smaller guess"
         )
+    return x, v
+
+
+def _check_orbit_work(d: Duffing, F0: float, w: float, x: float) -> None:
+    """Refuse up front a shooting of :func:`periodic_orbit` from ``x`` (m) whose two periods need too much work."""
     # each period needs h lambda within DOP853's stability interval (about 6), 12 evaluations a step
     T = 2.0 * math.pi / w
     lam = _linear_rate(d, max(abs(x), _x_ref(d, F0) if F0 > 0 else 0.0))
@@ -167,15 +187,6 @@ def periodic_orbit(
             f"periods (step <= 6/lambda, lambda = {lam:.3g} 1/s: {_rates(d)}), more than {MAX_RHS_EVALUATIONS}: "
             "allowed a higher omega or a less stiff oscillator (smaller c/m, k/m)"
         )
-    budget = _Counted(None, MAX_RHS_EVALUATIONS)
-    try:
-        return _shoot(d, F0, w, x, v, rtol, max_iterations, budget)
-    except OverBudget:
-        raise ParameterError(
-            f"periodic_orbit spent its budget of {MAX_RHS_EVALUATIONS} right-hand-side evaluations at omega = "
-            f"{w!r} rad/s ({_rates(d)}): allowed fewer max_iterations, a looser rtol, a higher omega or a less "
-            "stiff oscillator"
-        ) from None
 
 
 def _shoot(d: Duffing, F0: float, w: float, x: float, v: float, rtol: float, max_iterations: int, budget):

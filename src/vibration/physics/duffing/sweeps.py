@@ -178,6 +178,21 @@ def frequency_sweep(
     >>> bool(up.steady.all() and down.steady.all())
     True
     """
+    d, F0, w, x0, v0, rtol, xr = _sweep_args(duffing, F0, omegas, direction, x0, v0, rtol)
+    atol, steady_tol, max_periods, max_steps = _sweep_controls(
+        rtol, xr, atol, steady_tol, max_periods, integrator, max_steps
+    )
+    _sweep_work(d, F0, w, x0, 3, max_steps, "frequency_sweep")
+    order = np.argsort(w, kind="stable")
+    if direction == "down":
+        order = order[::-1]
+    ws = np.ascontiguousarray(w[order])
+    outs = _run_sweep(d, F0, ws, x0, v0, rtol, atol, steady_tol, max_periods, xr, integrator, max_steps)
+    return _sweep_result(w, order, outs, direction)
+
+
+def _sweep_args(duffing, F0, omegas, direction, x0, v0, rtol):
+    """The checked model and start of :func:`frequency_sweep`: ``(d, F0, w, x0, v0, rtol, xr)``, xr its scale (m)."""
     d = _check_duffing(duffing)
     _check_damped(d)
     F0 = check_real("F0", F0, low=0.0, unit="N")
@@ -193,6 +208,11 @@ def frequency_sweep(
         "the longest forcing period 2π/min(omegas) (s)", 2.0 * math.pi / max(float(np.min(w)), 1e-320),
         inputs={"min(omegas)": float(np.min(w))}, allowed="omegas >= 1e-300 rad/s (omegas > 0)",
     )  # fmt: skip
+    return d, F0, w, x0, v0, rtol, xr
+
+
+def _sweep_controls(rtol, xr, atol, steady_tol, max_periods, integrator, max_steps):
+    """The checked integrator settings of :func:`frequency_sweep`: ``(atol, steady_tol, max_periods, max_steps)``."""
     atol = rtol * xr if atol is None else check_real("atol", atol, low=XREF_MIN * 1e-13, unit="m")
     steady_tol = check_real("steady_tol", steady_tol, low=1e-12, high=0.1)
     max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
@@ -200,11 +220,15 @@ def frequency_sweep(
         raise ParameterError(f"integrator = {integrator!r:.60} is not valid: allowed 'compiled' or 'scipy'")
     limit = MAX_SWEEP_STEPS if integrator == "compiled" else MAX_SCIPY_SWEEP_STEPS
     max_steps = limit if max_steps is None else check_int("max_steps", max_steps, low=1, high=limit)
-    _sweep_work(d, F0, w, x0, 3, max_steps, "frequency_sweep")
-    order = np.argsort(w, kind="stable")
-    if direction == "down":
-        order = order[::-1]
-    ws = np.ascontiguousarray(w[order])
+    return atol, steady_tol, max_periods, max_steps
+
+
+def _run_sweep(d, F0, ws, x0, v0, rtol, atol, steady_tol, max_periods, xr, integrator, max_steps):
+    """Integrate the sweep over ``ws`` (in sweep order); returns its output arrays, in that order too.
+
+    ``(amplitude, x_max, x_min, steady, periods, x_end, v_end, n_steps)``; a spent budget is a
+    :class:`ParameterError`.
+    """
     nw = ws.size
     amp, xmax, xmin = np.empty(nw), np.empty(nw), np.empty(nw)
     steady, periods, nsteps = np.zeros(nw, dtype=np.bool_), np.zeros(nw, dtype=np.int64), np.zeros(nw, np.int64)
@@ -222,8 +246,14 @@ def frequency_sweep(
             f"rad/s (frequency {j + 1} of {nw} in sweep order, {periods[j]} periods there; {_rates(d)}): allowed "
             "fewer frequencies, a smaller max_periods, a looser steady_tol or rtol, or a less stiff oscillator"
         )
+    return outs
+
+
+def _sweep_result(w: np.ndarray, order: np.ndarray, outs: tuple, direction: str) -> SweepResult:
+    """The :class:`SweepResult` of the output arrays ``outs`` (in sweep ``order``), aligned with ``w`` again."""
+    amp, xmax, xmin, steady, periods, xs, vs, nsteps = outs
     inv = np.empty_like(order)
-    inv[order] = np.arange(nw)
+    inv[order] = np.arange(order.size)
     return SweepResult(
         omega=w.copy(),
         amplitude=amp[inv],
@@ -318,19 +348,8 @@ def locate_jump(
     >>> round(lo, 3), round(hi - lo, 6)       # rad/s, rad/s
     (5.107, 0.001)
     """
-    d = _check_duffing(duffing)
-    _check_damped(d)
-    F0 = check_real("F0", F0, low=0.0, unit="N")
-    if not isinstance(result, SweepResult):
-        raise ParameterError(f"result = {result!r:.60} is not a SweepResult: allowed the output of frequency_sweep")
-    max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
-    jumps = result.jumps()
-    which = check_int("which", which, low=0, high=max(len(jumps) - 1, 0))
-    if not jumps:
-        raise ParameterError("result has no jump: allowed a sweep whose amplitude jumps")
-    levels = check_int("levels", levels, low=0, high=8)
-    n = check_int("n", n, low=2, high=1000)
-    w_before, w_after, *_ = jumps[which]
+    d, F0, jump, levels, n, max_periods = _jump_args(duffing, F0, result, which, levels, n, max_periods)
+    w_before, w_after, *_ = jump
     i = int(np.flatnonzero(result.omega == w_before)[0])
     x, v = float(result.x_end[i]), float(result.v_end[i])
     budget = MAX_SWEEP_STEPS  # shared by every level
@@ -345,18 +364,45 @@ def locate_jump(
             d, F0, ws, direction=result.direction, x0=x, v0=v, max_periods=max_periods, max_steps=budget
         )
         budget -= int(res.n_steps.sum())
-        order = np.argsort(ws) if result.direction == "up" else np.argsort(ws)[::-1]
-        amps = res.amplitude[order]
-        a0 = amps[0]
-        found = False
-        for j in range(1, n + 1):
-            if abs(amps[j] - a0) > 0.25 * max(amps[j], a0) or not np.isfinite(amps[j]):
-                k_prev = order[j - 1]
-                w_before, w_after = float(ws[k_prev]), float(ws[order[j]])
-                x, v = float(res.x_end[k_prev]), float(res.v_end[k_prev])
-                found = True
-                break
-            a0 = amps[j]
-        if not found:  # the finer sweep crossed without jumping: keep the last bracket
+        bracket = _jump_in(res, ws, n, result.direction)
+        if bracket is None:  # the finer sweep crossed without jumping: keep the last bracket
             break
+        w_before, w_after, x, v = bracket
     return w_before, w_after
+
+
+def _jump_args(duffing, F0, result, which, levels, n, max_periods):
+    """The checked arguments of :func:`locate_jump`: ``(d, F0, jump, levels, n, max_periods)``.
+
+    ``jump`` is the chosen one (``which``) of ``result.jumps()``.
+    """
+    d = _check_duffing(duffing)
+    _check_damped(d)
+    F0 = check_real("F0", F0, low=0.0, unit="N")
+    if not isinstance(result, SweepResult):
+        raise ParameterError(f"result = {result!r:.60} is not a SweepResult: allowed the output of frequency_sweep")
+    max_periods = check_int("max_periods", max_periods, low=3, high=1_000_000)
+    jumps = result.jumps()
+    which = check_int("which", which, low=0, high=max(len(jumps) - 1, 0))
+    if not jumps:
+        raise ParameterError("result has no jump: allowed a sweep whose amplitude jumps")
+    levels = check_int("levels", levels, low=0, high=8)
+    n = check_int("n", n, low=2, high=1000)
+    return d, F0, jumps[which], levels, n, max_periods
+
+
+def _jump_in(res: SweepResult, ws: np.ndarray, n: int, direction: str):
+    """The first jump of the sweep ``res`` over ``ws`` (``n + 1`` frequencies) in sweep order, or None.
+
+    Returns ``(omega_before, omega_after, x, v)``: the bracket, rad/s, and the state the sweep ended in at
+    ``omega_before``, m and m/s.
+    """
+    order = np.argsort(ws) if direction == "up" else np.argsort(ws)[::-1]
+    amps = res.amplitude[order]
+    a0 = amps[0]
+    for j in range(1, n + 1):
+        if abs(amps[j] - a0) > 0.25 * max(amps[j], a0) or not np.isfinite(amps[j]):
+            k_prev = order[j - 1]
+            return float(ws[k_prev]), float(ws[order[j]]), float(res.x_end[k_prev]), float(res.v_end[k_prev])
+        a0 = amps[j]
+    return None

@@ -180,59 +180,65 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
     sigma = osc.decay_rate
     wn2 = osc.k / osc.m
     q = wn2 - sigma * sigma
-    zeta = osc.damping_ratio
-
-    def crossing(level: float, a: float, b: float) -> float:
-        """First time y = level on [a, b], y increasing there (1 - y decreasing)."""
-        return _solve(lambda t: f(t) - (1.0 - level), a, b)
-
     if q > 0.0:
-        wd = math.sqrt(q)
-        half = math.pi / wd  # time between extrema, s
-        log_mp = -sigma * half  # ln(overshoot), written without underflow
-        overshoot = math.exp(log_mp)
-        rise = crossing(0.9, 0.0, half) - crossing(0.1, 0.0, half)
-        # extrema |y - 1| = overshoot^n at n half; N = the last one above the band
-        if log_mp >= math.log(band):
-            n = max(1, math.ceil(math.log(band) / log_mp) - 1)
-            while n > 1 and n * log_mp <= math.log(band):
-                n -= 1
-            while (n + 1) * log_mp > math.log(band):
-                n += 1
-            if n * log_mp <= math.log(band):  # overshoot exactly at the band
-                n = 0
-        else:
-            n = 0
-        # on [n half, (n + 1) half]: |y - 1| = overshoot^n (1 - y(tau)), tau = t - n half
-        level = band * math.exp(-n * log_mp)
-        tau = _solve(lambda t: f(t) - level, 0.0, half)
-        settle = n * half + tau
-        return StepMetrics(
-            zeta=zeta,
-            overshoot=overshoot,
-            peak_time=half,
-            rise_time=rise,
-            settling_time=settle,
-            band=band,
-            final_value=1.0 / osc.k,
-        )
-
-    hi = osc.time_constant
-    for _ in range(2100):  # doubling from any normal float reaches the overflow in < 2100 steps
-        if not f(hi) > min(band, 0.1):
-            break
-        hi *= 2.0
-    rise = crossing(0.9, 0.0, hi) - crossing(0.1, 0.0, hi)
-    settle = crossing(1.0 - band, 0.0, hi)
+        overshoot, peak_time, rise, settle = _oscillating_metrics(f, sigma, math.sqrt(q), band)
+    else:
+        overshoot, peak_time = 0.0, math.inf
+        rise, settle = _monotone_metrics(f, osc.time_constant, band)
     return StepMetrics(
-        zeta=zeta,
-        overshoot=0.0,
-        peak_time=math.inf,
+        zeta=osc.damping_ratio,
+        overshoot=overshoot,
+        peak_time=peak_time,
         rise_time=rise,
         settling_time=settle,
         band=band,
         final_value=1.0 / osc.k,
     )
+
+
+def _crossing(f, level: float, a: float, b: float) -> float:
+    """First time y = level on [a, b], y increasing there (1 - y decreasing); ``f`` is ``t -> 1 - y(t)``."""
+    return _solve(lambda t: f(t) - (1.0 - level), a, b)
+
+
+def _last_extremum_above(log_mp: float, band: float) -> int:
+    """The last n whose extremum ``|y - 1| = overshoot^n`` (``log_mp = ln overshoot``) exceeds the band, 0 if none."""
+    if log_mp >= math.log(band):
+        n = max(1, math.ceil(math.log(band) / log_mp) - 1)
+        while n > 1 and n * log_mp <= math.log(band):
+            n -= 1
+        while (n + 1) * log_mp > math.log(band):
+            n += 1
+        if n * log_mp <= math.log(band):  # overshoot exactly at the band
+            n = 0
+    else:
+        n = 0
+    return n
+
+
+def _oscillating_metrics(f, sigma: float, wd: float, band: float) -> tuple[float, float, float, float]:
+    """Overshoot, peak time (s), rise time (s) and settling time (s) with oscillating roots ``-sigma +- i wd``."""
+    half = math.pi / wd  # time between extrema, s
+    log_mp = -sigma * half  # ln(overshoot), written without underflow
+    overshoot = math.exp(log_mp)
+    rise = _crossing(f, 0.9, 0.0, half) - _crossing(f, 0.1, 0.0, half)
+    # extrema |y - 1| = overshoot^n at n half; N = the last one above the band
+    n = _last_extremum_above(log_mp, band)
+    # on [n half, (n + 1) half]: |y - 1| = overshoot^n (1 - y(tau)), tau = t - n half
+    level = band * math.exp(-n * log_mp)
+    tau = _solve(lambda t: f(t) - level, 0.0, half)
+    return overshoot, half, rise, n * half + tau
+
+
+def _monotone_metrics(f, hi: float, band: float) -> tuple[float, float]:
+    """Rise time and settling time (s) of a monotone step response (real roots), bracketed from ``hi`` (s)."""
+    for _ in range(2100):  # doubling from any normal float reaches the overflow in < 2100 steps
+        if not f(hi) > min(band, 0.1):
+            break
+        hi *= 2.0
+    rise = _crossing(f, 0.9, 0.0, hi) - _crossing(f, 0.1, 0.0, hi)
+    settle = _crossing(f, 1.0 - band, 0.0, hi)
+    return rise, settle
 
 
 def settling_optimal_zeta(band: float = 0.02) -> float:
