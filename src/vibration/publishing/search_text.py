@@ -80,7 +80,7 @@ def _store(app) -> Path:
     return Path(app.doctreedir) / "vibration-search-text"
 
 
-def keep_page_text(app, doctree, docname) -> None:
+def _keep_page_text(app, doctree, docname) -> None:
     """Keep the page's text (``doctree-resolved``), a part of the search page's script."""
     if app.builder.format != "html":
         return
@@ -111,7 +111,7 @@ def script(pages: dict[str, str]) -> str:
     )
 
 
-def write_script(app, exception) -> None:
+def _write_script(app, exception) -> None:
     """Write the search page's script from every current page's kept text (``build-finished``)."""
     if exception is not None or app.builder.format != "html":
         return
@@ -126,13 +126,13 @@ def write_script(app, exception) -> None:
     (static / SCRIPT).write_text(script(pages), encoding="utf-8")
 
 
-def load_on_search_page(app, pagename, templatename, context, doctree) -> None:
+def _load_on_search_page(app, pagename, templatename, context, doctree) -> None:
     """The search page alone loads the pages' text (``html-page-context``)."""
     if pagename == "search":
         app.add_js_file(SCRIPT)
 
 
 def setup(app) -> None:
-    app.connect("doctree-resolved", keep_page_text)
-    app.connect("build-finished", write_script)
-    app.connect("html-page-context", load_on_search_page)
+    app.connect("doctree-resolved", _keep_page_text)
+    app.connect("build-finished", _write_script)
+    app.connect("html-page-context", _load_on_search_page)
