@@ -98,8 +98,6 @@ def run(
     """
     import logging
 
-    import nbformat
-
     out = out.resolve()  # kernels run in notebooks/: every path they get must be absolute
     out.mkdir(parents=True, exist_ok=True)
     work = Path(tempfile.mkdtemp(prefix=".report-", dir=out))
@@ -118,13 +116,7 @@ def run(
                 f"report: nothing changed ({_plural(total, 'chapter')} and the book as built), checked in "
                 f"{time.perf_counter() - t0:.1f} s -> {out / 'report' / 'index.html'}"
             )
-            return [
-                {"name": ch.name,
-                 "title": ChapterPage(name=ch.name, notebook=nbformat.read(results[ch.name]["executed"],
-                                      as_version=4), parameters=[]).title,
-                 "elapsed_s": results[ch.name]["elapsed_s"]}
-                for ch in chapters
-            ]  # fmt: skip
+            return _cached_summary(chapters, results)
         store.forget_book()  # the tree is about to change: no record may describe it until it is complete
         for name in list(results):  # the cached chapters enter the new tree
             store.restore(name, work / "notebooks" / f"{name}.ipynb", work / "tables")
@@ -132,23 +124,7 @@ def run(
         if todo:
             _execute_all(todo, work, store, manifests, results, total, jobs, scheduler, cell_timeout, log)
         t_run = time.perf_counter() - t0
-        contents = _contents(chapters)
-        pages = [
-            ChapterPage(
-                name=ch.name,
-                notebook=nbformat.read(results[ch.name]["executed"], as_version=4),
-                parameters=chapter_parameters(ch, values),
-                elapsed_s=results[ch.name]["elapsed_s"],
-                part=_part(contents, ch),
-            )
-            for ch in chapters
-        ]
-        t1 = time.perf_counter()
-        state = out / "book-state" if cache else None  # Sphinx's folder, kept: only changed pages are rebuilt
-        info = build_book(pages, work / "report", work / "book", pdf=pdf, state=state, title=contents.title)
-        shutil.rmtree(work / "book", ignore_errors=True)
-        log(f"book: built in {time.perf_counter() - t1:.1f} s{_build_summary(info)}")
-        _move_into_place(work, out)
+        pages = _build_into_place(chapters, values, results, work, out, pdf=pdf, cache=cache, log=log)
         store.remember_book(book_key)
         ran = len(todo)
         log(
@@ -158,6 +134,43 @@ def run(
         return [{"name": p.name, "title": p.title, "elapsed_s": p.elapsed_s} for p in pages]
     finally:
         shutil.rmtree(work, ignore_errors=True)
+
+
+def _cached_summary(chapters: list[Chapter], results: dict) -> list[dict]:
+    """What :func:`run` returns when nothing changed: each chapter's name, title and time, from the cache."""
+    import nbformat
+
+    return [
+        {"name": ch.name,
+         "title": ChapterPage(name=ch.name, notebook=nbformat.read(results[ch.name]["executed"],
+                              as_version=4), parameters=[]).title,
+         "elapsed_s": results[ch.name]["elapsed_s"]}
+        for ch in chapters
+    ]  # fmt: skip
+
+
+def _build_into_place(chapters, values, results, work: Path, out: Path, *, pdf, cache, log) -> list[ChapterPage]:
+    """Build the book of the executed notebooks in ``work``, then move the finished tree into ``out``; the pages."""
+    import nbformat
+
+    contents = _contents(chapters)
+    pages = [
+        ChapterPage(
+            name=ch.name,
+            notebook=nbformat.read(results[ch.name]["executed"], as_version=4),
+            parameters=chapter_parameters(ch, values),
+            elapsed_s=results[ch.name]["elapsed_s"],
+            part=_part(contents, ch),
+        )
+        for ch in chapters
+    ]
+    t1 = time.perf_counter()
+    state = out / "book-state" if cache else None  # Sphinx's folder, kept: only changed pages are rebuilt
+    info = build_book(pages, work / "report", work / "book", pdf=pdf, state=state, title=contents.title)
+    shutil.rmtree(work / "book", ignore_errors=True)
+    log(f"book: built in {time.perf_counter() - t1:.1f} s{_build_summary(info)}")
+    _move_into_place(work, out)
+    return pages
 
 
 def _plan(chapters: list[Chapter], values: dict, store: ChapterCache, cache: bool, log):

@@ -99,21 +99,6 @@ def tmd_panel_html(mu=0.05, f=None, zeta_a=None, *, zeta_p=0.0, panel_id: str | 
         panel_id = _ids.new(params)
     e = html.escape
     pid = e(panel_id)
-    lg = math.log10
-
-    def slider(cls, label, lo, hi, value, log):
-        a, b, v = (lg(lo), lg(hi), lg(value)) if log else (lo, hi, value)
-        return kit.range_control(pid, cls, f"vtm-{cls}", label, low=repr(a), high=repr(b), step="any", value=repr(v))
-
-    rules = "".join(
-        f'<tr><th>{e(name)}</th><td class="vtm-{key}-f"></td><td class="vtm-{key}-za"></td>'
-        f'<td class="vtm-{key}-p0"></td><td class="vtm-{key}-p"></td></tr>\n'
-        for key, name in _SLIDER_RULES
-    )
-    buttons = "".join(
-        f'<button type="button" class="vtm-rule" data-rule="{key}">{e(name.split(" (")[0])}</button>'
-        for key, name in _SLIDER_RULES
-    )
     sub = kit.screen_words(
         "Move the mass ratio μ and the absorber damping ζ<sub>a</sub> (logarithmic), the tuning "
         "f = ω<sub>a</sub>/ω<sub>p</sub> and the primary damping ζ<sub>p</sub>; computed in your browser from the "
@@ -128,20 +113,50 @@ data-styles="{e(json.dumps(STYLES))}">
 <p class="vtm-sub">{sub}</p>
 <noscript>This panel needs JavaScript to draw its plot.</noscript>
 <div class="vtm-controls">
-{slider("mu", "mass ratio μ = m<sub>a</sub>/m<sub>p</sub> (log)", *MU_RANGE, mu, True)}\
-{slider("f", "tuning f = ω<sub>a</sub>/ω<sub>p</sub>", *F_RANGE, f, False)}\
-{
-        slider(
+{_sliders_html(pid, mu, f, zeta_a, zeta_p)}\
+</div>
+{_body_html()}\
+<script>window.vibrationTMD.mount(document.getElementById({json.dumps(panel_id)}));</script>
+</div>
+"""
+
+
+def _sliders_html(pid: str, mu: float, f: float, zeta_a: float, zeta_p: float) -> str:
+    """The four sliders at their starting values, μ and ζ_a on logarithmic scales (``pid`` HTML-escaped)."""
+    lg = math.log10
+
+    def slider(cls, label, lo, hi, value, log):
+        a, b, v = (lg(lo), lg(hi), lg(value)) if log else (lo, hi, value)
+        return kit.range_control(pid, cls, f"vtm-{cls}", label, low=repr(a), high=repr(b), step="any", value=repr(v))
+
+    return (
+        slider("mu", "mass ratio μ = m<sub>a</sub>/m<sub>p</sub> (log)", *MU_RANGE, mu, True)
+        + slider("f", "tuning f = ω<sub>a</sub>/ω<sub>p</sub>", *F_RANGE, f, False)
+        + slider(
             "za",
             "absorber damping ζ<sub>a</sub> = c<sub>a</sub>/(2 m<sub>a</sub> ω<sub>a</sub>) (log)",
             *ZETA_A_RANGE,
             zeta_a,
             True,
         )
-    }\
-{slider("zp", "primary damping ζ<sub>p</sub>", *ZETA_P_RANGE, zeta_p, False)}\
-</div>
-<div class="vtm-buttons">set f and ζ<sub>a</sub> to the rule for this μ: {buttons}</div>
+        + slider("zp", "primary damping ζ<sub>p</sub>", *ZETA_P_RANGE, zeta_p, False)
+    )
+
+
+def _body_html() -> str:
+    """The rule buttons, the plot and the readout tables (the peak, P and Q, each rule's tuning), filled by the
+    script."""
+    e = html.escape
+    rules = "".join(
+        f'<tr><th>{e(name)}</th><td class="vtm-{key}-f"></td><td class="vtm-{key}-za"></td>'
+        f'<td class="vtm-{key}-p0"></td><td class="vtm-{key}-p"></td></tr>\n'
+        for key, name in _SLIDER_RULES
+    )
+    buttons = "".join(
+        f'<button type="button" class="vtm-rule" data-rule="{key}">{e(name.split(" (")[0])}</button>'
+        for key, name in _SLIDER_RULES
+    )
+    return f"""<div class="vtm-buttons">set f and ζ<sub>a</sub> to the rule for this μ: {buttons}</div>
 <div class="vtm-body">
 <figure><svg class="vtm-plot" viewBox="0 0 640 330" role="img"
 aria-label="primary's magnification against the frequency ratio"></svg></figure>
@@ -158,8 +173,6 @@ aria-label="primary's magnification against the frequency ratio"></svg></figure>
 <tbody>
 {rules}</tbody></table>
 </div>
-</div>
-<script>window.vibrationTMD.mount(document.getElementById({json.dumps(panel_id)}));</script>
 </div>
 """
 

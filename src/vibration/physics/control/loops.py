@@ -110,11 +110,34 @@ def loop_costs(osc: Oscillator, kp: float, kd: float, *, ki: float = 0.0, omega:
     """
     kp, ki, kd = _gains(osc, kp, ki, kd)
     omega = check_real("omega", omega, low=0.0, low_open=True, unit="rad/s")
-    m, c, k = osc.m, osc.c, osc.k
     den = _closed_loop_den(osc, kp, ki, kd)
     if not np.all(np.isfinite(den)):
         raise ParameterError(f"kp = {kp!r}, ki = {ki!r}, kd = {kd!r}: the loop overflows; allowed finite gains")
     stable = bool(np.all(np.real(np.roots(den)) < 0.0))
+    w_c = _crossovers(osc, kp, ki, kd)
+    crossover, phase_margin, delay = _delay_margin(osc, kp, ki, kd, w_c)
+    if not stable:
+        delay = 0.0
+    bn = _noise_bandwidth(kp, ki, kd, den, stable)
+    return LoopCosts(
+        kp=kp,
+        ki=ki,
+        kd=kd,
+        stable=stable,
+        crossovers=w_c,
+        crossover=crossover,
+        phase_margin=phase_margin,
+        delay_margin=delay,
+        loop_gain=float(np.abs(_loop(osc, kp, ki, kd, omega))),
+        noise_bandwidth=bn,
+        hf_noise_gain=kd,
+    )
+
+
+def _crossovers(osc, kp, ki, kd) -> np.ndarray:
+    """The gain crossovers ``|L(i w)| = 1`` (rad/s, ascending): the positive real roots of the polynomial in ``w^2``,
+    polished by Newton steps on ``log|L|``."""
+    m, c, k = osc.m, osc.c, osc.k
     if ki > 0.0:
         poly = [m * m, c * c - 2.0 * k * m - kd * kd, k * k - kp * kp + 2.0 * ki * kd, -ki * ki]
     else:
@@ -132,16 +155,22 @@ def loop_costs(osc: Oscillator, kp: float, kd: float, *, ki: float = 0.0, omega:
         with np.errstate(divide="ignore", invalid="ignore"):
             step = np.where(dg != 0.0, g / dg, 0.0)
         w_c = np.where(np.abs(step) < 0.1 * w_c, w_c - step, w_c)
+    return w_c
+
+
+def _delay_margin(osc, kp, ki, kd, w_c: np.ndarray) -> tuple[float, float, float]:
+    """``(crossover, phase margin, delay margin)`` of the crossover that the least delay destabilises (rad/s, rad,
+    s); ``(nan, inf, inf)`` without a crossover."""
     if w_c.size:
         pm = np.mod(math.pi + np.angle(_loop(osc, kp, ki, kd, w_c)), 2.0 * math.pi)
         tau = pm / w_c
         i = int(np.argmin(tau))
-        crossover, phase_margin, delay = float(w_c[i]), float(pm[i]), float(tau[i])
-    else:
-        crossover, phase_margin, delay = math.nan, math.inf, math.inf
-    if not stable:
-        delay = 0.0
-    # noise bandwidth: pi * H2^2 of T = N / D
+        return float(w_c[i]), float(pm[i]), float(tau[i])
+    return math.nan, math.inf, math.inf
+
+
+def _noise_bandwidth(kp, ki, kd, den: np.ndarray, stable: bool) -> float:
+    """``pi ||T||_2^2`` of ``T = N / D`` from the controllability Gramian, rad/s (inf for an unstable loop)."""
     from scipy.linalg import solve_continuous_lyapunov
     from scipy.signal import tf2ss
 
@@ -149,22 +178,8 @@ def loop_costs(osc: Oscillator, kp: float, kd: float, *, ki: float = 0.0, omega:
     if stable:
         A, B, Cm, _ = tf2ss(num, den)
         W = solve_continuous_lyapunov(A, -B @ B.T)
-        bn = math.pi * float((Cm @ W @ Cm.T)[0, 0])
-    else:
-        bn = math.inf
-    return LoopCosts(
-        kp=kp,
-        ki=ki,
-        kd=kd,
-        stable=stable,
-        crossovers=w_c,
-        crossover=crossover,
-        phase_margin=phase_margin,
-        delay_margin=delay,
-        loop_gain=float(np.abs(_loop(osc, kp, ki, kd, omega))),
-        noise_bandwidth=bn,
-        hf_noise_gain=kd,
-    )
+        return math.pi * float((Cm @ W @ Cm.T)[0, 0])
+    return math.inf
 
 
 def force_floor(osc: Oscillator, force: SineForce, X) -> np.ndarray | float:

@@ -295,6 +295,17 @@ def pid_response(
     >>> round(float(r.x[-1]), 6)                        # m: integral action removes the offset
     0.1
     """
+    p = _pid_parameters(osc, force, kp, ki, kd, u_max, anti_windup, t_track, x_ref)
+    grid = _grid(t_end, n_points)
+    rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
+    atol = check_real("atol", atol, low=0.0, low_open=True)
+    pid_work_check(osc, p["kp"], p["ki"], kd=p["kd"], t_end=float(grid[-1]), omega=p["wf"], rtol=rtol)
+    y, nfev = _pid_run(p, grid, rtol, atol, float(grid[-1]))
+    return _pid_record(p, grid, y, nfev, anti_windup)
+
+
+def _pid_parameters(osc, force, kp, ki, kd, u_max, anti_windup, t_track, x_ref) -> dict:
+    """Check the loop's arguments (in :func:`pid_response`'s order); the parameters :func:`_pid_run` takes."""
     kp, ki, kd = _check_loop(osc, force, kp, ki, kd)
     umax = _limit(u_max)
     if anti_windup not in ANTI_WINDUP:
@@ -309,15 +320,15 @@ def pid_response(
             "allowed ki t_track > 0 and finite"
         )
     x_ref = check_real("x_ref", x_ref, unit="m")
-    grid = _grid(t_end, n_points)
-    rtol = check_real("rtol", rtol, low=RTOL_MIN, high=RTOL_MAX)
-    atol = check_real("atol", atol, low=0.0, low_open=True)
     F0, wf = (force.F0, force.omega) if force is not None else (0.0, 0.0)
     mode = ANTI_WINDUP.index(anti_windup)
-    p = dict(m=osc.m, c=osc.c, k=osc.k, F0=F0, wf=wf, kp=kp, ki=ki, kd=kd, umax=umax, x_ref=x_ref, mode=mode,
-             gain_bc=1.0 / (ki * tt))  # fmt: skip
-    pid_work_check(osc, kp, ki, kd=kd, t_end=float(grid[-1]), omega=wf, rtol=rtol)
-    y, nfev = _pid_run(p, grid, rtol, atol, float(grid[-1]))
+    return dict(m=osc.m, c=osc.c, k=osc.k, F0=F0, wf=wf, kp=kp, ki=ki, kd=kd, umax=umax, x_ref=x_ref, mode=mode,
+                gain_bc=1.0 / (ki * tt))  # fmt: skip
+
+
+def _pid_record(p: dict, grid: np.ndarray, y: np.ndarray, nfev: int, anti_windup: str) -> PIDResponse:
+    """The response record of the states ``y`` on ``grid``: the demand (refused when it overflows) and the force."""
+    kp, ki, kd, x_ref, umax = p["kp"], p["ki"], p["kd"], p["x_ref"], p["umax"]
     x, v, integ = y
     with np.errstate(over="ignore", invalid="ignore"):
         ud = kp * (x_ref - x) + ki * integ - kd * v

@@ -283,14 +283,20 @@ def folds(duffing: Duffing, F0: float) -> Folds:
     d = _check_duffing(duffing)
     _check_damped(d)
     F0 = check_real("F0", F0, low=0.0, low_open=True, unit="N")
-    m, c, k, kap = d.m, d.c, d.k, d.kappa
+    kap = d.kappa
     a_peak, w_peak = _peak(d, F0)
-    nan = math.nan
-    single_valued = Folds(
-        omega_low=nan, omega_high=nan, amplitude_low=nan, amplitude_high=nan, peak_amplitude=a_peak, peak_omega=w_peak
-    )
     if kap == 0.0:
-        return single_valued
+        return _folds_record([], kap, a_peak, w_peak)
+    found = _fold_points(d, F0)
+    if math.isfinite(a_peak):  # folds of the resonance curve, not of a softening curve's outer branch
+        found = [(w, a) for w, a in found if a <= a_peak * (1 + 1e-9)]
+    found.sort()
+    return _folds_record(found, kap, a_peak, w_peak)
+
+
+def _fold_points(d: Duffing, F0: float) -> list[tuple[float, float]]:
+    """Every admissible root of the fold quintic as ``(omega, A)`` (rad/s, m), in the companion matrix's order."""
+    m, c, k, kap = d.m, d.c, d.k, d.kappa
     g = kap * F0 * F0
     # scale y by y0 so that the coefficients are O(1)
     y0 = abs(g) ** (1.0 / 3.0)
@@ -318,16 +324,23 @@ def folds(duffing: Duffing, F0: float) -> Folds:
         w2 = (k + y + g / (2 * y * y)) / m if y != 0 else -1.0
         if z > 0 and w2 > 0 and math.isfinite(w2):
             found.append((math.sqrt(w2), math.sqrt(z)))
-    if math.isfinite(a_peak):  # folds of the resonance curve, not of a softening curve's outer branch
-        found = [(w, a) for w, a in found if a <= a_peak * (1 + 1e-9)]
-    found.sort()
+    return found
+
+
+def _folds_record(found: list[tuple[float, float]], kap: float, a_peak: float, w_peak: float) -> Folds:
+    """The :class:`Folds` of the sorted fold points ``found`` and the peak: both folds, the one jump of an open
+    softening curve, or none."""
+    nan = math.nan
     if len(found) == 1 and kap < 0:  # an open softening curve: only the sweep-up jump exists
         (wh, ah) = found[0]
         return Folds(
             omega_low=nan, omega_high=wh, amplitude_low=nan, amplitude_high=ah, peak_amplitude=a_peak, peak_omega=w_peak
         )
     if len(found) < 2:
-        return single_valued
+        return Folds(
+            omega_low=nan, omega_high=nan, amplitude_low=nan, amplitude_high=nan, peak_amplitude=a_peak,
+            peak_omega=w_peak,
+        )  # fmt: skip
     (wl, al), (wh, ah) = found[0], found[-1]
     return Folds(
         omega_low=wl, omega_high=wh, amplitude_low=al, amplitude_high=ah, peak_amplitude=a_peak, peak_omega=w_peak

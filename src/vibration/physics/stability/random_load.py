@@ -183,6 +183,14 @@ def simulate_white_noise(
     >>> x.shape, float(x[0, 0]), float(v[1, 0])
     ((2, 1001), 0.0, 0.0)
     """
+    S0, dt, n, n_paths, seed = _simulation_inputs(osc, S0, t_end, dt, n_paths, seed)
+    x, v = _filtered_paths(osc, S0, dt, n, n_paths, seed)
+    t = np.arange(n) * dt
+    return t, x, v
+
+
+def _simulation_inputs(osc: Oscillator, S0, t_end, dt, n_paths, seed) -> tuple[float, float, int, int, int]:
+    """:func:`simulate_white_noise`'s arguments checked in its order: ``(S0, dt, n, n_paths, seed)``, n samples."""
     S0 = _check_stationary(osc, S0)
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
     dt = _default_dt(osc) if dt is None else check_real("dt", dt, low=0.0, low_open=True, unit="s")
@@ -200,6 +208,11 @@ def simulate_white_noise(
         raise ParameterError(
             f"n_paths * (t_end/dt + 1) = {n * n_paths} is out of range: allowed <= {SAMPLES_MAX} samples (memory)"
         )
+    return S0, dt, n, n_paths, seed
+
+
+def _filtered_paths(osc: Oscillator, S0: float, dt: float, n: int, n_paths: int, seed: int):
+    """``n_paths`` seeded paths ``(x, v)`` of ``n`` samples from rest: the exact transition run as a linear filter."""
     phi, qd = _transition(osc, S0, dt)
     lower = _covariance_factor(qd) if S0 > 0.0 else np.zeros((2, 2))
     rng = np.random.default_rng(seed)
@@ -219,8 +232,7 @@ def simulate_white_noise(
             f"overflows the sampled response (stationary variance pi S0/(k c) = {math.pi * S0 / (osc.k * osc.c):.3g}"
             " m^2): allowed S0 and m, c, k whose noise covariance and its square root are finite floats"
         )
-    t = np.arange(n) * dt
-    return t, x, v
+    return x, v
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -286,6 +298,13 @@ def white_noise_monte_carlo(
     >>> bool(abs(mc.variance - white_noise_variance(osc, 1.0)) < 4 * mc.standard_error)
     True
     """
+    n_paths, burn, duration, dt = _monte_carlo_window(osc, n_paths, duration, dt)
+    px, pv, keep = _path_means(osc, S0, n_paths, burn + duration, dt, burn, seed)
+    return _monte_carlo_record(px, pv, keep, S0=S0, n_paths=n_paths, duration=duration, dt=dt, burn=burn, seed=seed)
+
+
+def _monte_carlo_window(osc: Oscillator, n_paths, duration, dt) -> tuple[int, float, float, float]:
+    """:func:`white_noise_monte_carlo`'s oscillator, paths and window checked: ``(n_paths, burn-in, duration, dt)``."""
     check_oscillator(osc)
     _check_stable(osc, "a stationary random response")
     n_paths = check_int("n_paths", n_paths, low=2, high=100_000)
@@ -300,20 +319,28 @@ def white_noise_monte_carlo(
             f"duration = {duration!r} s, dt = {dt!r} s, burn-in {burn:.3g} s): "
             f"allowed at most {MC_TOTAL_MAX:g} samples in all (run time)"
         )
-    chunk = max(1, min(n_paths, MC_CHUNK // max(1, int((burn + duration) / dt) + 1)))
+    return n_paths, burn, duration, dt
+
+
+def _path_means(osc: Oscillator, S0, n_paths: int, t_end: float, dt: float, burn: float, seed):
+    """Per-path means of ``x^2`` and ``v^2`` after the burn-in, simulated in chunks of paths (one seed each from
+    ``SeedSequence(seed)``); with the last chunk's mask of the samples kept."""
+    chunk = max(1, min(n_paths, MC_CHUNK // max(1, int(t_end / dt) + 1)))
     ss = np.random.SeedSequence(check_int("seed", seed, low=0, high=2**63 - 1))
     mx, mv = [], []
     done = 0
     for child in ss.spawn(math.ceil(n_paths / chunk)):
         size = min(chunk, n_paths - done)
-        t, x, v = simulate_white_noise(
-            osc, S0, burn + duration, dt=dt, n_paths=size, seed=int(child.generate_state(1)[0])
-        )
+        t, x, v = simulate_white_noise(osc, S0, t_end, dt=dt, n_paths=size, seed=int(child.generate_state(1)[0]))
         keep = t >= burn
         mx.append(np.mean(x[:, keep] ** 2, axis=1))
         mv.append(np.mean(v[:, keep] ** 2, axis=1))
         done += size
-    px, pv = np.concatenate(mx), np.concatenate(mv)
+    return np.concatenate(mx), np.concatenate(mv), keep
+
+
+def _monte_carlo_record(px, pv, keep, *, S0, n_paths, duration, dt, burn, seed) -> MonteCarlo:
+    """The estimate from the per-path means ``px``, ``pv`` (refused when their statistics overflow)."""
     with np.errstate(over="ignore", invalid="ignore"):
         stats = [float(px.mean()), float(px.std(ddof=1)), float(pv.mean()), float(pv.std(ddof=1))]
     if not all(math.isfinite(x) for x in stats):

@@ -293,6 +293,22 @@ class MDOF:
         >>> round(float(r.x[0, 0]), 12), round(float(r.x[1, 0]), 4)
         (0.0, 2.009)
         """
+        p, omega, t, z0 = self._response_inputs(t, load, omega, x0, v0, method)
+        if method != "expm":
+            with np.errstate(over="ignore", invalid="ignore"):
+                D = self.K - omega * omega * self.M + 1j * omega * self.C
+            if not np.all(np.isfinite(D)):
+                raise ParameterError(
+                    f"omega = {omega!r} rad/s: the dynamic stiffness K - ω² M + iω C overflows; allowed a smaller omega"
+                )
+            lam, V = np.linalg.eig(self.state_matrix)
+            well = np.linalg.cond(V) <= 1e8 and np.linalg.cond(D) <= 1e10
+            if well or method == "modal":
+                return self._modal_response(t, p, omega, z0, D, lam, V)
+        return self._expm_response(t, p, omega, z0)
+
+    def _response_inputs(self, t, load, omega, x0, v0, method):
+        """:meth:`response`'s arguments checked in its order: ``(load, omega, t, z0)``, ``z0 = [x0; v0]``."""
         p = self._load(load)
         omega = check_real("omega", omega, low=0.0, unit="rad/s")
         t = np.atleast_1d(check_array("t", t, low=0.0, ndim=(0, 1), unit="s"))
@@ -309,32 +325,32 @@ class MDOF:
             z0[n:] = self._state("v0", v0)
         if method not in ("auto", "modal", "expm"):
             raise ParameterError(f"method = {method!r} is not known: allowed 'auto', 'modal', 'expm'")
-        if method != "expm":
-            with np.errstate(over="ignore", invalid="ignore"):
-                D = self.K - omega * omega * self.M + 1j * omega * self.C
-            if not np.all(np.isfinite(D)):
-                raise ParameterError(
-                    f"omega = {omega!r} rad/s: the dynamic stiffness K - ω² M + iω C overflows; allowed a smaller omega"
-                )
-            lam, V = np.linalg.eig(self.state_matrix)
-            well = np.linalg.cond(V) <= 1e8 and np.linalg.cond(D) <= 1e10
-            if well or method == "modal":
-                try:
-                    with np.errstate(all="ignore"):  # a non-finite result is refused below
-                        X = np.linalg.solve(D, p)
-                        st, ct = np.sin(omega * t), np.cos(omega * t)
-                        xs = np.outer(st, X.real) + np.outer(ct, X.imag)
-                        vs = omega * (np.outer(ct, X.real) - np.outer(st, X.imag))
-                        zh0 = z0 - np.concatenate([X.imag, omega * X.real])
-                        q0 = np.linalg.solve(V, zh0.astype(complex))
-                        zh = ((np.exp(np.outer(t, lam)) * q0) @ V.T).real
-                        x, v = xs + zh[:, :n], vs + zh[:, n:]
-                except np.linalg.LinAlgError:
-                    raise ParameterError(
-                        f"omega = {omega!r} rad/s is a natural frequency of the undamped model: the modal method has "
-                        "no steady state there; allowed method='expm' or 'auto' (secular growth)"
-                    ) from None
-                return _finite_response(MDOFResponse(t=t, x=x, v=v))
+        return p, omega, t, z0
+
+    def _modal_response(self, t, p, omega, z0, D, lam, V) -> MDOFResponse:
+        """Steady state from the complex solve with the dynamic stiffness ``D`` plus the free response by complex
+        modal superposition of the state matrix (eigenvalues ``lam``, eigenvectors ``V``)."""
+        n = self.n
+        try:
+            with np.errstate(all="ignore"):  # a non-finite result is refused below
+                X = np.linalg.solve(D, p)
+                st, ct = np.sin(omega * t), np.cos(omega * t)
+                xs = np.outer(st, X.real) + np.outer(ct, X.imag)
+                vs = omega * (np.outer(ct, X.real) - np.outer(st, X.imag))
+                zh0 = z0 - np.concatenate([X.imag, omega * X.real])
+                q0 = np.linalg.solve(V, zh0.astype(complex))
+                zh = ((np.exp(np.outer(t, lam)) * q0) @ V.T).real
+                x, v = xs + zh[:, :n], vs + zh[:, n:]
+        except np.linalg.LinAlgError:
+            raise ParameterError(
+                f"omega = {omega!r} rad/s is a natural frequency of the undamped model: the modal method has "
+                "no steady state there; allowed method='expm' or 'auto' (secular growth)"
+            ) from None
+        return _finite_response(MDOFResponse(t=t, x=x, v=v))
+
+    def _expm_response(self, t, p, omega, z0) -> MDOFResponse:
+        """The matrix exponential of the first-order system augmented with the harmonic load's two states."""
+        n = self.n
         Minv_p = np.linalg.solve(self.M, p)
         Aa = np.zeros((2 * n + 2, 2 * n + 2))
         Aa[: 2 * n, : 2 * n] = self.state_matrix
