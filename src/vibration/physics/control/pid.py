@@ -26,38 +26,76 @@ from ._common import (
 ANTI_WINDUP = ("none", "clamping", "back-calculation")
 
 
-def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) -> tuple[np.ndarray, int]:
-    """Integrate the limited PID loop piece by piece between its switching events (DOP853 on each piece).
+def _event(f, direction: float):
+    """Make ``f`` a terminal event of ``solve_ivp`` that fires on a zero crossing in ``direction``."""
+    f.terminal, f.direction = True, direction
+    return f
+
+
+@dataclass(frozen=True, slots=True, kw_only=True)
+class _PIDLoop:
+    """The limited PID loop of :func:`_pid_run` (the parameters of :func:`_pid_parameters`) and its pieces.
 
     The pieces: ``L`` (linear, ``|u_d| < u_max``), ``S`` (saturated at ``s u_max``, ``s = +-1``;
     with clamping the integrator is frozen while ``s e > 0``) and, with clamping, the sliding
     mode ``Z`` on ``u_d = s u_max``: there the linear side pushes ``u_d`` into the limit and
     the frozen side pulls it back, so the state sticks on the surface; Filippov's solution keeps
-    ``u_d = s u_max`` with the integrator rate ``I' = (kp v + kd a) / ki``. Each piece is smooth, so
-    DOP853 keeps its order; the pieces end at located events. Returns the states ``(3, n)`` on the
-    grid and the number of right-hand-side evaluations.
+    ``u_d = s u_max`` with the integrator rate ``I' = (kp v + kd a) / ki``. A piece is named by
+    ``(kind, s, frozen)``; each is smooth, and ends at one of its located events.
     """
-    from scipy.integrate import solve_ivp
 
-    m, c, k, F0, wf = p["m"], p["c"], p["k"], p["F0"], p["wf"]
-    kp, ki, kd, umax, xr, mode, gbc = p["kp"], p["ki"], p["kd"], p["umax"], p["x_ref"], p["mode"], p["gain_bc"]
-    sin = math.sin
+    m: float  # plant: kg, N s/m, N/m
+    c: float
+    k: float
+    F0: float  # disturbance F0 sin(wf t): N, rad/s
+    wf: float
+    kp: float  # gains: N/m, N/(m s), N s/m
+    ki: float
+    kd: float
+    umax: float  # force limit, N (inf: none)
+    x_ref: float  # set point, m
+    mode: int  # index of the integrator treatment in ANTI_WINDUP
+    gain_bc: float  # back-calculation gain 1 / (ki t_track), 1/(N s)
 
-    def acc(t, x, v, u):
-        return (F0 * sin(wf * t) - c * v - k * x + u) / m
+    def acc(self, t, x, v, u):
+        """The mass's acceleration under the force ``u`` (N), m/s^2."""
+        return (self.F0 * math.sin(self.wf * t) - self.c * v - self.k * x + u) / self.m
 
-    def ud_of(x, v, i):
-        return kp * (xr - x) + ki * i - kd * v
+    def ud(self, x, v, i):
+        """The unlimited PID output ``u_d``, N."""
+        return self.kp * (self.x_ref - x) + self.ki * i - self.kd * v
 
-    def rhs_lin(t, y):
+    def d_rate(self, t, y, s):
+        """The rate of ``u_d`` with the integrator frozen, on the surface ``u_d = s u_max``, N/s."""
+        return -self.kp * y[1] - self.kd * self.acc(t, y[0], y[1], s * self.umax)
+
+    def on_surface(self, s, x, v):
+        """The integrator state that puts ``(x, v)`` exactly on the surface ``u_d = s u_max``, m s."""
+        return (s * self.umax - self.kp * (self.x_ref - x) + self.kd * v) / self.ki
+
+    def rhs_lin(self, t, y):
+        """Right-hand side of the linear piece ``L``."""
         x, v, i = y
-        e = xr - x
-        return (v, acc(t, x, v, kp * e + ki * i - kd * v), e)
+        e = self.x_ref - x
+        return (v, self.acc(t, x, v, self.kp * e + self.ki * i - self.kd * v), e)
 
-    def make_sat(s, frozen):
-        u = s * umax
+    def rhs(self, kind, s, frozen):
+        """The right-hand side of the piece ``(kind, s, frozen)``."""
+        if kind == "L":
+            return self.rhs_lin
+        u = s * self.umax
+        acc = self.acc
+        if kind == "Z":
 
-        def rhs(t, y):
+            def slide(t, y):
+                x, v, _ = y
+                a = acc(t, x, v, u)
+                return (v, a, (self.kp * v + self.kd * a) / self.ki)
+
+            return slide
+        xr, kp, ki, kd, mode, gbc = self.x_ref, self.kp, self.ki, self.kd, self.mode, self.gain_bc
+
+        def sat(t, y):
             x, v, i = y
             e = xr - x
             if frozen:
@@ -68,46 +106,33 @@ def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) 
                 di = e
             return (v, acc(t, x, v, u), di)
 
-        return rhs
+        return sat
 
-    def make_slide(s):
-        u = s * umax
-
-        def rhs(t, y):
-            x, v, _ = y
-            a = acc(t, x, v, u)
-            return (v, a, (kp * v + kd * a) / ki)
-
-        return rhs
-
-    def ev(f, direction):
-        f.terminal, f.direction = True, direction
-        return f
-
-    def events(kind, s, frozen):
+    def events(self, kind, s, frozen):
+        """The terminal events that end the piece ``(kind, s, frozen)``."""
+        umax, ud, xr = self.umax, self.ud, self.x_ref
         if kind == "L":
             return [
-                ev(lambda t, y: ud_of(*y) - umax, 1.0),
-                ev(lambda t, y: ud_of(*y) + umax, -1.0),
+                _event(lambda t, y: ud(*y) - umax, 1.0),
+                _event(lambda t, y: ud(*y) + umax, -1.0),
             ]
         if kind == "S":
-            out = [ev(lambda t, y: s * ud_of(*y) - umax, -1.0)]
-            if mode == 1:  # the integrator law switches where e changes sign
-                out.append(ev(lambda t, y: xr - y[0], -s if frozen else s))
+            out = [_event(lambda t, y: s * ud(*y) - umax, -1.0)]
+            if self.mode == 1:  # the integrator law switches where e changes sign
+                out.append(_event(lambda t, y: xr - y[0], -s if frozen else s))
             return out
-
-        def d_rate(t, y):  # rate of u_d with the integrator frozen, on the surface
-            return -kp * y[1] - kd * acc(t, y[0], y[1], s * umax)
-
-        return [
-            ev(lambda t, y: s * d_rate(t, y), 1.0),  # the frozen side no longer pulls back: into S
-            ev(lambda t, y: s * (d_rate(t, y) + ki * (xr - y[0])), -1.0),  # the linear side no longer pushes: into L
+        d_rate, ki = self.d_rate, self.ki
+        return [  # Z ends where the frozen side no longer pulls back (into S) or the linear side no longer pushes (L)
+            _event(lambda t, y: s * d_rate(t, y, s), 1.0),
+            _event(lambda t, y: s * (d_rate(t, y, s) + ki * (xr - y[0])), -1.0),
         ]
 
-    def classify(t, y):
+    def classify(self, t, y):
+        """The piece ``(kind, s, frozen)`` the state ``y`` at ``t`` starts in."""
+        xr, kp, ki, kd, umax, mode = self.x_ref, self.kp, self.ki, self.kd, self.umax, self.mode
         x, v, i = y
         e = xr - x
-        ud = ud_of(x, v, i)
+        ud = self.ud(x, v, i)
         tol = 1e-9 * (umax + abs(kp * e) + abs(ki * i) + abs(kd * v))
         for s in (1.0, -1.0):
             gap = s * ud - umax
@@ -115,7 +140,7 @@ def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) 
             if gap > tol:
                 return "S", s, mode == 1 and se > 0.0
             if gap >= -tol:  # on the surface u_d = s u_max: the rates decide
-                d = -kp * v - kd * acc(t, x, v, s * umax)
+                d = -kp * v - kd * self.acc(t, x, v, s * umax)
                 r_lin = d + ki * e
                 if mode == 1 and se > 0.0:
                     if s * r_lin <= 0.0:
@@ -124,37 +149,67 @@ def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) 
                 return ("S", s, False) if s * r_lin > 0.0 else ("L", s, False)
         return "L", 1.0, False
 
+
+def _pid_piece(loop: _PIDLoop, piece: tuple, t0: float, y0: np.ndarray, t_end: float, t_eval: np.ndarray,
+               tols: tuple[float, float], budget: list):  # fmt: skip
+    """DOP853 on one piece from ``(t0, y0)``, up to its first event, its evaluations spent from ``budget``."""
+    from scipy.integrate import solve_ivp
+
+    f = loop.rhs(*piece)
+    evs = loop.events(*piece) if math.isfinite(loop.umax) else None
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused by the caller
+            return solve_ivp(
+                _counted(f, budget), (t0, t_end), y0, method="DOP853", t_eval=t_eval, rtol=tols[0], atol=tols[1],
+                events=evs,
+            )  # fmt: skip
+    except OverBudget:
+        raise _over_budget(t0, t_end, "PID loop") from None
+
+
+def _after_event(sol, piece: tuple) -> tuple[float, np.ndarray, tuple | None]:
+    """Time and state of the event that ended ``piece``, and the next piece when the event decides it."""
+    kind, s, frozen = piece
+    hit = next(j for j, te in enumerate(sol.t_events) if te.size)
+    t0, y0 = float(sol.t_events[hit][0]), np.array(sol.y_events[hit][0], dtype=float)
+    nxt = None
+    if kind == "Z":  # leaving the sliding mode: to the frozen side or to the linear side
+        nxt = ("S", s, True) if hit == 0 else ("L", s, False)
+    elif kind == "S" and hit == 1:  # e changed sign: the integrator law switches
+        nxt = ("S", s, not frozen)
+    return t0, y0, nxt  # nxt None: classify the state
+
+
+def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) -> tuple[np.ndarray, int]:
+    """Integrate the limited PID loop piece by piece between its switching events (DOP853 on each piece).
+
+    The pieces are those of :class:`_PIDLoop`; each is smooth, so DOP853 keeps its order. Returns the
+    states ``(3, n)`` on the grid and the number of right-hand-side evaluations.
+    """
+    loop = _PIDLoop(**p)
+    umax = loop.umax
     n = grid.size
     out = np.empty((3, n))
     filled, t0, y0 = 0, 0.0, np.zeros(3)
     budget = [MAX_NFEV]
     segments = 0
-    what = "PID loop"
     nxt = None
     while True:
         if not math.isfinite(umax):
-            kind, s, frozen = "L", 1.0, False
+            piece = ("L", 1.0, False)
         else:
-            kind, s, frozen = nxt if nxt is not None else classify(t0, y0)
+            piece = nxt if nxt is not None else loop.classify(t0, y0)
+        kind, s, _ = piece
         if kind == "Z":  # put the state exactly on the surface
             y0 = y0.copy()
-            y0[2] = (s * umax - kp * (xr - y0[0]) + kd * y0[1]) / ki
-        f = rhs_lin if kind == "L" else make_sat(s, frozen) if kind == "S" else make_slide(s)
-        evs = events(kind, s, frozen) if math.isfinite(umax) else None
+            y0[2] = loop.on_surface(s, y0[0], y0[1])
         segments += 1
         if segments > MAX_SEGMENTS:
             raise ParameterError(
                 f"u_max = {umax!r} N: the limited PID loop switched more than {MAX_SEGMENTS} times by t = {t0:.6g} s "
                 "(chattering against the limit); allowed at most that many pieces: shorten t_end"
             )
-        try:
-            with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused below
-                sol = solve_ivp(
-                    _counted(f, budget), (t0, t_end), y0, method="DOP853", t_eval=grid[filled:], rtol=rtol,
-                    atol=atol, events=evs,
-                )  # fmt: skip
-        except OverBudget:
-            raise _over_budget(t0, t_end, what) from None
+        sol = _pid_piece(loop, piece, t0, y0, t_end, grid[filled:], (rtol, atol), budget)
         if sol.status < 0:  # an overflow makes DOP853 fail
             break
         m_new = len(sol.t)  # a list (empty) when the piece ends before the next sample
@@ -162,18 +217,12 @@ def _pid_run(p: dict, grid: np.ndarray, rtol: float, atol: float, t_end: float) 
             ys = sol.y
             if kind == "Z":
                 ys = ys.copy()
-                ys[2] = (s * umax - kp * (xr - ys[0]) + kd * ys[1]) / ki
+                ys[2] = loop.on_surface(s, ys[0], ys[1])
             out[:, filled : filled + m_new] = ys
             filled += m_new
         if sol.status == 0 or filled >= n:
             break
-        hit = next(j for j, te in enumerate(sol.t_events) if te.size)
-        t0, y0 = float(sol.t_events[hit][0]), np.array(sol.y_events[hit][0], dtype=float)
-        nxt = None
-        if kind == "Z":  # leaving the sliding mode: to the frozen side or to the linear side
-            nxt = ("S", s, True) if hit == 0 else ("L", s, False)
-        elif kind == "S" and hit == 1:  # e changed sign: the integrator law switches
-            nxt = ("S", s, not frozen)
+        t0, y0, nxt = _after_event(sol, piece)
     if not np.all(np.isfinite(out[:, :filled])) or filled < n:
         raise ParameterError(
             f"t_end = {t_end!r} s: the PID loop's response overflowed (an unstable loop grows beyond floating point); "
