@@ -465,6 +465,24 @@ def test_chapter_pages_name_no_tool_and_the_appendix_names_the_versions(site):
     assert f"NumPy {numpy.__version__}" in using and f"SciPy {scipy.__version__}" in using
 
 
+def test_the_front_page_summarises_the_chapters_instead_of_repeating_them(site):
+    """Of Parts II and III the front page gives each chapter's headline (at most one sentence shared word for word
+    with the chapter's page per chapter), not its whole list of key results."""
+    from bs4 import BeautifulSoup
+
+    def sentences(page: Path) -> set[str]:
+        article = BeautifulSoup(page.read_text(encoding="utf-8"), "html.parser").select_one("article")
+        for element in article.select("div.cell_input, script, style, details, section#exercises"):
+            element.decompose()
+        text = " ".join(article.get_text(" ").split())
+        return {s for s in re.split(r"(?<=[.!?])\s+", text) if len(s.split()) >= 8}
+
+    front = sentences(site / "index.html")
+    later = [name for name in CHAPTERS if int(name[:2]) >= 6]
+    shared = {name: front & sentences(site / f"{name}.html") for name in later}
+    assert all(len(s) <= 1 for s in shared.values()), {k: sorted(v) for k, v in shared.items() if len(v) > 1}
+
+
 def test_no_paragraph_repeats_on_a_page(site):
     """A paragraph, list item or caption appears once per page, also when only its rounding differs."""
     from vibration.publishing.proofread import repeated_paragraphs

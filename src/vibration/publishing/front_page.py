@@ -1,4 +1,4 @@
-"""The front page's generated parts: the findings of Parts II and III (each chapter's key results), the list of
+"""The front page's generated parts: the findings of Parts II and III (each chapter's headline result), the list of
 parts and chapters, and the hidden tables of contents Sphinx builds its sidebar from."""
 
 from __future__ import annotations
@@ -24,9 +24,10 @@ def key_results(nb) -> str:
 
 
 def findings_markdown(pages: list[ChapterPage]) -> str:
-    """The front page's findings of every part: each chapter's key results, as this run computed them."""
-    lines = ["## What Parts II and III find", "", "Each chapter opens with its key results; here are those "
-             "beyond the paper, computed by this run.", ""]  # fmt: skip
+    """The front page's findings of Parts II and III: each chapter's headline (the first of its key results, as this
+    run computed it) and a link to the rest, so the front page summarises the chapters instead of repeating them."""
+    lines = ["## What Parts II and III find", "", "Each chapter opens with its key results; here is the first of "
+             "each, as this run computed it.", ""]  # fmt: skip
     for caption, members in parts(pages)[1:]:  # the front page states Part I's findings itself
         members = [(p, key_results(p.notebook)) for p in members]
         members = [(p, box) for p, box in members if box]
@@ -34,9 +35,11 @@ def findings_markdown(pages: list[ChapterPage]) -> str:
             continue
         lines += [f"### {caption}", ""]
         for p, box in members:
-            bullets = [ln[1:].strip() for ln in box.splitlines()[1:] if ln.strip(" >")]
-            lines += [f"**[{p.title}]({p.name}.ipynb)**", ""] + [b if b.startswith(("*", "-")) else f"* {b}"
-                                                                  for b in bullets] + [""]  # fmt: skip
+            bullets = [ln[1:].strip().lstrip("*-").strip() for ln in box.splitlines()[1:] if ln.strip(" >")]
+            more = len(bullets) - 1
+            rest = f" ({more} more in [the chapter]({p.name}.ipynb))" if more > 0 else ""
+            lines += [f"* **[{p.title}]({p.name}.ipynb).** {bullets[0]}{rest}"]
+        lines.append("")
     return "\n".join(lines)
 
 
