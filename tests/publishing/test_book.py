@@ -483,6 +483,25 @@ def test_the_front_page_summarises_the_chapters_instead_of_repeating_them(site):
     assert all(len(s) <= 1 for s in shared.values()), {k: sorted(v) for k, v in shared.items() if len(v) > 1}
 
 
+def test_no_sentence_repeats_on_a_chapter_page(site):
+    """A chapter's summary says what its sections found in new words: no sentence of eight or more words appears
+    twice in a chapter page's main text (code, folds and exercises left out)."""
+    from collections import Counter
+
+    from bs4 import BeautifulSoup
+
+    found = {}
+    for name in CHAPTERS:
+        page = (site / f"{name}.html").read_text(encoding="utf-8")
+        article = BeautifulSoup(page, "html.parser").select_one("article")
+        for element in article.select("div.cell_input, script, style, details, section#exercises"):
+            element.decompose()
+        text = " ".join(article.get_text(" ").split())
+        counts = Counter(s for s in re.split(r"(?<=[.!?])\s+", text) if len(s.split()) >= 8)
+        found[name] = [s[:80] for s, n in counts.items() if n > 1]
+    assert {k: v for k, v in found.items() if v} == {}
+
+
 def test_no_paragraph_repeats_on_a_page(site):
     """A paragraph, list item or caption appears once per page, also when only its rounding differs."""
     from vibration.publishing.proofread import repeated_paragraphs

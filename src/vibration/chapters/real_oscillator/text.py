@@ -285,8 +285,41 @@ def key_results(st: RealOscillatorStudy) -> str:
 
 
 def summary_text(st: RealOscillatorStudy) -> str:
-    """The chapter's closing paragraph."""
-    return " ".join([law_sentence(st), brake_sentence(st), steadiness_sentence(st), prediction_sentence(st)])
+    """The chapter's closing paragraph: what a lab instructor takes away, in new words (the sections' sentences
+    are not repeated; their numbers are in the key results)."""
+    laws = {s.law for s in st.settings}
+    if laws == {"viscous"}:
+        out = ["On this wheel one damping ratio describes every amplitude the decays cover, as the paper's model "
+               "assumes."]  # fmt: skip
+    else:
+        chosen = " and ".join(sorted(LAW_WORDS[law] for law in laws))
+        out = [
+            f"On this wheel the damping is not one ratio: the decays choose {chosen}, so a damping ratio quoted for "
+            "the wheel holds only at the amplitude it was measured at, and settings must be compared at matched "
+            "amplitude."
+        ]
+    if st.comparisons and not any(brake_resolved(d, j) for _, _, d, j in st.comparisons):
+        out.append("At matched amplitude these decays cannot tell the brake settings apart; more decays per setting "
+                   "over one amplitude range would.")  # fmt: skip
+    elif st.comparisons:
+        out.append("At matched amplitude the decays tell the brake settings apart.")
+    n_st, n, _, _ = steady_counts(st)
+    best = best_prediction(st)
+    if best is not None:
+        chosen = next((x.law for x in st.settings if x.brake == best.brake), best.law)
+        which = (
+            "which is also the law the decays choose"
+            if chosen == best.law
+            else "not the law that describes the decays best"
+        )
+        out.append(
+            f"To predict the driven wheel, read only the runs that have settled ({n_st} of {n} here), calibrate the "
+            f"drive's gain away from resonance, and use the law that predicts best ({LAW_WORDS[best.law]} here, "
+            f"{g(100 * best.pooled_error, 2)} %), {which}."
+        )
+    else:
+        out.append(f"{n_st} of {n} driven runs settle, and these data allow no prediction of them.")
+    return " ".join(out)
 
 
 __all__ = [
