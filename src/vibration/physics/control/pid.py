@@ -57,7 +57,7 @@ class _PIDLoop:
     mode: int  # index of the integrator treatment in ANTI_WINDUP
     gain_bc: float  # back-calculation gain 1 / (ki t_track), 1/(N s)
 
-    def acc(self, t, x, v, u):
+    def _acc(self, t, x, v, u):
         """The mass's acceleration under the force ``u`` (N), m/s^2."""
         return (self.F0 * math.sin(self.wf * t) - self.c * v - self.k * x + u) / self.m
 
@@ -67,7 +67,7 @@ class _PIDLoop:
 
     def d_rate(self, t, y, s):
         """The rate of ``u_d`` with the integrator frozen, on the surface ``u_d = s u_max``, N/s."""
-        return -self.kp * y[1] - self.kd * self.acc(t, y[0], y[1], s * self.umax)
+        return -self.kp * y[1] - self.kd * self._acc(t, y[0], y[1], s * self.umax)
 
     def on_surface(self, s, x, v):
         """The integrator state that puts ``(x, v)`` exactly on the surface ``u_d = s u_max``, m s."""
@@ -77,14 +77,14 @@ class _PIDLoop:
         """Right-hand side of the linear piece ``L``."""
         x, v, i = y
         e = self.x_ref - x
-        return (v, self.acc(t, x, v, self.kp * e + self.ki * i - self.kd * v), e)
+        return (v, self._acc(t, x, v, self.kp * e + self.ki * i - self.kd * v), e)
 
     def rhs(self, kind, s, frozen):
         """The right-hand side of the piece ``(kind, s, frozen)``."""
         if kind == "L":
             return self.rhs_lin
         u = s * self.umax
-        acc = self.acc
+        acc = self._acc
         if kind == "Z":
 
             def slide(t, y):
@@ -140,7 +140,7 @@ class _PIDLoop:
             if gap > tol:
                 return "S", s, mode == 1 and se > 0.0
             if gap >= -tol:  # on the surface u_d = s u_max: the rates decide
-                d = -kp * v - kd * self.acc(t, x, v, s * umax)
+                d = -kp * v - kd * self._acc(t, x, v, s * umax)
                 r_lin = d + ki * e
                 if mode == 1 and se > 0.0:
                     if s * r_lin <= 0.0:
