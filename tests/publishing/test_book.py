@@ -468,38 +468,24 @@ def test_chapter_pages_name_no_tool_and_the_appendix_names_the_versions(site):
 def test_the_front_page_summarises_the_chapters_instead_of_repeating_them(site):
     """Of Parts II and III the front page gives each chapter's headline (at most one sentence shared word for word
     with the chapter's page per chapter), not its whole list of key results."""
-    from bs4 import BeautifulSoup
+    from vibration.publishing.proofread import sentences
 
-    def sentences(page: Path) -> set[str]:
-        article = BeautifulSoup(page.read_text(encoding="utf-8"), "html.parser").select_one("article")
-        for element in article.select("div.cell_input, script, style, details, section#exercises"):
-            element.decompose()
-        text = " ".join(article.get_text(" ").split())
-        return {s for s in re.split(r"(?<=[.!?])\s+", text) if len(s.split()) >= 8}
+    def said(page: Path) -> set[str]:
+        return set(sentences(page.read_text(encoding="utf-8")))
 
-    front = sentences(site / "index.html")
+    front = said(site / "index.html")
     later = [name for name in CHAPTERS if int(name[:2]) >= 6]
-    shared = {name: front & sentences(site / f"{name}.html") for name in later}
+    shared = {name: front & said(site / f"{name}.html") for name in later}
     assert all(len(s) <= 1 for s in shared.values()), {k: sorted(v) for k, v in shared.items() if len(v) > 1}
 
 
 def test_no_sentence_repeats_on_a_chapter_page(site):
     """A chapter's summary says what its sections found in new words: no sentence of eight or more words appears
     twice in a chapter page's main text (code, folds and exercises left out)."""
-    from collections import Counter
+    from vibration.publishing.proofread import repeated_sentences
 
-    from bs4 import BeautifulSoup
-
-    found = {}
-    for name in CHAPTERS:
-        page = (site / f"{name}.html").read_text(encoding="utf-8")
-        article = BeautifulSoup(page, "html.parser").select_one("article")
-        for element in article.select("div.cell_input, script, style, details, section#exercises"):
-            element.decompose()
-        text = " ".join(article.get_text(" ").split())
-        counts = Counter(s for s in re.split(r"(?<=[.!?])\s+", text) if len(s.split()) >= 8)
-        found[name] = [s[:80] for s, n in counts.items() if n > 1]
-    assert {k: v for k, v in found.items() if v} == {}
+    found = {name: repeated_sentences((site / f"{name}.html").read_text(encoding="utf-8")) for name in CHAPTERS}
+    assert {k: [s[:80] for s in v] for k, v in found.items() if v} == {}
 
 
 def test_no_paragraph_repeats_on_a_page(site):

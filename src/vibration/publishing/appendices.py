@@ -141,10 +141,10 @@ COMPUTING = (
 
 
 def environment_markdown() -> list[str]:
-    """The section naming the Python and package versions this edition's chapters were computed with.
+    """The section naming the Python and package versions this edition was built with.
 
-    The book builds in the environment its chapters run in, so these are the kernels' versions; a
-    package that is not installed is left out. Each notebook's last cell prints the same for its own run.
+    These are the versions of the build's own environment (a package that is not installed is left out);
+    chapters run elsewhere (on a cluster's workers) record theirs in their notebook's last cell.
 
     >>> lines = environment_markdown()
     >>> lines[0], "NumPy " in lines[2]
@@ -162,10 +162,10 @@ def environment_markdown() -> list[str]:
     return [
         "## The computing environment of this edition",
         "",
-        f"The chapters of this edition were computed with Python {platform.python_version()} and "
+        f"This edition was built with Python {platform.python_version()} and "
         + ", ".join(found)
         + " (the pinned list of every package is the source's environment.txt); "
-        "a chapter's notebook ends by printing the versions of its own run.",
+        "each chapter's notebook ends by printing the versions of its own run.",
         "",
     ]
 

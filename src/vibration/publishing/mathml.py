@@ -7,6 +7,7 @@ loads nothing from outside the build folder.
 
 from __future__ import annotations
 
+import functools
 import html
 import re
 from html.parser import HTMLParser
@@ -24,6 +25,7 @@ _LETTER_MI = re.compile(r"<mi>(.|&#x[0-9A-Fa-f]+;)</mi>")
 _ORD_MO = re.compile(r"<mo((?: (?:stretchy|fence)=\"false\")*)>(&#x0007C;|&#x0002F;|&#x02016;)</mo>")
 
 
+@functools.lru_cache(maxsize=4096)  # the pages and the search page's text convert each formula: once each
 def latex_to_mathml(tex: str, display: bool) -> str:
     r"""MathML for one LaTeX formula, with the source kept as an annotation.
 

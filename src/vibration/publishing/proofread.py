@@ -7,7 +7,9 @@ scripts and the kernel-free panels' scripts) and report, per page:
   (``1.2e+05``), ``^`` powers and ``sqrt(`` in the prose;
 * :func:`repeated_paragraphs`: paragraphs, list items or table captions that appear twice on a
   page once every number is replaced by ``#`` (so a rounding difference does not hide a repeat);
-* :func:`figures_without_alt`: images whose alt text is empty or a file name.
+* :func:`figures_without_alt`: images whose alt text is empty or a file name;
+* :func:`sentences` of the main text (folds and exercises left out) and :func:`repeated_sentences`, the
+  sentences of eight or more words said twice on a page.
 
 Examples
 --------
@@ -15,6 +17,9 @@ Examples
 ['x_ss', '1.2e+05', '2^3', 'sqrt(']
 >>> repeated_paragraphs("<main><p>It is 1.25 m.</p><p>It is 1.3 m.</p><p>Other.</p></main>")
 ['It is 1.25 m.']
+>>> said = "<main><p>The steady amplitude is 2.237 m at this forcing.</p><p>Short. "
+>>> repeated_sentences(said + "The steady amplitude is 2.237 m at this forcing.</p></main>")
+['The steady amplitude is 2.237 m at this forcing.']
 """
 
 from __future__ import annotations
@@ -74,6 +79,27 @@ def repeated_paragraphs(html: str, shortest: int = 40) -> list[str]:
         if key in seen and seen[key] not in repeats:
             repeats.append(seen[key])
         seen.setdefault(key, text)
+    return repeats
+
+
+def sentences(html: str, shortest: int = 8) -> list[str]:
+    """The sentences of ``shortest`` or more words in a page's main text, in order: what a reader sees unfolded
+    (folded details and the exercises left out, as the book's length limits count it)."""
+    root = _article(html)
+    for tag in root.select("details, section#exercises"):
+        tag.decompose()
+    text = " ".join(root.get_text(" ").split())
+    return [s for s in re.split(r"(?<=[.!?])\s+", text) if len(s.split()) >= shortest]
+
+
+def repeated_sentences(html: str, shortest: int = 8) -> list[str]:
+    """Sentences of ``shortest`` or more words said twice in a page's main text (each once, in order)."""
+    seen: set[str] = set()
+    repeats: list[str] = []
+    for sentence in sentences(html, shortest):
+        if sentence in seen and sentence not in repeats:
+            repeats.append(sentence)
+        seen.add(sentence)
     return repeats
 
 

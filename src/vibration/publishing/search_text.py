@@ -69,8 +69,7 @@ def section_html(section) -> str:
     '<section id="damping">Damping ζ &lt; 1</section>'
     """
     ids = section.get("ids", [])
-    inner = " ".join(_text(child) for child in section.children if not isinstance(child, nodes.section))
-    inner = html.escape(" ".join(inner.split()), quote=False)
+    inner = html.escape(" ".join(_text(section).split()), quote=False)  # its own text, subsections apart
     children = "".join(section_html(child) for child in section.children if isinstance(child, nodes.section))
     ident = f' id="{html.escape(ids[0])}"' if ids else ""
     return f"<section{ident}>{inner}{children}</section>"

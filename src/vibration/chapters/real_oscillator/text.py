@@ -306,10 +306,10 @@ def summary_text(st: RealOscillatorStudy) -> str:
     n_st, n, _, _ = steady_counts(st)
     best = best_prediction(st)
     if best is not None:
-        chosen = next((x.law for x in st.settings if x.brake == best.brake), best.law)
+        decays_law = next((x.law for x in st.settings if x.brake == best.brake), best.law)
         which = (
             "which is also the law the decays choose"
-            if chosen == best.law
+            if decays_law == best.law
             else "not the law that describes the decays best"
         )
         out.append(
