@@ -66,6 +66,24 @@ def test_registry_gives_one_meaning_per_symbol_and_settles_the_clashes():
         assert lookup(letter)
 
 
+def test_parameter_symbols_keep_the_registrys_meaning():
+    """A chapter's parameter table writes a symbol the notation registry defines only for that quantity (its unit),
+    and one symbol has one unit in every chapter (issue 29: one symbol, one meaning)."""
+    from vibration.publishing.registry import chapter_schemas
+
+    units = collections.defaultdict(set)
+    for notebook, schema in chapter_schemas().items():
+        for p in schema.params:
+            units[p.symbol].add((p.unit.strip() or "1", notebook[:2]))
+    registry = {s.symbol: s.unit.strip() or "1" for s in SYMBOLS}
+    clashes = {
+        symbol: sorted(found)
+        for symbol, found in units.items()
+        if len({u for u, _ in found}) > 1 or (symbol in registry and {u for u, _ in found} != {registry[symbol]})
+    }
+    assert clashes == {}
+
+
 def test_glossary_page_lists_every_symbol():
     md = glossary_markdown()
     assert md.startswith("# Glossary of symbols")

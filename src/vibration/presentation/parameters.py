@@ -82,8 +82,8 @@ SEED_MAX = 2**31 - 1
 
 
 def seed(default: int, *, meaning: str) -> Param:
-    """The chapter's random seed ``seed`` (symbol s), from 0 to :data:`SEED_MAX`."""
-    return count("seed", "s", default, low=0, high=SEED_MAX, meaning=meaning)
+    """The chapter's random seed ``seed``, from 0 to :data:`SEED_MAX` (written "seed": s is a complex frequency)."""
+    return count("seed", "seed", default, low=0, high=SEED_MAX, meaning=meaning)
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -111,7 +111,9 @@ SHARED: dict[str, Param] = {
         ),
         damping("c_nominal", "c_nom", 0.5, low=-1e4, high=1e4, meaning="nominal damping coefficient"),
         damping("c_high", "c_high", 15.0, low=-1e4, high=1e4, meaning="high damping coefficient"),
-        count("n_points", "N", 5001, low=2, high=min(200_001, N_POINTS_MAX), meaning="output samples over the window"),
+        count(
+            "n_points", "N_pts", 5001, low=2, high=min(200_001, N_POINTS_MAX), meaning="output samples over the window"
+        ),
     )
 }
 
