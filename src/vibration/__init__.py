@@ -1,39 +1,30 @@
 """vibration: the forced mass-spring-damper, exactly and numerically.
 
-Public API
-----------
-Oscillator, SineForce
-    Frozen parameter records in SI units (kg, N s/m, N/m; N, rad/s).
-simulate
-    ``scipy.integrate.solve_ivp`` on the state-space form (the paper's method).
-exact_response, steady_state
-    Closed-form response in every regime, and the steady-state amplitude/phase.
-magnification, phase_lag, half_power_points, log_decrement, settling_time,
-energy_balance, peak_displacement_map
-    Frequency-domain and window quantities.
-load_scenarios, load_claims, paper_defaults
-    The paper's inputs from ``data/``.
-poles, transmissibility, step_metrics, ... (Part II, chapter 6)
-    Stability, isolation, shock and random load (:mod:`vibration.stability`).
-lqr, simulate_controlled, skyhook_transmissibility, zv_shaper, ... (chapter 7)
-    Active, semi-active and shaped control (:mod:`vibration.control`).
-den_hartog, hinf_tuning, h2_tuning, tmd_peak, MDOF, shear_building, ... (chapter 8)
-    Tuned mass dampers and multi-storey structures (:mod:`vibration.tmd`).
-Duffing, hb_amplitudes, folds, sweep, lyapunov_qr, ... (chapter 9)
-    The cubic spring (:mod:`vibration.duffing`).
-load_measurements, identify, detect_change, ... (chapter 10)
-    The digital twin (:mod:`vibration.twin`).
-lqr_reference, OscillatorTask, OscillatorEnv, ... (chapter 11)
-    The learning task; ``OscillatorEnv`` needs the ``learn`` extra (:mod:`vibration.learn`).
-load_logger_runs, fit_free_decay, harmonic_fit, friction_forced_amplitude, ... (Part III)
-    A real oscillator's logger files, its free decays and driven runs (:mod:`vibration.lab`).
+Public API (``vibration.__all__``: the physics only)
+-----------------------------------------------------
+Oscillator (also ``Oscillator.from_modal(m=, omega_n=, zeta=)``), ParameterError
+    The oscillator, a frozen record in SI units (kg, N s/m, N/m), and the error every bad input raises.
+SineForce, Harmonic, Unbalance, BaseMotion, Step, Sampled
+    Loads as records: the paper's ``F0 sin(omega t)``, a phase, a rotating unbalance (``m_e e omega^2``),
+    support motion (displacement or acceleration), a step, an arbitrary sampled force.
+exact_response, simulate, steady_state
+    The closed-form response in every regime, ``scipy.integrate.solve_ivp`` on the state space (the paper's
+    method), and the steady state; every load record is accepted.
+frequency_response, peak_response, magnification, phase_lag, half_power_points, log_decrement,
+settling_time, energy_balance, peak_displacement_map
+    Frequency-domain and window quantities (a scalar frequency gives a float, an array an array).
+state_space
+    The matrices ``A, B, C, D`` and, with python-control installed, ``.to_control()``.
 
-Every other public name lives in its namespace: ``vibration.stability``, ``vibration.control``,
-``vibration.tmd``, ``vibration.duffing``, ``vibration.twin``, ``vibration.learning``,
-``vibration.lab`` (each the physics package of that name, with its own ``__all__``).
+Response and FrequencyResponse records draw themselves (``.plot()``, matplotlib imported only then).
 
-``import vibration`` needs only the core dependencies (numpy, scipy, numba); the chapter names load
-on first use, and a name that needs an optional extra says which one when it is missing.
+Namespaces, loaded on first use and importable as modules (``from vibration.control import pid_response``):
+``vibration.stability``, ``vibration.control``, ``vibration.tmd``, ``vibration.duffing``, ``vibration.twin``,
+``vibration.learning``, ``vibration.lab`` (Part III's readers and fitters) and ``vibration.paper`` (the paper's
+scenarios and claims). ``vibration.learn`` is the gymnasium environment (extra ``learn``). The book that uses
+the library (chapters, figures, the exercise sheets and ``check``, the report runner) is ``vibration.book``.
+
+``import vibration`` needs only numpy, scipy and numba and imports no plotting or publishing package.
 
 Examples
 --------
@@ -49,6 +40,17 @@ import importlib
 from typing import TYPE_CHECKING
 
 from .physics.exact import Response, SteadyState, exact_response, steady_state
+from .physics.forcing import (
+    BaseMotion,
+    FrequencyResponse,
+    Harmonic,
+    Peak,
+    Sampled,
+    Step,
+    Unbalance,
+    frequency_response,
+    peak_response,
+)
 from .physics.frequency import (
     EnergyBalance,
     HalfPower,
@@ -62,10 +64,10 @@ from .physics.frequency import (
 )
 from .physics.model import N_POINTS_MAX, REGIMES, Oscillator, ParameterError, SineForce
 from .physics.numerics import METHODS, simulate
-from .physics.paper import Scenario, load_claims, load_scenarios, paper_defaults
+from .physics.state_space import StateSpace, state_space
 
 if TYPE_CHECKING:  # never run: it shows the lazy modules to static import graphs (the report's cache, linters)
-    from .physics import control, duffing, lab, learning, stability, tmd, twin
+    from . import control, duffing, lab, learning, paper, stability, tmd, twin
     from .physics.learning import disturbance, env
 
 __version__ = "0.1.0"
@@ -75,31 +77,38 @@ _CORE = [
     "METHODS",
     "N_POINTS_MAX",
     "REGIMES",
+    "BaseMotion",
     "EnergyBalance",
+    "FrequencyResponse",
     "HalfPower",
+    "Harmonic",
     "Oscillator",
     "ParameterError",
+    "Peak",
     "Response",
-    "Scenario",
+    "Sampled",
     "SineForce",
+    "StateSpace",
     "SteadyState",
+    "Step",
+    "Unbalance",
     "energy_balance",
     "exact_response",
+    "frequency_response",
     "half_power_points",
-    "load_claims",
-    "load_scenarios",
     "log_decrement",
     "magnification",
-    "paper_defaults",
     "peak_displacement_map",
+    "peak_response",
     "phase_lag",
     "settling_time",
     "simulate",
+    "state_space",
     "steady_state",
 ]
 
-#: Top-level names that load on first use: module -> (extra it needs or None, names). Adding a name from a
-#: subpackage is one entry in its list; the module must export it (it is checked by tests/test_package_api.py).
+#: Names that earlier versions kept at the top level: they still load on first use (module -> (extra or None,
+#: names)) but are not in ``__all__``; their home is the namespace of their module.
 _LAZY: dict[str, tuple[str | None, list[str]]] = {
     "vibration.physics.stability": (
         None,
@@ -143,22 +152,23 @@ _LAZY: dict[str, tuple[str | None, list[str]]] = {
         + ["equivalent_zeta", "fit_free_decays", "joint_brake_fit", "law_forced_amplitude", "load_cassy_runs"]
         + ["load_lab_data", "parse_law", "simulate_driven", "steadiness"],
     ),
-    # runs at scale: a chapter's study over a grid of parameters, gathered into an xarray Dataset
-    "vibration.publishing.sweep": ("scale", ["sweep"]),
-    # teaching: every chapter's exercises with answers computed from a run's parameters, and their check
-    "vibration.publishing.sheets": ("book", ["check", "exercise_section", "exercises", "objectives"]),
+    "vibration.physics.paper": (None, ["Scenario", "load_claims", "load_scenarios", "paper_defaults"]),
 }
 
-#: Namespaces reachable as ``vibration.<name>``: module and the extra it needs.
-_NAMESPACES: dict[str, tuple[str, str | None]] = {
-    "stability": ("vibration.physics.stability", None),
-    "control": ("vibration.physics.control", None),
-    "tmd": ("vibration.physics.tmd", None),
-    "duffing": ("vibration.physics.duffing", None),
-    "twin": ("vibration.physics.twin", None),
-    "learning": ("vibration.physics.learning", None),
-    "lab": ("vibration.physics.lab", None),
-    "learn": ("vibration.physics.learning.env", "learn"),
+#: Book helpers that left the library's namespace: name -> its home now.
+_MOVED = {name: f"vibration.book.{name}" for name in ("check", "exercise_section", "exercises", "objectives", "sweep")}
+
+#: Namespaces reachable as ``vibration.<name>`` and importable as modules: the extra each needs.
+_NAMESPACES: dict[str, str | None] = {
+    "stability": None,
+    "control": None,
+    "tmd": None,
+    "duffing": None,
+    "twin": None,
+    "learning": None,
+    "lab": None,
+    "paper": None,
+    "learn": "learn",
 }
 
 #: Third-party packages of each extra (the message of a missing one names the extra and them).
@@ -171,7 +181,7 @@ EXTRAS = {
 
 _WHERE = {name: module for module, (_, names) in _LAZY.items() for name in names}
 
-__all__ = _CORE + [name for _, names in _LAZY.values() for name in names]
+__all__ = list(_CORE)
 
 
 def _load(module: str, extra: str | None, what: str):
@@ -192,14 +202,14 @@ def __getattr__(name: str):
         module = _WHERE[name]
         value = getattr(_load(module, _LAZY[module][0], name), name)
     elif name in _NAMESPACES:
-        module, extra = _NAMESPACES[name]
-        value = _load(module, extra, name)
+        value = _load(f"vibration.{name}", _NAMESPACES[name], name)
+    elif name in _MOVED:
+        raise AttributeError(
+            f"module 'vibration' has no attribute {name!r}: it is a helper of the book, now {_MOVED[name]} "
+            "(pip install 'vibration[book]')",
+            name=name,
+        )
     else:
-        for space, (module, extra) in _NAMESPACES.items():
-            if extra is None and name in getattr(importlib.import_module(module), "__all__", ()):
-                raise AttributeError(
-                    f"module 'vibration' has no attribute {name!r}: it is vibration.{space}.{name}", name=name
-                )
         raise AttributeError(f"module 'vibration' has no attribute {name!r}", name=name)
     globals()[name] = value  # later look-ups skip __getattr__
     return value

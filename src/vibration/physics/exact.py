@@ -91,6 +91,29 @@ class Response:
         """True when the integration reached ``t_end``."""
         return self.status == 0
 
+    def __repr__(self) -> str:
+        t, x = np.atleast_1d(self.t), np.atleast_1d(self.x)
+        span = f"{t.min():g}-{t.max():g} s" if t.size else "no times"
+        peak = f"{float(np.max(np.abs(x))):.4g} m" if x.size else "-"
+        return f"Response({self.method}, {t.size} samples over {span}, max |x| = {peak}, status {self.status})"
+
+    def plot(self, ax=None):
+        """Displacement (m) and velocity (m/s) against time (s) on two stacked axes; returns the axes.
+
+        matplotlib is imported only here (``pip install 'vibration[book]'``).
+        """
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(2, 1, sharex=True, figsize=(6.0, 4.0), layout="constrained")
+        top, bottom = ax
+        top.plot(self.t, self.x)
+        top.set_ylabel("$x$ (m)")
+        bottom.plot(self.t, self.v)
+        bottom.set_ylabel("$v$ (m/s)")
+        bottom.set_xlabel("$t$ (s)")
+        return ax
+
 
 @dataclass(frozen=True, kw_only=True)
 class SteadyState:
@@ -129,7 +152,16 @@ def steady_state(osc: Oscillator, force: SineForce) -> SteadyState:
     (0.4504, 0.1355)
     >>> round(ss.magnification, 4)
     1.8015
+
+    Any harmonic load record of :mod:`vibration.forcing` too (unbalance, base motion, a phase): the phase is
+    then the lag behind the load, the magnification the amplitude over the load's reference (``F/k``, or the
+    support's amplitude for base motion).
     """
+    if not isinstance(force, SineForce):
+        from .checks import check_oscillator
+        from .forcing import steady_load
+
+        return steady_load(check_oscillator(osc), force)
     check_records(osc, force)
     r = force.omega / osc.natural_frequency  # frequency ratio
     two_zeta_r = 2.0 * osc.damping_ratio * r
@@ -442,10 +474,12 @@ def exact_response(osc: Oscillator, force: SineForce, t, *, x0: float = 0.0, v0:
     ----------
     osc : Oscillator
         m (kg), c (N s/m, any sign), k (N/m).
-    force : SineForce
-        F0 (N), omega (rad/s).
+    force : SineForce or a load record
+        F0 (N), omega (rad/s); or any record of :mod:`vibration.forcing` (harmonic with a phase, rotating
+        unbalance, base motion, step, sampled input), each in closed form.
     t : array_like
-        Times, s (any finite values, any order, 1-D or scalar, not empty).
+        Times, s (any finite values, any order, 1-D or scalar, not empty; a sampled input's response
+        only within its span).
     x0 : float
         Displacement at t = 0, m.
     v0 : float
@@ -475,10 +509,28 @@ def exact_response(osc: Oscillator, force: SineForce, t, *, x0: float = 0.0, v0:
     >>> bool(abs(r.x[1] + np.pi / 4) < 1e-15)
     True
     """
+    if not isinstance(force, SineForce):
+        return _load_response(osc, force, t, x0, v0)
     check_records(osc, force)
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
     return _response(osc, force, _times(t), x0, v0)
+
+
+def _load_response(osc: Oscillator, load, t, x0: float, v0: float) -> Response:
+    """:func:`exact_response` of a load record other than :class:`SineForce` (:mod:`.forcing`)."""
+    from .checks import check_oscillator
+    from .forcing import check_load, exact_load_response
+
+    check_oscillator(osc)
+    check_load(load)
+    x0 = check_real("x0", x0, unit="m")
+    v0 = check_real("v0", v0, unit="m/s")
+    tt = _times(t)
+    x, v = exact_load_response(osc, load, tt, x0, v0)
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
+        raise ParameterError("the response overflows the float range inside the window: allowed a shorter window")
+    return Response(t=tt, x=np.asarray(x, dtype=float), v=np.asarray(v, dtype=float), method="exact")
 
 
 # codes of the regimes in the compiled kernels' parameter vector

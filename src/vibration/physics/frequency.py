@@ -6,6 +6,7 @@ from __future__ import annotations
 import functools
 import math
 import numbers
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -77,30 +78,37 @@ def _damped(m: float, c: float, k: float) -> Oscillator:
         raise ParameterError(f"dampings contains {c!r} N s/m: {exc}") from None
 
 
-def _omegas(omegas, name: str = "omegas") -> np.ndarray:
+def _omegas(omegas, name: str = "omegas", scalar: bool = False) -> np.ndarray:
     w = _array(omegas, name, "rad/s")
-    if w.ndim != 1 or w.size == 0:
-        raise ParameterError(f"{name} has shape {w.shape}: allowed a non-empty 1-D array in rad/s")
+    if w.ndim > 1 or (w.ndim == 0 and not scalar) or w.size == 0:
+        allowed = "a scalar or a non-empty 1-D array" if scalar else "a non-empty 1-D array"
+        raise ParameterError(f"{name} has shape {w.shape}: allowed {allowed} in rad/s")
     if not np.all(np.isfinite(w)) or np.any(w < 0):
         bad = w[~(np.isfinite(w) & (w >= 0))][0]
         raise ParameterError(f"{name} contains {bad!r}: allowed finite values >= 0 rad/s")
     return w
 
 
-def magnification(osc: Oscillator, omegas) -> np.ndarray:
+def _like(values: np.ndarray, w: np.ndarray):
+    """A float for a scalar frequency, an array for an array: the one return convention of the frequency functions."""
+    return float(values) if w.ndim == 0 else values
+
+
+def magnification(osc: Oscillator, omegas):
     """Steady-state amplitude over static deflection, ``|x| / (F0/k)``, at each omega.
 
     Parameters
     ----------
     osc : Oscillator
         m (kg), c (N s/m), k (N/m).
-    omegas : array_like
-        Forcing frequencies, rad/s (>= 0).
+    omegas : float or array_like
+        Forcing frequencies, rad/s (>= 0): a scalar or a 1-D array.
 
     Returns
     -------
-    numpy.ndarray
-        ``1 / sqrt((1 - r^2)^2 + (2 zeta r)^2)``, ``r = omega / omega_n``; dimensionless.
+    float or numpy.ndarray
+        ``1 / sqrt((1 - r^2)^2 + (2 zeta r)^2)``, ``r = omega / omega_n``; dimensionless; a float for a
+        scalar omega.
 
     Examples
     --------
@@ -109,13 +117,14 @@ def magnification(osc: Oscillator, omegas) -> np.ndarray:
     array([1.    , 8.9443])
     """
     check_oscillator(osc)
-    r = _omegas(omegas) / osc.natural_frequency
+    w = _omegas(omegas, scalar=True)
+    r = w / osc.natural_frequency
     with np.errstate(divide="ignore", over="ignore"):
-        return 1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * osc.damping_ratio * r)
+        return _like(1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * osc.damping_ratio * r), w)
 
 
-def phase_lag(osc: Oscillator, omegas) -> np.ndarray:
-    """Phase lag of displacement behind force, rad, in ``[0, pi]`` for c >= 0.
+def phase_lag(osc: Oscillator, omegas):
+    """Phase lag of displacement behind force, rad, in ``[0, pi]`` for c >= 0 (a float for a scalar omega).
 
     Examples
     --------
@@ -124,10 +133,11 @@ def phase_lag(osc: Oscillator, omegas) -> np.ndarray:
     array([0.    , 1.5708, 3.1416])
     """
     check_oscillator(osc)
-    r = _omegas(omegas) / osc.natural_frequency
+    w = _omegas(omegas, scalar=True)
+    r = w / osc.natural_frequency
     with np.errstate(over="ignore", invalid="ignore"):
         im, re = 2.0 * osc.damping_ratio * r, (1.0 - r) * (1.0 + r)
-    return np.where((im == 0.0) & (re == 0.0), 0.5 * np.pi, np.arctan2(im, re))
+    return _like(np.where((im == 0.0) & (re == 0.0), 0.5 * np.pi, np.arctan2(im, re)), w)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -234,7 +244,8 @@ def log_decrement(t, x) -> tuple[float, float]:
     Returns
     -------
     (delta, zeta)
-        Logarithmic decrement and damping ratio, dimensionless.
+        Logarithmic decrement and damping ratio, dimensionless. A ``RuntimeWarning`` says when the peaks
+        scatter so that delta is not resolved from zero (a record of noise, not of a decay).
 
     Examples
     --------
@@ -266,37 +277,67 @@ def log_decrement(t, x) -> tuple[float, float]:
         curv = (dp - dm) / (hm + hp)  # half the second derivative, m/s^2
         slope0 = dm + curv * hm  # slope at the sample, m/s
         peaks = np.where(curv < 0, y0 - slope0 * slope0 / (4.0 * np.where(curv < 0, curv, -1.0)), y0)
-    slope = np.polyfit(np.arange(peaks.size), np.log(peaks), 1)[0]
+    n = np.arange(peaks.size)
+    slope, icpt = np.polyfit(n, np.log(peaks), 1)
     delta = -float(slope)
+    _warn_unresolved(n, np.log(peaks) - (slope * n + icpt), delta)
     return delta, delta / math.sqrt(4 * math.pi**2 + delta**2)
 
 
-def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02) -> float:
+def _warn_unresolved(n: np.ndarray, resid: np.ndarray, delta: float) -> None:
+    """Warn when the peaks scatter about their line and its slope is not resolved from zero (noise, no decay)."""
+    if n.size < 3:
+        return
+    sd = float(np.sqrt(np.sum(resid**2) / (n.size - 2)))
+    se = sd / float(np.sqrt(np.sum((n - n.mean()) ** 2)))
+    if sd > 1e-6 and abs(delta) < 2.0 * se:
+        warnings.warn(
+            f"x does not decay like a free oscillation: the logarithmic decrement {delta:.3g} is not resolved from "
+            f"zero (standard error {se:.2g} from the scatter of {n.size} peaks about their line); the damping ratio "
+            "it gives is not a measurement",
+            RuntimeWarning,
+            stacklevel=3,
+        )
+
+
+def settling_time(osc: Oscillator, force: SineForce, tol: float = 0.02, *, x0: float = 0.0, v0: float = 0.0) -> float:
     """Time after which the transient stays within ``tol`` of the steady amplitude, s.
 
-    ``tol`` is a fraction of the steady amplitude, from 1e-12 to 0.999.
+    ``tol`` is a fraction, from 1e-12 to 0.999, of the steady amplitude; of a free decay (F0 = 0) from
+    ``x0`` (m), ``v0`` (m/s), of its initial amplitude ``sqrt(x0^2 + (v0 / omega_n)^2)``.
 
-    The transient is the exact response from rest minus the steady state. For
-    an underdamped oscillator its envelope ``R exp(-sigma t)`` is used (the
-    usual definition); otherwise the transient itself, located by bracketing
-    and root finding. ``inf`` when the transient never decays (c <= 0).
+    The transient is the exact response from ``(x0, v0)`` (rest by default) minus the steady state. For an
+    underdamped oscillator its envelope ``R exp(-sigma t)`` is used (the usual definition); otherwise the
+    transient itself, located by bracketing and root finding. ``inf`` when the transient never decays (c <= 0).
+
+    Raises
+    ------
+    ParameterError
+        When nothing moves: no force and the oscillator at rest.
 
     Examples
     --------
     >>> round(settling_time(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=3.0)), 2)   # s
     14.06
+    >>> round(settling_time(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=0.0, omega=0.0), x0=0.1), 2)   # s
+    15.65
     """
     check_records(osc, force)
     tol = check_real("tol", tol, low=1e-12, high=0.999)  # a fraction: below 1e-12 t_s is rounding noise
+    x0 = check_real("x0", x0, unit="m")
+    v0 = check_real("v0", v0, unit="m/s")
+    ss = steady_state(osc, force)
+    if ss.amplitude == 0.0 and x0 == 0.0 and v0 == 0.0:
+        raise ParameterError(
+            f"F0 = {force.F0!r} N with x0 = 0 m and v0 = 0 m/s: nothing moves, so there is nothing to settle: "
+            "allowed F0 > 0 N, or a free decay from x0 != 0 or v0 != 0"
+        )
     if osc.c <= 0.0:
         return math.inf
-    ss = steady_state(osc, force)
-    if ss.amplitude == 0.0:
-        return 0.0
     w, sigma = force.omega, osc.decay_rate
-    x0 = ss.amplitude * math.sin(ss.phase)  # transient's initial displacement, m
-    v0 = -w * ss.amplitude * math.cos(ss.phase)  # and velocity, m/s
-    level = tol * ss.amplitude
+    level = tol * (ss.amplitude if ss.amplitude > 0.0 else math.hypot(x0, v0 / osc.natural_frequency))
+    x0 = x0 + ss.amplitude * math.sin(ss.phase)  # transient's initial displacement, m
+    v0 = v0 - w * ss.amplitude * math.cos(ss.phase)  # and velocity, m/s
     if osc.regime == "underdamped":
         r = math.hypot(x0, (v0 + sigma * x0) / osc.damped_natural_frequency)
         return max(0.0, math.log(r / level) / sigma) if r > 0.0 else 0.0

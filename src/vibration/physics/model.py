@@ -159,6 +159,26 @@ class Oscillator:
                 "(omega_n and the decay rate must be finite, normal floats)"
             )
 
+    @classmethod
+    def from_modal(cls, *, m: float, omega_n: float, zeta: float) -> Oscillator:
+        """The oscillator of mass ``m`` (kg), natural frequency ``omega_n`` (rad/s) and damping ratio ``zeta``.
+
+        ``k = m omega_n^2``, ``c = 2 zeta m omega_n``.
+
+        >>> osc = Oscillator.from_modal(m=2.0, omega_n=3.0, zeta=0.1)
+        >>> osc
+        Oscillator(m=2.0 kg, c=1.2000000000000002 N s/m, k=18.0 N/m)
+        >>> round(osc.damping_ratio, 12), round(osc.natural_frequency, 12)
+        (0.1, 3.0)
+        """
+        m = check_real("m", m, low=0.0, low_open=True, unit="kg")
+        omega_n = check_real("omega_n", omega_n, low=0.0, low_open=True, unit="rad/s")
+        zeta = check_real("zeta", zeta)
+        return cls(m=m, c=2.0 * zeta * m * omega_n, k=m * omega_n**2)
+
+    def __repr__(self) -> str:
+        return f"Oscillator(m={self.m!r} kg, c={self.c!r} N s/m, k={self.k!r} N/m)"
+
     @property
     def natural_frequency(self) -> float:
         """Undamped natural frequency ``sqrt(k/m)``, rad/s."""
@@ -265,6 +285,9 @@ class SineForce:
     def __post_init__(self) -> None:
         object.__setattr__(self, "F0", check_real("F0", self.F0, low=0.0, unit="N"))
         object.__setattr__(self, "omega", check_real("omega", self.omega, low=0.0, unit="rad/s"))
+
+    def __repr__(self) -> str:
+        return f"SineForce(F0={self.F0!r} N, omega={self.omega!r} rad/s)"
 
     @property
     def frequency_hz(self) -> float:

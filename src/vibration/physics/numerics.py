@@ -8,7 +8,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from .checks import OverBudget
+from .checks import check_oscillator
 from .exact import Response
+from .forcing import Sampled, check_load, fastest_rate, load_function
 from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real, check_records
 
 #: Integrators of solve_ivp accepted by :func:`simulate`.
@@ -53,7 +55,7 @@ def simulate(
     atol: float = 1e-6,
     t_eval: bool = True,
 ) -> Response:
-    """Integrate ``m x'' + c x' + k x = F0 sin(omega t)`` with ``solve_ivp``.
+    """Integrate ``m x'' + c x' + k x = F(t)`` with ``solve_ivp``; the paper's ``F = F0 sin(omega t)``.
 
     The state-space form is ``y = [x, v]``, ``y' = [v, (F0 sin(omega t) - c v - k x)/m]``.
     The defaults (RK45, ``rtol=1e-3``, ``atol=1e-6``) are SciPy's, i.e. the paper's method.
@@ -61,7 +63,8 @@ def simulate(
     Parameters
     ----------
     osc, force
-        The oscillator, m (kg), c (N s/m), k (N/m), and the force, F0 (N), omega (rad/s).
+        The oscillator, m (kg), c (N s/m), k (N/m), and the force, F0 (N), omega (rad/s), or any load record
+        of :mod:`vibration.forcing` (a sampled input up to its last sample time).
     t_end : float
         End of the window, s; > 0. The window starts at t = 0.
     n_points : int
@@ -115,8 +118,16 @@ def simulate(
 
 def _simulate_args(osc, force, t_end, n_points, x0, v0, method, rtol, atol, t_eval):
     """The checked arguments of :func:`simulate`: ``(t_end, n_points, x0, v0, rtol, atol)``."""
-    check_records(osc, force)
+    if isinstance(force, SineForce):
+        check_records(osc, force)
+    else:
+        check_oscillator(osc)
+        check_load(force)
     t_end = check_real("t_end", t_end, low=0.0, low_open=True, unit="s")
+    if isinstance(force, Sampled) and t_end > force.t_end:
+        raise ParameterError(
+            f"t_end = {t_end!r} s is beyond the sampled input: allowed t_end <= {force.t_end!r} s, its last sample"
+        )
     n_points = check_int("n_points", n_points, low=2, high=N_POINTS_MAX)
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
@@ -134,8 +145,7 @@ def _simulate_args(osc, force, t_end, n_points, x0, v0, method, rtol, atol, t_ev
 def _integrate(osc, force, t_end, n_points, x0, v0, method, rtol, atol, t_eval):
     """``solve_ivp`` on the state space of :func:`simulate`, its right-hand side counted against ``MAX_NFEV``."""
     m, c, k = osc.m, osc.c, osc.k
-    F0, w = force.F0, force.omega
-    sin = math.sin
+    load = load_function(osc, force)
     nfev = 0
 
     def rhs(t, y):
@@ -143,13 +153,15 @@ def _integrate(osc, force, t_end, n_points, x0, v0, method, rtol, atol, t_eval):
         nfev += 1
         if nfev > MAX_NFEV:
             raise OverBudget
-        return np.array((y[1], (F0 * sin(w * t) - c * y[1] - k * y[0]) / m))
+        return np.array((y[1], (load(t) - c * y[1] - k * y[0]) / m))
 
     def jac(t, y):
         return np.array(((0.0, 1.0), (-k / m, -c / m)))
 
     grid = np.linspace(0.0, t_end, n_points) if t_eval else None
     extra = {"jac": jac} if method in ("Radau", "BDF", "LSODA") else {}
+    if isinstance(force, Sampled):  # no step may jump over a sample: the input bends there
+        extra["max_step"] = float(np.min(np.diff(force.t)))
     try:
         with np.errstate(all="ignore"):  # an overflow is reported below, by name
             return solve_ivp(rhs, (0.0, t_end), (x0, v0), method=method, t_eval=grid, rtol=rtol, atol=atol, **extra)
@@ -192,7 +204,7 @@ def _response(sol, method: str, rtol: float, atol: float) -> Response:
 
 def _check_window(osc: Oscillator, force: SineForce, t_end: float, method: str) -> None:
     """Refuse windows whose work or growth is unbounded, before integrating."""
-    fastest = max(force.omega, osc.natural_frequency)  # rad/s
+    fastest = max(fastest_rate(force), osc.natural_frequency)  # rad/s
     periods = t_end * fastest / (2.0 * math.pi)
     if periods > MAX_PERIODS:
         raise ParameterError(

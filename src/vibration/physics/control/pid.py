@@ -276,13 +276,14 @@ def pid_work_check(osc: Oscillator, kp: float, ki: float, *, kd: float, t_end: f
     _work_check(t_end, rate, rtol, "PID loop")
 
 
-def _check_loop(osc, force, kp, ki, kd) -> tuple[float, float, float]:
-    """Check the oscillator, the optional force and the three gains of a PID loop; the gains as floats."""
+def _check_loop(osc, force, kp, ki, kd, *, pd: bool = False) -> tuple[float, float, float]:
+    """Check the oscillator, the optional force and the three gains of a PID loop (``ki = 0``, a PD loop, where
+    ``pd``); the gains as floats."""
     check_oscillator(osc)
     if force is not None and not isinstance(force, SineForce):
         raise ParameterError(f"force = {force!r} is not a SineForce: allowed None or SineForce(F0, omega)")
     kp = check_real("kp", kp, low=-osc.k, low_open=True, unit="N/m")
-    ki = check_real("ki", ki, low=0.0, low_open=True, unit="N/(m s)")
+    ki = check_real("ki", ki, low=0.0, low_open=not pd, unit="N/(m s)")
     kd = check_real("kd", kd, unit="N s/m")
     return kp, ki, kd
 
@@ -323,7 +324,7 @@ def pid_response(
     force : SineForce or None
         Disturbance force on the mass (N, rad/s).
     kp, ki, kd : float
-        Gains: N/m, N/(m s) (> 0), N s/m.
+        Gains: N/m, N/(m s) (>= 0; 0 is a PD loop), N s/m.
     u_max : float, optional
         Actuator limit, N (> 0); none by default.
     anti_windup : str
@@ -343,6 +344,9 @@ def pid_response(
     >>> r = pid_response(osc, None, 80.0, ki=100.0, kd=10.0, x_ref=0.1, t_end=20.0, n_points=201)
     >>> round(float(r.x[-1]), 6)                        # m: integral action removes the offset
     0.1
+    >>> pd = pid_response(osc, None, 80.0, ki=0.0, kd=10.0, x_ref=0.1, t_end=20.0, n_points=201)
+    >>> round(float(pd.x[-1]), 6), round(80.0 * 0.1 / (20.0 + 80.0), 6)   # m: a PD loop keeps kp x_ref / (k + kp)
+    (0.08, 0.08)
     """
     p = _pid_parameters(osc, force, kp, ki, kd, u_max, anti_windup, t_track, x_ref)
     grid = _grid(t_end, n_points)
@@ -355,10 +359,17 @@ def pid_response(
 
 def _pid_parameters(osc, force, kp, ki, kd, u_max, anti_windup, t_track, x_ref) -> dict:
     """Check the loop's arguments (in :func:`pid_response`'s order); the parameters :func:`_pid_run` takes."""
-    kp, ki, kd = _check_loop(osc, force, kp, ki, kd)
+    kp, ki, kd = _check_loop(osc, force, kp, ki, kd, pd=True)
     umax = _limit(u_max)
     if anti_windup not in ANTI_WINDUP:
         raise ParameterError(f"anti_windup = {anti_windup!r} is not supported: allowed one of {', '.join(ANTI_WINDUP)}")
+    if ki == 0.0:  # a PD loop: the integrator never reaches the force, so there is nothing to wind up
+        if t_track is not None:
+            check_real("t_track", t_track, low=0.0, low_open=True, unit="s")
+        x_ref = check_real("x_ref", x_ref, unit="m")
+        F0, wf = (force.F0, force.omega) if force is not None else (0.0, 0.0)
+        return dict(m=osc.m, c=osc.c, k=osc.k, F0=F0, wf=wf, kp=kp, ki=0.0, kd=kd, umax=umax, x_ref=x_ref, mode=0,
+                    gain_bc=0.0)  # fmt: skip
     if t_track is None:
         tt = math.sqrt(abs(kd)) / math.sqrt(ki) if kd != 0.0 else 1.0 / math.sqrt(ki)
     else:
