@@ -134,7 +134,7 @@ def _first_of_the_run(tmp_path_factory, name: str):
 def committed_book(tmp_path_factory) -> Path:
     """The HTML book from the committed notebooks (stored outputs, no kernel), built once for the whole run
     (by the first worker that asks; tests only read it)."""
-    from vibration.publishing import report
+    from vibration.book.publishing import report
 
     with _first_of_the_run(tmp_path_factory, "committed-book") as shared:
         out = shared / "committed-book" / "report"
@@ -152,7 +152,7 @@ def real_oscillator_default(tmp_path_factory):
     for the whole run and handed to the other workers as a pickle; tests must not change it (it is frozen)."""
     import pickle
 
-    from vibration.chapters.real_oscillator.study import real_oscillator_study
+    from vibration.book.chapters.real_oscillator.study import real_oscillator_study
 
     with _first_of_the_run(tmp_path_factory, "real-oscillator-study") as shared:
         path = shared / "real-oscillator-study.pickle"

@@ -3,7 +3,7 @@
 nbval compares a cell's stored outputs with the new ones as strings, after the regular expressions of
 ``tests/nbval_sanitize.cfg``; it has no numeric tolerance. A value whose last digits depend on the
 machine's floating-point rounding is therefore written, in the plain-text form of its table only, as
-``⟪value tolerance⟫`` (:class:`vibration.presentation.numbers.Approx`): the sanitizer masks the value
+``⟪value tolerance⟫`` (:class:`vibration.book.presentation.numbers.Approx`): the sanitizer masks the value
 and keeps the tolerance, so strict nbval still compares everything else, the declared tolerance
 included; this plugin then compares each masked value numerically with its reference, within the
 tolerance the reference declares. The reader never sees the mark: the book renders the Markdown and

@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 import re
 
-from vibration.presentation.tables import Table
+from vibration.book.presentation.tables import Table
 
 #: Code names that must not reach a reader (they are typeset as symbols instead).
 CODE_NAMES = (

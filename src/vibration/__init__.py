@@ -210,6 +210,15 @@ def __getattr__(name: str):
             name=name,
         )
     else:
+        for space, extra in _NAMESPACES.items():
+            if (
+                extra is None
+                and not name.startswith("_")
+                and name in getattr(_load(f"vibration.{space}", None, space), "__all__", ())
+            ):
+                raise AttributeError(
+                    f"module 'vibration' has no attribute {name!r}: it is vibration.{space}.{name}", name=name
+                )
         raise AttributeError(f"module 'vibration' has no attribute {name!r}", name=name)
     globals()[name] = value  # later look-ups skip __getattr__
     return value

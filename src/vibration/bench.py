@@ -1,8 +1,8 @@
-"""``python -m vibration.bench``: speed ratios (see :mod:`vibration.publishing.bench`)."""
+"""``python -m vibration.bench``: speed ratios (see :mod:`vibration.book.publishing.bench`)."""
 
 import sys
 
-from .publishing.bench import main
+from .book.publishing.bench import main
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -1,8 +1,8 @@
-"""``python -m vibration.report``: the report runner (see :mod:`vibration.publishing.report`)."""
+"""``python -m vibration.report``: the report runner (see :mod:`vibration.book.publishing.report`)."""
 
 import sys
 
-from .publishing.report import main
+from .book.publishing.report import main
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -22,19 +22,19 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from vibration.chapters.claims_audit import claims_audit_study
-from vibration.chapters.claims_audit import text as audit_text
-from vibration.chapters.claims_audit.notation import cell, code_left, prose
-from vibration.chapters.overview import figures as front_figures
-from vibration.chapters.overview import overview_study, part1_findings
-from vibration.chapters.overview import text as front_text
-from vibration.chapters.reproduction import figures as rep_figures
-from vibration.chapters.reproduction import reproduction_study
-from vibration.chapters.reproduction import text as rep_text
+from vibration.book.chapters.claims_audit import claims_audit_study
+from vibration.book.chapters.claims_audit import text as audit_text
+from vibration.book.chapters.claims_audit.notation import cell, code_left, prose
+from vibration.book.chapters.overview import figures as front_figures
+from vibration.book.chapters.overview import overview_study, part1_findings
+from vibration.book.chapters.overview import text as front_text
+from vibration.book.chapters.reproduction import figures as rep_figures
+from vibration.book.chapters.reproduction import reproduction_study
+from vibration.book.chapters.reproduction import text as rep_text
+from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
+from vibration.book.presentation.narrative import g, sig
+from vibration.book.presentation.style import case_style
 from vibration.physics.audit import verdict
-from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
-from vibration.presentation.narrative import g, sig
-from vibration.presentation.style import case_style
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -9,11 +9,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import pytest
 
-from vibration.chapters.overview import overview_study
-from vibration.chapters.overview.figures import headline_figure
-from vibration.chapters.reproduction import figures as reproduction_figures
-from vibration.chapters.reproduction import reproduction_study
-from vibration.presentation.style import WIDTH_IN, legend_overlap
+from vibration.book.chapters.overview import overview_study
+from vibration.book.chapters.overview.figures import headline_figure
+from vibration.book.chapters.reproduction import figures as reproduction_figures
+from vibration.book.chapters.reproduction import reproduction_study
+from vibration.book.presentation.style import WIDTH_IN, legend_overlap
 
 PAPER = {"m": 1.0, "k": 20.0, "F0": 5.0, "t_end": 50.0, "omega_ref": 3.0, "omega_res": 4.47}
 DAMPINGS = {
@@ -59,7 +59,7 @@ def test_legend_overlap_sees_a_legend_on_the_data():
     """The check can fail: a legend forced onto a line covers data."""
     import numpy as np
 
-    from vibration.presentation.style import figure
+    from vibration.book.presentation.style import figure
 
     fig, ax = figure()
     t = np.linspace(0.0, 1.0, 50)

@@ -18,6 +18,7 @@ import numpy as np
 from fuzzing import finite
 
 import vibration as v
+import vibration.book as book
 from vibration.physics import twin
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -108,6 +109,17 @@ fuzz(v.Oscillator, m=1.0, c=0.5, k=20.0)
 fuzz(v.SineForce, F0=5.0, omega=4.47)
 fuzz(v.exact_response, osc=OSC, force=FORCE, t=T, x0=0.1, v0=0.0)
 fuzz(v.steady_state, osc=OSC, force=FORCE)
+# loads as records, and the frequency domain of any harmonic one
+fuzz(v.Harmonic, F0=5.0, omega=4.47, phase=0.3)
+fuzz(v.Unbalance, m_e=0.1, e=0.05, omega=4.0)
+fuzz(v.BaseMotion, Y=0.01, omega=4.0, phase=0.2)
+fuzz(v.Step, F0=2.0, t0=0.5)
+fuzz(v.Sampled, t=T, F=np.sin(T))
+fuzz(v.frequency_response, osc=OSC, load=v.Unbalance(m_e=0.1, e=0.05, omega=4.0), omegas=W)
+fuzz(v.peak_response, osc=OSC, load=v.BaseMotion(Y=0.01, omega=4.0))
+fuzz(v.state_space, osc=OSC)
+for _rec in (v.FrequencyResponse, v.Peak, v.StateSpace):
+    fuzz(_rec, record=True, why="a result record the library builds and returns")
 fuzz(v.simulate, osc=OSC, force=FORCE, t_end=2.0, n_points=21, x0=0.0, v0=0.0, method="RK45", rtol=1e-3, atol=1e-6)
 fuzz(v.magnification, osc=OSC, omegas=W, check=_no_nan)
 fuzz(v.phase_lag, osc=OSC, omegas=W)
@@ -259,19 +271,19 @@ for _rec in (v.PooledDecayFit, v.Rig, v.Steadiness):
     fuzz(_rec, record=True, why="a result record the library builds and returns")
 
 # runs at scale: a chapter's study over a grid (the chapter and grid battery is in tests/publishing/test_sweep.py)
-fuzz(v.sweep, chapter="04_frequency_response", grid={"c_nominal": [0.5, 1.0]}, params=None, client=None,
+fuzz(book.sweep, chapter="04_frequency_response", grid={"c_nominal": [0.5, 1.0]}, params=None, client=None,
      serial=True, skip=("chapter", "grid", "params", "client", "serial"), check=lambda out: out is not None,
      why="chapter, grid, params: validated against the chapter's schema, refused naming the parameter in "
      "tests/publishing/test_sweep.py; client: a dask Client or None; serial: computes in this process, "
      "not on a cluster")  # fmt: skip
 # teaching: exercises and their check (chapter names and parameters are validated against the schemas)
-fuzz(v.exercises, chapter="04_frequency_response", params={"c_nominal": 0.8},
+fuzz(book.exercises, chapter="04_frequency_response", params={"c_nominal": 0.8},
      check=lambda out: len(out) >= 4)  # fmt: skip
-fuzz(v.check, exercise_id="01.1", answer=1.0, params=None, quantity="omega_n",
+fuzz(book.check, exercise_id="01.1", answer=1.0, params=None, quantity="omega_n",
      skip=("answer", "quantity"), check=lambda out: isinstance(out.correct, bool),
      why="answer: any number, mapping or option letter is judged, not refused; quantity: None or a name")  # fmt: skip
-fuzz(v.objectives, chapter="04_frequency_response", check=lambda out: out is not None)
-fuzz(v.exercise_section, chapter="04_frequency_response", params=None,
+fuzz(book.objectives, chapter="04_frequency_response", check=lambda out: out is not None)
+fuzz(book.exercise_section, chapter="04_frequency_response", params=None,
      check=lambda out: out is not None)  # fmt: skip
 for _rec in (v.DecayPeaks, v.FreeDecayFit, v.HarmonicFit, v.LoggerRun, v.PeakDecayFit):
     fuzz(_rec, record=True, why="a result record the library builds and returns")

@@ -6,10 +6,10 @@ from __future__ import annotations
 
 import pytest
 
-from vibration.chapters.digital_twin import params as twin_params
-from vibration.chapters.digital_twin import study as twin_study
+from vibration.book.chapters.digital_twin import params as twin_params
+from vibration.book.chapters.digital_twin import study as twin_study
+from vibration.book.publishing import report
 from vibration.physics.model import ParameterError
-from vibration.publishing import report
 
 
 @pytest.fixture(scope="module")

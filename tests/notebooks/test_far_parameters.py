@@ -12,7 +12,7 @@ import re
 
 import pytest
 
-from vibration.publishing import report
+from vibration.book.publishing import report
 
 #: Far from the paper's (m = 1 kg, k = 20 N/m, F0 = 5 N, ω = 3 and 4.47 rad/s, c = 0.1, 0.5, 15 N s/m).
 FAR = {

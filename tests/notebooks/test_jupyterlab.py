@@ -4,7 +4,7 @@ Starts ``jupyter lab`` from the project's virtual environment on a free port wit
 random token, on a temporary copy of ``notebooks/``, with its own settings,
 workspaces, config and runtime folders (news, update checks and the extension
 manager off; notebook windowing off so that every cell is in the page). Every
-notebook whose source uses chapter 5's live explorer (``vibration.chapters.explore.widget``)
+notebook whose source uses chapter 5's live explorer (``vibration.book.chapters.explore.widget``)
 is opened, run with *Run All Cells*, and each explorer in it is exercised: both sliders moved with the
 keyboard, a bad mass typed; the readout and the figure must change, and no
 output may show a traceback. Screenshots go to ``build/screenshots/``.
@@ -35,8 +35,8 @@ JUPYTER = Path(sys.executable).parent / "jupyter"
 SCREENSHOTS = ROOT / "build" / "screenshots"
 KERNEL_DISPLAY_NAME = "Python 3 (vibration)"
 USES_WIDGETS = re.compile(
-    r"vibration\.chapters\.explore\.widget\b|from\s+vibration\.chapters\.explore\s+import\s+[^\n]*\bwidget\b"
-    r"|from\s+vibration\.chapters\.explore\.panel\s+import\s+[^\n]*\bpanel\b"  # panel(study): the live explorer
+    r"vibration\.book\.chapters\.explore\.widget\b|from\s+vibration\.book\.chapters\.explore\s+import\s+[^\n]*\bwidget\b"
+    r"|from\s+vibration\.book\.chapters\.explore\.panel\s+import\s+[^\n]*\bpanel\b"  # panel(study): the live explorer
 )
 
 #: JupyterLab settings for a quiet, deterministic session.
@@ -55,7 +55,7 @@ UPDATE_S = 20  # until a widget reflects a slider move
 
 
 def widget_notebooks(folder: Path) -> list[str]:
-    """Names of the notebooks in ``folder`` whose code cells use ``vibration.chapters.explore.widget`` (directly or
+    """Names of the notebooks in ``folder`` whose code cells use ``vibration.book.chapters.explore.widget`` (directly or
     through the chapter's ``panel``)."""
     names = []
     for path in sorted(folder.glob("*.ipynb")):

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from vibration import paper_defaults
-from vibration.publishing import report
+from vibration.book.publishing import report
 
 NOTEBOOKS = sorted((Path(__file__).resolve().parents[2] / "notebooks").glob("*.ipynb"))
 TYPES = {"float": float, "int": int, "str": str, "bool": bool}
@@ -157,7 +157,7 @@ def test_part_one_prose_states_no_results_outside_quotes(path):
 def test_every_figure_carries_its_caption_label_and_alt_text(path):
     """Every figure output is a Captioned figure (caption, fig- label, alt text in its metadata); no cell keeps
     a hand-written caption; every table is a Table object (tab- label)."""
-    from vibration.presentation.captions import METADATA_KEY
+    from vibration.book.presentation.captions import METADATA_KEY
 
     for cell in _nb(path)["cells"]:
         if cell["cell_type"] != "code":
@@ -180,7 +180,7 @@ def test_every_figure_carries_its_caption_label_and_alt_text(path):
 def _reader_texts(path: Path):
     """(where, text) of everything a reader of ``path`` sees as text: its Markdown cells, and its cells' Markdown
     and HTML outputs (scripts and style sheets left out) and figure captions and alt texts."""
-    from vibration.presentation.captions import METADATA_KEY
+    from vibration.book.presentation.captions import METADATA_KEY
 
     for i, cell in enumerate(_nb(path)["cells"]):
         if cell["cell_type"] == "markdown":

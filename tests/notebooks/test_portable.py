@@ -19,9 +19,9 @@ import pytest
 from conftest import nbval_sanitize
 from nbval_numeric import MARK, mismatches, within
 
-from vibration.chapters.solver_accuracy.study import MACHINE_DEPENDENT, solver_accuracy_study
-from vibration.chapters.solver_accuracy.text import ERROR_FACTOR, NFEV_RTOL, ladder_table
-from vibration.presentation.tables import Approx, Column, Table
+from vibration.book.chapters.solver_accuracy.study import MACHINE_DEPENDENT, solver_accuracy_study
+from vibration.book.chapters.solver_accuracy.text import ERROR_FACTOR, NFEV_RTOL, ladder_table
+from vibration.book.presentation.tables import Approx, Column, Table
 
 ROOT = Path(__file__).resolve().parents[2]
 NOTEBOOK = ROOT / "notebooks" / "03_solver_accuracy.ipynb"
@@ -96,7 +96,7 @@ def test_committed_ladder_matches_this_machine_within_its_tolerances():
 
 # ----------------------------------------------------------------------------- through nbval itself
 
-_CELL = "from vibration.presentation.tables import Approx, Column, Table\n" + textwrap.dedent(
+_CELL = "from vibration.book.presentation.tables import Approx, Column, Table\n" + textwrap.dedent(
     """
     Table(rows=[{"n": Approx(value=VALUE, rtol=0.25), "k": 7}],
           columns=[Column(key="n", header="evaluations"), Column(key="k", header="count")], caption="c", name="tab-t")
@@ -106,7 +106,7 @@ _CELL = "from vibration.presentation.tables import Approx, Column, Table\n" + te
 
 def _notebook(path: Path, reference: float, value: float) -> None:
     """A one-cell notebook whose stored output shows ``reference`` and whose code now yields ``value``."""
-    from vibration.presentation.tables import Table as T
+    from vibration.book.presentation.tables import Table as T
 
     table = T(
         rows=[{"n": Approx(value=reference, rtol=0.25), "k": 7}],

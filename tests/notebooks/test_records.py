@@ -66,9 +66,9 @@ def test_the_check_sees_a_bare_parameter(tmp_path):
 
 @pytest.mark.parametrize("chapter", PANEL_CHAPTERS)
 def test_each_chapter_panel_has_one_entry_point_taking_its_study(chapter):
-    module = importlib.import_module(f"vibration.chapters.{chapter}.panel")
+    module = importlib.import_module(f"vibration.book.chapters.{chapter}.panel")
     assert list(inspect.signature(module.panel).parameters) == ["study"]
-    (path,) = [p for p in NOTEBOOKS if f"vibration.chapters.{chapter}" in p.read_text(encoding="utf-8")]
+    (path,) = [p for p in NOTEBOOKS if f"vibration.book.chapters.{chapter}" in p.read_text(encoding="utf-8")]
     called = [
         ast.unparse(node)
         for _, tree in _code_cells(path)
@@ -79,8 +79,8 @@ def test_each_chapter_panel_has_one_entry_point_taking_its_study(chapter):
 
 
 def test_the_tmd_panel_starts_where_the_study_is():
-    from vibration.chapters.tmd.panel import panel
-    from vibration.chapters.tmd.study import tmd_study
+    from vibration.book.chapters.tmd.panel import panel
+    from vibration.book.chapters.tmd.study import tmd_study
     from vibration.physics.tmd import hinf_tuning
 
     study = tmd_study(mu=0.1)

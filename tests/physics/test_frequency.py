@@ -234,7 +234,8 @@ def test_settling_time_special_cases(raises_parameter_error):
     f = SineForce(F0=5.0, omega=3.0)
     assert settling_time(Oscillator(m=1.0, c=0.0, k=20.0), f) == math.inf
     assert settling_time(Oscillator(m=1.0, c=-0.2, k=20.0), f) == math.inf
-    assert settling_time(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=0.0, omega=3.0)) == 0.0
+    with raises_parameter_error("F0", 0.0, "free decay from x0"):  # nothing moves: not a settling time of 0
+        settling_time(Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=0.0, omega=3.0))
     for bad in [0.0, -0.02, math.nan]:
         with raises_parameter_error("tol", bad, "tol >= 1e-12"):
             settling_time(Oscillator(m=1.0, c=0.5, k=20.0), f, bad)

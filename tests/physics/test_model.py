@@ -218,7 +218,7 @@ def test_wrong_record_types_are_named():
     osc, force = vibration.Oscillator(m=1.0, c=0.5, k=20.0), vibration.SineForce(F0=5.0, omega=3.0)
     with pytest.raises(vibration.ParameterError, match="osc = .* is not an Oscillator"):
         exact_response((1, 2, 3), force, [0.0, 1.0])
-    with pytest.raises(vibration.ParameterError, match="force = .* is not a SineForce"):
+    with pytest.raises(vibration.ParameterError, match="force = .* is not a load record: allowed one of SineForce"):
         simulate(osc, 5.0, 1.0)
     with pytest.raises(vibration.ParameterError, match="osc = .* is not an Oscillator"):
         steady_state(None, force)

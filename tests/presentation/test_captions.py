@@ -4,8 +4,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
-from vibration.presentation.captions import METADATA_KEY, Captioned, check_caption, panel_words
-from vibration.presentation.style import case_style, figure
+from vibration.book.presentation.captions import METADATA_KEY, Captioned, check_caption, panel_words
+from vibration.book.presentation.style import case_style, figure
 
 
 def _three():
@@ -101,7 +101,7 @@ def _dense_figure():
 
 def test_figures_carry_no_svg_unless_asked(monkeypatch):
     """The committed notebooks (nbval's references) keep the PNG alone: an SVG only where the runner asks."""
-    from vibration.presentation.captions import FORMATS_ENV
+    from vibration.book.presentation.captions import FORMATS_ENV
 
     monkeypatch.delenv(FORMATS_ENV, raising=False)
     cap = Captioned(_dense_figure(), "Left: a line. Right: dots.", "fig-d", "A cloud of dots.")
@@ -112,7 +112,7 @@ def test_figures_carry_no_svg_unless_asked(monkeypatch):
 def test_svg_when_asked_keeps_text_and_lines_vector_and_dense_parts_as_images(monkeypatch):
     import re
 
-    from vibration.presentation.captions import FORMATS_ENV
+    from vibration.book.presentation.captions import FORMATS_ENV
 
     monkeypatch.setenv(FORMATS_ENV, "svg")
     fig = _dense_figure()

@@ -14,15 +14,15 @@ from importlib import resources
 
 import pytest
 
-from vibration import chapters
+from vibration.book import chapters
+from vibration.book.presentation.exercises import ChapterExercises, SheetTemplate, TemplateError
 from vibration.physics.model import ParameterError
-from vibration.presentation.exercises import ChapterExercises, SheetTemplate, TemplateError
 
 #: The chapter packages that set exercises, found by walking the package (not from the book's registry).
 CHAPTERS = sorted(
     info.name
     for info in pkgutil.iter_modules(chapters.__path__)
-    if info.ispkg and importlib.util.find_spec(f"vibration.chapters.{info.name}.exercises") is not None
+    if info.ispkg and importlib.util.find_spec(f"vibration.book.chapters.{info.name}.exercises") is not None
 )
 
 #: Parameter sets beside the defaults that take the other branches of the sheets (names a chapter lacks are
@@ -37,15 +37,17 @@ SLOW = {"real_oscillator"}
 
 
 def _data(chapter: str) -> dict:
-    return tomllib.loads(resources.files(f"vibration.chapters.{chapter}").joinpath("exercises.toml").read_text("utf-8"))
+    return tomllib.loads(
+        resources.files(f"vibration.book.chapters.{chapter}").joinpath("exercises.toml").read_text("utf-8")
+    )
 
 
 def _module(chapter: str):
-    return importlib.import_module(f"vibration.chapters.{chapter}.exercises")
+    return importlib.import_module(f"vibration.book.chapters.{chapter}.exercises")
 
 
 def _records(chapter: str) -> list:
-    Params = importlib.import_module(f"vibration.chapters.{chapter}.params").Params
+    Params = importlib.import_module(f"vibration.book.chapters.{chapter}.params").Params
     out = [Params()]
     for values in () if chapter in SLOW else VARIANTS:
         try:
@@ -86,7 +88,7 @@ def test_the_data_file_loads_and_is_the_modules_sheet(chapter):
     data = _data(chapter)
     mod = _module(chapter)
     assert isinstance(mod.exercises, ChapterExercises)
-    assert mod.exercises.template.file == f"vibration/chapters/{chapter}/exercises.toml"
+    assert mod.exercises.template.file == f"vibration/book/chapters/{chapter}/exercises.toml"
     assert (mod.QUESTION, mod.LEVEL) == (data["question"], data["level"])
     assert mod.OBJECTIVES == tuple(data["objectives"]) and mod.PREREQUISITES == tuple(data["prerequisites"])
     assert mod.SHEET.chapter == mod.CHAPTER == importlib.import_module(mod.__package__ + ".params").SCHEMA.notebook
@@ -113,7 +115,7 @@ def test_every_placeholder_is_filled(chapter):
 
 def test_no_record_means_the_defaults_and_another_record_is_refused():
     mod = _module("solver_accuracy")
-    Params = importlib.import_module("vibration.chapters.solver_accuracy.params").Params
+    Params = importlib.import_module("vibration.book.chapters.solver_accuracy.params").Params
     assert mod.exercises() == mod.exercises(Params())
     assert mod.exercises(Params(t_end=80.0)) != mod.exercises(Params())
     with pytest.raises(ParameterError, match=r"params = \{'t_end': 80\.0\} is not allowed: allowed a Params record"):
@@ -184,7 +186,7 @@ def test_an_unknown_placeholder_names_the_file_the_exercise_and_the_placeholder(
 def test_an_unknown_placeholder_in_a_chapters_own_file_is_found(tmp_path, monkeypatch):
     """The stability chapter's own file with one placeholder misspelt, filled with the chapter's own values."""
     stability = _module("stability")
-    source = resources.files("vibration.chapters.stability").joinpath("exercises.toml").read_text("utf-8")
+    source = resources.files("vibration.book.chapters.stability").joinpath("exercises.toml").read_text("utf-8")
     assert source.count("{omega_iso}") == 1
     template = _read(tmp_path, monkeypatch, source.replace("{omega_iso}", "{omega_isolation}"))
     broken = ChapterExercises(template=template, params=stability.exercises.params, values=stability.values)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from vibration.presentation.exercises import Answer, Sheet, SheetTemplate, TemplateError
+from vibration.book.presentation.exercises import Answer, Sheet, SheetTemplate, TemplateError
 
 SOURCE = """
 question = "How fast?"

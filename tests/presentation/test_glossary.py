@@ -9,10 +9,10 @@ from pathlib import Path
 
 import nbformat
 
-from vibration.presentation.notation import SETTLED, SYMBOLS, lookup
-from vibration.presentation.references import REFERENCES, paper_citation
-from vibration.publishing import sheets
-from vibration.publishing.appendices import APPENDICES, answers_markdown, glossary_markdown, usage_markdown
+from vibration.book.presentation.notation import SETTLED, SYMBOLS, lookup
+from vibration.book.presentation.references import REFERENCES, paper_citation
+from vibration.book.publishing import sheets
+from vibration.book.publishing.appendices import APPENDICES, answers_markdown, glossary_markdown, usage_markdown
 
 ROOT = Path(__file__).resolve().parents[2]
 PART_ONE = ["01_reproduction", "02_claims_audit", "03_solver_accuracy", "04_frequency_response", "05_explore"]
@@ -69,7 +69,7 @@ def test_registry_gives_one_meaning_per_symbol_and_settles_the_clashes():
 def test_parameter_symbols_keep_the_registrys_meaning():
     """A chapter's parameter table writes a symbol the notation registry defines only for that quantity (its unit),
     and one symbol has one unit in every chapter (issue 29: one symbol, one meaning)."""
-    from vibration.publishing.registry import chapter_schemas
+    from vibration.book.publishing.registry import chapter_schemas
 
     units = collections.defaultdict(set)
     for notebook, schema in chapter_schemas().items():
@@ -99,7 +99,7 @@ def test_appendices_in_book_order():
 
 
 def test_answers_appendix_gathers_the_folded_answers():
-    from vibration.presentation.exercises import section_markdown
+    from vibration.book.presentation.exercises import section_markdown
 
     folded = section_markdown(sheets.exercises("04"))
     md = answers_markdown([("4. Frequency response and design", "04_frequency_response", [folded])])

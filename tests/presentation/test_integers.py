@@ -1,6 +1,6 @@
 """Counts (steps, samples, evaluations, episodes) are grouped in threes by a narrow no-break space.
 
-The expected strings are written out by hand from the rule in :mod:`vibration.presentation.numbers`:
+The expected strings are written out by hand from the rule in :mod:`vibration.book.presentation.numbers`:
 five or more digits are grouped in threes from the right by U+202F, four or fewer stay together, a
 negative count carries the true minus sign U+2212.
 """
@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from vibration.presentation.numbers import integer, parse
+from vibration.book.presentation.numbers import integer, parse
 
 NNBSP = "\u202f"  # narrow no-break space
 MINUS = "\u2212"

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from vibration.publishing.report import execute_notebooks
+from vibration.book.publishing.report import execute_notebooks
 
 pytestmark = [pytest.mark.notebooks, pytest.mark.slow]
 
@@ -128,7 +128,7 @@ def test_reproduction_sentences_follow_the_tables(executed, key):
     changed = RUNS[key][1]
     key_results = texts[0]
     assert key_results.startswith("> **Key results**") and "This run changes the paper's parameters" in key_results
-    from vibration.presentation.narrative import PARAMETER_TEXT
+    from vibration.book.presentation.narrative import PARAMETER_TEXT
 
     for name, value in changed.items():
         assert f"{PARAMETER_TEXT[name][0]} = {value:g} ".replace("-", "−") in key_results, (name, key_results)

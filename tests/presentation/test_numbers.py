@@ -1,6 +1,6 @@
 """Every number a reader sees follows the book's one number format, and no mark of the test machinery shows.
 
-The rules are written here independently of :mod:`vibration.presentation.numbers` (regular expressions
+The rules are written here independently of :mod:`vibration.book.presentation.numbers` (regular expressions
 over the text a reader sees: Markdown cells and the Markdown or HTML outputs the book renders), so a
 formatter that drifts from them fails. Years, run numbers and counts are integers without signs and
 pass every rule; a count grouped by narrow no-break spaces (U+202F) must be grouped in threes from the

@@ -1,5 +1,5 @@
 """The panels' shared plotting helper (``presentation/assets/plot.js``, ``window.VibPlot``) and the panels drawn
-with it: its number format against Python's :func:`vibration.presentation.tables.fmt`, its ticks, and every
+with it: its number format against Python's :func:`vibration.book.presentation.tables.fmt`, its ticks, and every
 refactored panel in headless Chromium at a phone's and a desktop's width.
 
 Number format. ``VibPlot.fmt`` follows ``tables.fmt`` character for character: Python's "g" rules, rounding
@@ -17,10 +17,10 @@ import pytest
 from conftest import SCREENSHOTS, open_offline
 
 from vibration import Oscillator
-from vibration.presentation.panels import DASH, case_styles, line_style, panel_assets, plot_js
-from vibration.presentation.style import CASES
-from vibration.presentation.tables import fmt
-from vibration.publishing.mathml import external_urls
+from vibration.book.presentation.panels import DASH, case_styles, line_style, panel_assets, plot_js
+from vibration.book.presentation.style import CASES
+from vibration.book.presentation.tables import fmt
+from vibration.book.publishing.mathml import external_urls
 
 #: Widths of the viewport: a phone (390 CSS px) and a desktop (1280 CSS px).
 WIDTHS = (390, 1280)
@@ -68,7 +68,7 @@ def helper_page(browser, tmp_path_factory):
 
 
 def test_assets_put_the_helper_first_and_name_no_url():
-    block = panel_assets("vibration.chapters.tmd", "tmd.js", "tmd.css")
+    block = panel_assets("vibration.book.chapters.tmd", "tmd.js", "tmd.css")
     assert block.startswith("<style>") and block.count("<script>") == 2
     assert block.index("window.VibPlot") < block.index("window.vibrationTMD")
     assert external_urls(block) == [] and "http" not in plot_js()
@@ -203,13 +203,13 @@ def test_helper_loads_twice_and_redraws_at_the_new_width(browser, tmp_path):
 
 def _fragment(name: str, request) -> tuple[str, str]:
     """The panel ``name``'s CSS selector and HTML fragment, built only for the panels a run tests."""
-    from vibration.chapters.control.panel import control_panel_html
-    from vibration.chapters.digital_twin.panel import twin_panel_html
-    from vibration.chapters.duffing.panel import hb_panel_html
-    from vibration.chapters.explore.panel import slider_panel_html
-    from vibration.chapters.real_oscillator.panel import decay_panel_html
-    from vibration.chapters.stability.panel import stability_panel_html
-    from vibration.chapters.tmd.panel import tmd_panel_html
+    from vibration.book.chapters.control.panel import control_panel_html
+    from vibration.book.chapters.digital_twin.panel import twin_panel_html
+    from vibration.book.chapters.duffing.panel import hb_panel_html
+    from vibration.book.chapters.explore.panel import slider_panel_html
+    from vibration.book.chapters.real_oscillator.panel import decay_panel_html
+    from vibration.book.chapters.stability.panel import stability_panel_html
+    from vibration.book.chapters.tmd.panel import tmd_panel_html
     from vibration.physics import twin
 
     def twin_html():

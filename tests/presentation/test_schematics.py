@@ -18,8 +18,8 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.patches import FancyArrowPatch
 from matplotlib.text import Text
 
-from vibration.presentation import schematics, style
-from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption, panel_words
+from vibration.book.presentation import schematics, style
+from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption, panel_words
 
 #: name: (panels, force arrows in the free-body diagram)
 EXPECTED = {

@@ -13,7 +13,7 @@ from importlib.resources import files
 
 import pytest
 
-from vibration.presentation.panels import screen_words
+from vibration.book.presentation.panels import screen_words
 
 SCREEN, PRINT = "vib-web-only", "vib-print-only"
 #: What a printed page must not claim.
@@ -21,7 +21,7 @@ BROWSER = re.compile(r"in your browser", re.I)
 
 
 def _book_css() -> str:
-    return files("vibration.publishing").joinpath("book.css").read_text(encoding="utf-8")
+    return files("vibration.book.publishing").joinpath("book.css").read_text(encoding="utf-8")
 
 
 def _without(html: str, cls: str) -> str:
@@ -59,10 +59,10 @@ def test_the_books_print_rules_hide_the_screen_words_and_show_the_printed_ones_o
 
 
 def _panels(request) -> dict:
-    from vibration.chapters.duffing.panel import hb_panel_html
-    from vibration.chapters.real_oscillator.panel import decay_panel_html
-    from vibration.chapters.stability.panel import stability_panel_html
-    from vibration.chapters.tmd.panel import tmd_panel_html
+    from vibration.book.chapters.duffing.panel import hb_panel_html
+    from vibration.book.chapters.real_oscillator.panel import decay_panel_html
+    from vibration.book.chapters.stability.panel import stability_panel_html
+    from vibration.book.chapters.tmd.panel import tmd_panel_html
 
     return {
         "stability": stability_panel_html,

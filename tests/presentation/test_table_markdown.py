@@ -10,7 +10,7 @@ import docutils.nodes
 import pytest
 from myst_parser.parsers.docutils_ import Parser
 
-from vibration.presentation.tables import Column, Missing, Table
+from vibration.book.presentation.tables import Column, Missing, Table
 
 
 def _doctree(text: str):

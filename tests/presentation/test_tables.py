@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from prose import header_problems, prose_problems, repeated
 
-from vibration.presentation.tables import Table
+from vibration.book.presentation.tables import Table
 
 
 def test_prose_checks_can_fail():
@@ -15,7 +15,7 @@ def test_prose_checks_can_fail():
 
 
 def test_table_checks_allow_rendered_subscripts_only():
-    from vibration.presentation.tables import Column
+    from vibration.book.presentation.tables import Column
 
     ok = Table(
         rows=[{"a": 1.0}],
@@ -41,7 +41,7 @@ def test_repetition_check_sees_a_repeat_with_other_rounding():
 
 
 def test_columns_read_key_header_digits_and_flags_from_a_text_block():
-    from vibration.presentation.tables import Column, columns
+    from vibration.book.presentation.tables import Column, columns
 
     got = columns(
         """
@@ -62,7 +62,7 @@ def test_columns_read_key_header_digits_and_flags_from_a_text_block():
 def test_columns_refuse_a_line_without_header_or_with_an_unknown_word():
     import pytest
 
-    from vibration.presentation.tables import columns
+    from vibration.book.presentation.tables import columns
 
     with pytest.raises(ValueError, match="two spaces apart"):
         columns("c (N s/m)")
@@ -71,7 +71,7 @@ def test_columns_refuse_a_line_without_header_or_with_an_unknown_word():
 
 
 def test_self_checks_is_a_table_of_checks_with_the_given_headers():
-    from vibration.presentation.tables import self_checks
+    from vibration.book.presentation.tables import self_checks
 
     t = self_checks(
         [("energy balance", "< 10⁻¹²", True), ("poles", 0.0123456, False)],
@@ -89,7 +89,7 @@ def test_a_table_is_built_by_keyword_and_not_changed_afterwards():
 
     import pytest
 
-    from vibration.presentation.tables import Column, Missing
+    from vibration.book.presentation.tables import Column, Missing
 
     cols = [Column(key="a", header="a (m)")]
     with pytest.raises(TypeError):
@@ -125,7 +125,7 @@ def test_prose_check_passes_grouped_counts_short_counts_decimals_maths_and_ident
 
 
 def test_an_integer_cell_is_a_count_grouped_for_the_reader_and_plain_in_the_csv(tmp_path):
-    from vibration.presentation.tables import Approx, Column
+    from vibration.book.presentation.tables import Approx, Column
 
     t = Table(
         rows=[{"n": 4096, "m": 20000}, {"n": 7, "m": Approx(value=28232, rtol=0.25)}],
@@ -142,7 +142,7 @@ def test_an_integer_cell_is_a_count_grouped_for_the_reader_and_plain_in_the_csv(
 
 
 def test_table_check_finds_an_ungrouped_count_given_as_text():
-    from vibration.presentation.tables import Column
+    from vibration.book.presentation.tables import Column
 
     t = Table(rows=[{"n": "64000"}], columns=[Column(key="n", header="steps")], caption="Counts.", name="tab-t")
     assert header_problems(t) == ["cell '64000': ungrouped count: 64000", "ungrouped count 64000 in the rendered table"]

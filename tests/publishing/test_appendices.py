@@ -7,13 +7,13 @@ from importlib.resources import files
 
 import pytest
 
-from vibration.publishing.appendices import symbols_markdown, usage_markdown
-from vibration.publishing.registry import chapter_packages, chapter_schemas
+from vibration.book.publishing.appendices import symbols_markdown, usage_markdown
+from vibration.book.publishing.registry import chapter_packages, chapter_schemas
 
 USAGE = [
-    (pkg, files(f"vibration.chapters.{pkg}").joinpath("usage.md"))
+    (pkg, files(f"vibration.book.chapters.{pkg}").joinpath("usage.md"))
     for pkg in chapter_packages().values()
-    if files(f"vibration.chapters.{pkg}").joinpath("usage.md").is_file()
+    if files(f"vibration.book.chapters.{pkg}").joinpath("usage.md").is_file()
 ]
 
 

@@ -18,9 +18,9 @@ from pathlib import Path
 import pytest
 from conftest import CHROMIUM, SCREENSHOTS, open_offline
 
-from vibration.publishing import report
-from vibration.publishing.book import split_help, summary
-from vibration.publishing.registry import read_contents
+from vibration.book.publishing import report
+from vibration.book.publishing.book import split_help, summary
+from vibration.book.publishing.registry import read_contents
 
 ROOT = Path(__file__).resolve().parents[2]
 NOTEBOOKS = sorted(p for p in (ROOT / "notebooks").glob("*.ipynb"))
@@ -59,7 +59,7 @@ def test_every_chapter_and_the_front_page_are_built(site):
 
 
 def test_no_page_loads_from_the_network(site):
-    from vibration.publishing.mathml import external_urls
+    from vibration.book.publishing.mathml import external_urls
 
     for page in _pages(site):
         text = page.read_text(encoding="utf-8")
@@ -138,7 +138,7 @@ def test_the_notebooks_references_read_as_the_book_numbers_them(site):
 
 
 def test_banner_lists_own_and_other_changes():
-    from vibration.publishing.book import Parameter, banner_html
+    from vibration.book.publishing.book import Parameter, banner_html
 
     own = [
         Parameter(name="k", value=30.0, default=20.0, meaning="spring stiffness", unit="N/m", paper=True),
@@ -305,7 +305,7 @@ def test_a_mention_of_another_chapter_links_to_it(site):
     in tables, which are the chapters' raw HTML)."""
     from bs4 import BeautifulSoup
 
-    from vibration.publishing.sphinx_ext import chapter_mentions
+    from vibration.book.publishing.sphinx_ext import chapter_mentions
 
     linked, unlinked = 0, []
     for page in _pages(site):
@@ -373,7 +373,7 @@ def test_lint_imports_fails_on_a_forbidden_import(tmp_path):
     shutil.copytree(ROOT / "src", tmp_path / "src", ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
     shutil.copy(ROOT / "pyproject.toml", tmp_path / "pyproject.toml")
     model = tmp_path / "src" / "vibration" / "physics" / "model.py"
-    model.write_text(model.read_text(encoding="utf-8") + "\nfrom ..presentation import tables  # noqa\n")
+    model.write_text(model.read_text(encoding="utf-8") + "\nfrom ..book.presentation import tables  # noqa\n")
     env = {"PYTHONPATH": str(tmp_path / "src"), "PATH": str(Path(sys.executable).parent)}
     proc = subprocess.run(
         [str(Path(sys.executable).parent / "lint-imports"), "--no-cache"],
@@ -400,7 +400,7 @@ def test_the_print_edition_has_a_title_page_contents_and_bookmarks(printed):
     stop = r"(?= (?:\d+\. |Part |Table |Glossary |Running |Using |Answers |Licences|References|Overview)|$)"
     entries = [(t.strip(), p) for t, p in re.findall(r"(.+?) (\d{1,3})" + stop, listing)]
     entries = [(re.sub(r"^Part [IVX]+: .*? (?=\d+\. )", "", t), p) for t, p in entries]
-    from vibration.publishing.appendices import APPENDICES
+    from vibration.book.publishing.appendices import APPENDICES
 
     assert len(entries) == len(CHAPTERS) + 1 + len(APPENDICES), entries  # the front page, the chapters, appendices
     assert entries[0][0].replace("\ufb01", "fi") == "Overview and findings", entries[0]
@@ -431,7 +431,7 @@ def _reader_pages(site: Path) -> list[Path]:
 
 def test_the_reader_text_has_no_code_notation(site):
     """No underscored code names, e-notation, ^ powers or sqrt( outside code and maths (issue 22)."""
-    from vibration.publishing.proofread import code_notation
+    from vibration.book.publishing.proofread import code_notation
 
     found = {p.name: code_notation(p.read_text(encoding="utf-8")) for p in _reader_pages(site)}
     assert {k: v[:10] for k, v in found.items() if v} == {}
@@ -468,7 +468,7 @@ def test_chapter_pages_name_no_tool_and_the_appendix_names_the_versions(site):
 def test_the_front_page_summarises_the_chapters_instead_of_repeating_them(site):
     """Of Parts II and III the front page gives each chapter's headline (at most one sentence shared word for word
     with the chapter's page per chapter), not its whole list of key results."""
-    from vibration.publishing.proofread import sentences
+    from vibration.book.publishing.proofread import sentences
 
     def said(page: Path) -> set[str]:
         return set(sentences(page.read_text(encoding="utf-8")))
@@ -482,7 +482,7 @@ def test_the_front_page_summarises_the_chapters_instead_of_repeating_them(site):
 def test_no_sentence_repeats_on_a_chapter_page(site):
     """A chapter's summary says what its sections found in new words: no sentence of eight or more words appears
     twice in a chapter page's main text (code, folds and exercises left out)."""
-    from vibration.publishing.proofread import repeated_sentences
+    from vibration.book.publishing.proofread import repeated_sentences
 
     found = {name: repeated_sentences((site / f"{name}.html").read_text(encoding="utf-8")) for name in CHAPTERS}
     assert {k: [s[:80] for s in v] for k, v in found.items() if v} == {}
@@ -490,14 +490,14 @@ def test_no_sentence_repeats_on_a_chapter_page(site):
 
 def test_no_paragraph_repeats_on_a_page(site):
     """A paragraph, list item or caption appears once per page, also when only its rounding differs."""
-    from vibration.publishing.proofread import repeated_paragraphs
+    from vibration.book.publishing.proofread import repeated_paragraphs
 
     found = {p.name: repeated_paragraphs(p.read_text(encoding="utf-8")) for p in _reader_pages(site)}
     assert {k: [t[:80] for t in v] for k, v in found.items() if v} == {}
 
 
 def test_every_figure_has_alt_text_that_describes_it(site):
-    from vibration.publishing.proofread import figures_without_alt
+    from vibration.book.publishing.proofread import figures_without_alt
 
     found = {p.name: figures_without_alt(p.read_text(encoding="utf-8")) for p in _reader_pages(site)}
     assert {k: v for k, v in found.items() if v} == {}
@@ -505,8 +505,8 @@ def test_every_figure_has_alt_text_that_describes_it(site):
 
 def test_every_cited_work_is_in_the_references(site):
     """Each "Surname (year)" or "Surname et al. year" in the text names a work of the bibliography."""
-    from vibration.presentation.references import find
-    from vibration.publishing.proofread import _article
+    from vibration.book.presentation.references import find
+    from vibration.book.publishing.proofread import _article
 
     pattern = re.compile(r"\b([A-Z][a-z]+)(?:,? (?:and|&) [A-Z][a-z]+| et al\.)?,? \(?((?:19|20)\d\d)\b(?![\d.])")
     missing = set()

@@ -9,9 +9,9 @@ import grimp
 import nbformat
 import pytest
 
-from vibration.publishing import report
-from vibration.publishing.cache import ChapterCache, differences, import_closure, manifest, notebook_imports
-from vibration.publishing.registry import add_chapter
+from vibration.book.publishing import report
+from vibration.book.publishing.cache import ChapterCache, differences, import_closure, manifest, notebook_imports
+from vibration.book.publishing.registry import add_chapter
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -35,32 +35,35 @@ def _notebook(path: Path, code: str, param: str = "a: float = 1.0  # a number, 1
 def test_imports_are_read_from_the_code_cells(tmp_path):
     nb = _notebook(
         tmp_path / "n.ipynb",
-        "import numpy\nimport vibration\nfrom vibration.presentation import tables\n"
+        "import numpy\nimport vibration\nfrom vibration.book.presentation import tables\n"
         "from vibration.physics.exact import x",
     )
     assert notebook_imports(nb) == {
         "vibration",
-        "vibration.presentation",
-        "vibration.presentation.tables",
+        "vibration.book.presentation",
+        "vibration.book.presentation.tables",
         "vibration.physics.exact",
         "vibration.physics.exact.x",
     }
 
 
 def test_the_closure_holds_what_a_module_imports_and_nothing_else(graph):
-    closure = import_closure({"vibration.chapters.solver_accuracy.text"}, graph)
+    closure = import_closure({"vibration.book.chapters.solver_accuracy.text"}, graph)
     assert {
-        "vibration.chapters.solver_accuracy.text",
-        "vibration.chapters.solver_accuracy.study",
-        "vibration.presentation.tables",
+        "vibration.book.chapters.solver_accuracy.text",
+        "vibration.book.chapters.solver_accuracy.study",
+        "vibration.book.presentation.tables",
         "vibration.physics.exact",
     } <= closure
     assert {
-        "vibration.chapters.solver_accuracy",
-        "vibration.chapters",
+        "vibration.book.chapters.solver_accuracy",
+        "vibration.book.chapters",
         "vibration",
     } <= closure  # __init__ files run first
-    assert "vibration.chapters.tmd.study" not in closure and "vibration.chapters.real_oscillator.study" not in closure
+    assert (
+        "vibration.book.chapters.tmd.study" not in closure
+        and "vibration.book.chapters.real_oscillator.study" not in closure
+    )
     # the package's __init__ imports the whole physics library, so `import vibration` brings all of it
     assert "vibration.physics.tmd" in import_closure({"vibration"}, graph)
 
@@ -68,13 +71,13 @@ def test_the_closure_holds_what_a_module_imports_and_nothing_else(graph):
 def test_the_manifest_names_each_input_and_changes_with_it(tmp_path, graph):
     nb = _notebook(
         tmp_path / "notebooks" / "01_x.ipynb",
-        "from vibration.presentation.tables import fmt\n"
-        "from vibration.chapters.real_oscillator.panel import decay_panel",
+        "from vibration.book.presentation.tables import fmt\n"
+        "from vibration.book.chapters.real_oscillator.panel import decay_panel",
     )
     first = manifest(nb, {"a": 2.0}, ROOT, graph=graph)
-    assert "src/vibration/presentation/tables.py" in first and "src/vibration/physics/model.py" in first
-    assert "src/vibration/chapters/tmd/study.py" not in first
-    assert "src/vibration/chapters/real_oscillator/panel/real_oscillator.js" in first  # files beside the modules
+    assert "src/vibration/book/presentation/tables.py" in first and "src/vibration/physics/model.py" in first
+    assert "src/vibration/book/chapters/tmd/study.py" not in first
+    assert "src/vibration/book/chapters/real_oscillator/panel/real_oscillator.js" in first  # files beside the modules
     assert any(k.startswith("data/") for k in first)
     assert differences(first, manifest(nb, {"a": 2.0}, ROOT, graph=graph)) == []
     assert differences(first, manifest(nb, {"a": 3.0}, ROOT, graph=graph)) == ["parameters changed"]
@@ -95,7 +98,7 @@ def test_a_half_written_entry_is_never_a_hit(tmp_path):
 @pytest.mark.notebooks
 def test_a_second_run_reuses_unchanged_chapters_and_says_why_others_run(tmp_path):
     root = tmp_path / "project"
-    code = "from vibration.presentation.tables import fmt\nprint(fmt(a * 2))"
+    code = "from vibration.book.presentation.tables import fmt\nprint(fmt(a * 2))"
     a = report.Chapter(path=_notebook(root / "notebooks" / "01_a.ipynb", code), params={})
     b = report.Chapter(path=_notebook(root / "notebooks" / "02_b.ipynb", code.replace("2)", "3)")), params={})
     add_chapter("01_a", root, 1), add_chapter("02_b", root, 1)  # the project's table of contents: one part
@@ -128,7 +131,7 @@ def test_nothing_changed_only_checks_and_one_edit_rebuilds_only_its_pages(tmp_pa
     """With nothing changed the runner builds nothing; one edited chapter runs alone and Sphinx reads its page again,
     not the others' (its environment is kept in the output folder), and the tree is still swapped whole."""
     root = tmp_path / "project"
-    code = "from vibration.presentation.tables import fmt\nprint(fmt(a * 2))"
+    code = "from vibration.book.presentation.tables import fmt\nprint(fmt(a * 2))"
     _notebook(root / "notebooks" / "01_a.ipynb", code)
     b = _notebook(root / "notebooks" / "02_b.ipynb", code.replace("2)", "3)"))
     add_chapter("01_a", root, 1), add_chapter("02_b", root, 1)
@@ -158,7 +161,7 @@ def test_nothing_changed_only_checks_and_one_edit_rebuilds_only_its_pages(tmp_pa
 def test_the_lab_folder_of_chapter_12_enters_its_manifest(tmp_path, graph):
     nb = _notebook(
         tmp_path / "notebooks" / "12_real_oscillator.ipynb",
-        "from vibration.presentation.tables import fmt",
+        "from vibration.book.presentation.tables import fmt",
         'lab_data: str = "data/lab_oscillator"  # folder, path',
     )
     lab = tmp_path / "lab"
@@ -177,5 +180,5 @@ def test_the_lab_folder_of_chapter_12_enters_its_manifest(tmp_path, graph):
     default = manifest(nb, {}, ROOT, graph=graph)
     assert "parameter lab_data/runs.csv" in default and default["parameter lab_data"] == "folder"
     # another chapter's notebook has no path parameter
-    other = _notebook(tmp_path / "notebooks" / "01_x.ipynb", "from vibration.presentation.tables import fmt")
+    other = _notebook(tmp_path / "notebooks" / "01_x.ipynb", "from vibration.book.presentation.tables import fmt")
     assert not any(k.startswith("parameter ") for k in manifest(other, {"a": 1.0}, ROOT, graph=graph))

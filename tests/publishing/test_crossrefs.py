@@ -10,10 +10,10 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from vibration.publishing.crossrefs import book_text, number_references, number_text
-from vibration.publishing.page_edits import prepare
-from vibration.publishing.pages import ChapterPage
-from vibration.publishing.registry import read_contents
+from vibration.book.publishing.crossrefs import book_text, number_references, number_text
+from vibration.book.publishing.page_edits import prepare
+from vibration.book.publishing.pages import ChapterPage
+from vibration.book.publishing.registry import read_contents
 
 ROOT = Path(__file__).resolve().parents[2]
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))

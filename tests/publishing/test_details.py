@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import nbformat
 
-from vibration.publishing.book import ChapterPage, fold_details, prepare
+from vibration.book.publishing.book import ChapterPage, fold_details, prepare
 
 
 def _cell(kind: str, source: str, tags=(), outputs=()):

@@ -101,7 +101,7 @@ def test_a_sweep_and_a_two_chapter_report_survive_a_killed_worker_on_an_existing
 
     ds = xr.open_dataset(out / "sweep.nc", engine="h5netcdf")
     assert np.isfinite(ds["lyapunov"].values).all() and (ds["error"].values == "").all()
-    from vibration.chapters.duffing.study import chaos_study
+    from vibration.book.chapters.duffing.study import chaos_study
 
     assert float(ds["lyapunov"].values[5]) == chaos_study(F0_ueda=float(ds["F0_ueda"].values[5]),
                                                           n_lyapunov=400).pooled.mean  # fmt: skip

@@ -7,7 +7,7 @@ from pathlib import Path
 import papermill
 import pytest
 
-from vibration.publishing.execution import KERNEL_START_ATTEMPTS, ChapterTask, run_chapter, with_kernel_restarts
+from vibration.book.publishing.execution import KERNEL_START_ATTEMPTS, ChapterTask, run_chapter, with_kernel_restarts
 
 START_FAILED = "Kernel died before replying to kernel_info"
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from vibration.publishing.sheets import build_wheel
+from vibration.book.publishing.sheets import build_wheel
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -20,17 +20,19 @@ def test_an_installed_wheel_reads_its_own_data(tmp_path):
     for data in (ROOT / "data").rglob("*"):
         if data.is_file():
             assert f"vibration/_data/{data.relative_to(ROOT / 'data').as_posix()}" in names, data.name
-    assert any(n.startswith("vibration/chapters/real_oscillator/panel/") for n in names)
-    for params in (ROOT / "src" / "vibration" / "chapters").glob("*/params.py"):  # each declares its data there
-        assert f"vibration/chapters/{params.parent.name}/params.toml" in names, params.parent.name
+    assert any(n.startswith("vibration/book/chapters/real_oscillator/panel/") for n in names)
+    for params in (ROOT / "src" / "vibration" / "book" / "chapters").glob(
+        "*/params.py"
+    ):  # each declares its data there
+        assert f"vibration/book/chapters/{params.parent.name}/params.toml" in names, params.parent.name
     for data in (ROOT / "src" / "vibration").rglob("*.toml"):  # exercise sheets, designs: whatever a chapter reads
         assert data.relative_to(ROOT / "src").as_posix() in names, data.name
     target = tmp_path / "site"
     zipfile.ZipFile(wheel).extractall(target)  # what pip installs, without touching the environment
     code = (
         "import vibration.physics.paper as p; d = p.data_dir(); assert 'site' in str(d), d; print(len(p.load_claims()))"
-        "; import vibration.chapters.tmd.params as t; assert 'site' in t.__file__ and t.Params().mu == 0.05"
-        "; import vibration.chapters.tmd.designs as g; assert len(g.TUNINGS) == 6, g.TUNINGS"
+        "; import vibration.book.chapters.tmd.params as t; assert 'site' in t.__file__ and t.Params().mu == 0.05"
+        "; import vibration.book.chapters.tmd.designs as g; assert len(g.TUNINGS) == 6, g.TUNINGS"
     )
     env = {k: v for k, v in os.environ.items() if k != "VIBRATION_DATA"} | {"PYTHONPATH": str(target)}
     done = subprocess.run(

@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 from conftest import CHROMIUM, open_offline
 
-from vibration.presentation.captions import METADATA_KEY
-from vibration.publishing.print_edition import commit_date, edition_text, print_book
+from vibration.book.presentation.captions import METADATA_KEY
+from vibration.book.publishing.print_edition import commit_date, edition_text, print_book
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -93,9 +93,9 @@ def test_print_keeps_each_folds_summary_on_the_page_of_what_it_opens(browser, tm
     where the figure they open (too tall for what is left) moves to the next page; the summary must move with it."""
     from importlib.resources import files
 
-    from vibration.publishing.print_edition import page_texts
+    from vibration.book.publishing.print_edition import page_texts
 
-    css = files("vibration.publishing").joinpath("book.css").read_text(encoding="utf-8")
+    css = files("vibration.book.publishing").joinpath("book.css").read_text(encoding="utf-8")
     folds = "".join(_FOLD.format(n=n, words=" ".join(["Words that fill lines."] * (6 * n))) for n in range(1, 25))
     src = tmp_path / "folds.html"
     src.write_text(_FOLDS.format(css=css, folds=folds), encoding="utf-8")

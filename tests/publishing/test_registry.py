@@ -8,12 +8,12 @@ from pathlib import Path
 
 import pytest
 
+from vibration.book.publishing.book import ChapterPage, parts
+from vibration.book.publishing.front_page import toctree_markdown
+from vibration.book.publishing.registry import CONTENTS_FILE, add_chapter, chapter_packages, read_contents
+from vibration.book.publishing.report import discover
+from vibration.book.publishing.template import new_chapter
 from vibration.physics.model import ParameterError
-from vibration.publishing.book import ChapterPage, parts
-from vibration.publishing.front_page import toctree_markdown
-from vibration.publishing.registry import CONTENTS_FILE, add_chapter, chapter_packages, read_contents
-from vibration.publishing.report import discover
-from vibration.publishing.template import new_chapter
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 
 import vibration
+from vibration.book.publishing import engine, report
+from vibration.book.publishing.registry import add_chapter
 from vibration.physics.model import ParameterError
-from vibration.publishing import engine, report
-from vibration.publishing.registry import add_chapter
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -201,7 +201,7 @@ def test_a_shared_parameter_is_declared_once():
     """Chapters that use m, k, F0, ... take the shared declaration: one range, one unit, one symbol."""
     import dataclasses
 
-    from vibration.presentation.parameters import SHARED
+    from vibration.book.presentation.parameters import SHARED
 
     for schema in report.chapter_schemas().values():
         for param in schema.params:

@@ -6,7 +6,7 @@ import pytest
 from conftest import SCREENSHOT_DIR as SCREENSHOTS
 from conftest import open_offline, panel_state
 
-from vibration.publishing import report
+from vibration.book.publishing import report
 
 
 @pytest.fixture(scope="module")

@@ -11,9 +11,9 @@ import pytest
 import scipy.linalg
 import scipy.signal
 
+from vibration.book.publishing import sheets
+from vibration.book.publishing.report import main as report_main
 from vibration.physics.model import ParameterError
-from vibration.publishing import sheets
-from vibration.publishing.report import main as report_main
 
 #: The default and two other parameter sets (inside every chapter's schema).
 SETS = [
@@ -237,8 +237,8 @@ def test_the_introductions_name_no_code_and_read_the_same_on_screen_and_on_paper
     the way to check an answer is in the appendix on running the chapters."""
     import nbformat
 
-    from vibration.publishing.appendices import symbols_markdown
-    from vibration.publishing.registry import chapter_schemas
+    from vibration.book.publishing.appendices import symbols_markdown
+    from vibration.book.publishing.registry import chapter_schemas
 
     for stem in sheets._modules():
         block = sheets.exercise_section(stem)
@@ -255,7 +255,7 @@ def test_the_introductions_name_no_code_and_read_the_same_on_screen_and_on_paper
             assert "appendix on running the chapters" in intro, (stem, intro)
     sheets._RUN_PARAMS.clear()
     appendix = symbols_markdown(chapter_schemas())
-    assert 'vibration.check("04.2"' in appendix and "quantity=" in appendix
+    assert 'vibration.book.check("04.2"' in appendix and "quantity=" in appendix
 
 
 def test_the_sheets_name_no_library_or_tool():

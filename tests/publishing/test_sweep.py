@@ -12,9 +12,9 @@ import nbformat
 import numpy as np
 import pytest
 
+from vibration.book.publishing import engine
+from vibration.book.publishing import sweep as sw
 from vibration.physics.model import ParameterError
-from vibration.publishing import engine
-from vibration.publishing import sweep as sw
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -56,7 +56,7 @@ def test_bad_grids_are_refused_before_any_task_naming_the_parameter(no_task, gri
 
 
 def test_the_command_refuses_a_bad_grid_before_any_task(no_task, tmp_path, capsys):
-    from vibration.publishing import report
+    from vibration.book.publishing import report
 
     rc = report.main(["sweep", "04", "-g", "c_nominal", "1:1e6:3", "--out", str(tmp_path / "s")])
     assert rc == 2
@@ -164,7 +164,7 @@ def test_chapter_4_points_equal_the_closed_form_and_a_failed_point_is_nan_with_i
 
 
 def test_a_point_whose_study_fails_is_nan_with_its_error(monkeypatch):
-    from vibration.chapters.frequency_response import keyresults
+    from vibration.book.chapters.frequency_response import keyresults
 
     real = keyresults.KEY_RESULTS.study
 
@@ -214,7 +214,7 @@ def test_a_local_cluster_sweep_equals_the_same_points_computed_serially():
     cluster = sw.sweep("09", grid, params={"n_lyapunov": 100}, jobs=2)
     np.testing.assert_array_equal(cluster["lyapunov"].values, serial["lyapunov"].values)
     np.testing.assert_array_equal(cluster["lyapunov_se"].values, serial["lyapunov_se"].values)
-    from vibration.chapters.duffing.study import chaos_study
+    from vibration.book.chapters.duffing.study import chaos_study
 
     direct = chaos_study(F0_ueda=10.0, c_ueda=0.1, n_lyapunov=100).pooled.mean  # the study called directly
     assert float(cluster["lyapunov"].sel(F0_ueda=10.0, c_ueda=0.1)) == direct
@@ -257,8 +257,8 @@ def test_sigterm_stops_a_sweep_within_seconds_and_resume_completes_only_the_miss
 
 
 def test_no_chapter_takes_a_subcommands_name(tmp_path):
-    from vibration.publishing import report
-    from vibration.publishing.template import new_chapter
+    from vibration.book.publishing import report
+    from vibration.book.publishing.template import new_chapter
 
     for ch in report.discover():
         assert not any(ch.matches(name) for name in report.SUBCOMMANDS), ch.name
@@ -269,7 +269,7 @@ def test_no_chapter_takes_a_subcommands_name(tmp_path):
 @pytest.mark.slow
 def test_the_same_grid_twice_on_one_client_is_not_reported_as_a_rerun(capsys):
     """Starts are counted per submission: a second sweep of the same points is not a worker lost."""
-    from vibration.publishing.engine import cluster
+    from vibration.book.publishing.engine import cluster
 
     grid = {"F0_ueda": "4,10", "c_ueda": "0.05"}
     with cluster(2) as client:

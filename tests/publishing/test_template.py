@@ -8,8 +8,8 @@ import sys
 
 import pytest
 
+from vibration.book.publishing.template import new_chapter
 from vibration.physics.model import ParameterError
-from vibration.publishing.template import new_chapter
 
 
 def test_bad_names_and_existing_chapters_are_refused(tmp_path):

@@ -527,7 +527,7 @@ def _load_response(osc: Oscillator, load, t, x0: float, v0: float) -> Response:
     x0 = check_real("x0", x0, unit="m")
     v0 = check_real("v0", v0, unit="m/s")
     tt = _times(t)
-    x, v = exact_load_response(osc, load, tt, x0, v0)
+    x, v = exact_load_response(osc, load, tt, x0=x0, v0=v0)
     if not (np.all(np.isfinite(x)) and np.all(np.isfinite(v))):
         raise ParameterError("the response overflows the float range inside the window: allowed a shorter window")
     return Response(t=tt, x=np.asarray(x, dtype=float), v=np.asarray(v, dtype=float), method="exact")

@@ -73,7 +73,7 @@ class Harmonic:
 class Unbalance:
     """Rotating unbalance: mass ``m_e`` at radius ``e`` turning at ``omega``, ``F(t) = m_e e omega^2 sin(omega t)``.
 
-    >>> Unbalance(m_e=0.1, e=0.2, omega=10.0).F0         # N
+    >>> round(Unbalance(m_e=0.1, e=0.2, omega=10.0).F0, 12)         # N
     2.0
     """
 
@@ -178,13 +178,17 @@ class Sampled:
         if t.ndim != 1 or t.size < 2 or t.size > N_POINTS_MAX:
             raise ParameterError(f"t has shape {t.shape}: allowed 2 to {N_POINTS_MAX} sample times in s")
         if F.shape != t.shape:
-            raise ParameterError(f"F has shape {F.shape}: allowed one force in N per sample time, shape {t.shape}")
+            raise ParameterError(
+                f"t has shape {t.shape} and F has shape {F.shape}: allowed one force F in N per sample time t in s"
+            )
         if t[0] != 0.0:
-            raise ParameterError(f"t[0] = {t[0]!r} s: allowed t[0] = 0 s (the response starts at t = 0)")
+            raise ParameterError(f"t[0] = {float(t[0])!r} s: allowed t[0] = 0 s (the response starts at t = 0)")
         steps = np.diff(t)
         if not np.all(steps > 0):
             i = int(np.argmin(steps > 0))
-            raise ParameterError(f"t[{i + 1}] = {t[i + 1]!r} s is not after t[{i}] = {t[i]!r} s: allowed increasing times")
+            raise ParameterError(
+                f"t[{i + 1}] = {float(t[i + 1])!r} s is not after t[{i}] = {float(t[i])!r} s: allowed increasing times"
+            )
         for name, a in (("t", t), ("F", F)):
             a.setflags(write=False)
             object.__setattr__(self, name, a)
@@ -222,9 +226,14 @@ def _value(y, t):
 
 def _float_array(name: str, values, unit: str) -> np.ndarray:
     try:
-        a = np.array(values, dtype=float)
+        raw = np.asarray(values)
+        if raw.dtype.kind not in "iuf":
+            raise TypeError
+        a = np.array(raw, dtype=float)
     except (TypeError, ValueError):
-        raise ParameterError(f"{name} = {values!r:.60} is not an array of numbers: allowed finite values in {unit}")
+        raise ParameterError(
+            f"{name} = {values!r:.60} is not an array of numbers: allowed finite values in {unit}"
+        ) from None
     if not np.all(np.isfinite(a)):
         raise ParameterError(f"{name} contains {float(a[~np.isfinite(a)][0])!r}: allowed finite values in {unit}")
     return a
@@ -245,7 +254,9 @@ def equivalent_harmonic(osc: Oscillator, load) -> tuple[float, float, float]:
     if isinstance(load, BaseMotion):
         w = load.omega
         return load.Y * math.hypot(osc.k, osc.c * w), w, load.phase + math.atan2(osc.c * w, osc.k)
-    raise ParameterError(f"force = {load!r:.80} is not a harmonic load: allowed SineForce, Harmonic, Unbalance, BaseMotion")
+    raise ParameterError(
+        f"force = {load!r:.80} is not a harmonic load: allowed SineForce, Harmonic, Unbalance, BaseMotion"
+    )
 
 
 def load_function(osc: Oscillator, load):
@@ -271,7 +282,7 @@ def fastest_rate(load) -> float:
 # --- exact responses -------------------------------------------------------------------------------------------
 
 
-def exact_load_response(osc: Oscillator, load, t: np.ndarray, x0: float, v0: float):
+def exact_load_response(osc: Oscillator, load, t: np.ndarray, *, x0: float, v0: float):
     """The exact ``(x, v)`` arrays of :func:`vibration.exact_response` for any load of :data:`LOADS`."""
     from .exact import exact_response
 
@@ -325,7 +336,9 @@ def _sampled(osc: Oscillator, load: Sampled, t: np.ndarray, x0: float, v0: float
         raise ParameterError(f"t contains {bad!r} s: allowed 0 <= t <= {load.t_end!r} s, the sampled input's span")
     grid = np.union1d(load.t, flat)
     if grid.size > N_POINTS_MAX:
-        raise ParameterError(f"t has {flat.size} times: with the input's samples more than {N_POINTS_MAX}: allowed fewer")
+        raise ParameterError(
+            f"t has {flat.size} times: with the input's samples more than {N_POINTS_MAX}: allowed fewer"
+        )
     F = np.interp(grid, load.t, load.F)
     h = np.diff(grid)
     lengths, which = np.unique(h, return_inverse=True)
@@ -419,31 +432,68 @@ def frequency_response(osc: Oscillator, load, omegas) -> FrequencyResponse:
     >>> round(float(fr.amplitude[0]), 4)           # m, the paper's reference case
     0.4504
     """
+    from .checks import check_oscillator
     from .frequency import _omegas
 
+    check_oscillator(osc)
     if not isinstance(load, HARMONIC_LOADS):
-        raise ParameterError(f"force = {load!r:.80} is not a harmonic load: allowed SineForce, Harmonic, Unbalance, BaseMotion")
+        raise ParameterError(
+            f"force = {load!r:.80} is not a harmonic load: allowed SineForce, Harmonic, Unbalance, BaseMotion"
+        )
     w = np.atleast_1d(_omegas(omegas, scalar=True))
     kind = _load_kind(load)
-    ref, g = _per_reference(osc, load, w)
-    amplitude = ref * np.abs(g)
-    transmitted = (osc.m * w**2 if kind == "base motion" else np.hypot(osc.k, osc.c * w)) * amplitude
-    with np.errstate(invalid="ignore"):
-        lag = np.where(np.isfinite(g), -np.angle(g), 0.5 * np.pi)
+    X, g = _phasors(osc, load, w)
+    amplitude = np.abs(X)
+    r = w / osc.natural_frequency
+    with np.errstate(over="ignore", invalid="ignore"):
+        stiff = osc.k * (r * r if kind == "base motion" else np.hypot(1.0, 2.0 * osc.damping_ratio * r))
+        transmitted = stiff * amplitude
+    _refuse_overflow(np.isfinite(g), amplitude, transmitted, w=w)
+    lag = np.where(np.isfinite(g), -np.angle(np.where(np.isfinite(g), g, 1.0)), 0.5 * np.pi) + 0.0
     return FrequencyResponse(omega=w, amplitude=amplitude, phase=lag, transmitted=transmitted, load=kind)
 
 
-def _per_reference(osc: Oscillator, load, w: np.ndarray):
-    """``(reference, x / reference)``: the reference is a force's static deflection F/k (m), or the support's Y."""
+def _refuse_overflow(resolvable: np.ndarray, *arrays: np.ndarray, w: np.ndarray) -> None:
+    for a in arrays:
+        bad = resolvable & ~np.isfinite(a)
+        if np.any(bad):
+            raise ParameterError(
+                f"omegas contains {float(w[bad][0])!r} rad/s: the response there overflows the float range; "
+                "allowed frequencies at which it stays finite"
+            )
+
+
+def _phasors(osc: Oscillator, load, w: np.ndarray):
+    """``(X, g)``: the complex displacement amplitude X (m) and ``g``, x over the load's own phasor.
+
+    ``g = 1 / D`` for a force or an unbalance (x over F/k), ``(1 + 2 i zeta r) / D`` for base motion (x over y),
+    with ``D = 1 - r^2 + 2 i zeta r``; above resonance numerator and D are divided by r^2 so nothing overflows.
+    ``g`` is infinite at undamped resonance.
+    """
     kind = _load_kind(load)
-    den = (osc.k - osc.m * w**2) + 1j * osc.c * w  # 1 / receptance, N/m
-    num = osc.k + 1j * osc.c * w if kind == "base motion" else osc.k + 0j
-    with np.errstate(divide="ignore", invalid="ignore"):
-        g = np.where(den == 0, complex(0.0, -math.inf), num / np.where(den == 0, 1.0, den))
-    if kind == "base motion":
-        return load.Y, g
-    F = load.m_e * load.e * w**2 if kind == "unbalance" else load.F0
-    return F / osc.k, g
+    r = w / osc.natural_frequency
+    z = osc.damping_ratio
+    big = r > 1.0
+    q = np.where(big, r, 1.0)  # the scale: r above resonance, 1 below
+    with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
+        inv = 1.0 / (q * q)
+        D = np.where(big, (inv - 1.0) + 2j * z / q, (1.0 - r) * (1.0 + r) + 2j * z * r)  # D / q^2
+        if kind == "base motion":
+            N = np.where(big, inv + 2j * z / q, 1.0 + 2j * z * r)  # (1 + 2 i zeta r) / q^2
+            ref = load.Y
+        elif kind == "unbalance":
+            N = np.where(big, 1.0, r * r) + 0j  # r^2 / q^2
+            ref = load.m_e * load.e / osc.m
+        else:
+            N = inv + 0j  # 1 / q^2
+            ref = load.F0 / osc.k
+        zero = D == 0
+        safe = np.where(zero, 1.0, D)
+        ratio = np.where(zero, complex(0.0, -math.inf), N / safe)  # x over ref
+        # g: x over the load's own phasor (F/k for a force or an unbalance, y for base motion)
+        g = np.where(zero, complex(0.0, -math.inf), inv / safe) if kind == "unbalance" else ratio
+        X = ref * ratio if ref > 0 else np.zeros_like(ratio)
+    return X, g
 
 
 def steady_load(osc: Oscillator, load):
@@ -455,13 +505,24 @@ def steady_load(osc: Oscillator, load):
     from .exact import SteadyState
 
     if not isinstance(load, HARMONIC_LOADS):
-        raise ParameterError(f"force = {load!r:.80} is not a harmonic load: allowed SineForce, Harmonic, Unbalance, BaseMotion")
+        raise ParameterError(
+            f"force = {load!r:.80} is not a harmonic load: allowed SineForce, Harmonic, Unbalance, BaseMotion"
+        )
     w = np.array([load.omega])
-    ref, g = _per_reference(osc, load, w)
-    ref = float(np.ravel(ref)[0])
+    X, g = _phasors(osc, load, w)
+    kind = _load_kind(load)
+    ref = (
+        load.Y
+        if kind == "base motion"
+        else (load.m_e * load.e * load.omega**2 if kind == "unbalance" else load.F0) / osc.k
+    )
     mag = float(np.abs(g[0]))
+    amp = float(np.abs(X[0]))
+    if not (math.isfinite(ref) and (math.isfinite(amp) or math.isinf(mag))):
+        raise ParameterError(
+            f"omega = {load.omega!r} rad/s: the steady state overflows the float range; allowed a lower omega"
+        )
     lag = 0.5 * math.pi if math.isinf(mag) else float(-np.angle(g[0]))
-    amp = ref * mag if ref > 0 else 0.0
     return SteadyState(amplitude=amp, phase=lag, magnification=mag, velocity_amplitude=load.omega * amp,
                        static_deflection=ref)  # fmt: skip
 
@@ -489,14 +550,19 @@ def peak_response(osc: Oscillator, load) -> Peak:
     >>> osc = Oscillator(m=1.0, c=0.5, k=20.0)
     >>> p = peak_response(osc, SineForce(F0=5.0, omega=1.0))
     >>> round(p.omega, 3), round(p.amplitude, 4)     # rad/s, m
-    (4.458, 2.2395)
+    (4.458, 2.2396)
     """
+    from .checks import check_oscillator
+
+    check_oscillator(osc)
     if osc.c < 0.0:
         raise ParameterError(f"c = {osc.c!r} N s/m: allowed c >= 0 (an unstable oscillator has no steady state)")
     wn, z = osc.natural_frequency, osc.damping_ratio
     kind = _load_kind(load) if isinstance(load, HARMONIC_LOADS) else None
     if kind is None:
-        raise ParameterError(f"force = {load!r:.80} is not a harmonic load: allowed SineForce, Harmonic, Unbalance, BaseMotion")
+        raise ParameterError(
+            f"force = {load!r:.80} is not a harmonic load: allowed SineForce, Harmonic, Unbalance, BaseMotion"
+        )
     if z == 0.0:
         return Peak(omega=wn, amplitude=math.inf)
     q = 1.0 - 2.0 * z * z

@@ -7,8 +7,7 @@ import math
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from .checks import OverBudget
-from .checks import check_oscillator
+from .checks import OverBudget, check_oscillator
 from .exact import Response
 from .forcing import Sampled, check_load, fastest_rate, load_function
 from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_int, check_real, check_records

@@ -25,17 +25,17 @@ import numpy as np
 import pytest
 from prose import ungrouped_counts
 
-from vibration.chapters.control import tables as T
-from vibration.chapters.control import text as X
-from vibration.chapters.control.figures import all_figures, closeness
-from vibration.chapters.control.notation import LABELS, cell, num
-from vibration.chapters.control.params import SCHEMA, Params
-from vibration.chapters.control.study import control_study
-from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
+from vibration.book.chapters.control import tables as T
+from vibration.book.chapters.control import text as X
+from vibration.book.chapters.control.figures import all_figures, closeness
+from vibration.book.chapters.control.notation import LABELS, cell, num
+from vibration.book.chapters.control.params import SCHEMA, Params
+from vibration.book.chapters.control.study import control_study
+from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 
 ROOT = Path(__file__).resolve().parents[3]
 NOTEBOOK = ROOT / "notebooks" / "07_control.ipynb"
-USAGE = ROOT / "src" / "vibration" / "chapters" / "control" / "usage.md"
+USAGE = ROOT / "src" / "vibration" / "book" / "chapters" / "control" / "usage.md"
 
 #: The parameter sets beyond the defaults (issue 21): the runner's, a heavy stiff plant, a soft light one.
 OTHER = {

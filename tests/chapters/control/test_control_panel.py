@@ -10,10 +10,10 @@ from conftest import SCREENSHOTS, open_offline
 
 import vibration
 from vibration import Oscillator, ParameterError, SineForce, exact_response
-from vibration.chapters.control.panel import control_panel, control_panel_html
-from vibration.chapters.control.study import control_study
+from vibration.book.chapters.control.panel import control_panel, control_panel_html
+from vibration.book.chapters.control.study import control_study
+from vibration.book.publishing.mathml import external_urls
 from vibration.physics.control import lqr_closed_form, shaped_move, shaper_residual
-from vibration.publishing.mathml import external_urls
 
 #: Tolerances of the JavaScript against Python: gains, transmissibility, residual (relative); x samples
 #: relative to max |x|.

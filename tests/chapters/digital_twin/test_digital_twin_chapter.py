@@ -14,9 +14,9 @@ import pytest
 from drawn import drawn_once
 from prose import ungrouped_counts
 
-from vibration.chapters.digital_twin import figures, tables, text
-from vibration.chapters.digital_twin.study import digital_twin_study
-from vibration.presentation.captions import CAPTION_WORDS, caption_words, check_caption
+from vibration.book.chapters.digital_twin import figures, tables, text
+from vibration.book.chapters.digital_twin.study import digital_twin_study
+from vibration.book.presentation.captions import CAPTION_WORDS, caption_words, check_caption
 
 matplotlib.use("Agg")
 

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from vibration import Oscillator
-from vibration.chapters.digital_twin import cusum, montecarlo
-from vibration.chapters.digital_twin.study import digital_twin_study
+from vibration.book.chapters.digital_twin import cusum, montecarlo
+from vibration.book.chapters.digital_twin.study import digital_twin_study
 from vibration.physics.twin import cubic_response, identify
 
 OSC = Oscillator(m=1.0, c=0.5, k=20.0)

@@ -11,13 +11,13 @@ import pytest
 from conftest import open_offline
 
 from vibration import Oscillator, ParameterError
-from vibration.chapters.digital_twin import figures, tables, text
-from vibration.chapters.digital_twin.panel import twin_panel_html
-from vibration.chapters.digital_twin.study import digital_twin_study
+from vibration.book.chapters.digital_twin import figures, tables, text
+from vibration.book.chapters.digital_twin.panel import twin_panel_html
+from vibration.book.chapters.digital_twin.study import digital_twin_study
+from vibration.book.presentation.captions import check_caption
+from vibration.book.presentation.style import legend_overlap
+from vibration.book.publishing.mathml import external_urls
 from vibration.physics import twin
-from vibration.presentation.captions import check_caption
-from vibration.presentation.style import legend_overlap
-from vibration.publishing.mathml import external_urls
 
 matplotlib.use("Agg")
 
@@ -126,9 +126,9 @@ def test_panel_in_chromium_matches_the_grid(browser, tmp_path):
 def test_the_explorer_is_on_the_panel_kit_and_reads_its_own_identification(small):
     """The explorer's readout gives the identification it draws, each 95 % interval against the true value,
     and a slider move re-identifies and redraws."""
-    from vibration.chapters.digital_twin.panel import panel
-    from vibration.presentation.numbers import sig
-    from vibration.presentation.panels import KitExplorer
+    from vibration.book.chapters.digital_twin.panel import panel
+    from vibration.book.presentation.numbers import sig
+    from vibration.book.presentation.panels import KitExplorer
 
     ex = panel(small)
     assert isinstance(ex, KitExplorer)

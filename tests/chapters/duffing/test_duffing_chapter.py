@@ -21,17 +21,17 @@ import pytest
 from prose import ungrouped_counts
 
 from vibration import ParameterError
-from vibration.chapters.duffing import figures, notation, tables, text
-from vibration.chapters.duffing.notation import apm, within
-from vibration.chapters.duffing.params import SCHEMA, Params
-from vibration.chapters.duffing.study import duffing_study
+from vibration.book.chapters.duffing import figures, notation, tables, text
+from vibration.book.chapters.duffing.notation import apm, within
+from vibration.book.chapters.duffing.params import SCHEMA, Params
+from vibration.book.chapters.duffing.study import duffing_study
+from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
+from vibration.book.presentation.numbers import sig
+from vibration.book.presentation.style import case_style, legend_overlap
 from vibration.physics.duffing import periodic_orbit
-from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
-from vibration.presentation.numbers import sig
-from vibration.presentation.style import case_style, legend_overlap
 
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "09_duffing.ipynb"
-USAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "chapters" / "duffing" / "usage.md"
+USAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "book" / "chapters" / "duffing" / "usage.md"
 
 TABLES = (
     tables.hb_table,
@@ -452,7 +452,7 @@ def test_a_chaotic_run_started_one_ulp_away_stays_within_the_declared_tolerances
     from conftest import nbval_sanitize as _sanitize
     from nbval_numeric import mismatches
 
-    from vibration.chapters.duffing import chaos as chaos_module
+    from vibration.book.chapters.duffing import chaos as chaos_module
 
     runs = tuple(
         ((math.nextafter(x0, math.inf) if x0 else x0, math.nextafter(v0, math.inf) if v0 else v0), spp)

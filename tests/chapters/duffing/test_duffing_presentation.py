@@ -10,9 +10,9 @@ import pytest
 from conftest import open_offline
 
 from vibration import Duffing, ParameterError, folds, hb_amplitudes, response_curve
-from vibration.chapters.duffing import panel as pres
-from vibration.presentation.style import case_style
-from vibration.publishing.mathml import external_urls
+from vibration.book.chapters.duffing import panel as pres
+from vibration.book.presentation.style import case_style
+from vibration.book.publishing.mathml import external_urls
 
 
 def test_panel_fragment_is_self_contained():
@@ -40,9 +40,9 @@ def test_explorer_bundle_carries_the_static_panel():
 def test_explorer_readout_follows_the_closed_form_folds():
     """The readout's peak and fold frequencies are those of the harmonic balance at the sliders' values, and
     the panel kit drives it (a slider move redraws the figure and the readout)."""
+    from vibration.book.presentation.numbers import sig
+    from vibration.book.presentation.panels import KitExplorer
     from vibration.physics.duffing import Duffing, folds
-    from vibration.presentation.numbers import sig
-    from vibration.presentation.panels import KitExplorer
 
     ex = pres.hb_explorer(m=1.0, c=0.5, k=20.0, k3=2.0, F0=5.0)
     assert isinstance(ex, KitExplorer)

@@ -15,13 +15,13 @@ from conftest import open_offline
 from prose import header_problems, prose_problems, repeated, table_texts
 
 from vibration import Oscillator, SineForce, exact_response, settling_time
-from vibration.chapters.explore import ExploreStudy, Params, explore_study, panel, readout, text
-from vibration.chapters.explore.figure import build_figure, figure_words
-from vibration.chapters.explore.study import C_MAX, C_MIN
-from vibration.chapters.explore.widget import live_explorer
+from vibration.book.chapters.explore import ExploreStudy, Params, explore_study, panel, readout, text
+from vibration.book.chapters.explore.figure import build_figure, figure_words
+from vibration.book.chapters.explore.study import C_MAX, C_MIN
+from vibration.book.chapters.explore.widget import live_explorer
 from vibration.physics.audit import resonant_peak
 
-PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "chapters" / "explore"
+PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "book" / "chapters" / "explore"
 
 PARAMETER_SETS = {
     "paper": {},

@@ -15,9 +15,9 @@ from conftest import SCREENSHOT_DIR as SCREENSHOTS
 from conftest import open_offline, panel_state
 
 from vibration import Oscillator, ParameterError, SineForce, exact_response, settling_time, steady_state
-from vibration.chapters.explore.panel import slider_panel_html
-from vibration.chapters.explore.study import C_MIN
-from vibration.publishing.mathml import external_urls
+from vibration.book.chapters.explore.panel import slider_panel_html
+from vibration.book.chapters.explore.study import C_MIN
+from vibration.book.publishing.mathml import external_urls
 
 #: Tolerances of the JavaScript against vibration.physics.exact: x samples relative to max|x|, amplitude and
 #: peak relative, settling time relative.

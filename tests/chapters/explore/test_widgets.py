@@ -13,9 +13,9 @@ from numpy.testing import assert_allclose
 from PIL import Image
 
 from vibration import Oscillator, ParameterError, SineForce, settling_time, simulate, steady_state
-from vibration.chapters.explore.bench import benchmark_updates
-from vibration.chapters.explore.study import C_MAX, C_MIN
-from vibration.chapters.explore.widget import Explorer, explorer
+from vibration.book.chapters.explore.bench import benchmark_updates
+from vibration.book.chapters.explore.study import C_MAX, C_MIN
+from vibration.book.chapters.explore.widget import Explorer, explorer
 
 
 @pytest.fixture

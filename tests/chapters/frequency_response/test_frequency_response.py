@@ -14,7 +14,7 @@ from drawn import drawn_once
 from prose import header_problems, prose_problems, repeated, table_texts
 
 from vibration import Oscillator, SineForce, exact_response
-from vibration.chapters.frequency_response import (
+from vibration.book.chapters.frequency_response import (
     FrequencyStudy,
     Params,
     figures,
@@ -22,11 +22,11 @@ from vibration.chapters.frequency_response import (
     tables,
     text,
 )
+from vibration.book.presentation.captions import CAPTION_WORDS, caption_words, check_caption
+from vibration.book.presentation.style import WIDTH_IN, case_style, legend_overlap
 from vibration.physics.model import ParameterError
-from vibration.presentation.captions import CAPTION_WORDS, caption_words, check_caption
-from vibration.presentation.style import WIDTH_IN, case_style, legend_overlap
 
-PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "chapters" / "frequency_response"
+PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "book" / "chapters" / "frequency_response"
 
 #: The paper's parameters (on a coarser design grid), a heavier and stiffer oscillator, and a softer one whose
 #: low damping is zero (undamped: no band, no steady state to estimate from).
@@ -252,7 +252,7 @@ def test_the_prose_states_the_half_power_samples_the_study_uses():
     count is written grouped (200 001 with a narrow no-break space) and equals the study's."""
     import json
 
-    from vibration.chapters.frequency_response.study import HALF_POWER_SAMPLES
+    from vibration.book.chapters.frequency_response.study import HALF_POWER_SAMPLES
 
     path = Path(__file__).resolve().parents[3] / "notebooks" / "04_frequency_response.ipynb"
     cells = json.loads(path.read_text(encoding="utf-8"))["cells"]

@@ -12,12 +12,12 @@ from pathlib import Path
 import pytest
 
 import vibration
-from vibration.chapters.learning import SCHEMA, LearningStudy, Params, learning_study
-from vibration.chapters.learning.study import ACTIVE, SEMI
+from vibration.book.chapters.learning import SCHEMA, LearningStudy, Params, learning_study
+from vibration.book.chapters.learning.study import ACTIVE, SEMI
 
 ROOT = Path(__file__).resolve().parents[3]
 NOTEBOOK = ROOT / "notebooks" / "11_learning.ipynb"
-USAGE = ROOT / "src" / "vibration" / "chapters" / "learning" / "usage.md"
+USAGE = ROOT / "src" / "vibration" / "book" / "chapters" / "learning" / "usage.md"
 
 
 def test_parameters_cell_equals_schema():

@@ -18,10 +18,10 @@ import pytest  # noqa: E402
 from drawn import drawn_once
 from prose import ungrouped_counts
 
-from vibration.chapters.learning import figures, summary, tables, text  # noqa: E402
-from vibration.chapters.learning.study import ACTIVE, SEMI, learning_study  # noqa: E402
-from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption  # noqa: E402
-from vibration.presentation.style import legend_overlap  # noqa: E402
+from vibration.book.chapters.learning import figures, summary, tables, text  # noqa: E402
+from vibration.book.chapters.learning.study import ACTIVE, SEMI, learning_study  # noqa: E402
+from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption  # noqa: E402
+from vibration.book.presentation.style import legend_overlap  # noqa: E402
 
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "11_learning.ipynb"
 

@@ -15,10 +15,10 @@ import pohl_generator as gen
 import pytest
 
 import vibration
-from vibration.chapters.real_oscillator import figures, text, verdicts
-from vibration.chapters.real_oscillator.params import SCHEMA, Params
-from vibration.chapters.real_oscillator.study import real_oscillator_study
-from vibration.presentation.style import legend_overlap
+from vibration.book.chapters.real_oscillator import figures, text, verdicts
+from vibration.book.chapters.real_oscillator.params import SCHEMA, Params
+from vibration.book.chapters.real_oscillator.study import real_oscillator_study
+from vibration.book.presentation.style import legend_overlap
 
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "12_real_oscillator.ipynb"
 MAIN_TABLES = (text.law_table, text.brake_table, text.resonance_table, text.prediction_table, verdicts.claims_table)
@@ -149,7 +149,7 @@ def test_bad_parameters_are_refused(values, name):
 
 
 def test_runner_accepts_lab_data_as_a_path(tmp_path):
-    from vibration.publishing import report
+    from vibration.book.publishing import report
 
     chapters = report.select(report.discover(), ["12_real_oscillator"])
     values = report.check_parameters(chapters, [("lab_data", str(tmp_path))])
@@ -213,7 +213,7 @@ def test_notebook_runs_on_another_lab(other_lab, tmp_path):
 
 
 def test_the_schematic_says_what_the_rig_is_and_what_is_not_documented(study):
-    from vibration.presentation.schematics import torsional_oscillator
+    from vibration.book.presentation.schematics import torsional_oscillator
 
     def told(fig):  # the caption says what is drawn; its remark, under the figure, what the data document
         return fig.caption + " " + fig.remark

@@ -10,9 +10,9 @@ import pohl_generator as gen
 import pytest
 from scipy import signal
 
-from vibration.chapters.real_oscillator import exercises as ex
-from vibration.chapters.real_oscillator.params import Params
-from vibration.chapters.real_oscillator.study import lab_folder
+from vibration.book.chapters.real_oscillator import exercises as ex
+from vibration.book.chapters.real_oscillator.params import Params
+from vibration.book.chapters.real_oscillator.study import lab_folder
 from vibration.physics.lab import harmonic_fit, load_lab_data, steadiness
 
 

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from vibration.presentation.notation import lookup
+from vibration.book.presentation.notation import lookup
 
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "12_real_oscillator.ipynb"
 

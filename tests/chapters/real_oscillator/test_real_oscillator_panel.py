@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 from conftest import open_offline
 
-from vibration.chapters.real_oscillator.panel import decay_panel, decay_panel_html
+from vibration.book.chapters.real_oscillator.panel import decay_panel, decay_panel_html
+from vibration.book.publishing.mathml import external_urls
 from vibration.physics.lab import free_decay_response
-from vibration.publishing.mathml import external_urls
 
 #: JavaScript against Python: the same closed form, evaluated with each language's exp/cos/sin.
 RTOL = 1e-9

@@ -14,13 +14,13 @@ import pytest
 from prose import header_problems, prose_problems, repeated, table_texts
 
 from vibration import Oscillator, SineForce, steady_state
-from vibration.chapters.solver_accuracy import Params, SolverStudy, figures, solver_accuracy_study, text
-from vibration.chapters.solver_accuracy.study import MACHINE_DEPENDENT, atol_for
+from vibration.book.chapters.solver_accuracy import Params, SolverStudy, figures, solver_accuracy_study, text
+from vibration.book.chapters.solver_accuracy.study import MACHINE_DEPENDENT, atol_for
+from vibration.book.presentation.captions import CAPTION_WORDS, caption_words, check_caption
+from vibration.book.presentation.style import WIDTH_IN, legend_overlap
 from vibration.physics.model import ParameterError
-from vibration.presentation.captions import CAPTION_WORDS, caption_words, check_caption
-from vibration.presentation.style import WIDTH_IN, legend_overlap
 
-PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "chapters" / "solver_accuracy"
+PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "book" / "chapters" / "solver_accuracy"
 
 #: The paper's parameters, a stiffer and heavier oscillator, and a softer, lighter-damped one.
 PARAMETER_SETS = {

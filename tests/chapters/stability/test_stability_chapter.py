@@ -20,11 +20,11 @@ import nbformat
 import numpy as np
 import pytest
 
-from vibration.chapters.stability import figures, panel, tables, text, verdicts
-from vibration.chapters.stability.study import stability_study
+from vibration.book.chapters.stability import figures, panel, tables, text, verdicts
+from vibration.book.chapters.stability.study import stability_study
+from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
+from vibration.book.presentation.style import CASES
 from vibration.physics.stability import stability_class
-from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
-from vibration.presentation.style import CASES
 
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "06_stability.ipynb"
 
@@ -180,7 +180,7 @@ def test_key_results_box(study):
 
 
 def test_usage_example_runs_on_its_own(tmp_path):
-    md = files("vibration.chapters.stability").joinpath("usage.md").read_text(encoding="utf-8")
+    md = files("vibration.book.chapters.stability").joinpath("usage.md").read_text(encoding="utf-8")
     assert md.startswith("# Chapter 6, ") and md.count("```python") == 1
     code = re.search(r"```python\n(.*?)```", md, re.S).group(1)
     out = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120)

@@ -1,4 +1,4 @@
-"""Stability chapter (package ``vibration.chapters.stability``): tables, figures, sentences, and the kernel-free
+"""Stability chapter (package ``vibration.book.chapters.stability``): tables, figures, sentences, and the kernel-free
 panel against Python."""
 
 from __future__ import annotations
@@ -13,11 +13,11 @@ from conftest import open_offline
 
 import vibration
 from vibration import Oscillator
-from vibration.chapters.stability import figures, panel, tables, text, verdicts
-from vibration.chapters.stability.study import stability_study
-from vibration.presentation.style import legend_overlap
-from vibration.presentation.tables import Missing
-from vibration.publishing.mathml import external_urls
+from vibration.book.chapters.stability import figures, panel, tables, text, verdicts
+from vibration.book.chapters.stability.study import stability_study
+from vibration.book.presentation.style import legend_overlap
+from vibration.book.presentation.tables import Missing
+from vibration.book.publishing.mathml import external_urls
 
 SCREENSHOTS = Path(__file__).resolve().parents[3] / "build" / "screenshots"
 

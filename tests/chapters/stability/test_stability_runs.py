@@ -12,8 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from vibration.chapters.stability.words import num
-from vibration.publishing.report import execute_notebooks
+from vibration.book.chapters.stability.words import num
+from vibration.book.publishing.report import execute_notebooks
 
 pytestmark = [pytest.mark.notebooks, pytest.mark.slow]
 

@@ -17,13 +17,13 @@ from importlib.resources import files
 import numpy as np
 import pytest
 
-from vibration.chapters.tmd import figures, panel, tables, text
-from vibration.chapters.tmd.designs import CLOSED, DESIGNS, H2, HINF, OPTIMA, ROBUST, TUNINGS
-from vibration.chapters.tmd.digits import Sig
-from vibration.chapters.tmd.params import SCHEMA
-from vibration.chapters.tmd.study import tmd_study
+from vibration.book.chapters.tmd import figures, panel, tables, text
+from vibration.book.chapters.tmd.designs import CLOSED, DESIGNS, H2, HINF, OPTIMA, ROBUST, TUNINGS
+from vibration.book.chapters.tmd.digits import Sig
+from vibration.book.chapters.tmd.params import SCHEMA
+from vibration.book.chapters.tmd.study import tmd_study
+from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 from vibration.physics.model import ParameterError
-from vibration.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 
 PARAMETER_SETS = {
     "defaults": {},
@@ -333,7 +333,7 @@ def test_study_record_follows_its_parameters():
 
 
 def test_the_usage_example_runs_on_its_own(tmp_path):
-    md = files("vibration.chapters.tmd").joinpath("usage.md").read_text(encoding="utf-8")
+    md = files("vibration.book.chapters.tmd").joinpath("usage.md").read_text(encoding="utf-8")
     assert md.startswith("# Chapter 8, ") and md.count("```python") == 1
     code = re.search(r"```python\n(.*?)```", md, re.S).group(1)
     out = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True, timeout=120)

@@ -19,8 +19,8 @@ from conftest import SCREENSHOTS, open_offline
 
 import vibration
 from vibration import den_hartog, h2_tuning, hinf_tuning, tmd_fixed_points, tmd_magnification, tmd_peak
-from vibration.chapters.tmd import panel as pres
-from vibration.publishing.mathml import external_urls
+from vibration.book.chapters.tmd import panel as pres
+from vibration.book.publishing.mathml import external_urls
 
 RTOL_CLOSED = 1e-12
 RTOL_PEAK = 1e-9

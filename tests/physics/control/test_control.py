@@ -209,8 +209,8 @@ def test_anti_windup_cuts_the_overshoot_and_the_integrator():
 def test_pid_bad_input(raises_parameter_error):
     with raises_parameter_error("anti_windup", "conditional", "clamping"):
         pid_response(OSC, RES, 1.0, ki=1.0, kd=1.0, anti_windup="conditional")
-    with raises_parameter_error("ki", 0.0, "> 0"):
-        pid_response(OSC, RES, 1.0, ki=0.0, kd=1.0)
+    with raises_parameter_error("ki", -1.0, ">= 0"):
+        pid_response(OSC, RES, 1.0, ki=-1.0, kd=1.0)
     with raises_parameter_error("u_max", -1.0, "> 0"):
         pid_response(OSC, RES, 1.0, ki=1.0, kd=1.0, u_max=-1.0)
 

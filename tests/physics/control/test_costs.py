@@ -13,7 +13,7 @@ import pytest
 from scipy.integrate import quad
 
 from vibration import Oscillator, ParameterError, SineForce, pd_oscillator, steady_state
-from vibration.chapters.control.study import loop_amplitude
+from vibration.book.chapters.control.study import loop_amplitude
 from vibration.physics.control import (
     force_floor,
     hold_force,

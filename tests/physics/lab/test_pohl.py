@@ -90,7 +90,7 @@ def test_steadiness_follows_the_transient(lab):
 
 
 def test_check_lab_command(lab, tmp_path, capsys):
-    from vibration.publishing.report import main
+    from vibration.book.publishing.report import main
 
     folder, _ = lab
     assert main(["--check-lab", str(folder)]) == 0

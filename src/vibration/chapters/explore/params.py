@@ -1,9 +1,0 @@
-"""Chapter 5, explore the parameters: its parameters (where the sliders start), declared once."""
-
-from __future__ import annotations
-
-from vibration.presentation.parameters import declared, paper_window
-
-SCHEMA = declared(__package__, together=(paper_window,))
-
-Params = SCHEMA.record_type(module=__name__)

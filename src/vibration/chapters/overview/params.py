@@ -1,9 +1,0 @@
-"""The front page: its parameters (the paper's model and window, without the sampling), declared once."""
-
-from __future__ import annotations
-
-from vibration.presentation.parameters import declared, paper_window
-
-SCHEMA = declared(__package__, together=(paper_window,))
-
-Params = SCHEMA.record_type(module=__name__)

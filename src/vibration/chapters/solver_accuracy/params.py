@@ -1,9 +1,0 @@
-"""Chapter 3, solver accuracy: its parameters (the paper's nominal case and window), declared once."""
-
-from __future__ import annotations
-
-from vibration.presentation.parameters import declared, paper_window
-
-SCHEMA = declared(__package__, together=(paper_window,))
-
-Params = SCHEMA.record_type(module=__name__)
