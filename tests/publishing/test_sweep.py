@@ -279,3 +279,13 @@ def test_the_same_grid_twice_on_one_client_is_not_reported_as_a_rerun(capsys):
         assert client.restarts.count("point (1, 0)") == 2  # both submissions started, once each
     np.testing.assert_array_equal(first["lyapunov"].values, second["lyapunov"].values)
     assert "[rerun]" not in capsys.readouterr().err
+
+
+def test_a_grid_below_zero_reaches_the_grid_parser(tmp_path, capsys):
+    """``-g c_nominal -1:x:3`` is a value, not an option: the grid parser refuses it naming the parameter and form."""
+    from vibration.book.publishing.sweep import main
+
+    status = main(["04_frequency_response", "-g", "c_nominal", "-1:x:3", "--out", str(tmp_path), "--no-progress"])
+    err = capsys.readouterr().err
+    assert status == 2 and "expected 2 arguments" not in err
+    assert "c_nominal grid '-1:x:3'" in err and "allowed" in err, err

@@ -44,18 +44,21 @@ def convert(name: str, text: str, type_name: str):
 
 
 def protect_negative_values(argv: list[str]) -> list[str]:
-    """``-p c_low -2e4``: argparse would read ``-2e4`` as an option; a leading space keeps it a value.
+    """``-p c_low -2e4``, ``-g c_nominal -1:1:3``: argparse would read ``-2e4`` and ``-1:1:3`` as options; a
+    leading space keeps each a value (the value of ``-p`` or ``-g``: the second word after it).
 
     Examples
     --------
     >>> protect_negative_values(["-p", "c_low", "-2e4", "01"])
     ['-p', 'c_low', ' -2e4', '01']
+    >>> protect_negative_values(["04", "-g", "c_nominal", "-1:1:3", "-g", "m", "-.5,1"])
+    ['04', '-g', 'c_nominal', ' -1:1:3', '-g', 'm', ' -.5,1']
     >>> protect_negative_values(["-p", "m", "--no-pdf"])  # a missing value stays missing
     ['-p', 'm', '--no-pdf']
     """
     out = list(argv)
     for i in range(2, len(out)):
-        if out[i - 2] in ("-p", "--parameter") and _NEGATIVE.match(out[i]):
+        if out[i - 2] in ("-p", "--parameter", "-g", "--grid") and _NEGATIVE.match(out[i]):
             out[i] = " " + out[i]
     return out
 

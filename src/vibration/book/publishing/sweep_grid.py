@@ -93,7 +93,12 @@ integer grid (e.g. 1:5:3)
         raise ParameterError(f"{name} grid {spec!r} is empty: allowed START:STOP:N, START:STOP:Nlog or V1,V2,...")
     parts = text.split(":")
     if len(parts) == 3 and type_name != "str":
-        start, stop = (convert(name, s, "float") for s in parts[:2])
+        try:
+            start, stop = (convert(name, s, "float") for s in parts[:2])
+        except ParameterError as exc:
+            raise ParameterError(
+                f"{name} grid {spec!r}: {exc}; allowed START:STOP:N, START:STOP:Nlog or V1,V2,... (e.g. -1:1:3)"
+            ) from None
         count, log = parts[2].strip(), parts[2].strip().lower().endswith("log")
         count = count[:-3] if log else count
         try:
@@ -125,7 +130,12 @@ integer grid (e.g. 1:5:3)
         else:
             values = tuple(float(v) for v in raw)
     else:
-        values = tuple(convert(name, s, type_name) for s in text.split(",") if s.strip())
+        try:
+            values = tuple(convert(name, s, type_name) for s in text.split(",") if s.strip())
+        except ParameterError as exc:
+            raise ParameterError(
+                f"{name} grid {spec!r}: {exc}; allowed START:STOP:N, START:STOP:Nlog or V1,V2,..."
+            ) from None
         if not values:
             raise ParameterError(f"{name} grid {spec!r} is empty: allowed START:STOP:N, START:STOP:Nlog or V1,V2,...")
         log = False
