@@ -138,7 +138,7 @@ for _rec in (v.Response, v.SteadyState, v.EnergyBalance, v.HalfPower, v.Scenario
 fuzz(v.poles, osc=OSC)
 fuzz(v.stability_class, osc=OSC)
 fuzz(v.transmissibility, osc=OSC, omegas=W, check=_no_nan)
-fuzz(v.step_metrics, osc=OSC, band=0.02)
+fuzz(v.step_metrics, osc=OSC, band=0.02, F0=5.0)
 fuzz(v.step_response, osc=OSC, t=T)
 fuzz(v.growth_envelope, osc=OSC, force=FORCE, t=T)
 fuzz(v.damper_load, osc=OSC, F0=5.0, omegas=W)
@@ -200,7 +200,7 @@ fuzz(v.folds, duffing=D, F0=5.0)
 fuzz(v.response_curve, duffing=D, F0=5.0, omega_max=8.0, n=50)
 fuzz(v.duffing_response, duffing=D, F0=5.0, omega=4.47, t=T, sine=True, x0=0.0, v0=0.0)
 fuzz(v.frequency_sweep, duffing=D, F0=5.0, omegas=W[:3], direction="up", x0=0.0, v0=0.0, max_periods=200)
-_CHAOS = {"duffing": D, "F0": 5.0, "omega": 4.47, "start": (0.0, 0.0), "steps_per_period": 100}
+_CHAOS = {"duffing": D, "F0": 5.0, "omega": 4.47, "x0": 0.0, "v0": 0.0, "steps_per_period": 100}
 fuzz(v.poincare_section, **_CHAOS, n_periods=20, n_transient=5)
 fuzz(v.lyapunov_qr, **_CHAOS, n_periods=20, n_transient=5)
 fuzz(v.lyapunov_benettin, **_CHAOS, n_periods=20, n_transient=5)

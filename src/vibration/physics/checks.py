@@ -227,6 +227,8 @@ def check_start(start, name: str = "start") -> tuple[float, float]:
     """
     if isinstance(start, (str, bytes)) or not hasattr(start, "__len__") or len(start) != 2:
         raise ParameterError(f"{name} = {_show(start)} is not valid: allowed a pair (x0 in m, v0 in m/s)")
+    if name == "start":  # the library's initial state is x0 and v0
+        return check_real("x0", start[0], unit="m"), check_real("v0", start[1], unit="m/s")
     return check_real(f"{name}[0] (x0)", start[0], unit="m"), check_real(f"{name}[1] (v0)", start[1], unit="m/s")
 
 

@@ -347,10 +347,10 @@ def ueda():
     """Two methods and two initial conditions on Ueda's attractor."""
     kw = {"n_periods": 2500, "n_transient": 300}
     return {
-        "qr_a": lyapunov_qr(UEDA, 7.5, 1.0, start=(3.0, 0.0), **kw),
-        "ben_a": lyapunov_benettin(UEDA, 7.5, 1.0, start=(3.0, 0.0), **kw),
-        "qr_b": lyapunov_qr(UEDA, 7.5, 1.0, start=(0.0, 0.0), **kw),
-        "ben_b": lyapunov_benettin(UEDA, 7.5, 1.0, start=(0.0, 0.0), **kw),
+        "qr_a": lyapunov_qr(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, **kw),
+        "ben_a": lyapunov_benettin(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, **kw),
+        "qr_b": lyapunov_qr(UEDA, 7.5, 1.0, x0=0.0, v0=0.0, **kw),
+        "ben_b": lyapunov_benettin(UEDA, 7.5, 1.0, x0=0.0, v0=0.0, **kw),
     }
 
 
@@ -378,17 +378,17 @@ def test_periodic_case_exponent_is_negative_and_floquet():
     orbit = periodic_orbit(HARD, 5.0, 4.47)
     T = 2 * math.pi / 4.47
     floquet = math.log(max(abs(mu) for mu in orbit.multipliers)) / T
-    qr = lyapunov_qr(HARD, 5.0, 4.47, start=(orbit.x0, orbit.v0), n_periods=600, n_transient=0)
-    ben = lyapunov_benettin(HARD, 5.0, 4.47, start=(orbit.x0, orbit.v0), n_periods=600, n_transient=0)
+    qr = lyapunov_qr(HARD, 5.0, 4.47, x0=orbit.x0, v0=orbit.v0, n_periods=600, n_transient=0)
+    ben = lyapunov_benettin(HARD, 5.0, 4.47, x0=orbit.x0, v0=orbit.v0, n_periods=600, n_transient=0)
     assert qr.exponents[0] <= 0 and ben.exponents[0] <= 0
     assert qr.exponents[0] == pytest.approx(floquet, abs=0.005)
     assert ben.exponents[0] == pytest.approx(floquet, abs=0.005)
     # Poincare section of a period-1 orbit: one point, the shooting orbit's
-    pts = poincare_section(HARD, 5.0, 4.47, start=(orbit.x0, orbit.v0), n_periods=5, n_transient=0)
+    pts = poincare_section(HARD, 5.0, 4.47, x0=orbit.x0, v0=orbit.v0, n_periods=5, n_transient=0)
     assert np.max(np.abs(pts[:, 0] - orbit.x0)) < 1e-7 and np.max(np.abs(pts[:, 1] - orbit.v0)) < 1e-6
 
 
 def test_ueda_section_is_not_periodic():
-    pts = poincare_section(UEDA, 7.5, 1.0, start=(3.0, 0.0), n_periods=300, n_transient=100)
+    pts = poincare_section(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=300, n_transient=100)
     assert len({(round(x, 6), round(v, 6)) for x, v in pts}) == 300
     assert np.all(np.abs(pts[:, 0]) < 5.0) and np.all(np.abs(pts[:, 1]) < 10.0)  # bounded attractor

@@ -42,7 +42,7 @@ STARTS = [(3.0, 0.0), (0.0, 0.0), (1.0, 1.0), (-2.0, 3.0), (2.0, -1.0), (-1.0, -
 @pytest.fixture(scope="module")
 def short_runs():
     """Twelve independent runs of 2000 periods on Ueda's attractor (20 blocks of 100 periods each)."""
-    return [lyapunov_estimate(UEDA, 7.5, 1.0, start=(x, v), n_periods=2000, n_blocks=20) for x, v in STARTS]
+    return [lyapunov_estimate(UEDA, 7.5, 1.0, x0=x, v0=v, n_periods=2000, n_blocks=20) for x, v in STARTS]
 
 
 def test_batch_means_error_matches_the_scatter_of_independent_runs(short_runs):
@@ -74,9 +74,9 @@ def test_pooled_exponent_is_the_inverse_variance_mean(short_runs):
 
 
 def test_increments_reproduce_a_separate_shorter_run():
-    e = lyapunov_estimate(UEDA, 7.5, 1.0, start=(3.0, 0.0), n_periods=3000, n_blocks=10)
+    e = lyapunov_estimate(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=3000, n_blocks=10)
     assert e.increments.sum() / (e.n_periods * e.period) == pytest.approx(e.exponent, rel=1e-12)
-    short = lyapunov_qr(UEDA, 7.5, 1.0, start=(3.0, 0.0), n_periods=1000, n_transient=300)
+    short = lyapunov_qr(UEDA, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=1000, n_transient=300)
     assert e.at(1000, 10)[0] == pytest.approx(short.exponents[0], rel=1e-10)
     assert e.block_means.size == 10 and e.block_periods == 300
     assert e.second == pytest.approx(-0.05 - e.exponent, abs=1e-6)  # the trace, by construction
@@ -87,7 +87,7 @@ def test_periodic_orbit_exponent_is_the_floquet_exponent_with_a_small_error():
     T = 2 * math.pi / 4.47
     floquet = math.log(max(abs(mu) for mu in orbit.multipliers)) / T
     for method in ("qr", "benettin"):
-        e = lyapunov_estimate(HARD, 5.0, 4.47, start=(orbit.x0, orbit.v0), n_periods=2000, n_transient=0, method=method)
+        e = lyapunov_estimate(HARD, 5.0, 4.47, x0=orbit.x0, v0=orbit.v0, n_periods=2000, n_transient=0, method=method)
         assert e.exponent == pytest.approx(floquet, abs=2e-3)
         assert e.standard_error < 0.01
 
@@ -109,7 +109,7 @@ def test_estimate_refuses_bad_arguments():
 def test_long_runs_give_the_long_run_exponent():
     """Four runs of 25,000 periods: the pooled exponent within a few standard errors of 0.1034 1/s
     (the value of 4 x 100,000 periods at 100 to 800 steps per period, standard error 0.0002)."""
-    runs = [lyapunov_estimate(UEDA, 7.5, 1.0, start=(x, v), n_periods=25_000) for x, v in STARTS[:4]]
+    runs = [lyapunov_estimate(UEDA, 7.5, 1.0, x0=x, v0=v, n_periods=25_000) for x, v in STARTS[:4]]
     mean, se, chi2, dof = pooled_exponent(runs)
     assert abs(mean - 0.1034) < 4 * math.hypot(se, 0.0002)
     assert 0.0003 < se < 0.0008

@@ -337,7 +337,8 @@ def test_step_times_scale_with_the_natural_period(m, k, zeta):
     assert b.settling_time == pytest.approx(a.settling_time * scale, rel=1e-9)
     assert b.rise_time == pytest.approx(a.rise_time * scale, rel=1e-9)
     assert b.overshoot == pytest.approx(a.overshoot, rel=1e-9, abs=1e-300)
-    assert b.final_value == pytest.approx(1.0 / k, rel=1e-15)
+    assert b.final_value == pytest.approx(1.0 / k, rel=1e-15)  # a step of 1 N by default, m
+    assert stab.step_metrics(osc_of(zeta, m, k), F0=7.0).final_value == pytest.approx(7.0 / k, rel=1e-15)
 
 
 def test_settling_optimal_zeta_minimises_settling_on_a_dense_sweep():

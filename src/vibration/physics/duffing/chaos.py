@@ -231,7 +231,8 @@ def poincare_section(
     F0: float,
     omega: float,
     *,
-    start: tuple[float, float] = (0.0, 0.0),
+    x0: float = 0.0,
+    v0: float = 0.0,
     n_periods: int = 2000,
     n_transient: int = 200,
     steps_per_period: int = 400,
@@ -248,8 +249,8 @@ def poincare_section(
         Force amplitude, N.
     omega : float
         Forcing frequency, rad/s.
-    start : tuple of float
-        Initial state ``(x0, v0)`` at t = 0, m and m/s (python-control's ``X0``).
+    x0, v0 : float
+        Initial displacement (m) and velocity (m/s) at t = 0, as everywhere in the library.
     n_periods : int
         Points returned (after the transient).
     n_transient : int
@@ -268,7 +269,7 @@ def poincare_section(
     >>> bool(np.ptp(pts[:, 0]) < 1e-9)           # a period-1 orbit: one point
     True
     """
-    _, pts, _, _ = _rk4_run(duffing, F0, omega, start, n_periods, n_transient, steps_per_period)
+    _, pts, _, _ = _rk4_run(duffing, F0, omega, (x0, v0), n_periods, n_transient, steps_per_period)
     return pts
 
 
@@ -277,7 +278,8 @@ def lyapunov_qr(
     F0: float,
     omega: float,
     *,
-    start: tuple[float, float] = (0.0, 0.0),
+    x0: float = 0.0,
+    v0: float = 0.0,
     n_periods: int = 2000,
     n_transient: int = 100,
     steps_per_period: int = 400,
@@ -291,7 +293,7 @@ def lyapunov_qr(
 
     Parameters
     ----------
-    duffing, F0, omega, start
+    duffing, F0, omega, x0, v0
         As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
         (rad/s) and initial state (m, m/s).
     n_periods : int
@@ -312,7 +314,7 @@ def lyapunov_qr(
     >>> round(sum(r.exponents), 6)        # = -c/m, 1/s
     -0.5
     """
-    time, _, running, tail = _rk4_run(duffing, F0, omega, start, n_periods, n_transient, steps_per_period, 1)
+    time, _, running, tail = _rk4_run(duffing, F0, omega, (x0, v0), n_periods, n_transient, steps_per_period, 1)
     return _lyapunov_result(time, running, tail, "qr", 2)
 
 
@@ -321,7 +323,8 @@ def lyapunov_benettin(
     F0: float,
     omega: float,
     *,
-    start: tuple[float, float] = (0.0, 0.0),
+    x0: float = 0.0,
+    v0: float = 0.0,
     n_periods: int = 2000,
     n_transient: int = 100,
     steps_per_period: int = 400,
@@ -337,7 +340,7 @@ def lyapunov_benettin(
 
     Parameters
     ----------
-    duffing, F0, omega, start
+    duffing, F0, omega, x0, v0
         As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
         (rad/s) and initial state (m, m/s).
     n_periods, n_transient, steps_per_period : int
@@ -357,7 +360,7 @@ def lyapunov_benettin(
     True
     """
     d0 = check_real("d0", d0, low=1e-12, high=1e-4)
-    time, _, running, tail = _rk4_run(duffing, F0, omega, start, n_periods, n_transient, steps_per_period, 2, d0)
+    time, _, running, tail = _rk4_run(duffing, F0, omega, (x0, v0), n_periods, n_transient, steps_per_period, 2, d0)
     return _lyapunov_result(time, running, tail, "benettin", 1)
 
 
@@ -410,7 +413,8 @@ def lyapunov_estimate(
     F0: float,
     omega: float,
     *,
-    start: tuple[float, float] = (0.0, 0.0),
+    x0: float = 0.0,
+    v0: float = 0.0,
     n_periods: int = 20_000,
     n_blocks: int = 20,
     n_transient: int = 300,
@@ -428,7 +432,7 @@ def lyapunov_estimate(
 
     Parameters
     ----------
-    duffing, F0, omega, start
+    duffing, F0, omega, x0, v0
         As in :func:`poincare_section`: the oscillator, force amplitude (N), forcing frequency
         (rad/s) and initial state (m, m/s).
     n_periods : int
@@ -449,11 +453,11 @@ def lyapunov_estimate(
     Examples
     --------
     >>> u = Duffing(m=1.0, c=0.05, k=0.0, k3=1.0)                   # Ueda's oscillator
-    >>> e = lyapunov_estimate(u, 7.5, 1.0, start=(3.0, 0.0), n_periods=4000)
+    >>> e = lyapunov_estimate(u, 7.5, 1.0, x0=3.0, v0=0.0, n_periods=4000)
     >>> 0.09 < e.exponent < 0.115 and 0.0005 < e.standard_error < 0.004   # 1/s
     True
     """
-    x0, v0 = check_start(start)
+    x0, v0 = check_start((x0, v0))
     n_blocks = check_int("n_blocks", n_blocks, low=5, high=1000)
     n_periods = check_int("n_periods", n_periods, low=10 * n_blocks, high=2_000_000)
     if not isinstance(method, str) or method not in ("qr", "benettin"):
@@ -463,7 +467,8 @@ def lyapunov_estimate(
         duffing,
         F0,
         omega,
-        start=(x0, v0),
+        x0=x0,
+        v0=v0,
         n_periods=n_periods,
         n_transient=n_transient,
         steps_per_period=steps_per_period,

@@ -36,7 +36,7 @@ class StepMetrics:
     rise_time: float  # first time y reaches 0.9 minus first time it reaches 0.1, s
     settling_time: float  # last time |y - 1| equals the band (true last exit, not the envelope), s
     band: float  # settling band, fraction of the final value (0.02 = 2 %)
-    final_value: float  # final displacement per newton of step force, 1/k, m/N
+    final_value: float  # displacement the step F0 settles at, F0/k, m
 
     @property
     def peak(self) -> float:
@@ -125,7 +125,7 @@ def _solve(g, a: float, b: float) -> float:
     return float(brentq(g, a, b, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=500))
 
 
-def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
+def step_metrics(osc: Oscillator, band: float = 0.02, *, F0: float = 1.0) -> StepMetrics:
     """Overshoot, peak time, 10-90 % rise time and settling time of the step response.
 
     The force is a step ``F 1(t)`` applied at rest; the response is normalised by
@@ -150,6 +150,8 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
         m (kg), c (N s/m, > 0), k (N/m).
     band : float
         Settling band, fraction of the final value, ``0 < band < 1`` (default 2 %).
+    F0 : float
+        Height of the step force, N (> 0; 1 N by default): it sets only ``final_value``, ``F0/k`` in m.
 
     Returns
     -------
@@ -170,10 +172,13 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
     >>> s = step_metrics(Oscillator(m=1.0, c=15.0, k=20.0))
     >>> s.overshoot, s.peak_time, round(s.settling_time, 4)       # 1, s, s
     (0.0, inf, 2.723)
+    >>> step_metrics(Oscillator(m=1.0, c=0.5, k=20.0), F0=5.0).final_value    # m
+    0.25
     """
     check_oscillator(osc)
     _check_stable(osc, "a settling step response")
     band = check_real("band", band, low=BAND_MIN, high=1.0)
+    F0 = check_real("F0", F0, low=0.0, low_open=True, unit="N")
     if band == 1.0:
         raise ParameterError("band = 1.0 is out of range: allowed 0 < band < 1")
     f = _one_minus_y(osc)
@@ -192,7 +197,7 @@ def step_metrics(osc: Oscillator, band: float = 0.02) -> StepMetrics:
         rise_time=rise,
         settling_time=settle,
         band=band,
-        final_value=1.0 / osc.k,
+        final_value=F0 / osc.k,
     )
 
 

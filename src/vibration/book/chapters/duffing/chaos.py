@@ -163,7 +163,7 @@ def _lyapunov_runs(p: Params, ueda: Duffing) -> tuple[tuple[LyapunovEstimate, ..
     ]
     runs = tuple(
         lyapunov_estimate(
-            ueda, p.F0_ueda, p.omega_ueda, start=(x0, v0), n_periods=n, n_blocks=n_blocks, steps_per_period=spp
+            ueda, p.F0_ueda, p.omega_ueda, x0=x0, v0=v0, n_periods=n, n_blocks=n_blocks, steps_per_period=spp
         )
         for ((x0, v0), spp), n in zip(LYAPUNOV_RUNS, lengths, strict=True)
     )
@@ -229,17 +229,15 @@ def ueda_chaos(p: Params) -> dict:
     ueda = Duffing(m=1.0, c=p.c_ueda, k=0.0, k3=1.0)
     w_u = p.omega_ueda
     (x_u, v_u), (x_main, v_main) = UEDA_START, LYAPUNOV_RUNS[0][0]
-    section_chaos = poincare_section(ueda, p.F0_ueda, w_u, start=(x_u, v_u), n_periods=N_SECTION, n_transient=300)
-    section_periodic = poincare_section(
-        ueda, p.F0_ueda_periodic, w_u, start=(x_u, v_u), n_periods=200, n_transient=1000
-    )
+    section_chaos = poincare_section(ueda, p.F0_ueda, w_u, x0=x_u, v0=v_u, n_periods=N_SECTION, n_transient=300)
+    section_periodic = poincare_section(ueda, p.F0_ueda_periodic, w_u, x0=x_u, v0=v_u, n_periods=200, n_transient=1000)
     n_blocks = min(20, p.n_lyapunov // 10)
     runs, pooled = _lyapunov_runs(p, ueda)
-    partner = lyapunov_estimate(ueda, p.F0_ueda, w_u, start=(x_main, v_main), n_periods=p.n_lyapunov,
+    partner = lyapunov_estimate(ueda, p.F0_ueda, w_u, x0=x_main, v0=v_main, n_periods=p.n_lyapunov,
                                 n_blocks=n_blocks, method="benettin")  # fmt: skip
     kw = {"n_periods": min(p.n_lyapunov, N_PERIODIC), "n_transient": 300}
-    per_qr = lyapunov_qr(ueda, p.F0_ueda_periodic, p.omega_ueda, start=(x_u, v_u), **kw)
-    per_ben = lyapunov_benettin(ueda, p.F0_ueda_periodic, p.omega_ueda, start=(x_u, v_u), **kw)
+    per_qr = lyapunov_qr(ueda, p.F0_ueda_periodic, p.omega_ueda, x0=x_u, v0=v_u, **kw)
+    per_ben = lyapunov_benettin(ueda, p.F0_ueda_periodic, p.omega_ueda, x0=x_u, v0=v_u, **kw)
     floq = math.nan
     if np.ptp(section_periodic, axis=0).max() < 1e-6:  # period 1: its Floquet multipliers give the exponent
         orb = periodic_orbit(
