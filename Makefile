@@ -16,7 +16,7 @@ PORTABLE := NUMBA_CPU_NAME=generic NPY_DISABLE_CPU_FEATURES="X86_V3 X86_V4 AVX51
 # pytest workers, one per core (--dist loadfile keeps a notebook's cells, and a module's fixtures, in one worker)
 JOBS ?= 2
 
-.PHONY: help setup report test test-slow test-fast bench lint format notebooks lab browser clean
+.PHONY: help setup report test test-slow test-library test-fast bench lint format notebooks lab browser clean
 
 help: ## list the targets
 	@awk 'BEGIN {FS = ":.*## "} /^[a-zA-Z_-]+:.*## / {printf "  make %-11s %s\n", $$1, $$2}' $(MAKEFILE_LIST)
@@ -51,6 +51,9 @@ test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval a
 
 test-slow: $(STAMP) browser ## the tests marked slow: the report under far parameters, runner signals, JupyterLab (CI runs them too)
 	$(PORTABLE) $(PY) -m pytest -m slow tests src  # one at a time: several run kernels or the report on both cores
+
+test-library: $(STAMP) ## the library's own tests alone (physics, bad-input battery, API, doctests): no book
+	$(PY) -m pytest -n $(JOBS) -m "not slow" tests/physics tests/fuzz tests/test_package_api.py src/vibration/physics
 
 test-fast: $(STAMP) ## unit, property and doctests only (no kernels, no browser)
 	$(PY) -m pytest -n $(JOBS) -m "not browser and not notebooks"

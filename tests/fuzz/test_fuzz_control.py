@@ -142,6 +142,7 @@ def test_clamping_sliding_mode_of_chapter_7(omega):
     assert np.max(np.abs(np.diff(r.u))) < 0.5 * 12.0
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_clamping_agrees_with_a_fine_fixed_step_solution():
     """The piecewise solution against RK4 of the discontinuous loop at h = 1e-4 s (first order: about 1e-5 m)."""
     kp, ki, kd, umax, xr = 133.6, 512.0, 18.7, 12.0, 0.5
@@ -200,6 +201,7 @@ def test_stiff_plants_are_refused_in_seconds(k):
     assert "t_end" in str(err)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_discontinuous_controller_hits_the_budget_in_seconds():
     """An on-off law handed to the generic simulator chatters; it must stop with a ParameterError, fast."""
     law = ctl.semi_active_controller("on-off", 8.0, 0.5, c_max=15.0, Y=0.25, omega=4.47)

@@ -123,6 +123,7 @@ def test_frequency_sweep_refuses_bad_arguments(which, bad):
     refused_or(frequency_sweep, PAPER, F0, [5.0], direction=direction, **kwargs)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_sweep_stiff_damping_stops_within_seconds():
     """c = 1e6 used to run for minutes inside the compiled kernel; its budget now stops it inside the loop."""
     msg = refused(frequency_sweep, Duffing(m=1.0, c=1e6, k=20.0, k3=2.0), 5.0, [4.0, 5.0], direction="up")

@@ -189,6 +189,7 @@ def _cases():
             yield pytest.param(*case, *ic, id=f"{name}-{ic_name}")
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 @pytest.mark.parametrize(("m", "c", "k", "F0", "w", "T", "regime", "x0", "v0"), list(_cases()))
 def test_against_expm(m, c, k, F0, w, T, regime, x0, v0):
     osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)

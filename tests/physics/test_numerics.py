@@ -60,6 +60,7 @@ def _errors(osc, force, r, x0, v0):
     )
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 @pytest.mark.parametrize(("method", "rtol", "atol", "m", "c", "k", "F0", "w"), list(_tight_cases()))
 def test_tight_tolerance_meets_proportional_bound(method, rtol, atol, m, c, k, F0, w):
     osc, force = Oscillator(m=m, c=c, k=k), SineForce(F0=F0, omega=w)

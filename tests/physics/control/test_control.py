@@ -174,6 +174,7 @@ def _independent_pid(kp, ki, kd, u_max, mode, x_ref, t):
 
 
 # one mode in make test, the other two (each a long stiff reference integration) with the slow tests
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 @pytest.mark.parametrize(
     "mode",
     [

@@ -354,6 +354,7 @@ def ueda():
     }
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_ueda_exponents_agree_between_methods_and_initial_conditions(ueda):
     lam = [r.exponents[0] for r in ueda.values()]
     assert min(lam) > 0.05  # chaos
@@ -362,6 +363,7 @@ def test_ueda_exponents_agree_between_methods_and_initial_conditions(ueda):
     assert max(lam) - min(lam) < 0.01  # finite-time averages from two starts
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_ueda_exponent_matches_published_value(ueda):
     """J. C. Sprott, Chaos and Time-Series Analysis (Oxford, 2003), Ueda oscillator: largest exponent
     about 0.10 per unit time (an independent RK4 run with step 0.001 gives 0.0999, 0, -0.1499)."""
@@ -369,6 +371,7 @@ def test_ueda_exponent_matches_published_value(ueda):
         assert abs(r.exponents[0] - 0.10) < 0.01
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_qr_exponents_sum_to_the_trace(ueda):
     for key in ("qr_a", "qr_b"):
         assert sum(ueda[key].exponents) == pytest.approx(-UEDA.c / UEDA.m, abs=1e-5)

@@ -45,6 +45,7 @@ def short_runs():
     return [lyapunov_estimate(UEDA, 7.5, 1.0, x0=x, v0=v, n_periods=2000, n_blocks=20) for x, v in STARTS]
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_batch_means_error_matches_the_scatter_of_independent_runs(short_runs):
     lam = np.array([e.exponent for e in short_runs])
     se = np.array([e.standard_error for e in short_runs])
@@ -54,6 +55,7 @@ def test_batch_means_error_matches_the_scatter_of_independent_runs(short_runs):
     assert np.all(se > 0) and np.all(se < 0.02)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_pooled_runs_are_consistent_and_positive(short_runs):
     mean, se, chi2, dof = pooled_exponent(short_runs)
     assert dof == len(STARTS) - 1
@@ -61,6 +63,7 @@ def test_pooled_runs_are_consistent_and_positive(short_runs):
     assert mean - 5 * se > 0.09 and abs(mean - 0.1034) < 5 * se + 0.002
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_pooled_exponent_is_the_inverse_variance_mean(short_runs):
     a, b = short_runs[:2]
     w = np.array([1 / a.standard_error**2, 1 / b.standard_error**2])
@@ -128,6 +131,7 @@ def branches():
     return out
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_branch_turns_twice_where_a_multiplier_is_one(branches):
     for _, _, b in branches.values():
         assert len(b.folds) == 2
@@ -139,6 +143,7 @@ def test_branch_turns_twice_where_a_multiplier_is_one(branches):
         assert b.omega.min() < min(x.omega for x in b.folds) and b.omega.max() > max(x.omega for x in b.folds)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_branch_points_are_periodic_orbits(branches):
     d, _, b = branches["hard"]
     for i in (3, len(b.omega) // 2, len(b.omega) - 3):
@@ -147,6 +152,7 @@ def test_branch_points_are_periodic_orbits(branches):
         assert orb.amplitude == pytest.approx(b.amplitude[i], rel=1e-7)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_sweep_jumps_bracket_the_continued_folds(branches):
     """Time integration (compiled Dormand-Prince, a different integrator and no shooting) jumps at the folds."""
     for d, _, b in branches.values():
@@ -158,6 +164,7 @@ def test_sweep_jumps_bracket_the_continued_folds(branches):
         assert min(j_down) - 1e-6 <= lo <= max(j_down) + 1e-6, (j_down, lo)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_no_orbit_near_the_fold_beyond_it(branches):
     """Just inside the band shooting from the fold's state finds orbits near it; just beyond, it leaves."""
     d, _, b = branches["hard"]
@@ -174,6 +181,7 @@ def test_no_orbit_near_the_fold_beyond_it(branches):
         assert beyond.amplitude < 0.8 * upper.amplitude
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_one_harmonic_folds_converge_to_the_true_ones_as_the_amplitude_falls(branches):
     """The one-harmonic error is of second order in the nonlinearity k3 A^2 / k: with c = 0.1 N s/m and
     F0 = 0.5 N the peak amplitude is 1.07 m instead of 1.97 m, and the fold error falls by more than 3."""

@@ -94,6 +94,7 @@ def test_noiseless_fit_is_exact():
     assert f.residual_rms < 1e-8
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_coverage_of_the_95_percent_intervals_on_quantised_jittered_decays():
     seeds = 40
     hits = {"omega_n": 0, "zeta": 0, "friction": 0, "offset": 0}
@@ -113,6 +114,7 @@ def test_coverage_of_the_95_percent_intervals_on_quantised_jittered_decays():
         assert k >= low, (key, k, low)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 @pytest.mark.parametrize(
     ("zeta", "friction", "law"), [(0.03, 0.0, "viscous"), (0.0, 0.02, "coulomb"), (0.02, 0.02, "combined")]
 )
@@ -141,6 +143,7 @@ def _free_decay_runs():
             yield name, run
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_real_decays_agree_with_the_peak_estimator():
     # The two estimators weight the data differently (the peak one drops the last swings, the
     # whole-trace one fits every sample) and the wheel is not exactly the model (residual rms

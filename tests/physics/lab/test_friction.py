@@ -45,6 +45,7 @@ def _simulated_amplitude(r, zeta, delta, periods=150, per_period=256):
     return 0.5 * (th[last].max() - th[last].min())
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 @pytest.mark.parametrize(
     ("r", "zeta", "delta"), [(0.8, 0.05, 0.2), (1.2, 0.1, 0.3), (1.5, 0.0, 0.2), (2.0, 0.02, 0.5), (0.9, 0.05, 0.1)]
 )

@@ -31,6 +31,7 @@ def test_phase_wraps_and_amplitude_is_positive():
     assert -np.pi < f.phase <= np.pi
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 @pytest.mark.parametrize("omega", [None, 4.5])
 def test_stderr_calibrated_on_noisy_data(omega):
     seeds, sigma = 300, 0.05

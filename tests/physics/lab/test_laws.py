@@ -232,6 +232,7 @@ def test_too_many_half_cycles_is_an_error_naming_the_window():
         _half_cycles(1.0, 0.0, 1e4, 1e-9, 0.0, 1e-9, 0.0, 2.0, 1e3)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_the_pooled_power_term_recovers_one_law_and_its_jackknife_error_sees_runs_that_disagree():
     """Runs of one power law (a = 0.004, p = 3) from four start angles: the pooled term is that law and its
     jackknife errors are small. Runs of two laws (p = 2 and p = 4): the error of the exponent grows to cover both."""

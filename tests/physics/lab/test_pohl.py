@@ -25,6 +25,7 @@ def lab(tmp_path_factory):
     return folder, truth
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_loader_reads_every_run(lab):
     folder, _ = lab
     data = load_lab_data(folder)
@@ -41,6 +42,7 @@ def test_loader_reads_every_run(lab):
     assert not any("not testable" in w for w in check.warnings)  # driven runs at two brake settings
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_fits_recover_the_simulated_law(lab):
     """Viscous ratio per current within 10 % + 0.001, Coulomb angle within 10 %, omega_n within 0.2 %."""
     folder, truth = lab
@@ -61,6 +63,7 @@ def test_fits_recover_the_simulated_law(lab):
     assert z0 == pytest.approx(truth["zeta0"], abs=1.5e-3)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_brake_difference_at_matched_amplitude(lab):
     """0 mA against 700 mA: zeta_eq differs by about the viscous part, resolved (Coulomb adds to both sides)."""
     folder, _ = lab
@@ -70,6 +73,7 @@ def test_brake_difference_at_matched_amplitude(lab):
     assert d.delta_zeta == pytest.approx(gen.K_BRAKE * 0.49, rel=0.25)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_steadiness_follows_the_transient(lab):
     """The transient decays as exp(-zeta omega_n t): tau = 5.4 s at 700 mA (60 s records), 37 s at 200 mA (130 s).
     Every resonant run is steady at the end and reaches 90 % within a few tau; cut during its build-up (at 1.5 tau)
@@ -89,6 +93,7 @@ def test_steadiness_follows_the_transient(lab):
                 assert not early.steady and early.drift > 0.02
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_check_lab_command(lab, tmp_path, capsys):
     from vibration.book.publishing.report import main
 

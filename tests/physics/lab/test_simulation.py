@@ -15,6 +15,7 @@ from vibration.physics.model import ParameterError
 W = 4.5
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_linear_steady_state_matches_the_closed_form():
     omegas = np.array([3.5, 4.3, 4.5, 5.2])
     zeta, force = 0.04, 0.2

@@ -88,6 +88,7 @@ def test_robust_design_matches_a_second_optimiser_and_the_quoted_values():
     assert abs(e) == pytest.approx(0.1)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_robust_design_is_not_beaten_by_a_brute_force_grid():
     t = robust_tuning(0.05, ZP, 0.1)
     w = worst_peak(t, 0.1)[0]
@@ -137,6 +138,7 @@ def test_worst_peak_finds_an_interior_maximum():
 
 
 # ----------------------------------------------------------------------------- stroke
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_stroke_against_a_time_simulation_at_the_paper_load_case():
     h = hinf_tuning(0.05, ZP)
     s = tmd_system(1.0, 0.5, 20.0, tuning=h)
@@ -178,6 +180,7 @@ def test_stroke_agrees_with_the_two_mass_complex_solve():
 
 
 # ----------------------------------------------------------------------------- the H2 column and the scores
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_score_against_quadrature_and_its_own_definitions():
     for t in (hinf_tuning(0.05, ZP), h2_tuning(0.05, ZP), robust_tuning(0.05, ZP, 0.1), den_hartog(0.05)):
         s = score_design(t, ZP, 0.1, r_force=R_FORCE)

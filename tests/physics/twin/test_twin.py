@@ -308,6 +308,7 @@ CASES = [  # m kg, zeta, k N/m, samples per natural period, periods in the recor
 ]
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 @pytest.mark.parametrize("case", CASES, ids=[f"m{c[0]}-z{c[1]}-{c[5]}" for c in CASES])
 def test_identify_recovers_independent_data(case):
     m, zeta, k, per_period, periods, sensor = case
@@ -350,6 +351,7 @@ def test_identify_global_and_local_search_agree():
     np.testing.assert_allclose([g.m, g.c, g.k], [loc.m, loc.c, loc.k], rtol=1e-7)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_monte_carlo_coverage_is_near_95_percent():
     ex = identification_experiment(Oscillator(m=1.0, c=0.5, k=20.0), duration=30.0, runs=120, noise=0.05, seed=3)
     # binomial: P(coverage < 0.87 | 0.95, 120 runs) < 1e-3
@@ -413,6 +415,7 @@ def test_identify_refuses_undersampled_and_too_short_records():
 # ----------------------------------------------------------------------------- frequency domain
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_frequency_estimates_on_a_long_clean_record():
     osc = Oscillator(m=1.0, c=0.5, k=20.0)
     t = np.arange(0.0, 800.0, 0.02)
@@ -446,6 +449,7 @@ def _fault_record(noise=2e-3, seed=12, sensor="x"):
     return osc, t, ks, synthetic_measurements(osc, t, f, noise=noise, seed=seed, stiffness=ks, sensor=sensor)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 @pytest.mark.parametrize("sensor", ["x", "a"])
 def test_kalman_tracks_decline_and_drop(sensor):
     osc, t, ks, meas = _fault_record(noise=2e-3 if sensor == "x" else 0.05, sensor=sensor)

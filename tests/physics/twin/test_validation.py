@@ -45,6 +45,7 @@ def test_ljung_box_has_its_level_on_white_noise_and_power_on_ar1():
     assert twin.ljung_box(ar)[1] < 1e-6
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_input_correlation_has_its_level_with_the_band_limited_force():
     """White residual, independent of the chapter's (nearly singular) band-limited force: rejections at alpha."""
     t = np.arange(3001) * 0.02
@@ -123,6 +124,7 @@ def study():
     return twin.assumption_study(OSC, ref, runs=24, seed=8)
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_assumption_study_reveals_each_broken_assumption(study):
     assert list(study.experiments) == ["as assumed", *twin.ASSUMPTION_CASES]
     ref = study.experiments["as assumed"]
@@ -141,6 +143,7 @@ def test_assumption_study_reveals_each_broken_assumption(study):
     assert 1 + 1.5 * study.cubic < wn2 < 1 + 4.5 * study.cubic
 
 
+@pytest.mark.slow  # over 1.5 s: make test-slow runs it
 def test_assumption_cases_draw_independent_noise(study):
     e = [ex.estimates[:, 2] - ex.truth[2] for ex in study.experiments.values()]
     assert abs(np.corrcoef(e[0][:24], e[4])[0, 1]) < 0.9
