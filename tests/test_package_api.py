@@ -164,3 +164,14 @@ def test_public_functions_take_parameters_after_the_third_keyword_only():
     for rel, name in POSITIONAL_ALLOWED:  # the allow-list names only what is still there
         tree = ast.parse((root / rel).read_text(encoding="utf-8"))
         assert any(isinstance(n, ast.FunctionDef) and n.name == name for n in tree.body), (rel, name)
+
+
+def test_a_missing_python_control_is_named_by_its_extra():
+    code = (
+        "import sys; sys.modules['control'] = None; import vibration\n"
+        "try:\n    vibration.control.lqr(vibration.Oscillator(m=1.0, c=0.5, k=20.0), q_x=1.0, q_v=1.0, r=0.1)\n"
+        "except ImportError as exc:\n    print(exc)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert "vibration[control]" in done.stdout and "lqr" in done.stdout, done.stdout

@@ -36,7 +36,25 @@ __all__ = [
     "check_real",
     "check_records",
     "check_start",
+    "optional",
 ]
+
+
+def optional(module: str, *, extra: str, what: str):
+    """Import the optional package ``module``, or raise an ``ImportError`` naming the extra that installs it.
+
+    >>> optional("math", extra="control", what="lqr").__name__
+    'math'
+    """
+    import importlib
+
+    try:
+        return importlib.import_module(module)
+    except ImportError as exc:
+        raise ImportError(
+            f"{what} needs the optional package {module!r}: install the extra with pip install 'vibration[{extra}]'",
+            name=module,
+        ) from exc
 
 
 def _show(value) -> str:

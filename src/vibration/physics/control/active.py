@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import OverBudget, check_array, check_derived, check_oscillator
+from ..checks import OverBudget, check_array, check_derived, check_oscillator, optional
 from ..model import Oscillator, ParameterError, SineForce, check_real
 from ._common import MAX_NFEV, RTOL_MAX, RTOL_MIN, _base, _call, _counted, _grid, _limit, _over_budget, _work_check
 
@@ -127,7 +127,7 @@ def lqr(osc: Oscillator, q_x: float, q_v: float, *, r: float) -> LQRResult:
     100.0
     """
     q_x, q_v, r = _lqr_args(osc, q_x, q_v, r)
-    import control
+    control = optional("control", extra="control", what="vibration.control.lqr")
 
     a = np.array([[0.0, 1.0], [-osc.k / osc.m, -osc.c / osc.m]])
     b = np.array([[0.0], [1.0 / osc.m]])

@@ -7,6 +7,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..checks import optional
 from ..model import ParameterError, check_int
 from .references import _moments, _passive_cost, lqr_reference
 from .rollouts import Rollouts, _check_work, episode_costs, rollout, sample_initial_states
@@ -89,7 +90,7 @@ def verification(task: OscillatorTask, gains) -> dict[str, float]:
     >>> all(v < 1e-9 for v in chk.values())
     True
     """
-    import control
+    control = optional("control", extra="control", what="vibration.learning.verification")
 
     task = replace(_check_task(task), mode="force")
     g = _check_gains(gains)

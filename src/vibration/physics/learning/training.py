@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import optional
 from ..duffing import _real_array
 from ..model import ParameterError, check_int, check_real
 from .references import _moments
@@ -258,7 +259,7 @@ def _ars_iterations(task, theta, opts, iters, n_ep, states_rng, algo_seq):
 
 def _cma_iterations(task, theta, opts, iters, n_ep, states_rng, algo_seq):
     """CMA-ES from ``theta``: yields each generation's training episodes and the distribution mean."""
-    import cma
+    cma = optional("cma", extra="learn", what="CMA-ES training")
 
     popsize = check_int("popsize", opts["popsize"], low=2, high=10_000)
     sigma0 = check_real("sigma0", opts["sigma0"], low=0.0, low_open=True, unit="N/m")
