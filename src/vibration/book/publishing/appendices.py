@@ -107,11 +107,14 @@ def usage_markdown(packages: list[str]) -> str:
         "# Using the package",
         "",
         f'Install the package from this book\'s download, <a href="_static/downloads/{wheel}" download>{wheel}</a> '
-        "(Python 3.11), into a fresh environment:",
+        "(Python 3.11), into a fresh environment. The library alone needs NumPy, SciPy and Numba; the "
+        "`book` extra adds what the chapters' notebooks use (Matplotlib, the sliders, JupyterLab with MyST "
+        "rendering):",
         "",
         "```sh",
         "python -m venv .venv && . .venv/bin/activate",
-        f"pip install {wheel}",
+        f'pip install "{wheel}[book]"      # or just {wheel} for the library',
+        "jupyter lab                                       # then open a chapter's downloaded notebook",
         "```",
         "",
         "Each chapter page offers its notebook, with its outputs, to open beside it and run. The chapters "
