@@ -50,7 +50,8 @@ test: $(STAMP) browser ## lint, layers, unit, property, doctests, strict nbval a
 	exit $$rc
 
 test-slow: $(STAMP) browser ## the tests marked slow: the report under far parameters, runner signals, JupyterLab (CI runs them too)
-	$(PORTABLE) $(PY) -m pytest -m slow tests src  # one at a time: several run kernels or the report on both cores
+	$(PORTABLE) $(PY) -m pytest -n $(JOBS) --dist loadfile -m "slow and not notebooks and not far" tests src
+	$(PORTABLE) $(PY) -m pytest -m "slow and (notebooks or far)" tests src  # one at a time: each runs kernels or the report on both cores
 
 test-library: $(STAMP) ## the library's own tests alone (physics, bad-input battery, API, doctests): no book
 	$(PY) -m pytest -n $(JOBS) -m "not slow" tests/physics tests/fuzz tests/test_package_api.py src/vibration/physics

@@ -38,6 +38,7 @@ def _figures(key: str):
     return figs
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.parametrize("key", list(DAMPINGS))
 def test_part_one_legends_cover_no_data_and_figures_fit_the_column(key):
     figs = _figures(key)

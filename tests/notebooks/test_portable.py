@@ -79,6 +79,7 @@ def test_ladder_declares_its_machine_dependent_cells():
             assert not any(isinstance(c, Approx) for c in cells)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_committed_ladder_matches_this_machine_within_its_tolerances():
     """The committed reference against a run here: what `make test` checks under PORTABLE, without a kernel."""
     nb = json.loads(NOTEBOOK.read_text(encoding="utf-8"))

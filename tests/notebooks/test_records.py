@@ -78,6 +78,7 @@ def test_each_chapter_panel_has_one_entry_point_taking_its_study(chapter):
     assert called == ["panel(study)"], f"{path.name} calls {called}"
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_the_tmd_panel_starts_where_the_study_is():
     from vibration.book.chapters.tmd.panel import panel
     from vibration.book.chapters.tmd.study import tmd_study

@@ -95,6 +95,7 @@ def test_the_data_file_loads_and_is_the_modules_sheet(chapter):
     assert [item["id"] for item in mod.exercises.template.exercises] == [item["id"] for item in data["exercise"]]
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.parametrize("chapter", CHAPTERS)
 def test_every_placeholder_is_filled(chapter):
     mod, data = _module(chapter), _data(chapter)

@@ -8,6 +8,7 @@ import re
 from pathlib import Path
 
 import nbformat
+import pytest
 
 from vibration.book.presentation.notation import SETTLED, SYMBOLS, lookup
 from vibration.book.presentation.references import REFERENCES, paper_citation
@@ -114,6 +115,7 @@ def test_usage_starts_from_the_downloaded_wheel():
     assert sheets.wheel_name() in first and "_static/downloads/" in first
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_downloads_notebook_with_outputs_and_wheel(tmp_path):
     class Page:
         name = "04_frequency_response"

@@ -76,6 +76,7 @@ def _panels(request) -> dict:
 PANELS = ("stability", "tmd", "duffing", "real_oscillator")
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.parametrize("name", PANELS)
 def test_a_panel_says_computed_in_your_browser_on_the_screen_only(request, name):
     html = _panels(request)[name]()

@@ -54,6 +54,7 @@ def test_sample_pages_have_no_axe_violations(browser, site, mode):
     assert not found, "\n".join(found)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_a_chapter_at_a_phones_width_has_no_axe_violations(browser, site):
     """At 390 px wide tables and equations scroll sideways in their own boxes: each must be reachable by keyboard."""

@@ -22,6 +22,9 @@ from vibration.book.publishing import report
 from vibration.book.publishing.book import split_help, summary
 from vibration.book.publishing.registry import read_contents
 
+# every test here builds on a study or a book that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parents[2]
 NOTEBOOKS = sorted(p for p in (ROOT / "notebooks").glob("*.ipynb"))
 CHAPTERS = [p.stem for p in NOTEBOOKS if not p.stem.startswith("00_")]
@@ -540,7 +543,7 @@ def test_every_chapter_page_offers_its_notebook_and_the_package(site):
         assert "Worked answer" not in nbformat.writes(nb), f"{page}: a student's notebook stores no answer"
     using = (site / "using.html").read_text(encoding="utf-8")
     plain = re.sub(r"<[^>]+>", "", using)
-    assert f'href="_static/downloads/{wheels[0].name}"' in using and f"pip install {wheels[0].name}" in plain
+    assert f'href="_static/downloads/{wheels[0].name}"' in using and f'pip install "{wheels[0].name}[book]"' in plain
 
 
 def test_exercises_fold_their_answers_and_the_appendices_gather_them(site):

@@ -62,6 +62,7 @@ def test_words_are_counted_as_a_reader_counts_them():
     assert _words("Figure 4.1 The response # of — x, at ω = 4.47 rad/s.") == 10
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_each_chapter_shows_at_most_five_figures_and_five_tables_none_wider_than_seven_columns(site):
     over = {}
     for page in _chapters(site):
@@ -73,6 +74,7 @@ def test_each_chapter_shows_at_most_five_figures_and_five_tables_none_wider_than
     assert over == {}
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_no_caption_is_longer_than_sixty_words(site):
     long = [
         (page.stem, n, text[:80])
@@ -83,6 +85,7 @@ def test_no_caption_is_longer_than_sixty_words(site):
     assert long == []
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_the_main_text_is_at_most_sixty_percent_of_what_it_was(site):
     words = {page.stem: _words(_visible_article(page, exercises=False).get_text(" ")) for page in _chapters(site)}
     assert min(words.values()) > 500, words  # a page read as nearly empty would make the check pass for nothing

@@ -46,6 +46,7 @@ def site(committed_book) -> Path:
     return committed_book
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 @pytest.mark.parametrize("name", WIDE_TABLES)
 def test_wide_tables_keep_their_captions_inside_a_phones_viewport(browser, site, name):
@@ -65,6 +66,7 @@ def test_wide_tables_keep_their_captions_inside_a_phones_viewport(browser, site,
     assert outside == [], f"captions past the {PHONE[0]} px viewport on {name}: {outside}"
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 @pytest.mark.parametrize("viewport", [PHONE, DESKTOP], ids=["phone", "desktop"])
 def test_a_chapter_shows_one_search_control_whose_name_holds_its_text(browser, site, viewport):
@@ -80,6 +82,7 @@ def test_a_chapter_shows_one_search_control_whose_name_holds_its_text(browser, s
     assert label is None or text.lower() in label.lower(), shown[0]
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_equations_wider_than_a_phones_column_are_tab_stops(browser, site):
     page, _, _ = open_offline(browser, site / "04_frequency_response.html", viewport=PHONE)

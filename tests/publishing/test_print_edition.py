@@ -33,6 +33,7 @@ Response of case {n}: <math><semantics><mi>x</mi><annotation encoding="applicati
 Values of case {n}.</caption><tr><td>1</td></tr></table><p>{filler}</p></section></section>"""
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_print_edition_title_lists_and_section_bookmarks(browser, tmp_path):
     from pypdf import PdfReader

@@ -8,6 +8,9 @@ from conftest import open_offline, panel_state
 
 from vibration.book.publishing import report
 
+# every test here builds on a study or a book that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 
 @pytest.fixture(scope="module")
 def built(tmp_path_factory):

@@ -157,6 +157,7 @@ def test_five_metre_reading_follows_parameters():
     assert ex2.correct in ("a", "c")  # X and the window peak (X once settled) both near 5.6 m
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_every_chapter_has_objectives_and_enough_exercises():
     mods = sheets._modules()
     for stem, mod in mods.items():
@@ -232,6 +233,7 @@ def _intro(markdown: str) -> str:
     return markdown.split("\n\n**Exercise", 1)[0]
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_the_introductions_name_no_code_and_read_the_same_on_screen_and_on_paper():
     """The notebook's and the book's introduction to the exercises: no code, no tool, no "above" or "In JupyterLab";
     the way to check an answer is in the appendix on running the chapters."""
@@ -258,6 +260,7 @@ def test_the_introductions_name_no_code_and_read_the_same_on_screen_and_on_paper
     assert 'vibration.book.check("04.2"' in appendix and "quantity=" in appendix
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_the_sheets_name_no_library_or_tool():
     """Every chapter's questions, worked answers and sheets at the defaults: no library, tool or code name."""
     for stem in sheets._modules():

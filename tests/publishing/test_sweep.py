@@ -107,6 +107,7 @@ def test_chapter_4_sweep_point_at_defaults_equals_its_key_results_box():
                                      "spacing": "as given"}  # fmt: skip
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_chapter_8_sweep_point_at_defaults_equals_its_key_results_box():
     ds = sw.sweep("08", {"mu": [0.05]}, serial=True)
     value, half = _printed(r"robust min-max design's worst peak is ([\d.]+)", _box("08_tmd.ipynb"))
@@ -191,6 +192,7 @@ def test_resume_refuses_another_grid(tmp_path):
                  resume=True)  # fmt: skip
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_resume_computes_only_the_missing_points(tmp_path, monkeypatch):
     out = tmp_path / "s"
     grid, params = {"c_nominal": [0.3, 0.5, 0.7]}, {"n_omega": 4, "n_damping": 3}

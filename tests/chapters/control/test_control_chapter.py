@@ -267,6 +267,7 @@ def test_the_panel_is_shown_once_and_figures_are_single_calls():
     assert not any("Using the module" in md for md in _notebook_markdown())
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_usage_block_runs_in_a_fresh_interpreter():
     src = USAGE.read_text(encoding="utf-8")
     assert src.startswith("# Chapter 7, Control\n")

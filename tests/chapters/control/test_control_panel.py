@@ -41,11 +41,13 @@ def test_panel_sliders_reach_the_chapters_values():
     assert 'class="vc-logr" min="-9"' in frag
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_panel_takes_the_study():
     st = control_study(t_end=5.0, n_points=101, n_sweep=10, k=30.0)
     assert "k = 30 N/m" in control_panel(st)._repr_html_()
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_panel_javascript_matches_python(browser, tmp_path: Path):
     path = tmp_path / "control.html"

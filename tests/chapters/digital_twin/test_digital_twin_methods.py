@@ -13,6 +13,9 @@ from vibration.book.chapters.digital_twin import cusum, montecarlo
 from vibration.book.chapters.digital_twin.study import digital_twin_study
 from vibration.physics.twin import cubic_response, identify
 
+# every test here builds on a study or a book that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 OSC = Oscillator(m=1.0, c=0.5, k=20.0)
 SMALL = dict(t_record=30.0, runs=20, sweep_runs=5, assumption_runs=20, t_monitor=120.0, detect_runs=5)
 

@@ -19,6 +19,9 @@ from vibration.book.presentation.style import legend_overlap
 from vibration.book.publishing.mathml import external_urls
 from vibration.physics import twin
 
+# every test here builds on a study or a book that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 matplotlib.use("Agg")
 
 SCREENSHOTS = Path(__file__).resolve().parents[3] / "build" / "screenshots"

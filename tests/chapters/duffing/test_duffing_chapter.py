@@ -135,6 +135,7 @@ def test_study_takes_the_params_record_or_keywords():
     assert SCHEMA.names()[0] == "m"
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_sweep_points_are_periodic_orbits_of_the_full_equation(default):
     """Independently of the continuation: shooting from a sweep's end state at a frequency inside the band
     converges to an orbit of the same amplitude, within the sweep's steady tolerance."""
@@ -343,6 +344,7 @@ def test_verdicts_follow_the_numbers_at_other_parameters(other):
     _check_verdicts(other)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_every_caption_is_at_most_sixty_words(default):
     """Every figure's and every table's caption says what is drawn or listed in at most 60 words, at the defaults
     and at a far parameter set (a heavier, stiffer, more strongly damped oscillator forced harder)."""

@@ -68,6 +68,7 @@ def _page(tmp_path, frag):
 RTOL_JS = 1e-9
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_js_roots_and_folds_match_python(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, pres.hb_panel_html()))

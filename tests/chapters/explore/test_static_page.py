@@ -80,6 +80,7 @@ def test_bad_parameters_are_named(kwargs, name):
 # ---------------------------------------------------------------------------- browser
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_sliders_work_offline(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, slider_panel_html(), slider_panel_html(c=15.0)))
@@ -155,6 +156,7 @@ def _python_reference(m, k, F0, c, omega, t_end=50.0, n_points=2001):
     }
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_js_numbers_match_python(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, slider_panel_html()))

@@ -224,6 +224,7 @@ def test_png_frames_decode_to_the_canvas(ex):
     assert np.array_equal(pixels(ex.png()), np.asarray(ex.figure.canvas.buffer_rgba()))
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_benchmark_reports_medians():
     res = benchmark_updates(repeats=2)
     assert res["update_median_s"] > 0 and res["rebuild_median_s"] > 0 and res["full_draw_median_s"] > 0

@@ -145,6 +145,7 @@ def test_prose_is_for_readers(study):
         assert header_problems(f(study)) == [], (f.__name__, header_problems(f(study)))
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_no_paragraph_appears_twice(study):
     texts = [f(study) for f in SENTENCES] + table_texts([f(study) for f in TABLES])
     texts += [text for c in (f(study) for f in FIGURES) for text in (c.caption, c.remark) if text]
@@ -196,6 +197,7 @@ def test_dampings_keep_the_books_colours(study):
     )
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_coinciding_curves_are_said_to_coincide():
     st = frequency_response_study(c_low=0.5, n_points=1001, n_omega=20, n_damping=10)
     fig = figures.response_figure(st)
@@ -218,6 +220,7 @@ def test_bad_parameters_are_named():
         Params(c_min=5.0, c_max=1.0)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_usage_example_runs_on_its_own():
     md = (PACKAGE / "usage.md").read_text(encoding="utf-8")
     assert md.startswith("# Chapter 4, ")
@@ -237,6 +240,7 @@ FAR = {"m": 3.0, "k": 80.0, "F0": 12.0, "omega_ref": 3.4, "omega_res": 5.16, "c_
        "c_high": 60.0, "n_omega": 60, "n_damping": 40}  # fmt: skip
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.parametrize("values", [{}, FAR], ids=["defaults", "far"])
 def test_captions_stay_within_the_books_limit(values):
     """Every figure and table caption of the chapter is at most 60 words; what a figure shows is in its remark."""

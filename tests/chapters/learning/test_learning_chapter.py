@@ -68,6 +68,7 @@ def test_a_negative_plant_damping_is_refused_by_name():
         learning_study(c_nominal=-0.1)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_usage_example_runs_on_its_own(tmp_path):
     md = USAGE.read_text(encoding="utf-8")
     assert md.startswith("# Chapter 11, ")

@@ -23,6 +23,9 @@ from vibration.book.chapters.learning.study import ACTIVE, SEMI, learning_study 
 from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption  # noqa: E402
 from vibration.book.presentation.style import legend_overlap  # noqa: E402
 
+# every test here builds on a study or a book that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "11_learning.ipynb"
 
 

@@ -20,6 +20,9 @@ from vibration.book.chapters.real_oscillator.params import SCHEMA, Params
 from vibration.book.chapters.real_oscillator.study import real_oscillator_study
 from vibration.book.presentation.style import legend_overlap
 
+# every test here builds on a study or a book that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "12_real_oscillator.ipynb"
 MAIN_TABLES = (text.law_table, text.brake_table, text.resonance_table, text.prediction_table, verdicts.claims_table)
 DETAIL_TABLES = (text.pooled_table, text.steadiness_table, text.session_table, text.damping_csv)

@@ -21,6 +21,7 @@ def test_objectives_and_prerequisites():
     assert all(re.match(r"(Compute|Estimate|Explain|Judge)\b", o) for o in ex.OBJECTIVES)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_answers_follow_todays_data():
     items = {e.id: e for e in ex.exercises(Params())}
     assert {"12.1", "12.2", "12.3", "12.4"} <= set(items)

@@ -29,6 +29,7 @@ def test_fragment_is_self_contained(study):
     assert repr(decay_panel(study)).startswith("DecayPanel(brake=on")
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_js_decay_matches_python(browser, tmp_path: Path, study):
     page_path = tmp_path / "real.html"

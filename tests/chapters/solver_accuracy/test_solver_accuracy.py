@@ -64,6 +64,7 @@ def test_the_common_error_is_reached_by_every_machine_independent_method(study):
     assert reach.evaluations(reach.cheapest) == min(n for _, n in reach.cost)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_late_exact_peak_is_the_steady_amplitude_when_the_transient_has_died():
     """Independent route: the closed-form steady amplitude X = F0/|k - m ω² + i c ω|."""
     st = solver_accuracy_study()
@@ -160,6 +161,7 @@ def test_work_precision_caption_gives_the_tightening_direction_from_the_data(stu
     assert "(left)" in c.caption and "(right)" in c.caption
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_captions_stay_within_the_books_limit():
     """Every figure and table caption is at most 60 words, at the paper's parameters and at a far set."""
     far = {"m": 3.0, "k": 80.0, "F0": 12.0, "c_nominal": 1.2, "omega_res": 5.16, "t_end": 30.0, "n_points": 2001}
@@ -184,6 +186,7 @@ def test_figures_use_the_books_exact_style():
     assert exact.get_linestyle() == "--" and exact.get_color() in ("#000000", "k", "black")
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_usage_example_runs_on_its_own():
     md = (PACKAGE / "usage.md").read_text(encoding="utf-8")
     assert md.startswith("# Chapter 3, ")

@@ -122,6 +122,7 @@ def _paragraphs(md: str) -> list[str]:
 # ----------------------------------------------------------------------------- no repetition
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_no_paragraph_sentence_table_or_caption_appears_twice(study):
     nb = nbformat.read(str(NOTEBOOK), as_version=4)
     paragraphs = []
@@ -179,6 +180,7 @@ def test_key_results_box(study):
     assert len(re.findall(NUMBER, box)) >= 10  # computed numbers, not words alone
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_usage_example_runs_on_its_own(tmp_path):
     md = files("vibration.book.chapters.stability").joinpath("usage.md").read_text(encoding="utf-8")
     assert md.startswith("# Chapter 6, ") and md.count("```python") == 1
@@ -226,6 +228,7 @@ def _digits(cell: str) -> int | None:
     return len(digits) if digits else None
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_each_table_column_has_one_number_of_significant_figures(study, other):
     for st in (study, other):
         for f in TABLES:
@@ -261,6 +264,7 @@ def _said(c: Captioned) -> str:
     return c.caption + " " + c.remark
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_coinciding_curves_are_said_to_coincide():
     same = stability_study(c_nominal=15.0, n_paths=20, t_growth=30.0)  # nominal = high
     step = _said(figures.step_figure(same))
@@ -275,6 +279,7 @@ def test_coinciding_curves_are_said_to_coincide():
     assert gap and 1 <= int(gap.group(1)) <= 10
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_captions_are_at_most_sixty_words_and_findings_go_under_the_figure(study):
     """Every figure's and table's caption is at most 60 words at the defaults and under a far parameter set."""
     far = stability_study(

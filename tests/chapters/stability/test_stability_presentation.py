@@ -56,6 +56,7 @@ def test_tables_have_names_units_and_no_nan(study):
     assert "(above" not in checks and checks.count("< 10⁻") == 4  # every self-check within its bound
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_figures_keep_legends_off_the_data(study):
     for f in (
         figures.pole_figure,
@@ -139,6 +140,7 @@ def _page(tmp_path: Path, *fragments: str) -> Path:
     return path
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_js_matches_python_on_random_points(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, panel.stability_panel_html()))

@@ -214,6 +214,7 @@ def test_every_sentence_claims_only_what_its_numbers_say(chapter):
     _check_claims(*chapter[:2])
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.parametrize(
     "changes",
     [
@@ -325,6 +326,7 @@ def test_study_refuses_what_it_cannot_compute():
     assert SCHEMA.names()[:3] == ("m", "k", "F0")
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_study_record_follows_its_parameters():
     st = tmd_study(m=4.0, k=400.0, F0=40.0, n_points=201)
     assert st.omega_p == pytest.approx(10.0, rel=1e-15) and st.x_static == pytest.approx(0.1, rel=1e-15)
@@ -332,6 +334,7 @@ def test_study_record_follows_its_parameters():
     assert set(st.scores) == set(TUNINGS) and st.chosen is st.tunings[st.mu][HINF]
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_the_usage_example_runs_on_its_own(tmp_path):
     md = files("vibration.book.chapters.tmd").joinpath("usage.md").read_text(encoding="utf-8")
     assert md.startswith("# Chapter 8, ") and md.count("```python") == 1

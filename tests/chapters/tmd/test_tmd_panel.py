@@ -116,6 +116,7 @@ def test_explorer_bundle_widget_panel_and_values():
 # ----------------------------------------------------------------------------- browser
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_js_matches_python_on_random_points(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, pres.tmd_panel_html()))
@@ -173,6 +174,7 @@ def test_js_matches_python_on_random_points(browser, tmp_path):
         page.close()
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.browser
 def test_panel_sliders_and_buttons_move_the_curve_offline(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, pres.tmd_panel_html(0.05)), viewport=(1180, 900))

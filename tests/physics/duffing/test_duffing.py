@@ -377,6 +377,7 @@ def test_qr_exponents_sum_to_the_trace(ueda):
         assert sum(ueda[key].exponents) == pytest.approx(-UEDA.c / UEDA.m, abs=1e-5)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 def test_periodic_case_exponent_is_negative_and_floquet():
     orbit = periodic_orbit(HARD, 5.0, 4.47)
     T = 2 * math.pi / 4.47

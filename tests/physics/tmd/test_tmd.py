@@ -192,6 +192,7 @@ def test_h2_norm_equals_the_integral_of_the_squared_magnification(mu, f, za, zp)
     assert h2_norm(mu, f, za, zeta_p=zp) == pytest.approx(squared_integral(mu, f, za, zp), rel=1e-9)
 
 
+@pytest.mark.slow  # over 2 s: make test-slow runs it
 @pytest.mark.parametrize("mu", [0.02, 0.1])
 def test_warburton_is_the_minimum_of_the_integral(mu):
     t = h2_tuning(mu)

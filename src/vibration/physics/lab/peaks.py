@@ -7,7 +7,9 @@ described in :mod:`vibration.physics.lab.decay`.
 
 from __future__ import annotations
 
+import hashlib
 import math
+from collections import OrderedDict
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -96,7 +98,24 @@ def free_decay_peaks(t, theta) -> DecayPeaks:
     return _peaks(ta, ya)
 
 
+#: The peaks of the last few records (their bytes' digest -> DecayPeaks, read-only): a study fits each decay with
+#: every candidate law, and every fit starts from the same peaks.
+_PEAKS_SEEN: OrderedDict = OrderedDict()
+_PEAKS_KEPT = 64
+
+
 def _peaks(ta: np.ndarray, ya: np.ndarray) -> DecayPeaks:
+    """:func:`free_decay_peaks` of checked arrays, computed once per record (a pure function of their values)."""
+    key = (ta.shape, ta.dtype.str, ya.dtype.str, hashlib.blake2b(ta.tobytes() + ya.tobytes(), digest_size=20).digest())
+    found = _PEAKS_SEEN.get(key)
+    if found is None:
+        found = _PEAKS_SEEN[key] = _find_peaks(ta, ya)
+        if len(_PEAKS_SEEN) > _PEAKS_KEPT:
+            _PEAKS_SEEN.popitem(last=False)
+    return found
+
+
+def _find_peaks(ta: np.ndarray, ya: np.ndarray) -> DecayPeaks:
     thr = max(3.0 * _resolution(ya), 0.02 * float(np.ptp(ya)))
     hi, _ = signal.find_peaks(ya, prominence=thr)
     lo, _ = signal.find_peaks(-ya, prominence=thr)
