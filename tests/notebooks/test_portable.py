@@ -123,6 +123,7 @@ def _notebook(path: Path, reference: float, value: float) -> None:
     nbformat.write(nb, path)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 @pytest.mark.notebooks
 @pytest.mark.parametrize(
     ("value", "passes"), [(3000.0, True), (2000.0, False), pytest.param(2926.0 * 1.3, False, marks=pytest.mark.slow)]

@@ -73,6 +73,7 @@ def test_tight_tolerance_meets_proportional_bound(method, rtol, atol, m, c, k, F
     assert err_v <= ERR_FACTOR * (rtol * max_v + atol)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_error_scales_with_the_tolerance_asked():
     """RK45 over six decades of rtol: the bound holds at each, and the error falls with rtol."""
     osc, force = Oscillator(m=1.0, c=0.5, k=20.0), SineForce(F0=5.0, omega=4.47)

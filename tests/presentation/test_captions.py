@@ -109,6 +109,7 @@ def test_figures_carry_no_svg_unless_asked(monkeypatch):
     assert sorted(data) == ["image/png", "text/plain"] and "image/svg+xml" not in meta
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_svg_when_asked_keeps_text_and_lines_vector_and_dense_parts_as_images(monkeypatch):
     import re
 

@@ -163,6 +163,7 @@ def test_ticks_are_nice_and_cover_the_range(helper_page):
     assert outside == [] and errors == []
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 @pytest.mark.browser
 def test_helper_loads_twice_and_redraws_at_the_new_width(browser, tmp_path):
     js = plot_js()
@@ -267,6 +268,7 @@ LAYOUT = """([sel, s]) => {
 }"""
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 @pytest.mark.browser
 @pytest.mark.parametrize("name", [n if n in SAMPLE else pytest.param(n, marks=pytest.mark.slow) for n in PANELS])
 def test_panel_fits_a_phone_and_a_desktop(browser, tmp_path, request, name):

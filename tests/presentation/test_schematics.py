@@ -21,6 +21,9 @@ from matplotlib.text import Text
 from vibration.book.presentation import schematics, style
 from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption, panel_words
 
+# every test here builds on a study, a figure set or a browser that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 #: name: (panels, force arrows in the free-body diagram)
 EXPECTED = {
     "single_mass": (2, 5),  # kx, c x', F0 sin wt, mg, N

@@ -49,6 +49,7 @@ def violations(browser, path: Path, mode: str, viewport=(1280, 900)) -> list[str
     ["light", pytest.param("dark", marks=pytest.mark.slow)],  # dark mode: every page, with the slow tests
     ids=["lightmode", "darkmode"],
 )
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_sample_pages_have_no_axe_violations(browser, site, mode):
     found = [v for name in SAMPLE for v in violations(browser, site / name, mode)]
     assert not found, "\n".join(found)

@@ -68,6 +68,7 @@ def test_the_closure_holds_what_a_module_imports_and_nothing_else(graph):
     assert "vibration.physics.tmd" in import_closure({"vibration"}, graph)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_the_manifest_names_each_input_and_changes_with_it(tmp_path, graph):
     nb = _notebook(
         tmp_path / "notebooks" / "01_x.ipynb",

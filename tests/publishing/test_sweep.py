@@ -98,6 +98,7 @@ def _printed(pattern: str, text: str) -> tuple[float, float]:
     return float(digits), 0.5 * 10.0**-decimals
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_chapter_4_sweep_point_at_defaults_equals_its_key_results_box():
     ds = sw.sweep("04", {"c_nominal": [0.5]}, serial=True)
     value, half = _printed(r"([\d.]+) times with the nominal", _box("04_frequency_response.ipynb"))
@@ -137,6 +138,7 @@ def _magnification(m: float, c: float, k: float, w: float) -> float:
     return k / math.hypot(k - m * w * w, c * w)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_chapter_4_points_equal_the_closed_form_and_a_failed_point_is_nan_with_its_message(tmp_path):
     cs = [0.2, 0.5, 1.5]
     out = tmp_path / "s4"

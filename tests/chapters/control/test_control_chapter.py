@@ -33,6 +33,9 @@ from vibration.book.chapters.control.params import SCHEMA, Params
 from vibration.book.chapters.control.study import control_study
 from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 
+# every test here builds on a study, a figure set or a browser that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parents[3]
 NOTEBOOK = ROOT / "notebooks" / "07_control.ipynb"
 USAGE = ROOT / "src" / "vibration" / "book" / "chapters" / "control" / "usage.md"

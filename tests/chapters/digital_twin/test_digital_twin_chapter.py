@@ -140,6 +140,7 @@ def _check_caption_words(st) -> None:
 FAR = dict(m=3.0, k=80.0, c_nominal=1.2, F_rms=12.0)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 @pytest.mark.parametrize("values", [{}, pytest.param(FAR, marks=pytest.mark.slow)], ids=["defaults", "far"])
 def test_every_caption_is_at_most_sixty_words(values):
     """At the default parameters and far from them (short runs: the captions name no run count)."""

@@ -428,6 +428,7 @@ def test_notebook_calls_each_function_once_and_opens_with_the_question():
             assert "Using the module" not in "".join(c["source"])
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_usage_block_runs_on_its_own(tmp_path):
     import subprocess
     import sys
@@ -477,6 +478,7 @@ def test_a_chaotic_run_started_one_ulp_away_stays_within_the_declared_tolerances
     assert mismatches(ref, text.lyapunov_sentence(dataclasses.replace(moved, pooled=far)))
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_every_label_of_every_figure_lies_inside_the_figure(default):
     """What a figure draws (axis labels, tick labels, legends, colour bars) lies inside the figure: its tight
     bounding box is within the page's (Figure 9.5's right panel once lost the end of its axis label)."""

@@ -109,6 +109,7 @@ def test_js_roots_and_folds_match_python(browser, tmp_path):
         page.close()
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 @pytest.mark.browser
 def test_panel_sliders_redraw_offline(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, pres.hb_panel_html()))

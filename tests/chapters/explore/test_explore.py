@@ -21,6 +21,9 @@ from vibration.book.chapters.explore.study import C_MAX, C_MIN
 from vibration.book.chapters.explore.widget import live_explorer
 from vibration.physics.audit import resonant_peak
 
+# every test here builds on a study, a figure set or a browser that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "book" / "chapters" / "explore"
 
 PARAMETER_SETS = {

@@ -17,6 +17,9 @@ from vibration.book.chapters.explore.bench import benchmark_updates
 from vibration.book.chapters.explore.study import C_MAX, C_MIN
 from vibration.book.chapters.explore.widget import Explorer, explorer
 
+# every test here builds on a study, a figure set or a browser that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 
 @pytest.fixture
 def ex():

@@ -186,6 +186,7 @@ def test_sentences_state_what_the_study_says(study):
     assert f"largest peak on the grid is {text.num(peak)} m" in text.design_text(study)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_dampings_keep_the_books_colours(study):
     fig = figures.response_figure(study).fig
     lines = [ln for ln in fig.axes[0].get_lines() if len(ln.get_xdata()) > 2]
@@ -206,6 +207,7 @@ def test_coinciding_curves_are_said_to_coincide():
     assert "coincide" not in apart.caption + " " + apart.remark
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_negative_damping_is_left_out_of_the_figure_and_said_so():
     st = frequency_response_study(c_low=-0.05, t_end=20.0, n_points=1001, n_omega=20, n_damping=10)
     cap = figures.response_figure(st).caption

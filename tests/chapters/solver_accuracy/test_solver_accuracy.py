@@ -20,6 +20,9 @@ from vibration.book.presentation.captions import CAPTION_WORDS, caption_words, c
 from vibration.book.presentation.style import WIDTH_IN, legend_overlap
 from vibration.physics.model import ParameterError
 
+# every test here builds on a study, a figure set or a browser that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 PACKAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "book" / "chapters" / "solver_accuracy"
 
 #: The paper's parameters, a stiffer and heavier oscillator, and a softer, lighter-damped one.

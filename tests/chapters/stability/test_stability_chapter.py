@@ -296,6 +296,7 @@ def test_captions_are_at_most_sixty_words_and_findings_go_under_the_figure(study
     assert "Every curve passes through $T$ = 1" in trans.remark and "passes through" not in trans.caption
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_captions_follow_the_layout(study):
     for f in FIGURES:
         c = _chapter(study)[f.__name__]
@@ -329,6 +330,7 @@ def _close(printed: str, value: float, digits: int = 3) -> bool:
     return _num(printed) == pytest.approx(value, rel=0.6 * 10.0 ** (1 - digits))
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_everything_builds_finite_and_checked_under_other_parameters(other):
     shown = _chapter(other)
     _check_notation(shown)

@@ -116,6 +116,7 @@ def test_panel_fragment_is_self_contained():
         panel.stability_panel_html(zeta=10.0)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_explorer_bundle_has_widget_and_static_panel(study):
     ex = panel.stability_explorer(study)
     bundle = ex._repr_mimebundle_()
@@ -185,6 +186,7 @@ def test_js_matches_python_on_random_points(browser, tmp_path):
         page.close()
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 @pytest.mark.browser
 def test_panel_sliders_move_all_three_views(browser, tmp_path):
     page, outside, errors = open_offline(browser, _page(tmp_path, panel.stability_panel_html()), viewport=(1180, 900))

@@ -25,6 +25,9 @@ from vibration.book.chapters.tmd.study import tmd_study
 from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
 from vibration.physics.model import ParameterError
 
+# every test here builds on a study, a figure set or a browser that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 PARAMETER_SETS = {
     "defaults": {},
     "heavy": {"m": 4.0, "k": 400.0, "F0": 40.0},

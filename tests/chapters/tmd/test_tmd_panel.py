@@ -85,6 +85,7 @@ def test_panel_fragment_is_self_contained_and_validated():
             pres.tmd_panel_html(**kwargs)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_explorer_bundle_widget_panel_and_values():
     ex = pres.tmd_explorer(0.05)
     bundle = ex._repr_mimebundle_()

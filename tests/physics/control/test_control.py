@@ -194,6 +194,7 @@ def test_limited_pid_agrees_with_an_independent_integration(mode):
     assert np.all(np.abs(r.u) <= 12.0) and r.saturated_fraction > 0.0
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_anti_windup_cuts_the_overshoot_and_the_integrator():
     runs = {
         m: pid_response(
@@ -435,6 +436,7 @@ def test_metrics_bad_input(raises_parameter_error):
         response_metrics([0.0, 1.0, 2.0], [0, 0, 0], [0, 0, 0], v_rel=[0, 0, 0], t_steady=9.0)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_a_stiff_mr_damper_run_is_refined_instead_of_overflowing():
     """A heavy, stiff plant drives the MR damper's Bouc-Wen state faster than dt_max resolves: the sweep and
     the single run shorten their step (a quarter, twice at most) and agree with a run given the short step."""

@@ -268,6 +268,7 @@ def test_slow_flow_stability_agrees_with_floquet_multipliers(d, w):
 # ----------------------------------------------------------------------------- time integration
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_compiled_sweep_matches_scipy_rk45_step_for_step():
     w = np.array([4.9, 5.0, 5.08])
     ours = frequency_sweep(HARD, 5.0, w, direction="up", steady_tol=1e-4)

@@ -42,6 +42,7 @@ def test_coulomb_free_decay_loses_two_friction_angles_per_half_period():
     assert np.ptp(th[0, t > 11.5]) < 1e-9
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_driven_quadratic_and_power_laws_against_solve_ivp():
     zeta, delta, b, a, p, force, om = 0.01, 0.05, 0.02, 0.001, 3.0, 0.3, 4.3
 

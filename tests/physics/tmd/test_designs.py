@@ -61,6 +61,7 @@ def _grid_worst(mu, f, za, zp, band, n_eps=21):
 
 
 # ----------------------------------------------------------------------------- robust min-max design
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_robust_design_matches_a_second_optimiser_and_the_quoted_values():
     t = robust_tuning(0.05, ZP, 0.1)
     w, e = worst_peak(t, 0.1)
@@ -235,6 +236,7 @@ def test_ground_acceleration_against_absolute_coordinates_and_modal_superpositio
     np.testing.assert_allclose(rel[:, -1], modal, rtol=1e-9)
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_frf_peak_against_a_fine_search():
     b = shear_building([1.0, 1.0, 1.0], [100.0, 100.0, 100.0], 0.02)
     p = ground_acceleration_load(b)

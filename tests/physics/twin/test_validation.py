@@ -149,6 +149,7 @@ def test_assumption_cases_draw_independent_noise(study):
     assert abs(np.corrcoef(e[0][:24], e[4])[0, 1]) < 0.9
 
 
+@pytest.mark.slow  # over 1 s: make test-slow runs it
 def test_sweep_points_draw_independent_noise():
     by_noise, _ = twin.identification_sweep(OSC, noises=(0.02, 0.04), durations=(20.0,), runs=12, duration=20.0)
     a = (by_noise[0].estimates[:, 2] - OSC.k) / by_noise[0].noise
