@@ -210,10 +210,21 @@ def open_offline(browser, path, viewport=(1120, 900)):
 SLOW_PARAMETER_SETS = {"soft", "stiff", "light", "negative", "zero-negative", "zero"}
 
 
+#: Doctests under ``src`` whose example computes a whole chapter study or figure set (seconds each): marked slow here
+#: (this file's hook sees every collected item, those under ``src`` too).
+SLOW_DOCTESTS = {
+    "vibration.book.chapters.duffing.study.duffing_study",
+    "vibration.book.chapters.tmd.figures.building_schematic",
+    "vibration.physics.duffing.orbits.continue_orbits",
+}
+
+
 def pytest_collection_modifyitems(config, items):
     for item in items:
         callspec = getattr(item, "callspec", None)
         if callspec is not None and set(callspec.id.split("-")) & SLOW_PARAMETER_SETS:
+            item.add_marker(pytest.mark.slow)
+        if item.name in SLOW_DOCTESTS:
             item.add_marker(pytest.mark.slow)
 
 
