@@ -30,6 +30,9 @@ from vibration.book.presentation.numbers import sig
 from vibration.book.presentation.style import case_style, legend_overlap
 from vibration.physics.duffing import periodic_orbit
 
+# every test here builds on a chapter study that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 NOTEBOOK = Path(__file__).resolve().parents[3] / "notebooks" / "09_duffing.ipynb"
 USAGE = Path(__file__).resolve().parents[3] / "src" / "vibration" / "book" / "chapters" / "duffing" / "usage.md"
 

@@ -12,6 +12,9 @@ from vibration.book.chapters.real_oscillator.panel import decay_panel, decay_pan
 from vibration.book.publishing.mathml import external_urls
 from vibration.physics.lab import free_decay_response
 
+# every test here builds on a chapter study that takes seconds: make test-slow runs them
+pytestmark = pytest.mark.slow
+
 #: JavaScript against Python: the same closed form, evaluated with each language's exp/cos/sin.
 RTOL = 1e-9
 
