@@ -173,6 +173,9 @@ def test_records_and_results_read_with_units():
     assert (osc.k, osc.c) == pytest.approx((18.0, 3.0), rel=1e-15)
     assert repr(osc) == f"Oscillator(m=2.0 kg, c={osc.c!r} N s/m, k={osc.k!r} N/m)"
     assert "rad/s" in repr(Unbalance(m_e=0.1, e=0.02, omega=3.0)) and " m," in repr(BaseMotion(Y=0.1, omega=1.0))
+    assert repr(steady_state(OSC, SineForce(F0=5.0, omega=3.0))).startswith(
+        "SteadyState(amplitude=0.450"
+    ) and " m/s" in repr(steady_state(OSC, SineForce(F0=5.0, omega=3.0)))
     text = repr(exact_response(OSC, SineForce(F0=5.0, omega=3.0), T))
     assert "1201 samples" in text and " m" in text and "array" not in text
     with pytest.raises(vibration.ParameterError, match="omega_n = 0.0 rad/s"):

@@ -125,6 +125,13 @@ class SteadyState:
     velocity_amplitude: float  # omega * amplitude, m/s
     static_deflection: float  # F0 / k, m
 
+    def __repr__(self) -> str:
+        return (
+            f"SteadyState(amplitude={self.amplitude:.6g} m, phase={self.phase:.6g} rad, "
+            f"magnification={self.magnification:.6g}, velocity_amplitude={self.velocity_amplitude:.6g} m/s, "
+            f"static_deflection={self.static_deflection:.6g} m)"
+        )
+
 
 def steady_state(osc: Oscillator, force: SineForce) -> SteadyState:
     """Amplitude, phase lag and magnification of the steady-state response.
