@@ -36,8 +36,20 @@ __all__ = [
     "check_real",
     "check_records",
     "check_start",
+    "like_input",
     "optional",
 ]
+
+
+def like_input(values, like):
+    """``values`` as a float when ``like`` (the input it was computed from) is a scalar, else as it is.
+
+    The one return convention of the library's functions of time or frequency.
+
+    >>> like_input(np.array(2.0), 3.0), like_input(np.array([2.0]), [3.0])
+    (2.0, array([2.]))
+    """
+    return float(values) if np.ndim(like) == 0 else values
 
 
 def optional(module: str, *, extra: str, what: str):

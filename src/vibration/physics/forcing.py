@@ -38,6 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .checks import like_input
 from .model import N_POINTS_MAX, Oscillator, ParameterError, SineForce, check_real
 
 #: Most distinct interval lengths a :class:`Sampled` response takes a matrix exponential for.
@@ -63,7 +64,7 @@ class Harmonic:
 
     def __call__(self, t):
         """Force at time(s) ``t`` (s), N."""
-        return _value(self.F0 * np.sin(self.omega * np.asarray(t, dtype=float) + self.phase), t)
+        return like_input(self.F0 * np.sin(self.omega * np.asarray(t, dtype=float) + self.phase), t)
 
     def __repr__(self) -> str:
         return f"Harmonic(F0={self.F0!r} N, omega={self.omega!r} rad/s, phase={self.phase!r} rad)"
@@ -93,7 +94,7 @@ class Unbalance:
 
     def __call__(self, t):
         """Force at time(s) ``t`` (s), N."""
-        return _value(self.F0 * np.sin(self.omega * np.asarray(t, dtype=float)), t)
+        return like_input(self.F0 * np.sin(self.omega * np.asarray(t, dtype=float)), t)
 
     def __repr__(self) -> str:
         return f"Unbalance(m_e={self.m_e!r} kg, e={self.e!r} m, omega={self.omega!r} rad/s)"
@@ -130,7 +131,7 @@ class BaseMotion:
 
     def __call__(self, t):
         """Support displacement y at time(s) ``t`` (s), m."""
-        return _value(self.Y * np.sin(self.omega * np.asarray(t, dtype=float) + self.phase), t)
+        return like_input(self.Y * np.sin(self.omega * np.asarray(t, dtype=float) + self.phase), t)
 
     def __repr__(self) -> str:
         return f"BaseMotion(Y={self.Y!r} m, omega={self.omega!r} rad/s, phase={self.phase!r} rad)"
@@ -154,7 +155,7 @@ class Step:
     def __call__(self, t):
         """Force at time(s) ``t`` (s), N."""
         tt = np.asarray(t, dtype=float)
-        return _value(np.where(tt >= self.t0, self.F0, 0.0), t)
+        return like_input(np.where(tt >= self.t0, self.F0, 0.0), t)
 
     def __repr__(self) -> str:
         return f"Step(F0={self.F0!r} N, t0={self.t0!r} s)"
@@ -200,7 +201,7 @@ class Sampled:
 
     def __call__(self, t):
         """Force at time(s) ``t`` (s), N (linear between samples)."""
-        return _value(np.interp(np.asarray(t, dtype=float), self.t, self.F), t)
+        return like_input(np.interp(np.asarray(t, dtype=float), self.t, self.F), t)
 
     def __repr__(self) -> str:
         return f"Sampled({self.t.size} samples over 0-{self.t_end:g} s, |F| <= {float(np.max(np.abs(self.F))):g} N)"
@@ -217,11 +218,6 @@ def check_load(load, name: str = "force"):
         allowed = ", ".join(c.__name__ for c in LOADS)
         raise ParameterError(f"{name} = {load!r:.80} is not a load record: allowed one of {allowed}")
     return load
-
-
-def _value(y, t):
-    """``y`` as a float when ``t`` is a scalar, else as an array."""
-    return float(y) if np.ndim(t) == 0 else y
 
 
 def _float_array(name: str, values, unit: str) -> np.ndarray:

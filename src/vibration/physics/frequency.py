@@ -13,7 +13,7 @@ import numpy as np
 from scipy.integrate import cumulative_simpson
 from scipy.optimize import brentq
 
-from .checks import check_array, check_oscillator
+from .checks import check_array, check_oscillator, like_input
 from .exact import Response, _grid_exp, _kernels, _roots, _uniform, exact_response, steady_state
 from .model import (
     N_POINTS_MAX,
@@ -89,11 +89,6 @@ def _omegas(omegas, name: str = "omegas", scalar: bool = False) -> np.ndarray:
     return w
 
 
-def _like(values: np.ndarray, w: np.ndarray):
-    """A float for a scalar frequency, an array for an array: the one return convention of the frequency functions."""
-    return float(values) if w.ndim == 0 else values
-
-
 def magnification(osc: Oscillator, omegas):
     """Steady-state amplitude over static deflection, ``|x| / (F0/k)``, at each omega.
 
@@ -120,7 +115,7 @@ def magnification(osc: Oscillator, omegas):
     w = _omegas(omegas, scalar=True)
     r = w / osc.natural_frequency
     with np.errstate(divide="ignore", over="ignore"):
-        return _like(1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * osc.damping_ratio * r), w)
+        return like_input(1.0 / np.hypot((1.0 - r) * (1.0 + r), 2.0 * osc.damping_ratio * r), w)
 
 
 def phase_lag(osc: Oscillator, omegas):
@@ -137,7 +132,7 @@ def phase_lag(osc: Oscillator, omegas):
     r = w / osc.natural_frequency
     with np.errstate(over="ignore", invalid="ignore"):
         im, re = 2.0 * osc.damping_ratio * r, (1.0 - r) * (1.0 + r)
-    return _like(np.where((im == 0.0) & (re == 0.0), 0.5 * np.pi, np.arctan2(im, re)), w)
+    return like_input(np.where((im == 0.0) & (re == 0.0), 0.5 * np.pi, np.arctan2(im, re)), w)
 
 
 @dataclass(frozen=True, kw_only=True)

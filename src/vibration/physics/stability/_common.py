@@ -22,7 +22,3 @@ def _frequencies(omegas, name: str = "omegas") -> np.ndarray:
 
 def _times(t, name: str = "t", max_size: int = N_POINTS_MAX) -> np.ndarray:
     return check_array(name, t, low=0.0, ndim=(0, 1), max_size=max_size, unit="s")
-
-
-def _out(values: np.ndarray, like: np.ndarray):
-    return float(values) if like.ndim == 0 else values

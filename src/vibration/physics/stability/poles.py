@@ -8,8 +8,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..checks import check_oscillator
+from ..checks import like_input as _out
 from ..model import Oscillator, ParameterError, SineForce
-from ._common import _out, _times
+from ._common import _times
 
 # ----------------------------------------------------------------------------- stability
 

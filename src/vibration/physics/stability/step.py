@@ -9,8 +9,9 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..checks import check_oscillator
+from ..checks import like_input as _out
 from ..model import Oscillator, ParameterError, check_real
-from ._common import _check_stable, _out, _times
+from ._common import _check_stable, _times
 
 #: Smallest settling band :func:`step_metrics` resolves (the crossings are found to rounding in 1 - y).
 BAND_MIN = 1e-12

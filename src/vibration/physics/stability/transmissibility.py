@@ -7,8 +7,9 @@ import math
 import numpy as np
 
 from ..checks import check_oscillator
+from ..checks import like_input as _out
 from ..model import Oscillator
-from ._common import _frequencies, _out
+from ._common import _frequencies
 
 # ----------------------------------------------------------------------------- base excitation
 
