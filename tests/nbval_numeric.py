@@ -12,6 +12,10 @@ HTML forms, which write the value like any other number.
 Tolerances: ``r0.25`` (relative, ``|new − ref| ≤ 0.25 |ref|``), ``f5`` (a factor, ``ref/5 ≤ new ≤ 5 ref``
 with the same sign), ``a1e-10`` (absolute); several, joined by ``,``, pass when any one holds.
 
+A number glued into a chapter's prose (:func:`vibration.book.presentation.glued.number`) declares its value
+and tolerance in the output's metadata instead, so its text stays what the reader sees; within the
+tolerance the new output is compared as equal to the reference (:func:`settle_glued`).
+
 :func:`install` wraps ``nbval.plugin.IPyNbCell.compare_outputs``; ``tests/conftest.py`` calls it.
 """
 
@@ -115,6 +119,29 @@ def compare_numbers(test_outputs, ref_outputs) -> list[Mismatch]:
     return found
 
 
+def _glued(output) -> dict | None:
+    """The declared value and tolerance of a glued number (``metadata.vibration``), or ``None``."""
+    meta = output.get("metadata") or {}
+    return meta.get("vibration") if isinstance(meta.get("vibration"), dict) else None
+
+
+def settle_glued(test_outputs, ref_outputs) -> list[Mismatch]:
+    """Glued numbers with a declared tolerance: within it, the new output takes the reference's text (strict
+    nbval then sees them equal); outside it, a mismatch. The outputs are compared in order."""
+    found = []
+    for r, t in zip(ref_outputs, test_outputs, strict=False):
+        ref, new = _glued(r), _glued(t)
+        if ref is None or new is None:
+            continue
+        if ref.get("tol") != new.get("tol"):
+            continue  # a changed tolerance is a change strict nbval reports (the text differs)
+        if within(float(ref["value"]), float(new["value"]), ref["tol"]):
+            t["data"] = dict(r.get("data", {}))
+        else:
+            found.append(Mismatch(reference=float(ref["value"]), new=float(new["value"]), tolerance=ref["tol"]))
+    return found
+
+
 def install() -> None:
     """Wrap nbval's comparison: strict comparison of the sanitized strings, then the marked numbers."""
     from nbval import plugin
@@ -124,8 +151,9 @@ def install() -> None:
         return
 
     def compare_outputs(self, test, ref, skip_compare=None):
+        glued = settle_glued(test, ref)
         same = original(self, test, ref, skip_compare)
-        bad = compare_numbers(test, ref)
+        bad = glued + compare_numbers(test, ref)
         if bad:
             self.comparison_traceback = list(getattr(self, "comparison_traceback", []))
             self.comparison_traceback += ["values outside their declared tolerance:"] + [f"  {m}" for m in bad]

@@ -13,7 +13,7 @@ from vibration import paper_defaults
 from vibration.book.publishing import report
 
 NOTEBOOKS = sorted((Path(__file__).resolve().parents[2] / "notebooks").glob("*.ipynb"))
-TYPES = {"float": float, "int": int, "str": str, "bool": bool}
+TYPES = {"float": float, "int": int, "str": str, "bool": bool, "list": list}
 
 
 def _nb(path: Path) -> dict:
@@ -36,6 +36,8 @@ def _is_literal(value: ast.expr) -> bool:
     """A constant, or a signed numeric constant such as ``-0.1`` (papermill reads both as literals)."""
     if isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.USub | ast.UAdd):
         return isinstance(value.operand, ast.Constant) and isinstance(value.operand.value, int | float)
+    if isinstance(value, ast.List):  # a list parameter: a list of literals
+        return all(_is_literal(x) for x in value.elts)
     return isinstance(value, ast.Constant)
 
 
@@ -79,13 +81,19 @@ def test_skeleton_and_no_physics_in_notebooks(path):
     opening = _src(cells[0]) + _src(cells[1])
     assert "?" in opening, f"{path.name}: a chapter opens with its question"
     if not path.name.startswith("00_"):  # then the key-results box, before any table or figure
-        outputs = [o for c in cells if c["cell_type"] == "code" for o in c.get("outputs", []) if o.get("data")]
-        first = next((i for i, o in enumerate(outputs) if "".join(o["data"].get("text/markdown", "")).lstrip()
-                      .startswith("> **Key results**")), None)  # fmt: skip
-        assert first is not None, f"{path.name}: no key-results box"
-        shown = [i for i, o in enumerate(outputs) if "image/png" in o["data"] or "Table tab-" in
-                 "".join(o["data"].get("text/plain", ""))]  # fmt: skip
-        assert not shown or first < shown[0], f"{path.name}: the key results come before the first table or figure"
+        # the key results: written in a markdown cell (numbers glued), or, in a chapter not yet rewritten, an output
+        shown = next((i for i, c in enumerate(cells) for o in c.get("outputs", []) if "image/png" in o.get("data", {})
+                      or "Table tab-" in "".join(o.get("data", {}).get("text/plain", ""))), len(cells))  # fmt: skip
+        boxed = [
+            i
+            for i, c in enumerate(cells)
+            for o in c.get("outputs", [])
+            if "".join(o.get("data", {}).get("text/markdown", "")).lstrip().startswith("> **Key results**")
+        ]
+        written = [i for i, c in enumerate(cells) if _src(c).lstrip().startswith("**Key results.**")]
+        first = min(boxed + written, default=None)  # fmt: skip
+        assert first is not None, f"{path.name}: no key results"
+        assert first < shown, f"{path.name}: the key results come before the first table or figure"
     if path.name.startswith("00_"):
         # the front page is the book's title page, not a chapter: its title, an overview, the run's headline
         # numbers (generated sentences and tables) instead of a summary section

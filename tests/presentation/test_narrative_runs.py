@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from vibration.book.presentation.narrative import g
 from vibration.book.publishing.report import execute_notebooks
 
 pytestmark = [pytest.mark.notebooks, pytest.mark.slow]
@@ -29,6 +30,8 @@ RUNS = {
     "01-c_low-0.05": ("01_reproduction", {"c_low": 0.05}),
     "01-omega_res-3.5": ("01_reproduction", {"omega_res": 3.5}),
     "01-undamped-negative": ("01_reproduction", {"c_low": 0.0, "c_nominal": -0.1}),
+    "01-four-dampings": ("01_reproduction", {"dampings": [0.1, 0.5, 2.0, 15.0]}),
+    "01-two-dampings": ("01_reproduction", {"dampings": [3.0, 0.02]}),
     "02-c_low-0.05": ("02_claims_audit", {"c_low": 0.05}),
     "02-c_high-5-c_low-0": ("02_claims_audit", {"c_high": 5.0, "c_low": 0.0}),
     "04-omega_res-3.5": ("04_frequency_response", {"omega_res": 3.5}),
@@ -98,40 +101,45 @@ def _regimes_in(text: str) -> set[str]:
     return found
 
 
+def glued(nb: dict) -> dict[str, str]:
+    """Every value an executed notebook glues into its prose, by name (the text the reader sees)."""
+    import ast
+
+    out = {}
+    for cell in nb["cells"]:
+        for o in cell.get("outputs", []):
+            name = o.get("metadata", {}).get("scrapbook", {}).get("name")
+            if name:
+                out[name] = ast.literal_eval("".join(o["data"]["application/papermill.record/text/plain"]))
+    return out
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("key", [k for k in RUNS if k.startswith("01")])
-def test_reproduction_sentences_follow_the_tables(executed, key):
-    nb = executed[key]
-    tables = parse_tables(nb)
-    rows = tables["tab-reproduction-findings"]
-    # a row per distinct run: "resonance = nominal damping" is one run, so both names find it
-    findings = {name: row for row in rows for name in row["case"].split(" = ")}
-    texts = markdown_outputs(nb)
-    checked = 0
-    for bullet in _bullets(texts):
-        case = re.match(r"\*\*([^*]+)\*\*", bullet).group(1)
-        if case not in findings or " is the resonance run " in bullet:
-            continue
-        row = findings[case]
-        before_settle = bullet.split("; it ")[0]
-        assert _regimes_in(before_settle) == {row["regime"]}, (key, bullet, row)
-        if row["settles by t_end"] == "yes":
-            assert "settles after" in bullet and "has not settled" not in bullet, (key, bullet)
-        else:
-            assert "has not settled" in bullet and "settles after" not in bullet, (key, bullet)
-        checked += 1
-    assert checked >= 4, f"{key}: only {checked} case sentences found"
-    damping = {c: float(findings[c]["peak |x| (m)"]) for c in ("low damping", "nominal damping", "high damping")}
-    largest = max(damping, key=damping.get)
-    said = [m.group(1) for t in texts for m in re.finditer(r"The largest response is the \*\*([^*]+)\*\*", t)]
-    assert said and all(s == largest for s in said), (key, said, damping)
-    changed = RUNS[key][1]
-    key_results = texts[0]
-    assert key_results.startswith("> **Key results**") and "This run changes the paper's parameters" in key_results
-    from vibration.book.presentation.narrative import PARAMETER_TEXT
+def test_reproduction_glued_words_follow_the_tables_and_the_closed_form(executed, key):
+    import math
 
-    for name, value in changed.items():
-        assert f"{PARAMETER_TEXT[name][0]} = {value:g} ".replace("-", "−") in key_results, (name, key_results)
+    from vibration.book.chapters.reproduction import Params
+
+    nb = executed[key]
+    p = Params.from_values(RUNS[key][1])
+    rows = parse_tables(nb)["tab-reproduction-findings"]
+    words = glued(nb)
+    # one row per distinct run: the reference, the resonance, and each damping not equal to the nominal one
+    assert len(rows) == 2 + sum(c != p.c_nominal for c in p.dampings), (key, [r["case"] for r in rows])
+    # the quoted steady amplitude at resonance is the closed form, or its absence is said
+    if p.c_nominal > 0:
+        x = p.F0 / math.hypot(p.k - p.m * p.omega_res**2, p.c_nominal * p.omega_res)
+        assert float(words["x_res_value"]) == pytest.approx(x, rel=5e-4), (key, words["x_res"])
+    else:
+        assert words["x_res"].startswith("none") and words["regime_note"], (key, words)
+    # the damping called largest has the largest peak of the damping rows; the lightest's settling as tabled
+    by_c = {float(r["c (N s/m)"].replace("−", "-")): r for r in rows[1:]}
+    damping_rows = {c: by_c.get(c, rows[1]) for c in p.dampings}
+    peaks = {c: float(r["peak |x| (m)"]) for c, r in damping_rows.items()}
+    assert words["largest"] == f"c = {g(max(peaks, key=peaks.get))} N s/m", (key, words["largest"], peaks)
+    settles = damping_rows[min(p.dampings)]["settles by t_end"] == "yes"
+    assert words["lightest_settles"].startswith("settles after") == settles, (key, words["lightest_settles"])
 
 
 @pytest.mark.slow

@@ -75,6 +75,13 @@ def test_physical_parameters_are_declared_by_every_chapter_that_uses_them(chapte
         ("t_record", "0.001", r"t_record = 0.001 s holds 0.05 samples of dt = 0.02 s: allowed at least 200"),
         ("n_sweep", "5", r"n_sweep = 5 is out of range: allowed integer 10 <= n_sweep <= 400"),
         ("pid_ki", "1e5", r"t_end = 50.0 s spans .* time scales of the PID loop"),
+        ("dampings", "0.5", r"dampings = '0.5' is not a list: allowed a JSON list"),
+        ("dampings", "[0.1, oops]", r"dampings = '\[0.1, oops\]' is not a list"),
+        ("dampings", "[0.1, 0.1]", r"dampings\[1\] = 0.1 N s/m repeats dampings\[0\]: allowed distinct values"),
+        ("dampings", "[0.1, 2e4]", r"dampings\[1\] = 20000.0 N s/m is out of range: allowed dampings\[1\] >= -10000"),
+        ("dampings", "[1, 2, 3, 4, 5, 6, 7]", r"dampings holds 7 values: allowed 1 to 6"),
+        ("dampings", '[0.5, "x"]', r"dampings\[1\] = 'x' is not a real number"),
+        ("dampings", "[-3]", r"dampings\[0\] = -3.0 N s/m .* grows the response like exp\(75\)"),
     ],
 )
 def test_bad_parameters_are_refused_before_any_kernel(chapters, no_kernel, name, value, pattern, capsys):
@@ -95,7 +102,8 @@ def test_a_chapter_package_declares_its_notebooks_parameters_once(chapters):
         params = by_name[notebook].params
         assert set(params) == {p.name for p in schema.params}, notebook
         for p in schema.params:
-            assert ast.literal_eval(params[p.name]["default"]) == p.default, (notebook, p.name)
+            default = list(p.default) if isinstance(p.default, tuple) else p.default  # a list parameter
+            assert ast.literal_eval(params[p.name]["default"]) == default, (notebook, p.name)
 
 
 def test_a_parameter_without_its_value_is_refused(chapters, no_kernel, capsys):
@@ -122,6 +130,9 @@ def test_good_parameters_are_typed(chapters):
     got = report.check_parameters(chapters, [("F0", "10"), ("n_points", "2001")])
     assert got == {"F0": 10.0, "n_points": 2001}
     assert isinstance(got["n_points"], int)
+    # a list parameter arrives as a list of floats (papermill writes it as a list literal)
+    got = report.check_parameters(chapters, [("dampings", "[0.1, 0.5, 2, 15]")])
+    assert got == {"dampings": [0.1, 0.5, 2.0, 15.0]} and all(isinstance(x, float) for x in got["dampings"])
 
 
 def _read_csv(path: Path) -> list[dict[str, str]]:
@@ -192,6 +203,8 @@ def test_every_notebook_declares_its_schema(chapters):
         for name, info in ch.params.items():
             param = schema[name]
             default = ast.literal_eval(info["default"])
+            if isinstance(param.default, tuple):  # a list parameter: the record holds it as a tuple
+                default = tuple(default)
             assert default == param.default and type(default) is type(param.default), (ch.name, name)
         values = report.check_parameters([ch], [(n, info["default"]) for n, info in ch.params.items()])
         assert set(values) == set(ch.params)

@@ -111,6 +111,17 @@ SHARED: dict[str, Param] = {
         ),
         damping("c_nominal", "c_nom", 0.5, low=-1e4, high=1e4, meaning="nominal damping coefficient"),
         damping("c_high", "c_high", 15.0, low=-1e4, high=1e4, meaning="high damping coefficient"),
+        Param(
+            name="dampings",
+            symbol="c",
+            default=(),
+            unit="N s/m",
+            low=-1e4,
+            high=1e4,
+            items=(1, 6),
+            default_from=("c_low", "c_nominal", "c_high"),
+            meaning="the dampings compared at the resonant frequency (none given: c_low, c_nominal and c_high)",
+        ),  # fmt: skip
         count(
             "n_points", "N_pts", 5001, low=2, high=min(200_001, N_POINTS_MAX), meaning="output samples over the window"
         ),
@@ -222,9 +233,10 @@ def paper_window(p: dict) -> None:
             f"t_end = {t_end!r} s holds {periods:.0f} periods of the fastest frequency ({fastest:.4g} rad/s, "
             f"from m = {m!r} kg, k = {k!r} N/m and the forcing): allowed at most {MAX_PERIODS}"
         )
-    dampings = [x for x in map(p.get, ("c_low", "c_nominal", "c_high")) if x is not None]
-    for name in ("c_low", "c_nominal", "c_high"):
-        c = p.get(name)
+    named = {n: p.get(n) for n in ("c_low", "c_nominal", "c_high")}
+    named |= {f"dampings[{i}]": x for i, x in enumerate(p.get("dampings") or ())}
+    dampings = [x for x in named.values() if x is not None]
+    for name, c in named.items():
         if c is not None and c < 0 and -c / (2 * m) * t_end > MAX_GROWTH:
             raise ParameterError(
                 f"{name} = {c!r} N s/m with m = {m!r} kg over t_end = {t_end!r} s: the negative damping grows the "

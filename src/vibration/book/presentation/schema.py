@@ -41,9 +41,13 @@ class Param:
     low_open: bool = False
     choices: tuple = ()  # for text parameters: the allowed values
     path: bool = False  # a text parameter naming a folder (the default may be relative to the project)
+    items: tuple[int, int] | None = None  # a list of numbers: how many it holds at least and at most
+    default_from: tuple[str, ...] = ()  # a list left empty takes the values of these parameters
 
     def check(self, value):
         """The value, converted and range-checked, or :class:`ParameterError`."""
+        if self.items is not None:
+            return self._check_list(value)
         if self.path:
             if not isinstance(value, str) or not value.strip() or len(value) > 4096 or "\0" in value:
                 raise ParameterError(f"{self.name} = {value!r:.80} is not a path: allowed a folder name")
@@ -62,6 +66,27 @@ class Param:
         if isinstance(self.default, int) and not isinstance(self.default, bool):
             return check_int(self.name, value, low=int(self.low), high=int(self.high))
         return check_real(self.name, value, low=self.low, low_open=self.low_open, high=self.high, unit=self.unit)
+
+    def _check_list(self, value) -> tuple:
+        """A list of numbers: its length within ``items``, each element in range, no two equal; a tuple."""
+        fewest, most = self.items
+        if isinstance(value, str | bytes) or not hasattr(value, "__len__"):
+            raise ParameterError(f"{self.name} = {value!r:.80} is not a list: allowed a list such as [0.1, 0.5, 15]")
+        if not (fewest <= len(value) <= most) and not (len(value) == 0 and self.default_from):
+            raise ParameterError(
+                f"{self.name} holds {len(value)} values: allowed {fewest} to {most}"
+                + (" (or none, for the default)" if self.default_from else "")
+            )
+        out = tuple(
+            check_real(f"{self.name}[{i}]", x, low=self.low, low_open=self.low_open, high=self.high, unit=self.unit)
+            for i, x in enumerate(value)
+        )
+        for i, x in enumerate(out):
+            if x in out[:i]:
+                raise ParameterError(
+                    f"{self.name}[{i}] = {x!r} {self.unit} repeats {self.name}[{out.index(x)}]: allowed distinct values"
+                )
+        return out
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -135,7 +160,7 @@ class Schema:
         def as_dict(rec) -> dict:
             return {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
 
-        types = {str: str, int: int, float: float, bool: bool}
+        types = {str: str, int: int, float: float, bool: bool, tuple: tuple}
         cls = dataclasses.make_dataclass(
             name,
             [(p.name, types[type(p.default)], field(default=p.default)) for p in self.params],
@@ -167,6 +192,11 @@ class Schema:
                 ) from None
             out[name] = param.check(value)
         full = self.defaults() | out
+        for p in self.params:  # an empty list with a default source takes those parameters' values
+            if p.default_from and not full[p.name]:
+                full[p.name] = p.check([full[n] for n in p.default_from])
+                if p.name in out:
+                    out[p.name] = full[p.name]
         for rule in self.together:
             rule(full)
         return out

@@ -129,6 +129,22 @@ CASES: dict[str, dict] = {
 }
 
 
+#: Colours of a list of cases by position (a chapter's dampings): the paper's three dampings keep their colours
+#: (light vermillion, nominal blue, heavy green) and up to three more follow.
+SERIES = ("vermillion", "blue", "bluish green", "reddish purple", "sky blue", "grey")
+
+
+def series_style(i: int) -> dict:
+    """Matplotlib keywords of the ``i``-th case of a list (solid lines, :data:`SERIES` colours).
+
+    >>> series_style(0), series_style(2)
+    ({'color': '#D55E00', 'linestyle': '-'}, {'color': '#009E73', 'linestyle': '-'})
+    """
+    if not 0 <= i < len(SERIES):
+        raise KeyError(f"case {i} of a list: allowed 0 to {len(SERIES) - 1}")
+    return {"color": OKABE_ITO[SERIES[i]], "linestyle": "-"}
+
+
 def case_style(name: str, marker: bool = False) -> dict:
     """Matplotlib keywords (``color``, ``linestyle`` and, when ``marker``, ``marker``) of a case of :data:`CASES`.
 

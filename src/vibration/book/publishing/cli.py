@@ -33,6 +33,16 @@ def convert(name: str, text: str, type_name: str):
         if not math.isfinite(value):
             raise ParameterError(f"{name} = {text!r} is not finite: allowed a finite real number")
         return value
+    if type_name == "list":
+        import json
+
+        try:
+            value = json.loads(text)
+        except ValueError:
+            value = None
+        if not isinstance(value, list):
+            raise ParameterError(f"{name} = {text!r} is not a list: allowed a JSON list such as '[0.1, 0.5, 15]'")
+        return value
     if type_name == "bool":
         low = text.lower()
         if low not in ("true", "false", "1", "0"):

@@ -91,7 +91,7 @@ def check_parameters(chapters: list[Chapter], pairs: list[tuple[str, str]]) -> d
         for ch in chapters:
             if name in ch.params and ch.name in schemas:
                 value = schemas[ch.name][name].check(value)  # each chapter's own range
-        values[name] = value
+        values[name] = list(value) if isinstance(value, tuple) else value  # papermill writes a list literal
     for ch in chapters:  # the chapter's rules that tie several of its parameters together
         if ch.name in schemas:
             schemas[ch.name].check({k: v for k, v in values.items() if k in ch.params})

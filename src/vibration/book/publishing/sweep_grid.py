@@ -199,6 +199,11 @@ def make_grid(chapter: str, grid: Mapping[str, Sequence | str], params: Mapping 
         if name not in names:
             raise ParameterError(f"parameter {name!r} is not one of {stem}'s: allowed {', '.join(names)}")
         param = schema[name]
+        if param.items is not None:
+            raise ParameterError(
+                f"parameter {name!r} is a list and cannot be swept: allowed a sweep of one of its elements' own "
+                f"parameters, or -p {name} with one list"
+            )
         if isinstance(spec, str):
             axes.append(parse_values(param, spec))
             continue
@@ -223,7 +228,7 @@ def make_grid(chapter: str, grid: Mapping[str, Sequence | str], params: Mapping 
             raise ParameterError(f"parameter {name!r} is both swept and fixed: allowed one of -g {name} or -p {name}")
         param = schema[name]
         if isinstance(value, str) and not param.choices:
-            value = convert(name, value, "int" if _is_int(param) else "float")
+            value = convert(name, value, "list" if param.items else "int" if _is_int(param) else "float")
         fixed_in[name] = param.check(value)
     fixed = schema.defaults() | schema.check(fixed_in)
     for a in axes:

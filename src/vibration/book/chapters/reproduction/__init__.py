@@ -2,7 +2,7 @@
 
 Modules: :mod:`.params` (the chapter's parameter schema), :mod:`.study` (the runs, one frozen
 record), :mod:`.figures` (the paper's Figures 1 and 2 redrawn, and the method's error) and
-:mod:`.text` (sentences, the key-results box and tables).
+:mod:`.tables` (its tables); the prose is in the notebook.
 """
 
 from vibration.book.chapters.reproduction.params import SCHEMA, Params

@@ -1,20 +1,22 @@
-"""Chapter 1's computation: the paper's scenarios run once by its method and once exactly.
+"""Chapter 1's computation: the paper's runs, once by its method and once exactly.
 
-:func:`reproduction_study` builds the paper's five scenarios from the chapter's parameters, runs
-each distinct one by the paper's method (RK45 at SciPy's default tolerances) and by the exact
-closed form on the same output times, and returns one frozen :class:`ReproductionStudy`. The
-figures (:mod:`.figures`), tables and sentences (:mod:`.text`) are functions of that record, so a
-run with other parameters never contradicts itself. No prose here.
+:func:`reproduction_study` builds the reference run (``omega_ref``), the resonance run (``omega_res``), both
+at ``c_nominal``, and one run at ``omega_res`` for each damping of the list ``dampings`` (the paper's
+0.1, 0.5 and 15 N s/m by default); it runs each distinct one by the paper's method (RK45 at SciPy's default
+tolerances) and by the exact closed form on the same output times, and returns one frozen
+:class:`ReproductionStudy`. The figures and tables are functions of that record.
 
 Examples
 --------
 >>> st = reproduction_study(n_points=1001)
->>> [st.cases[s].regime for s in ("damping_low", "damping_nominal", "damping_high")]
+>>> [st.cases[s].regime for s in st.dampings]
 ['underdamped', 'underdamped', 'overdamped']
->>> st.cases["damping_low"].settles
-False
+>>> [st.name(s) for s in st.dampings]
+['c = 0.1 N s/m', 'c = 0.5 N s/m', 'c = 15 N s/m']
 >>> [list(run) for run in st.runs]
-[['reference'], ['resonance', 'damping_nominal'], ['damping_low'], ['damping_high']]
+[['reference'], ['resonance', 'damping_1'], ['damping_0'], ['damping_2']]
+>>> reproduction_study(n_points=1001, dampings=[0.1, 2.0]).dampings
+('damping_0', 'damping_1')
 """
 
 from __future__ import annotations
@@ -25,15 +27,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from vibration.book.chapters.reproduction.params import Params
-from vibration.book.presentation.findings import same_run, scenarios_of
+from vibration.book.presentation.findings import same_run
+from vibration.book.presentation.narrative import g
 from vibration.physics.exact import Response, exact_response, steady_state
 from vibration.physics.frequency import settling_time
-from vibration.physics.model import N_POINTS_MAX, check_int
+from vibration.physics.model import N_POINTS_MAX, Oscillator, SineForce, check_int
 from vibration.physics.numerics import simulate
 from vibration.physics.paper import Scenario
-
-#: The three dampings at the resonant frequency (the paper's Figure 2), in its order.
-DAMPING_IDS = ("damping_low", "damping_nominal", "damping_high")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -84,6 +84,19 @@ class ReproductionStudy:
     cases: dict  # scenario id -> CaseRun
     runs: tuple  # the distinct runs: tuples of scenario ids that are one computation
 
+    dampings: tuple  # the ids of the damping runs at the resonant frequency, in the list's order
+
+    def name(self, sid: str) -> str:
+        """A run's name: "reference", "resonance", or its damping ("c = 0.1 N s/m")."""
+        return f"c = {g(self.cases[sid].c)} N s/m" if sid in self.dampings else sid
+
+    def run_name(self, sid: str) -> str:
+        """The name of ``sid``'s run: "resonance (c = 0.5 N s/m)" when a damping's run is the resonance run."""
+        run = self.run_of(sid)
+        if len(run) == 1:
+            return self.name(sid)
+        return f"{self.name(run[0])} ({', '.join(self.name(s) for s in run[1:])})"
+
     @property
     def t_end(self) -> float:
         """End of the window, s."""
@@ -101,7 +114,12 @@ class ReproductionStudy:
     @property
     def largest(self) -> CaseRun:
         """The damping case with the largest peak |x| in the window."""
-        return max((self.cases[s] for s in DAMPING_IDS), key=lambda f: f.peak_x)
+        return max((self.cases[s] for s in self.dampings), key=lambda f: f.peak_x)
+
+    @property
+    def lightest(self) -> CaseRun:
+        """The damping case with the smallest damping coefficient."""
+        return min((self.cases[s] for s in self.dampings), key=lambda f: f.c)
 
     @property
     def ratio(self) -> float:
@@ -151,8 +169,30 @@ def reproduce(scenarios: dict[str, Scenario], n_points: int, params: Params) -> 
             runs[runs.index(twin)] = (*twin, sid)
     cases = {sid: _case(sc, paper[sid], exact[sid]) for sid, sc in scenarios.items()}
     return ReproductionStudy(
-        params=params, scenarios=dict(scenarios), paper=paper, exact=exact, cases=cases, runs=tuple(runs)
-    )
+        params=params, scenarios=dict(scenarios), paper=paper, exact=exact, cases=cases, runs=tuple(runs),
+        dampings=tuple(s for s in scenarios if s.startswith("damping_")),
+    )  # fmt: skip
+
+
+def scenarios(p: Params) -> dict[str, Scenario]:
+    """The reference and resonance runs at ``c_nominal``, then one run per damping of ``p.dampings`` at resonance."""
+    rows = [("reference", "Reference case (far from resonance)", "", p.c_nominal, p.omega_ref),
+            ("resonance", "Resonance case", "Figure 1", p.c_nominal, p.omega_res)]  # fmt: skip
+    rows += [(f"damping_{i}", f"Damping c = {c!r} N s/m at resonance", "Figure 2", c, p.omega_res)
+             for i, c in enumerate(p.dampings)]  # fmt: skip
+    return {
+        sid: Scenario(
+            scenario_id=sid,
+            label=label,
+            figure=fig,
+            oscillator=Oscillator(m=p.m, c=c, k=p.k),
+            force=SineForce(F0=p.F0, omega=w),
+            t_end=p.t_end,
+            x0=0.0,
+            v0=0.0,
+        )  # fmt: skip
+        for sid, label, fig, c, w in rows
+    }
 
 
 def reproduction_study(params: Params | None = None, **values) -> ReproductionStudy:
@@ -166,4 +206,4 @@ def reproduction_study(params: Params | None = None, **values) -> ReproductionSt
         Frozen record of every run and finding the chapter shows.
     """
     p = params if params is not None else Params.from_values(values)
-    return reproduce(scenarios_of(p), p.n_points, p)
+    return reproduce(scenarios(p), p.n_points, p)
