@@ -193,8 +193,8 @@ class Schema:
             out[name] = param.check(value)
         full = self.defaults() | out
         for p in self.params:  # an empty list with a default source takes those parameters' values
-            if p.default_from and not full[p.name]:
-                full[p.name] = p.check([full[n] for n in p.default_from])
+            if p.default_from and not full[p.name]:  # equal sources count once (c_low = c_nominal is one damping)
+                full[p.name] = p.check(list(dict.fromkeys(full[n] for n in p.default_from)))
                 if p.name in out:
                     out[p.name] = full[p.name]
         for rule in self.together:

@@ -1,10 +1,10 @@
 """Figures of chapter 4, each a function of a :class:`FrequencyStudy` returning a :class:`Captioned` figure.
 
-The paper's three dampings keep the book's colours (:func:`vibration.book.presentation.style.case_style`):
-low damping vermillion, nominal blue, high bluish green. Captions name the panels from the figure's
-layout (:func:`panel_words`) and the colours and line styles actually drawn; each figure's remark says what
-it shows (curves that coincide, the largest value, how well a balance closes).
-"""
+The run's dampings take the book's colours by their place in the list
+(:func:`vibration.book.presentation.style.series_style`: the paper's three keep vermillion, blue and green).
+Captions name the panels from the figure's layout (:func:`panel_words`) and the colours and line styles
+actually drawn; each figure's remark says what it shows (curves that coincide, the largest value, how well a
+balance closes)."""
 
 from __future__ import annotations
 
@@ -14,11 +14,11 @@ import numpy as np
 from matplotlib.colors import LogNorm
 
 from vibration.book.chapters.frequency_response.study import TOL_CLOSED, FrequencyStudy
-from vibration.book.chapters.frequency_response.text import listing, num
 from vibration.book.presentation.captions import Captioned, panel_words
-from vibration.book.presentation.findings import case_name
-from vibration.book.presentation.style import COLOUR_WORDS, OKABE_ITO, case_style, figure, place_legend
+from vibration.book.presentation.numbers import sig as num
+from vibration.book.presentation.style import COLOUR_WORDS, OKABE_ITO, case_style, figure, place_legend, series_style
 from vibration.physics.exact import steady_state
+from vibration.physics.model import SineForce
 
 TWO_PI = 2.0 * math.pi
 
@@ -34,6 +34,23 @@ ENERGY_STYLE = {
     "D": {"color": OKABE_ITO["black"], "linestyle": "--"},
     "E": {"color": OKABE_ITO["grey"], "linestyle": "-"},
 }
+
+
+def listing(items: list[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``.
+
+    >>> listing(["c = 0.1 N s/m", "c = 0.5 N s/m"])
+    'c = 0.1 N s/m and c = 0.5 N s/m'
+    """
+    items = list(items)
+    if not items:
+        return ""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def style_of(case) -> dict:
+    """A damping's colour: its place in the list, or the nominal blue when the list leaves the nominal damping out."""
+    return series_style(case.case) if case.case >= 0 else case_style("c_nominal")
 
 
 def _hz_axis(ax) -> None:
@@ -56,31 +73,30 @@ def coinciding(study: FrequencyStudy) -> list[tuple[str, str]]:
 
 
 def _marks(study: FrequencyStudy):
-    """The paper's operating points with a steady state: (name, omega rad/s, c N s/m, magnification, phase rad)."""
-    out, seen = [], set()
-    for sid, sc in study.scenarios.items():
-        key = (sc.force.omega, sc.oscillator.c)
-        if sc.oscillator.c <= 0 or key in seen:
+    """The operating points with a steady state: the reference run (nominal damping at ω_ref) and each damping
+    at ω_res, as (name, omega rad/s, c N s/m, magnification, phase rad)."""
+    p, out = study.params, []
+    points = [("reference", p.omega_ref, study.nominal.osc)] + [(c.name, p.omega_res, c.osc) for c in study.cases]
+    for name, w, osc in points:
+        if osc.c <= 0:
             continue
-        ss = steady_state(sc.oscillator, sc.force)
-        if not math.isfinite(ss.magnification):
-            continue
-        seen.add(key)
-        out.append((case_name(sid), sc.force.omega, sc.oscillator.c, ss.magnification, ss.phase))
+        ss = steady_state(osc, SineForce(F0=p.F0, omega=w))
+        if math.isfinite(ss.magnification):
+            out.append((name, w, osc.c, ss.magnification, ss.phase))
     return out
 
 
 def _dampings_words(study: FrequencyStudy, drawn) -> str:
-    return listing([f"{c.name} (c = {num(c.c)} N s/m, {COLOUR_WORD[case_style(c.case)['color']]})" for c in drawn])
+    return listing([f"damping {c.name} ({COLOUR_WORD[style_of(c)['color']]})" for c in drawn])
 
 
 def response_figure(study: FrequencyStudy) -> Captioned:
-    """Magnification (log-log) and phase lag against the forcing frequency for the three dampings."""
+    """Magnification (log-log) and phase lag against the forcing frequency for the run's dampings."""
     fig, (ax_m, ax_p) = figure(2, 1, height=6.2, sharex=True)
     drawn = [c for c in study.cases if c.steady]
     for c in drawn:
-        style = case_style(c.case)
-        label = f"{c.name}: $c$ = {num(c.c)} N s/m"
+        style = style_of(c)
+        label = f"$c$ = {num(c.c)} N s/m"
         ax_m.loglog(study.omegas, c.magnification, label=label, **style)
         ax_p.semilogx(study.omegas, np.degrees(c.phase), label=label, **style)
     marks = _marks(study)
@@ -102,15 +118,13 @@ def response_figure(study: FrequencyStudy) -> Captioned:
     caption = (
         f"Magnification ({top}, logarithmic axes; forcing frequency in rad/s below, Hz above) and phase lag "
         f"({bottom}) of the {_dampings_words(study, drawn)}; the natural frequency "
-        f"$\\omega_n$ = {num(study.omega_n)} rad/s dotted; the paper's {len(marks)} operating points circled."
+        f"$\\omega_n$ = {num(study.omega_n)} rad/s dotted; the reference run and each damping at the resonant forcing "
+        "circled."
     )
     remark = " ".join(f"The {a} and {b} curves coincide to within 1 %." for a, b in coinciding(study))
     missing = [c for c in study.cases if not c.steady]
     if missing:
-        caption += (
-            f" The {listing([c.name for c in missing])} (c = {listing([num(c.c) for c in missing])} N s/m) has no "
-            "steady state and is not drawn."
-        )
+        caption += f" The damping {listing([c.name for c in missing])} has no steady state and is not drawn."
     peaks = [c for c in drawn if c.omega_peak is not None and math.isfinite(c.M_peak or math.inf)]
     alt = (
         f"Two plots against forcing frequency: the magnification of {len(drawn)} dampings on log axes"
@@ -131,7 +145,7 @@ def decomposition_figure(study: FrequencyStudy) -> Captioned:
     d = study.decomposition
     t_end = study.params.t_end
     fig, (ax, ax_h) = figure(2, 1, height=4.8, sharex=True)
-    ax.plot(study.t, study.total.x, lw=1.0, label=r"total $x(t)$", **case_style(case.case))
+    ax.plot(study.t, study.total.x, lw=1.0, label=r"total $x(t)$", **style_of(case))
     ax.plot(study.t, study.steady, lw=0.8, label=r"steady state $x_\mathrm{ss}(t)$", **case_style("exact"))
     ax_h.plot(study.t, study.transient.x, lw=0.9, color=OKABE_ITO["grey"], linestyle="-")
     settled = d.t_s <= t_end
@@ -145,7 +159,7 @@ def decomposition_figure(study: FrequencyStudy) -> Captioned:
     ax.set_ylim(lo, hi + 0.4 * (hi - lo))
     place_legend(ax, ncols=2)
     top, bottom = panel_words(fig)
-    colour = COLOUR_WORD[case_style(case.case)["color"]]
+    colour = COLOUR_WORD[style_of(case)["color"]]
     remark = (
         "The total displacement and its steady state coincide to within 2 % of the steady amplitude from the "
         f"settling time t = {num(d.t_s, 3)} s on."
@@ -233,7 +247,7 @@ def design_figure(study: FrequencyStudy) -> Captioned:
         f"Largest displacement in the {num(study.params.t_end)} s window from rest on a {dm.dampings.size} × "
         f"{dm.omegas.size} grid of forcing frequency and damping (logarithmic damping axis and colour scale)"
         + (f"; the natural frequency $\\omega_n$ = {num(study.omega_n)} rad/s dotted" if shown else "")
-        + (f"; the paper's {len(marks)} operating points inside the grid circled" if marks else "")
+        + ("; the operating points inside the grid circled" if marks else "")
         + "."
     )
     remark = f"The largest displacement on the grid, {num(peak)} m, is at ω = {num(w)} rad/s and c = {num(c, 3)} N s/m."

@@ -12,7 +12,7 @@ from vibration.book.presentation.keyresults import KeyResult, KeyResults
 
 def _nominal(study):
     """The nominal-damping case of the study."""
-    return next(c for c in study.cases if c.case == "c_nominal")
+    return study.nominal
 
 
 def _magnification(study) -> float:

@@ -1,17 +1,17 @@
 """Chapter 4's computation, run once: frequency response, damping estimates, decomposition, energy, design map.
 
-:func:`frequency_response_study` evaluates the magnification and phase lag of the paper's three
-dampings, their resonant peaks and exact half-power bands, three independent damping-ratio
-estimates, the split of the resonance case into steady state and transient, its energy balance, and
-the window's peak displacement over a grid of forcing frequency and damping. The figures, tables and
-sentences only read the one :class:`FrequencyStudy` it returns, so a run with other parameters never
+:func:`frequency_response_study` evaluates the magnification and phase lag of the run's dampings (the list
+``dampings``, by default the paper's three), their resonant peaks and exact half-power bands, three
+independent damping-ratio estimates, the split of the resonance case into steady state and transient, its
+energy balance, and the window's peak displacement over a grid of forcing frequency and damping. The figures
+and tables only read the one :class:`FrequencyStudy` it returns, so a run with other parameters never
 contradicts itself. Differences at rounding level are kept as :class:`Check` records.
 
 Examples
 --------
 >>> st = frequency_response_study(n_points=2001, n_omega=20, n_damping=10)
 >>> [(c.name, c.inside) for c in st.cases]
-[('low damping', True), ('nominal damping', True), ('high damping', None)]
+[('c = 0.1 N s/m', True), ('c = 0.5 N s/m', True), ('c = 15 N s/m', None)]
 >>> round(st.decomposition.X, 4), all(c.ok for c in st.checks)      # m
 (2.2371, True)
 >>> st.design.peaks.shape, [round(p, 3) for p in st.design.at_res]     # m
@@ -26,16 +26,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from vibration.book.chapters.frequency_response.params import Params
-from vibration.book.presentation.findings import case_name, scenarios_of
+from vibration.book.presentation.findings import scenarios_of
+from vibration.book.presentation.numbers import sig
 from vibration.physics import frequency as fr
 from vibration.physics.audit import half_power_band, resonant_peak
 from vibration.physics.exact import Response, exact_response, steady_state
 from vibration.physics.model import Oscillator, ParameterError, SineForce
 from vibration.physics.numerics import simulate
 from vibration.physics.paper import Scenario
-
-#: The three dampings of the chapter: scenario id -> the book's case name (its colour and line style).
-DAMPINGS = {"damping_low": "c_low", "damping_nominal": "c_nominal", "damping_high": "c_high"}
 
 #: Samples of the magnification curve within ±20 ζ ωₙ of the peak from which the half-power points are read
 #: (the chapter's prose states this count).
@@ -73,8 +71,8 @@ class Check:
 class DampingCase:
     """One of the paper's three dampings at the run's forcing frequencies (SI units, magnifications in 1)."""
 
-    case: str  # the book's case name: "c_low", "c_nominal" or "c_high"
-    name: str  # "low damping", ...
+    case: int  # its place in the run's list of dampings (its colour), -1 for the nominal damping outside the list
+    name: str  # "c = 0.1 N s/m"
     osc: Oscillator  # kg, N s/m, N/m
     omega_ref: float  # reference forcing frequency, rad/s
     omega_res: float  # the paper's "resonant" forcing frequency, rad/s
@@ -219,6 +217,7 @@ class FrequencyStudy:
     design: DesignMap
     checks: tuple[Check, ...]
     controls: tuple[Control, ...]  # nominal damping at omega_ref and omega_res (empty when c_nominal <= 0)
+    nominal_case: DampingCase | None = None  # the nominal damping, when the list of dampings leaves it out
 
     @property
     def omega_n(self) -> float:
@@ -232,8 +231,8 @@ class FrequencyStudy:
 
     @property
     def nominal(self) -> DampingCase:
-        """The nominal damping case."""
-        return self.cases[1]
+        """The nominal damping case (the resonance run's damping, in the list or not)."""
+        return next((c for c in self.cases if c.c == self.params.c_nominal), self.nominal_case)
 
     def energy_residual(self, index: int) -> float:
         """Worst |W − D − ΔE| over the window relative to the largest |W|, of energy balance ``index``."""
@@ -245,8 +244,7 @@ def _mag(osc: Oscillator, w: float) -> float:
     return float(fr.magnification(osc, [w])[0])
 
 
-def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[DampingCase, list[Check]]:
-    osc = sc.oscillator
+def _case(osc: Oscillator, case: int, p: Params, omegas: np.ndarray) -> tuple[DampingCase, list[Check]]:
     z, wn = osc.damping_ratio, osc.natural_frequency
     w_pk, m_pk = resonant_peak(osc)
     lo, hi = half_power_band(osc)
@@ -263,7 +261,7 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
             osc, SineForce(F0=0.0, omega=0.0), t_free, n_points=20001, x0=1.0, method="DOP853", rtol=1e-10, atol=1e-13
         )
         zeta_ld = fr.log_decrement(decay.t, decay.x)[1]
-    name = case_name(sc.scenario_id)
+    name = f"c = {sig(osc.c)} N s/m"
     row = DampingCase(
         case=case,
         name=name,
@@ -286,7 +284,7 @@ def _case(sc: Scenario, case: str, p: Params, omegas: np.ndarray) -> tuple[Dampi
         for est, what in ((zeta_hp, "half-power points"), (zeta_ld, "log decrement"))
         if est is not None
     ]
-    ss = steady_state(osc, sc.force)
+    ss = steady_state(osc, SineForce(F0=p.F0, omega=p.omega_res))
     if math.isfinite(ss.magnification):
         checks.append(
             Check(
@@ -345,10 +343,13 @@ def frequency_response_study(params: Params | None = None, **values) -> Frequenc
     wn = scenarios["resonance"].oscillator.natural_frequency
     omegas = np.geomspace(wn / SPAN, wn * SPAN, N_CURVE)
     cases, checks = [], []
-    for sid, case in DAMPINGS.items():
-        row, chk = _case(scenarios[sid], case, p, omegas)
+    for i, c in enumerate(p.dampings):
+        row, chk = _case(Oscillator(m=p.m, c=c, k=p.k), i, p, omegas)
         cases.append(row)
         checks += chk
+    nominal_case = None
+    if p.c_nominal not in p.dampings:
+        nominal_case, _ = _case(Oscillator(m=p.m, c=p.c_nominal, k=p.k), -1, p, omegas)
     res = scenarios["resonance"]
     osc, force = res.oscillator, res.force
     t = np.linspace(0.0, p.t_end, p.n_points)
@@ -394,5 +395,6 @@ def frequency_response_study(params: Params | None = None, **values) -> Frequenc
         energy_t=fine,
         design=design,
         checks=tuple(checks + design_checks),
-        controls=tuple(control(cases[1].osc, w) for w in (p.omega_ref, p.omega_res)) if cases[1].steady else (),
+        nominal_case=nominal_case,
+        controls=tuple(control(osc, w) for w in (p.omega_ref, p.omega_res)) if osc.c > 0 else (),
     )

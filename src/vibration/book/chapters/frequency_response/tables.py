@@ -82,7 +82,7 @@ def dampings_table(study: FrequencyStudy) -> Table:
             """
         ),
         caption=(
-            "The three dampings: damping ratio ζ, regime, quality factor Q = 1/(2ζ), the peak of the "
+            "The dampings compared: damping ratio ζ, regime, quality factor Q = 1/(2ζ), the peak of the "
             f"magnification M = |X|/(F_0/k) and its value at ω_ref = {g(p.omega_ref)} rad/s and "
             f"ω_res = {g(p.omega_res)} rad/s."
         ),
