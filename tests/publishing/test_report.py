@@ -327,3 +327,16 @@ def test_a_chapter_without_a_schema_runs_but_takes_no_p_value(tmp_path):
     assert report.check_parameters(chapters, []) == {}
     with pytest.raises(report.ParameterError, match="01_spin has no parameter schema"):
         report.check_parameters(chapters, [("seconds", "1")])
+
+
+def test_an_empty_list_parameter_is_shown_as_the_values_it_stands_for(chapters):
+    ch1 = next(ch for ch in chapters if ch.name == "01_reproduction")
+
+    def dampings(values):
+        return next(p for p in report.chapter_parameters(ch1, values) if p.name == "dampings")
+
+    assert dampings({}).value == [0.1, 0.5, 15.0] and not dampings({}).changed
+    moved = dampings({"c_low": 0.05})
+    assert moved.value == [0.05, 0.5, 15.0] and not moved.changed  # c_low is the changed parameter
+    given = dampings({"dampings": [1.0, 2.0]})
+    assert given.value == [1.0, 2.0] and given.changed

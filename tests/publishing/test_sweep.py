@@ -293,3 +293,12 @@ def test_a_grid_below_zero_reaches_the_grid_parser(tmp_path, capsys):
     err = capsys.readouterr().err
     assert status == 2 and "expected 2 arguments" not in err
     assert "c_nominal grid '-1:x:3'" in err and "allowed" in err, err
+
+
+def test_a_list_parameter_is_refused_as_an_axis_and_taken_as_a_fixed_value():
+    with pytest.raises(ParameterError, match=r"parameter 'dampings' is a list and cannot be swept"):
+        sw.make_grid("04_frequency_response", {"dampings": "1:2:3"})
+    grid = sw.make_grid("04_frequency_response", {"omega_res": "4:5:2"}, params={"dampings": "[0.3, 1]"})
+    assert grid.fixed["dampings"] == (0.3, 1.0)
+    with pytest.raises(ParameterError, match=r"dampings\[1\] = 0.3 N s/m repeats dampings\[0\]"):
+        sw.make_grid("04_frequency_response", {"omega_res": "4:5:2"}, params={"dampings": "[0.3, 0.3]"})

@@ -118,10 +118,15 @@ def chapter_parameters(ch: Chapter, values: dict) -> list:
             param = schema[name]
             meaning, unit, symbol = param.meaning or meaning, param.unit, param.symbol
         is_paper = name in paper and not differs(default, paper[name])
+        value = values.get(name, default)
+        if schema is not None and name in schema.names() and schema[name].default_from and not value:
+            # an empty list stands for the values of its sources: show those (c_low, c_nominal, c_high)
+            full = schema.defaults() | {k: v for k, v in values.items() if k in schema.names()}
+            value = default = list(dict.fromkeys(full[n] for n in schema[name].default_from))
         out.append(
             Parameter(
                 name=name,
-                value=values.get(name, default),
+                value=value,
                 default=default,
                 meaning=meaning,
                 unit=unit,

@@ -22,6 +22,8 @@ def _value_text(value) -> str:
     """A parameter value in the book's number format (×10ⁿ, true minus), to 6 significant figures."""
     from ..presentation.tables import fmt
 
+    if isinstance(value, list | tuple):  # a list parameter: its numbers, comma-separated
+        return ", ".join(_value_text(float(v)) for v in value)
     return fmt(value, 6) if isinstance(value, float) else str(value)
 
 
