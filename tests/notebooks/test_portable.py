@@ -20,7 +20,7 @@ from conftest import nbval_sanitize
 from nbval_numeric import MARK, mismatches, within
 
 from vibration.book.chapters.solver_accuracy.study import MACHINE_DEPENDENT, solver_accuracy_study
-from vibration.book.chapters.solver_accuracy.text import ERROR_FACTOR, NFEV_RTOL, ladder_table
+from vibration.book.chapters.solver_accuracy.tables import ERROR_FACTOR, NFEV_RTOL, ladder_table
 from vibration.book.presentation.tables import Approx, Column, Table
 
 ROOT = Path(__file__).resolve().parents[2]

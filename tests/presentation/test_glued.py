@@ -68,3 +68,9 @@ def test_the_comparison_accepts_a_glued_number_within_its_tolerance_and_reports_
     assert far["data"] != ref["data"]  # left for strict nbval to report too
     plain_ref, plain_new = _record(1.0, "1", None), _record(1.5, "1.5", None)
     assert settle_glued([plain_new], [plain_ref]) == [] and plain_new["data"] != plain_ref["data"]
+
+
+def test_a_count_is_grouped_as_the_book_writes_counts(shown):
+    assert glued.count("n", 15001) == "15\u202f001" and glued.count("m", 4526) == "4526"  # five digits and up
+    glued.count("k", 11804, rtol=0.25)
+    assert shown[-1][2] == {"vibration": {"value": 11804.0, "tol": "r0.25"}}

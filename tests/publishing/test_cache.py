@@ -48,9 +48,9 @@ def test_imports_are_read_from_the_code_cells(tmp_path):
 
 
 def test_the_closure_holds_what_a_module_imports_and_nothing_else(graph):
-    closure = import_closure({"vibration.book.chapters.solver_accuracy.text"}, graph)
+    closure = import_closure({"vibration.book.chapters.solver_accuracy.tables"}, graph)
     assert {
-        "vibration.book.chapters.solver_accuracy.text",
+        "vibration.book.chapters.solver_accuracy.tables",
         "vibration.book.chapters.solver_accuracy.study",
         "vibration.book.presentation.tables",
         "vibration.physics.exact",

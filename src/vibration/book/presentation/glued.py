@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 
 from .narrative import g
-from .numbers import Approx
+from .numbers import Approx, integer
 
 #: Longest verdict a chapter may glue, in words: anything longer belongs in the notebook's markdown.
 PHRASE_WORDS = 12
@@ -49,6 +49,14 @@ def number(name: str, value: float, digits: int = 4, **tolerance: float) -> str:
         raise ValueError(f"glued number {name!r} is nan: a chapter states why a quantity is missing, in words")
     shown = text(value, digits)
     meta = {"vibration": {"value": value, "tol": Approx(value=value, **tolerance).tolerance()}} if tolerance else None
+    _glue(name, shown, meta)
+    return shown
+
+
+def count(name: str, n: int, **tolerance: float) -> str:
+    """Glue a count under ``name`` in the book's grouped form (``5 001``); ``tolerance`` as for :func:`number`."""
+    shown = integer(n)
+    meta = {"vibration": {"value": float(n), "tol": Approx(value=n, **tolerance).tolerance()}} if tolerance else None
     _glue(name, shown, meta)
     return shown
 

@@ -59,6 +59,18 @@ def g(value: float, digits: int = 4) -> str:
 fixed = column
 
 
+def listing(items: list[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``.
+
+    >>> listing(["c = 0.1 N s/m", "c = 0.5 N s/m"])
+    'c = 0.1 N s/m and c = 0.5 N s/m'
+    """
+    items = list(items)
+    if not items:
+        return ""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
 def parameters_sentence(**values: float) -> str:
     """Which of the paper's parameters this run changed (keyword arguments: name = value).
 

@@ -15,6 +15,7 @@ from matplotlib.colors import LogNorm
 
 from vibration.book.chapters.frequency_response.study import TOL_CLOSED, FrequencyStudy
 from vibration.book.presentation.captions import Captioned, panel_words
+from vibration.book.presentation.narrative import listing
 from vibration.book.presentation.numbers import sig as num
 from vibration.book.presentation.style import COLOUR_WORDS, OKABE_ITO, case_style, figure, place_legend, series_style
 from vibration.physics.exact import steady_state
@@ -34,18 +35,6 @@ ENERGY_STYLE = {
     "D": {"color": OKABE_ITO["black"], "linestyle": "--"},
     "E": {"color": OKABE_ITO["grey"], "linestyle": "-"},
 }
-
-
-def listing(items: list[str]) -> str:
-    """``a``, ``a and b``, ``a, b and c``.
-
-    >>> listing(["c = 0.1 N s/m", "c = 0.5 N s/m"])
-    'c = 0.1 N s/m and c = 0.5 N s/m'
-    """
-    items = list(items)
-    if not items:
-        return ""
-    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
 def style_of(case) -> dict:

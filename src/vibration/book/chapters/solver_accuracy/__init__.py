@@ -1,7 +1,7 @@
 """Chapter 3, solver accuracy: how good is the paper's RK45, and what does accuracy cost?
 
 Modules: :mod:`.params` (the chapter's parameter schema), :mod:`.study` (every run, once, in one
-frozen record), :mod:`.figures` (captioned figures) and :mod:`.text` (tables, sentences, key results).
+frozen record), :mod:`.figures` (captioned figures) and :mod:`.tables`; the prose is in the notebook.
 """
 
 from vibration.book.chapters.solver_accuracy.params import SCHEMA, Params

@@ -11,9 +11,10 @@ import numpy as np
 from matplotlib.ticker import LogFormatterSciNotation, LogLocator
 
 from vibration.book.chapters.solver_accuracy.study import LATE, MACHINE_DEPENDENT, SolverStudy
-from vibration.book.chapters.solver_accuracy.text import listing, num
 from vibration.book.presentation.captions import Captioned, panel_words
+from vibration.book.presentation.narrative import listing
 from vibration.book.presentation.numbers import integer
+from vibration.book.presentation.numbers import sig as num
 from vibration.book.presentation.style import OKABE_ITO, case_style, figure, place_legend
 
 #: One colour and marker per method (the paper's RK45 in the nominal case's blue).
