@@ -69,3 +69,20 @@ def test_a_chapter_at_a_phones_width_has_no_axe_violations(browser, site):
 def test_every_page_has_no_axe_violations(browser, site, mode):
     found = [v for path in sorted(site.glob("*.html")) for v in violations(browser, path, mode)]
     assert not found, "\n".join(found)
+
+
+@pytest.mark.browser
+@pytest.mark.parametrize("scheme", ["light", "dark"])
+def test_a_page_follows_the_readers_light_or_dark_preference(browser, site, scheme):
+    """With no choice stored, a page opens in the operating system's preference (the theme's "auto" mode)."""
+    context = browser.new_context(color_scheme=scheme, viewport={"width": 1280, "height": 900})
+    try:
+        page = context.new_page()
+        page.goto((site / "01_reproduction.html").as_uri())
+        page.wait_for_load_state("load")
+        assert page.evaluate("document.documentElement.dataset.theme") == scheme
+        background = page.evaluate("getComputedStyle(document.body).backgroundColor")
+        rgb = [int(x) for x in background[background.index("(") + 1 : background.index(")")].split(",")[:3]]
+        assert (sum(rgb) / 3 > 128) == (scheme == "light"), background
+    finally:
+        context.close()

@@ -60,7 +60,7 @@ html_theme_options = {{
     "navbar_persistent": [],  # one search control: the sidebar's field (the header would repeat it)
     "extra_footer": {footer!r},
 }}
-html_context = {{"default_mode": "light"}}
+html_context = {{"default_mode": "auto"}}  # the reader's light or dark preference, until they choose
 numfig = True
 numfig_format = {{"figure": "Figure %s", "table": "Table %s", "code-block": "Listing %s", "section": "Section %s"}}
 nb_execution_mode = "off"
