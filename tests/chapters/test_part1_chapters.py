@@ -26,8 +26,8 @@ from vibration.book.chapters.claims_audit import claims_audit_study
 from vibration.book.chapters.claims_audit import text as audit_text
 from vibration.book.chapters.claims_audit.notation import cell, code_left, prose
 from vibration.book.chapters.overview import figures as front_figures
-from vibration.book.chapters.overview import overview_study, part1_findings
-from vibration.book.chapters.overview import text as front_text
+from vibration.book.chapters.overview import overview_study
+from vibration.book.chapters.overview import tables as front_text
 from vibration.book.chapters.reproduction import figures as rep_figures
 from vibration.book.chapters.reproduction import reproduction_study
 from vibration.book.chapters.reproduction import tables as rep_tables
@@ -68,7 +68,6 @@ def chapters(request):
         "audit rule": audit_text.verdict_rule_markdown(),
         "audit details": audit_text.claims_details_markdown(audit),
         "audit summary": audit_text.audit_summary(audit),
-        "front findings": front_text.findings_markdown(front),
     }
     tables = [
         rep_tables.findings_table(rep),
@@ -287,17 +286,14 @@ def test_audit_sentences_state_what_the_numbers_say(chapters):
             assert f"decays at {g(st.slowest_decay[c.scenario_id], 3)} 1/s" in summary
 
 
-def test_front_page_findings_state_what_the_numbers_say(chapters):
+def test_the_front_pages_stability_word_follows_the_poles(chapters):
     st = chapters["front"]
-    found = part1_findings(st)
-    assert 3 <= len(found) <= 5 and all(s.endswith(".") for s in found)
-    first, low = found[0], found[1]
-    if math.isfinite(st.x_res):
-        assert ("below the paper's 5 m" in first) == (st.x_res < 5.0)
-        assert f"{g(st.ratio, 3)} times" in first
-    word = "stable" if st.growth_low < 0 else "marginally stable" if st.growth_low == 0 else "unstable"
-    assert f"is {word}" in low
-    assert f"{st.verdicts['reproduced']} hold as written" in found[2]
+    p = st.params
+    poles = np.roots([p.m, p.c_low, p.k])
+    growth = float(np.max(poles.real))
+    assert st.growth_low == pytest.approx(growth, abs=1e-12)
+    word = "stable" if growth < -1e-12 else "unstable" if growth > 1e-12 else "marginally stable"
+    assert front_text.stability_word(st) == word
 
 
 # ----------------------------------------------------------------------------- the notation helpers

@@ -171,7 +171,7 @@ def bench_report() -> None:
 
 
 #: The module edited by the one-edit build (imported by chapter 5 alone): a comment is appended, then removed.
-EDITED = Path(__file__).resolve().parents[1] / "chapters" / "explore" / "text.py"
+EDITED = Path(__file__).resolve().parents[1] / "chapters" / "explore" / "tables.py"
 
 
 def one_edit(build):

@@ -3,9 +3,9 @@
 ``python -m vibration.report --new-chapter 13_topic`` writes
 
 * ``src/vibration/book/chapters/topic/`` with ``params.py`` (the parameter schema), ``study.py`` (pure
-  computation, a frozen record), ``text.py`` (a table and a sentence from the record);
-* ``notebooks/13_topic.ipynb`` (title, question, parameters cell matching the schema, one call per
-  table and sentence, versions);
+  computation, a frozen record), ``tables.py`` (a table from the record);
+* ``notebooks/13_topic.ipynb`` (title, question, parameters cell matching the schema, the prose in markdown
+  cells with the numbers glued from the code cells, one call per table, versions);
 * ``tests/chapters/topic/test_topic.py`` (the study against an independent closed form, the notebook's
   parameters against the schema).
 
@@ -93,7 +93,7 @@ def {topic}_study(params: Params | None = None, **values) -> {record}:
     return {record}(zeta=p.{prefix}zeta, r_peak=float(r[i]), peak=float(magnification[i]), peak_exact=exact)
 '''
 
-_TEXT = '''"""The chapter's sentences and tables, functions of the study's record."""
+_TABLES = '''"""The chapter's tables, functions of the study's record (the prose is in the notebook)."""
 
 from __future__ import annotations
 
@@ -106,12 +106,6 @@ def peak_table(st: {record}) -> Table:
     rows = [{{"what": "grid", "peak": st.peak}}, {{"what": "closed form", "peak": st.peak_exact}}]
     columns = [Column(key="what", header="method"), Column(key="peak", header="largest X/X_st", digits=4)]
     return Table(rows=rows, columns=columns, caption="The resonant peak.", name="tab-{topic}")
-
-
-def peak_sentence(st: {record}) -> str:
-    """What the table shows, from its numbers."""
-    gap = abs(st.peak / st.peak_exact - 1.0)
-    return f"At ζ = {{st.zeta:g}} the grid finds a peak of {{st.peak:.4g}}, {{100 * gap:.2g}} % from the closed form."
 '''
 
 _TEST = '''"""Chapter {stem}: the study against its closed form, the notebook against the schema."""
@@ -123,20 +117,22 @@ from pathlib import Path
 import pytest
 
 from vibration.book.chapters.{topic} import SCHEMA, {topic}_study
-from vibration.book.chapters.{topic}.text import peak_sentence, peak_table
+from vibration.book.chapters.{topic}.tables import peak_table
 
 
 @pytest.mark.parametrize("zeta", [0.01, 0.05, 0.3])
 def test_the_grid_peak_meets_the_closed_form(zeta):
     st = {topic}_study({prefix}zeta=zeta, {prefix}n_grid=100_001)
     assert st.peak == pytest.approx(st.peak_exact, rel=1e-3)
-    assert "%" in peak_sentence(st) and not re.search(r"\\bnan\\b", repr(peak_table(st)))
+    assert not re.search(r"\\bnan\\b", repr(peak_table(st)))
 
 
 def test_the_notebook_declares_the_schema():
-    nb = json.loads((Path(__file__).resolve().parents[3] / "notebooks" / "{stem}.ipynb").read_text(encoding="utf-8"))
+    path = Path(__file__).resolve().parents[3] / "notebooks" / "{stem}.ipynb"
+    nb = json.loads(path.read_text(encoding="utf-8"))
     cell = next(c for c in nb["cells"] if "parameters" in c["metadata"].get("tags", []))
-    assert {{line.split(":")[0] for line in "".join(cell["source"]).splitlines()}} == {{p.name for p in SCHEMA.params}}
+    declared = {{line.split(":")[0] for line in "".join(cell["source"]).splitlines()}}
+    assert declared == {{p.name for p in SCHEMA.params}}
 '''
 
 
@@ -164,17 +160,45 @@ def _notebook(stem: str, title: str, question: str, topic: str, prefix: str) -> 
     )
     cells.append(
         code(
-            "from IPython.display import Markdown, display\n\n"
-            f"from vibration.book.chapters.{topic} import {topic}_study\n"
-            f"from vibration.book.chapters.{topic}.text import peak_sentence, peak_table\n\n"
-            f"study = {topic}_study({prefix}zeta={prefix}zeta, {prefix}n_grid={prefix}n_grid)",
-            tags=("hide-input",),
+            f"from vibration.book.chapters.{topic} import Params, {topic}_study\n"
+            f"from vibration.book.chapters.{topic}.tables import peak_table\n"
+            "from vibration.book.presentation.glued import number\n\n"
+            "params = Params.from_namespace(globals())  # every value checked against its allowed range\n"
+            f"study = {topic}_study(params)",
+            tags=("remove-cell",),
         )
     )
-    cells.append(md("## The peak"))
-    cells.append(code("display(Markdown(peak_sentence(study)))\npeak_table(study)"))
+    cells.append(
+        code(
+            'number("zeta", study.zeta), number("peak", study.peak), number("peak_exact", study.peak_exact)\n'
+            'number("gap_pct", 100 * abs(study.peak / study.peak_exact - 1), 2)\n'
+            'print(f"grid peak {study.peak:.4g}, closed form {study.peak_exact:.4g}")'
+        )
+    )
+    cells.append(
+        md(
+            "**Key results.** At ζ = {glue:text}`zeta` the grid finds a peak magnification of {glue:text}`peak`, "
+            "{glue:text}`gap_pct` % from the closed form {glue:text}`peak_exact`."
+        )
+    )
+    cells.append(
+        md("## The peak\n\nThe magnification peaks near the natural frequency; its height falls as the damping grows.")
+    )
+    cells.append(code("peak_table(study)"))
+    cells.append(
+        md(
+            "## Summary: what a designer takes away\n\n"
+            "- Replace the template's model, study and words with the chapter's."
+        )
+    )
     # the versions the notebook ran with: shown in JupyterLab; the book lists its build's in an appendix
-    cells.append(code('import platform\n\nprint(f"python {platform.python_version()}")', tags=("remove-cell",)))
+    cells.append(
+        code(
+            "import platform\n\nimport vibration\n\n"
+            'print(f"python {platform.python_version()}, vibration {vibration.__version__}")',
+            tags=("remove-cell",),
+        )
+    )
     return {
         "cells": cells,
         "metadata": {
@@ -224,7 +248,7 @@ def new_chapter(
         package / "__init__.py": _INIT.format(**fill),
         package / "params.py": _PARAMS.format(**fill),
         package / "study.py": _STUDY.format(**fill),
-        package / "text.py": _TEXT.format(**fill),
+        package / "tables.py": _TABLES.format(**fill),
         root / "notebooks" / f"{stem}.ipynb": json.dumps(_notebook(stem, title, question, topic, prefix), indent=1)
         + "\n",
         root / "tests" / "chapters" / topic / f"test_{topic}.py": _TEST.format(**fill),
