@@ -23,7 +23,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from vibration.book.chapters.claims_audit import claims_audit_study
-from vibration.book.chapters.claims_audit import text as audit_text
+from vibration.book.chapters.claims_audit import tables as audit_text
 from vibration.book.chapters.claims_audit.notation import cell, code_left, prose
 from vibration.book.chapters.overview import figures as front_figures
 from vibration.book.chapters.overview import overview_study
@@ -32,7 +32,6 @@ from vibration.book.chapters.reproduction import figures as rep_figures
 from vibration.book.chapters.reproduction import reproduction_study
 from vibration.book.chapters.reproduction import tables as rep_tables
 from vibration.book.presentation.captions import CAPTION_WORDS, Captioned, caption_words, check_caption
-from vibration.book.presentation.narrative import g
 from vibration.book.presentation.style import case_style
 from vibration.physics.audit import verdict
 
@@ -63,17 +62,13 @@ def chapters(request):
         rep_figures.error_figure(rep),
         front_figures.headline_figure(front),
     ]
-    texts = {
-        "audit key": audit_text.key_results(audit),
-        "audit rule": audit_text.verdict_rule_markdown(),
-        "audit details": audit_text.claims_details_markdown(audit),
-        "audit summary": audit_text.audit_summary(audit),
-    }
+    texts = {}
     tables = [
         rep_tables.findings_table(rep),
         rep_tables.methods_table(rep),
         audit_text.claims_table(audit),
         audit_text.verdict_table(audit),
+        audit_text.reasons_table(audit),
         front_text.headline_table(front),
         front_text.verdict_table(front),
     ]
@@ -169,8 +164,8 @@ def _notebook_markdown(name: str) -> list[str]:
     "notebook, keys, figures, tables",
     [
         ("01_reproduction.ipynb", ("rep ",), (0, 1, 2), (0, 1)),
-        ("02_claims_audit.ipynb", ("audit ",), (), (2, 3, 6)),
-        ("00_overview.ipynb", ("front ",), (3,), (4, 5)),
+        ("02_claims_audit.ipynb", ("audit ",), (), (2, 3, 4, 7)),
+        ("00_overview.ipynb", ("front ",), (3,), (5, 6)),
     ],
     ids=["chapter 1", "chapter 2", "front page"],
 )
@@ -198,7 +193,7 @@ def test_no_code_notation_nan_or_inf_in_the_readers_text(chapters):
         assert not re.search(r"\b(nan|inf)\b", fig.caption + fig.alt), fig.name
     for table in chapters["tables"]:
         for row in table.cells():
-            for text in row:
+            for text in (t for t in row if not t.startswith("“")):  # the paper's words, quoted, stay as written
                 assert not re.search(r"\b(nan|inf)\b|^None$|_|\de[-+]?\d", text), (table.name, text)
 
 
@@ -266,24 +261,23 @@ def test_a_list_of_dampings_gives_one_run_column_and_row_each_at_the_closed_form
     assert len(rows) == len(st.runs) == 2 + len(dampings) - (p.c_nominal in dampings)
 
 
-def test_audit_sentences_state_what_the_numbers_say(chapters):
+def test_the_audits_counts_and_reasons_follow_its_verdicts(chapters):
     st = chapters["audit"]
-    key, summary, details = (chapters["texts"][k] for k in ("audit key", "audit summary", "audit details"))
-    for v, n in st.counts.items():
-        if n:
-            assert f"{n} {audit_text.VERDICT_PHRASE[v][0 if n == 1 else 1]}" in key
     judged = [c for c in st.claims if c.paper_method_value not in ("", None) and c.exact_value is not None]
     same = sum(verdict(c.kind, c.paper_value, c.paper_method_value, quantity=c.quantity.split(" [")[0]) == c.verdict
                for c in judged)  # fmt: skip
-    assert (f"all {len(judged)} claims" in key) == (same == len(judged))
-    # each claim's verdict in its paragraph, each quote once in the chapter, none in the summary
+    assert audit_text.solver_agreement(st)[:2] == (same, len(judged))
+    # one row per claim, each quoted once, with its verdict; a failed claim names its best reading
+    rows = {row["id"]: row for row in audit_text.reasons_table(st).rows}
     for c in st.claims:
-        assert re.search(rf"\*\*{c.claim_id}\*\* \(.*\): \*{c.verdict}\*\.", details), c.claim_id
-        assert details.count(f'"{c.quote}"') == 1, c.claim_id
-        assert c.quote not in summary
-    for c in st.with_verdict("physics contradicts"):
-        if c.exact_value is not None and "stability" in c.quantity and st.slowest_decay[c.scenario_id] > 0:
-            assert f"decays at {g(st.slowest_decay[c.scenario_id], 3)} 1/s" in summary
+        row = rows[c.claim_id]
+        assert row["verdict"] == c.verdict and c.quote in row["quote"]
+        assert isinstance(row["best"], str) == (c.verdict != "reproduced")
+    gap = audit_text.largest_gap(st)
+    numeric = [c for c in st.claims if c.verdict != "reproduced" and math.isfinite(c.factor) and c.factor > 0]
+    assert (gap is None) == (not numeric)
+    if gap is not None:
+        assert abs(math.log(gap.factor)) == max(abs(math.log(c.factor)) for c in numeric)
 
 
 def test_the_front_pages_stability_word_follows_the_poles(chapters):

@@ -1,10 +1,8 @@
-"""Chapter 2's sentences and tables, all from a :class:`ClaimsAuditStudy`.
+"""Chapter 2's tables and the audit's counts, all from a :class:`ClaimsAuditStudy`; the prose is in the notebook.
 
-The claims table (each claim's kind beside its value, the paper's method and the exact value
-with units, the verdict), the readings tested for each discrepancy, the verdict counts, each
-claim quoted with its reason, the key-results box and the summary. Symbols are typeset for the
-reader (:mod:`.notation`); a claim is quoted once, in its own paragraph; the summary draws
-conclusions across claims instead of repeating them.
+The claims table (each claim's kind beside its value, the paper's method and the exact value with units, the
+verdict), the readings tested for each discrepancy, the verdict counts and each claim quoted with its reason.
+Symbols are typeset for the reader (:mod:`.notation`).
 """
 
 from __future__ import annotations
@@ -14,10 +12,10 @@ import math
 import os
 from pathlib import Path
 
-from vibration.book.chapters.claims_audit.notation import cell, prose
+from vibration.book.chapters.claims_audit.notation import cell
 from vibration.book.chapters.claims_audit.study import Claim, ClaimsAuditStudy
 from vibration.book.presentation.findings import case_name
-from vibration.book.presentation.narrative import fixed, g
+from vibration.book.presentation.narrative import fixed
 from vibration.book.presentation.tables import TABLES_ENV, Column, Missing, Table, columns, fmt
 from vibration.physics.audit import COLUMNS, PARTLY_FACTOR, VERDICTS, verdict
 
@@ -189,153 +187,54 @@ def verdict_table(st: ClaimsAuditStudy) -> Table:
     )
 
 
-# ----------------------------------------------------------------------------- sentences
+def best_reading_cell(c: Claim) -> str:
+    """Which reading fits a claim best, its value and its verdict (never which one the authors meant)."""
+    best = c.best
+    return f"{cell(best.description)}: {_shown(best.value, best.unit, READING_DIGITS)} ({best.verdict})"
 
 
-def verdict_rule_markdown() -> str:
-    """The verdict rule in words (with the run's factor)."""
-    return (
-        "* *about X*: **reproduced** when the exact value rounds to X at the precision X is written with (half "
-        'a unit of its last digit, so "0.5" covers 0.45 to 0.55), **partly reproduced** within a factor '
-        f"{PARTLY_FACTOR:g}, otherwise **number differs**;\n"
-        "* *over / below X*: **reproduced** when the inequality holds, **partly reproduced** when it holds with "
-        f"X relaxed by a factor {PARTLY_FACTOR:g}, otherwise **number differs**;\n"
-        "* a word: **reproduced** only when equal; otherwise **physics contradicts** when the word is about the "
-        "motion (regime, stability, growth, settling) and **name differs** for the method's name."
+def reasons_table(st: ClaimsAuditStudy) -> Table:
+    """Each claim quoted, with its verdict, the audit's reason and, when it fails, the reading that fits best."""
+    rows = [
+        {
+            "id": c.claim_id,
+            "quote": f"“{c.quote}”",
+            "verdict": c.verdict,
+            "why": cell(c.reason) + (f" This run's case is not the paper's: {cell(c.changed)}." if c.changed else ""),
+            "best": best_reading_cell(c) if c.verdict != "reproduced" else Missing(reason="the claim holds as written"),
+        }
+        for c in st.claims
+    ]
+    return Table(
+        rows=rows,
+        columns=columns(
+            """
+            id       claim
+            quote    the paper's words
+            verdict  verdict
+            why      why
+            best     reading that fits best
+            """
+        ),
+        caption="Each claim in the paper's words, with its verdict, the audit's reason and the reading that fits best.",
+        name="tab-claims-reasons",
     )
 
 
-def reading_sentence(c: Claim) -> str:
-    """Which reading fits the claim best, with its number: never which one the authors meant."""
-    best = c.best
-    shown = _shown(best.value, best.unit, READING_DIGITS)
-    if best.verdict == "reproduced":
-        verdict_text = f'which matches "{c.claim_kind}" by the same rule'
-    else:
-        verdict_text = f'which is still "{best.verdict}" against "{c.claim_kind}": no reading tested matches'
-    return f"Of the readings tested, **{prose(best.description)}** fits best: {shown}, {verdict_text}."
-
-
-def claims_details_markdown(st: ClaimsAuditStudy) -> str:
-    """Each claim quoted from the paper, then one paragraph: its verdict, the exact reason, the best reading."""
-    parts = []
-    for c in st.claims:
-        text = [f"**{c.claim_id}** ({c.claim_kind}; {_quantity(c)}): *{c.verdict}*."]
-        if c.changed:
-            text.append(
-                f"This run's case is not the paper's: {prose(c.changed)}; the verdict is about this run's case."
-            )
-        text.append(prose(c.reason))
-        if c.verdict != "reproduced":
-            text.append(reading_sentence(c))
-        parts.append(f'> "{c.quote}" (the paper)\n\n' + " ".join(text))
-    return "\n\n".join(parts)
-
-
-def count_sentence(st: ClaimsAuditStudy) -> str:
-    """How many claims got each verdict, in words."""
-    parts = []
-    for v, n in st.counts.items():
-        if n:
-            parts.append(f"{n} {VERDICT_PHRASE[v][0 if n == 1 else 1]}")
-    listed = parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
-    return f"Of the paper's {len(st.claims)} checkable claims, {listed}."
-
-
-def solver_sentence(st: ClaimsAuditStudy) -> str:
-    """Whether any verdict depends on the solver: each claim judged on RK45's value instead of the exact one."""
+def solver_agreement(st: ClaimsAuditStudy) -> tuple[int, int, float]:
+    """Claims the solver affects that get the same verdict on RK45's value; how many it affects; the largest
+    relative gap between RK45's numbers and the exact ones."""
     judged = [c for c in st.claims if c.paper_method_value not in ("", None) and c.exact_value is not None]
     same = [c for c in judged if verdict(c.kind, c.paper_value, c.paper_method_value, quantity=_q(c)) == c.verdict]
     numeric = [c for c in judged if isinstance(c.exact_value, float | int) and c.exact_value != 0]
     worst = max((abs(float(c.paper_method_value) / float(c.exact_value) - 1) for c in numeric), default=0.0)
-    share = f"all {len(judged)}" if len(same) == len(judged) else f"{len(same)} of the {len(judged)}"
-    head = (
-        f"Judged on the paper's own solver (RK45) instead of the exact solution, {share} claims the solver affects "
-        "get the same verdict"
-    )
-    return head + (f"; its numbers differ from the exact ones by {g(100 * worst, 2)} % at most." if numeric else ".")
+    return len(same), len(judged), worst
 
 
-def gap_sentence(st: ClaimsAuditStudy) -> str | None:
-    """The claim whose number is farthest from the exact one (None when no numerical claim fails)."""
+def largest_gap(st: ClaimsAuditStudy) -> Claim | None:
+    """The failed claim whose number is farthest from the exact one (None when no numerical claim fails)."""
     failed = [c for c in st.claims if c.verdict != "reproduced" and math.isfinite(c.factor) and c.factor > 0]
-    if not failed:
-        return None
-    c = max(failed, key=lambda c: abs(math.log(c.factor)))
-    where = f", {case_name(c.scenario_id)}" if c.scenario_id else ""
-    exact = _shown(c.exact_value, c.unit)
-    if c.factor >= 1:
-        size = f"the paper's number is {g(c.factor, 3)} times the exact {exact}"
-    else:
-        size = f"the exact {exact} is {g(1 / c.factor, 3)} times the paper's number"
-    return f'The largest gap is {c.claim_id} ("{c.claim_kind}"{where}): {size}.'
-
-
-def key_results(st: ClaimsAuditStudy) -> str:
-    """The key-results box: computed headline numbers as a Markdown block quote."""
-    items = [count_sentence(st), gap_sentence(st), solver_sentence(st)]
-    lines = ["> **Key results**", ">"] + [f"> * {s}" for s in items if s]
-    return "\n".join(lines)
-
-
-def _group_by_reading(claims: list[Claim]) -> dict[str, list[Claim]]:
-    groups: dict[str, list[Claim]] = {}
-    for c in claims:
-        groups.setdefault(c.best_reading, []).append(c)
-    return groups
-
-
-def audit_summary(st: ClaimsAuditStudy) -> str:
-    """The summary: conclusions across claims (grouped by what explains them), in new words."""
-    bullets = []
-    changed = [c for c in st.claims if c.changed]
-    if changed:
-        bullets.append(
-            f"{_ids(changed)} are about cases this run changed: their verdicts test the paper's words on another "
-            "oscillator, not the paper's own numbers."
-        )
-    numbers = [c for c in st.claims if c.verdict in ("number differs", "partly reproduced") and not c.changed]
-    for desc, group in _group_by_reading(numbers).items():
-        pairs = "; ".join(
-            f'{c.claim_id} {_shown(c.best.value, c.best.unit, READING_DIGITS)} against "{c.claim_kind}"' for c in group
-        )
-        matched = [c for c in group if c.best.verdict == "reproduced"]
-        one = len(group) == 1
-        if len(matched) == len(group):
-            tail = "that reading matches it" if one else "that reading matches all of them"
-        elif matched:
-            tail = "that reading matches " + _ids(matched)
-        else:
-            tail = "even that reading stays outside the paper's rounding"
-        verb = "comes" if one else "come"
-        bullets.append(f"Read as **{prose(desc)}**, {_ids(group)} {verb} closest ({pairs}); {tail}.")
-    contradicted = st.with_verdict("physics contradicts")
-    missing = [c for c in contradicted if c.exact_value is None]
-    if missing:
-        bullets.append(
-            f"{_ids(missing)} give numbers for steady amplitudes that do not exist in this run: with a damping "
-            "c < 0 the response grows and never reaches a steady state."
-        )
-    for c in (c for c in contradicted if c.exact_value is not None):
-        q = QUANTITY_TEXT.get(_q(c), cell(_q(c)))
-        where = f", {case_name(c.scenario_id)}" if c.scenario_id else ""
-        exact = cell(str(c.exact_value))
-        text = f'{c.claim_id} ({q}{where}): the paper says "{c.paper_value}", the equations "{exact}"'
-        rate = st.slowest_decay.get(c.scenario_id)
-        if rate is not None and rate > 0 and "stability" in c.quantity:
-            text += f", since the slowest free mode decays at {g(rate, 3)} 1/s"
-        if c.best.verdict == "reproduced":
-            text += f". The paper's word fits only the reading **{prose(c.best_reading)}**"
-        bullets.append(text + ".")
-    for c in st.with_verdict("name differs"):
-        bullets.append(
-            f'{c.claim_id} names the solver "{c.paper_value}"; the paper\'s RK45 is in fact "{c.exact_value}". A wrong '
-            "name changes none of the numbers above."
-        )
-    held = st.with_verdict("reproduced")
-    if held:
-        bullets.append(f"The other claims, {_ids(held)}, hold as written for this run.")
-    return "\n".join("- " + b for b in bullets)
+    return max(failed, key=lambda c: abs(math.log(c.factor))) if failed else None
 
 
 # ----------------------------------------------------------------------------- files
@@ -370,13 +269,11 @@ def write_claims_csv(st: ClaimsAuditStudy, folder=None) -> Path | None:
 
 __all__ = [
     "VERDICTS",
-    "audit_summary",
-    "claims_details_markdown",
     "claims_table",
-    "key_results",
-    "reading_sentence",
+    "largest_gap",
     "readings_table",
-    "verdict_rule_markdown",
+    "reasons_table",
+    "solver_agreement",
     "verdict_table",
     "write_claims_csv",
 ]
