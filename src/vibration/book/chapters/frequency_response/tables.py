@@ -9,9 +9,9 @@ Examples
 >>> from vibration.book.chapters.frequency_response.study import frequency_response_study
 >>> st = frequency_response_study(n_points=2001, n_omega=20, n_damping=10)
 >>> print(repr(dampings_table(st)).splitlines()[-2])
-high damping     15.0       1.68    overdamped   0.298  —a              —a      0.4317    0.2983
+c = 15 N s/m   15.0       1.68    overdamped   0.298  —a              —a      0.4317    0.2983
 >>> print(repr(band_table(st)).splitlines()[3])
-low damping      4.421        4.521        0.100              0.100        yes
+c = 0.1 N s/m  4.421        4.521        0.100              0.100        yes
 """
 
 from __future__ import annotations
