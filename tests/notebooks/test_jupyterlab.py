@@ -257,8 +257,8 @@ def _exercise(page, explorer, shot: Path | None) -> dict:
 #: A MyST role as written in a notebook's Markdown ({numref}`tab-...`, {sub}`0`): JupyterLab's own renderer shows
 #: the braces as text; with the MyST extension the role is rendered.
 MYST_ROLE = re.compile(r"\{(?:numref|ref|eq|doc|term|sub|sup|math|cite|abbr)\}")
-#: Notebooks whose Markdown cells and Markdown outputs both use roles (chapter 7's outputs refer to its tables and
-#: figures too).
+#: Notebooks whose Markdown cells use roles (chapter 7's outputs refer to its tables and figures too; chapter 4's
+#: prose is all in its cells).
 ROLES_NOTEBOOKS = ("04_frequency_response.ipynb", "07_control.ipynb")
 
 
@@ -364,7 +364,7 @@ def test_jupyterlab_renders_the_myst_roles_of_cells_and_outputs(lab, browser, na
     every cross-reference reads as a number or words, never as its label or "not found"."""
     base, token, root = lab
     own, outputs = _markdown_sources(root / name)
-    assert sum(len(MYST_ROLE.findall(t)) for t in own) > 0 and sum(len(MYST_ROLE.findall(t)) for t in outputs) > 0
+    assert sum(len(MYST_ROLE.findall(t)) for t in own) > 0  # and any stored Markdown output is checked below
     page = browser.new_page(viewport={"width": 1400, "height": 1300})
     try:
         page.goto(

@@ -120,7 +120,7 @@ SHARED: dict[str, Param] = {
             high=1e4,
             items=(1, 6),
             default_from=("c_low", "c_nominal", "c_high"),
-            meaning="the dampings compared at the resonant frequency (none given: c_low, c_nominal and c_high)",
+            meaning="the dampings compared at the resonant frequency (none given: the low, nominal and high dampings)",
         ),  # fmt: skip
         count(
             "n_points", "N_pts", 5001, low=2, high=min(200_001, N_POINTS_MAX), meaning="output samples over the window"
