@@ -8,7 +8,6 @@ reader sees), where the project's nbval comparison reads it.
 
 Examples
 --------
->>> number("x_res", 0.450427, display=False)  # doctest: +SKIP
 >>> text(0.450427), text(78.2345, 3), text(float("inf"))
 ('0.4504', '78.2', '∞')
 """
@@ -24,9 +23,17 @@ from .numbers import Approx, integer
 PHRASE_WORDS = 12
 
 
-def text(value: float, digits: int = 4) -> str:
-    """``value`` as the prose writes it: ``digits`` significant figures, trailing zeros dropped."""
-    return g(float(value), digits)
+#: A number as the prose writes it (``digits`` significant figures, trailing zeros dropped): the book's one format.
+text = g
+
+
+def _tolerance(value: float, tolerance: dict) -> dict | None:
+    """The output metadata that declares a machine-dependent value's tolerance (``None`` without one)."""
+    return (
+        {"vibration": {"value": float(value), "tol": Approx(value=value, **tolerance).tolerance()}}
+        if tolerance
+        else None
+    )
 
 
 def _glue(name: str, shown: str, metadata: dict | None = None) -> None:
@@ -48,16 +55,14 @@ def number(name: str, value: float, digits: int = 4, **tolerance: float) -> str:
     if math.isnan(value):
         raise ValueError(f"glued number {name!r} is nan: a chapter states why a quantity is missing, in words")
     shown = text(value, digits)
-    meta = {"vibration": {"value": value, "tol": Approx(value=value, **tolerance).tolerance()}} if tolerance else None
-    _glue(name, shown, meta)
+    _glue(name, shown, _tolerance(value, tolerance))
     return shown
 
 
 def count(name: str, n: int, **tolerance: float) -> str:
     """Glue a count under ``name`` in the book's grouped form (``5 001``); ``tolerance`` as for :func:`number`."""
     shown = integer(n)
-    meta = {"vibration": {"value": float(n), "tol": Approx(value=n, **tolerance).tolerance()}} if tolerance else None
-    _glue(name, shown, meta)
+    _glue(name, shown, _tolerance(n, tolerance))
     return shown
 
 

@@ -67,6 +67,11 @@ class Param:
             return check_int(self.name, value, low=int(self.low), high=int(self.high))
         return check_real(self.name, value, low=self.low, low_open=self.low_open, high=self.high, unit=self.unit)
 
+    def resolved(self, values: Mapping) -> tuple:
+        """The list an empty value stands for: the values of :attr:`default_from` in ``values``, equal ones once
+        (c_low = c_nominal is one damping)."""
+        return self.check(list(dict.fromkeys(values[n] for n in self.default_from)))
+
     def _check_list(self, value) -> tuple:
         """A list of numbers: its length within ``items``, each element in range, no two equal; a tuple."""
         fewest, most = self.items
@@ -193,8 +198,8 @@ class Schema:
             out[name] = param.check(value)
         full = self.defaults() | out
         for p in self.params:  # an empty list with a default source takes those parameters' values
-            if p.default_from and not full[p.name]:  # equal sources count once (c_low = c_nominal is one damping)
-                full[p.name] = p.check(list(dict.fromkeys(full[n] for n in p.default_from)))
+            if p.default_from and not full[p.name]:
+                full[p.name] = p.resolved(full)
                 if p.name in out:
                     out[p.name] = full[p.name]
         for rule in self.together:

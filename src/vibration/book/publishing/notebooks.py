@@ -122,7 +122,7 @@ def chapter_parameters(ch: Chapter, values: dict) -> list:
         if schema is not None and name in schema.names() and schema[name].default_from and not value:
             # an empty list stands for the values of its sources: show those (c_low, c_nominal, c_high)
             full = schema.defaults() | {k: v for k, v in values.items() if k in schema.names()}
-            value = default = list(dict.fromkeys(full[n] for n in schema[name].default_from))
+            value = default = list(schema[name].resolved(full))
         out.append(
             Parameter(
                 name=name,
