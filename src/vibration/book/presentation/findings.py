@@ -3,7 +3,7 @@
 :func:`scenarios_from` builds the reference run, the resonance run and the three dampings at
 resonance from a chapter's (possibly changed) parameters; :func:`scenarios_of` does the same
 from a chapter's ``Params`` record. The paper's resonance case and its nominal damping are the
-same run (c_nominal at omega_res): :data:`SAME_RUN` names that pair.
+same run (c_nominal at omega_res): :func:`same_run` finds such pairs.
 
 Examples
 --------
@@ -31,9 +31,6 @@ CASE_NAMES = {
     "damping_nominal": "nominal damping",
     "damping_high": "high damping",
 }
-
-#: The paper's resonance case (its Figure 1) and its nominal damping (in its Figure 2): one run.
-SAME_RUN = ("resonance", "damping_nominal")
 
 #: Why a quantity does not exist when the damping is not positive.
 NO_STEADY = "no steady state is reached when c ≤ 0"
